@@ -1,0 +1,17 @@
+#pragma once
+// The `lenslab` subcommands. Each registers its options and returns the action to run
+// when it is chosen; the action returns the process exit code.
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace lenslab::cli {
+
+using Action = std::function<int()>;
+
+Action add_render_command(CLI::App& app);
+Action add_trace_command(CLI::App& app);
+
+
+}  // namespace lenslab::cli

@@ -1,0 +1,35 @@
+// lenslab: render scenes and trace rays through lenses from the command line.
+
+#include <iostream>
+
+#include "commands.h"
+#include "render/image_io.h"
+#include "scene/json_reader.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"lenslab: physically based rendering of light through lenses, and an optical bench"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "lenslab 0.1.0");
+    const auto render = lenslab::cli::add_render_command(app);
+    const auto trace = lenslab::cli::add_trace_command(app);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+    try {
+        if (app.got_subcommand("render")) return render();
+        if (app.got_subcommand("trace")) return trace();
+    } catch (const lenslab::SceneError& e) {
+        std::cerr << "lenslab: error: " << e.what() << "\n";
+        return 1;
+    } catch (const lenslab::ImageError& e) {
+        std::cerr << "lenslab: error: " << e.what() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "lenslab: internal error: " << e.what() << "\n";
+        return 3;
+    }
+    return 2;
+}

@@ -1,0 +1,116 @@
+// `lenslab render [SCENE] -o OUT`: render a scene file, or the built-in default scene.
+
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <unistd.h>
+
+#include <tbb/info.h>
+
+#include "commands.h"
+#include "render/image_io.h"
+#include "render/render_session.h"
+#include "scene/scene_json.h"
+
+namespace lenslab::cli {
+
+namespace {
+
+struct RenderArgs {
+    std::string scene;
+    std::string output = "lenslab.png";
+    int width = 0, height = 0, spp = 0, max_depth = -1, threads = 0;
+    int64_t seed = -1;
+    double exposure = 0.0;
+    bool quiet = false;
+};
+
+RenderControl* g_control = nullptr;
+
+extern "C" void on_interrupt(int) {
+    if (g_control) g_control->cancel();  // an atomic store: safe in a signal handler
+}
+
+// Prints "rendering ... 42%" on stderr: in place on a terminal, every 10% otherwise.
+class ProgressPrinter {
+public:
+    explicit ProgressPrinter(std::string label) : m_label(std::move(label)), m_tty(isatty(2)) {}
+    void operator()(double fraction) {
+        const int percent = static_cast<int>(fraction * 100.0);
+        const int step = m_tty ? 1 : 10;
+        if (percent / step == m_last / step) return;
+        m_last = percent;
+        std::fprintf(stderr, m_tty ? "\r%s %3d%%" : "%s %3d%%\n", m_label.c_str(), percent);
+        if (m_tty && percent == 100) std::fputc('\n', stderr);
+    }
+
+private:
+    std::string m_label;
+    bool m_tty;
+    int m_last = -1;
+};
+
+int run(const RenderArgs& a) {
+    if (!is_supported_image_path(a.output)) {
+        std::cerr << "lenslab: error: --output '" << a.output
+                  << "': unknown image type (use a .png or .exr file name)\n";
+        return 2;
+    }
+    Scene scene = a.scene.empty() ? default_scene() : load_scene_file(a.scene);
+    RenderSettings& s = scene.render;
+    if (a.width > 0) s.width = a.width;
+    if (a.height > 0) s.height = a.height;
+    if (a.spp > 0) s.spp = a.spp;
+    if (a.max_depth >= 0) s.max_depth = a.max_depth;
+    if (a.seed >= 0) s.seed = static_cast<uint64_t>(a.seed);
+
+    const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
+    const std::string label = "rendering " + std::to_string(s.width) + "x" +
+                              std::to_string(s.height) + ", " + std::to_string(s.spp) + " spp, " +
+                              std::to_string(threads) + " thread" + (threads > 1 ? "s" : "") + ":";
+    ProgressPrinter printer(label);
+    RenderControl control(a.quiet ? RenderControl::ProgressFn{} : RenderControl::ProgressFn{std::ref(printer)});
+    g_control = &control;
+    std::signal(SIGINT, on_interrupt);
+    const RenderResult result = render_scene(scene, control, threads);
+    std::signal(SIGINT, SIG_DFL);
+    g_control = nullptr;
+    if (result.cancelled) {
+        std::cerr << "\nlenslab: render cancelled; nothing written\n";
+        return 130;
+    }
+    write_image(result.film, a.output, a.exposure);
+    std::printf("wrote %s (%dx%d, %d spp, %.2f s)\n", a.output.c_str(), s.width, s.height, s.spp,
+                result.seconds);
+    return 0;
+}
+
+}  // namespace
+
+Action add_render_command(CLI::App& app) {
+    auto args = std::make_shared<RenderArgs>();
+    CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image (PNG or EXR)");
+    cmd->add_option("scene", args->scene, "Scene file (JSON); omit for the built-in default scene")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("-o,--output", args->output, "Output image: .png (sRGB) or .exr (linear)")
+        ->capture_default_str();
+    cmd->add_option("--width", args->width, "Image width in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 16384));
+    cmd->add_option("--height", args->height, "Image height in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 16384));
+    cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")
+        ->check(CLI::Range(1, 1 << 20));
+    cmd->add_option("--max-depth", args->max_depth, "Longest specular chain (overrides the scene)")
+        ->check(CLI::Range(0, 1000));
+    cmd->add_option("--seed", args->seed, "Random seed (overrides the scene)")
+        ->check(CLI::Range(int64_t{0}, int64_t{2147483647}));
+    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    cmd->add_option("--exposure", args->exposure, "Exposure in stops applied before writing")
+        ->capture_default_str();
+    cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
+    return [args] { return run(*args); };
+}
+
+}  // namespace lenslab::cli

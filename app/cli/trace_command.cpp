@@ -1,0 +1,51 @@
+// `lenslab trace SCENE --origin x,y,z --direction x,y,z`: print the tree of a ray's paths.
+
+#include <iostream>
+#include <memory>
+
+#include "analysis/ray_tree.h"
+#include "commands.h"
+#include "scene/scene_json.h"
+
+namespace lenslab::cli {
+
+namespace {
+
+struct TraceArgs {
+    std::string scene;
+    std::vector<double> origin, direction;
+    RayTreeOptions options;
+};
+
+int run(const TraceArgs& a) {
+    const Vec3 d{a.direction[0], a.direction[1], a.direction[2]};
+    if (!(length(d) > 0)) {
+        std::cerr << "lenslab: error: --direction: must be a non-zero vector\n";
+        return 2;
+    }
+    const Scene scene = load_scene_file(a.scene);
+    const Ray ray{{a.origin[0], a.origin[1], a.origin[2]}, normalize(d)};
+    const RayTree tree = trace_ray_tree(scene, ray, a.options);
+    std::cout << to_json(scene, tree).dump(2) << "\n";
+    return 0;
+}
+
+}  // namespace
+
+Action add_trace_command(CLI::App& app) {
+    auto args = std::make_shared<TraceArgs>();
+    CLI::App* cmd = app.add_subcommand("trace", "Trace one ray and print the tree of its paths as JSON");
+    cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--origin", args->origin, "Ray origin x,y,z")
+        ->required()->delimiter(',')->expected(3);
+    cmd->add_option("--direction", args->direction, "Ray direction x,y,z (need not be unit length)")
+        ->required()->delimiter(',')->expected(3);
+    cmd->add_option("--max-depth", args->options.max_depth, "Events followed along any one path")
+        ->check(CLI::Range(0, 1000))->capture_default_str();
+    cmd->add_option("--min-weight", args->options.min_weight,
+                    "Branches carrying less of the ray's power are dropped")
+        ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+    return [args] { return run(*args); };
+}
+
+}  // namespace lenslab::cli

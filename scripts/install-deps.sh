@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs everything lenslab needs to build and test, from Debian 12 packages only.
+# Idempotent: when every package is already installed it returns in about a second.
+set -euo pipefail
+
+PACKAGES=(
+    cmake ninja-build g++ ccache pkg-config
+    libtbb-dev nlohmann-json3-dev libcli11-dev
+    libpng-dev libopenexr-dev
+    libnanoflann-dev libmuparser-dev libpcg-cpp-dev
+    libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+    exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}" >&2
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

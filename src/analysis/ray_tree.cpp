@@ -1,0 +1,98 @@
+#include "analysis/ray_tree.h"
+
+#include <limits>
+
+namespace lenslab {
+
+namespace {
+
+class TreeBuilder {
+public:
+    TreeBuilder(const Scene& scene, const RayTreeOptions& options, RayTree& tree)
+        : m_scene(scene), m_options(options), m_tree(tree) {}
+
+    // Follows the ray leaving `parent` and appends what happens at its next hit.
+    void follow(RayTreeNode& parent, int depth) {
+        const Vec3 origin = parent.to.value_or(parent.from);
+        const Ray ray{origin, parent.direction};
+        const double w = parent.weight;
+        SceneHit hit;
+        if (!m_scene.intersect(ray, surface_epsilon(origin), std::numeric_limits<double>::infinity(), hit)) {
+            parent.children.push_back({origin, std::nullopt, -1, Event::Escape, ray.direction, w, false, {}});
+            m_tree.escaped += w;
+            return;
+        }
+        const SceneObject& object = m_scene.objects[hit.object];
+        const Material& m = m_scene.materials[object.material];
+        const Vec3& p = hit.surface.point;
+        const Scattering s = scatter(m, object.shape->is_closed(), ray.direction, hit.surface.normal);
+        if (s.diffuse > 0.0) {
+            parent.children.push_back({origin, p, hit.object, Event::Absorb, ray.direction, w * s.diffuse, false, {}});
+            m_tree.absorbed += w * s.diffuse;
+        }
+        for (int i = 0; i < s.count; ++i) {
+            const Branch& b = s.branches[i];
+            const double bw = w * b.weight;
+            if (bw < m_options.min_weight) {
+                m_tree.truncated += bw;
+                continue;
+            }
+            parent.children.push_back({origin, p, hit.object, b.event, b.direction, bw, false, {}});
+            RayTreeNode& child = parent.children.back();
+            if (depth + 1 >= m_options.max_depth) {
+                child.truncated = true;
+                m_tree.truncated += bw;
+            } else {
+                follow(child, depth + 1);
+            }
+        }
+    }
+
+private:
+    const Scene& m_scene;
+    const RayTreeOptions& m_options;
+    RayTree& m_tree;
+};
+
+nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+nlohmann::json node_json(const Scene& scene, const RayTreeNode& node) {
+    nlohmann::json j;
+    j["from"] = vec_json(node.from);
+    j["to"] = node.to ? vec_json(*node.to) : nlohmann::json(nullptr);
+    j["object"] = node.object >= 0 ? nlohmann::json(scene.objects[node.object].name) : nlohmann::json(nullptr);
+    if (node.object >= 0) j["object_index"] = node.object;
+    j["event"] = node.event ? event_name(*node.event) : "start";
+    j["weight"] = node.weight;
+    j["direction"] = vec_json(node.direction);
+    if (node.truncated) j["truncated"] = true;
+    j["children"] = nlohmann::json::array();
+    for (const RayTreeNode& c : node.children) j["children"].push_back(node_json(scene, c));
+    return j;
+}
+
+}  // namespace
+
+RayTree trace_ray_tree(const Scene& scene, const Ray& ray, const RayTreeOptions& options) {
+    RayTree tree;
+    tree.root.from = ray.origin;
+    tree.root.to = ray.origin;
+    tree.root.direction = normalize(ray.direction);
+    tree.root.weight = 1.0;
+    if (options.max_depth <= 0) {
+        tree.root.truncated = true;
+        tree.truncated = 1.0;
+        return tree;
+    }
+    TreeBuilder(scene, options, tree).follow(tree.root, 0);
+    return tree;
+}
+
+nlohmann::json to_json(const Scene& scene, const RayTree& tree) {
+    nlohmann::json j;
+    j["tree"] = node_json(scene, tree.root);
+    j["summary"] = {{"escaped", tree.escaped}, {"absorbed", tree.absorbed}, {"truncated", tree.truncated}};
+    return j;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,46 @@
+#pragma once
+// The full tree of paths one ray takes through a scene: every reflected and refracted
+// branch, each carrying its Fresnel-weighted share of the ray's power. `lenslab trace`
+// prints it; the optical-bench measurements are built on it.
+
+#include <optional>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scattering.h"
+#include "scene/scene.h"
+
+namespace lenslab {
+
+// One event: the light went from `from` to `to`, met `object`, did `event` there and left
+// along `direction` carrying `weight` (fraction of the traced ray's power). At a dielectric
+// the ray splits: the reflected and the refracted branch are siblings with the same segment.
+// The root is the start of the ray (event "start", from = to = origin).
+struct RayTreeNode {
+    Vec3 from;
+    std::optional<Vec3> to;  // empty when the ray escapes
+    int object = -1;         // -1 when nothing was hit
+    std::optional<Event> event;  // empty for the root
+    Vec3 direction;
+    double weight = 0;
+    bool truncated = false;  // max depth reached: the branch was not followed further
+    std::vector<RayTreeNode> children;
+};
+
+struct RayTreeOptions {
+    int max_depth = 16;        // events followed along any one path
+    double min_weight = 1e-3;  // branches carrying less are dropped (counted as truncated)
+};
+
+struct RayTree {
+    RayTreeNode root;
+    // Where the power went; the three add up to 1.
+    double escaped = 0, absorbed = 0, truncated = 0;
+};
+
+RayTree trace_ray_tree(const Scene& scene, const Ray& ray, const RayTreeOptions& options);
+
+nlohmann::json to_json(const Scene& scene, const RayTree& tree);
+
+}  // namespace lenslab

@@ -1,0 +1,37 @@
+#pragma once
+// Axis-aligned bounding box with the slab test (Kay & Kajiya 1986).
+
+#include <limits>
+
+#include "geometry/ray.h"
+
+namespace lenslab {
+
+struct Aabb {
+    Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+            std::numeric_limits<double>::infinity()};
+    Vec3 hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+            -std::numeric_limits<double>::infinity()};
+
+    void expand(const Vec3& p) { lo = min(lo, p); hi = max(hi, p); }
+    void expand(const Aabb& b) { lo = min(lo, b.lo); hi = max(hi, b.hi); }
+    Vec3 centre() const { return (lo + hi) * 0.5; }
+    Vec3 extent() const { return hi - lo; }
+    bool empty() const { return lo.x > hi.x; }
+
+    // inv_dir = 1 / ray.direction componentwise (infinities are fine).
+    bool hit(const Ray& ray, const Vec3& inv_dir, double t_min, double t_max) const {
+        for (int a = 0; a < 3; ++a) {
+            double t0 = (lo[a] - ray.origin[a]) * inv_dir[a];
+            double t1 = (hi[a] - ray.origin[a]) * inv_dir[a];
+            if (inv_dir[a] < 0) std::swap(t0, t1);
+            // NaN (0 * inf) comparisons fail, which keeps the interval: conservative.
+            t_min = t0 > t_min ? t0 : t_min;
+            t_max = t1 < t_max ? t1 : t_max;
+            if (t_max < t_min) return false;
+        }
+        return true;
+    }
+};
+
+}  // namespace lenslab

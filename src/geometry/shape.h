@@ -1,0 +1,25 @@
+#pragma once
+// Interface of every intersectable solid or surface in a scene.
+
+#include "geometry/aabb.h"
+#include "geometry/ray.h"
+
+namespace lenslab {
+
+struct SurfaceHit {
+    double t = 0;
+    Vec3 point;
+    Vec3 normal;  // unit, geometric, pointing out of the solid (for a triangle: its face normal)
+};
+
+class Shape {
+public:
+    virtual ~Shape() = default;
+    // Nearest intersection with t in (t_min, t_max); fills `hit` and returns true if found.
+    virtual bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const = 0;
+    virtual Aabb bounds() const = 0;
+    // True when the shape encloses a volume, so refraction can enter and leave it.
+    virtual bool is_closed() const = 0;
+};
+
+}  // namespace lenslab

@@ -1,0 +1,23 @@
+#pragma once
+
+#include "geometry/shape.h"
+
+namespace lenslab {
+
+class Sphere final : public Shape {
+public:
+    Sphere(const Vec3& centre, double radius) : m_centre(centre), m_radius(radius) {}
+
+    bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const override;
+    Aabb bounds() const override;
+    bool is_closed() const override { return true; }
+
+    const Vec3& centre() const { return m_centre; }
+    double radius() const { return m_radius; }
+
+private:
+    Vec3 m_centre;
+    double m_radius;
+};
+
+}  // namespace lenslab

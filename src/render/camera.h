@@ -1,0 +1,21 @@
+#pragma once
+
+#include "geometry/ray.h"
+#include "scene/camera_settings.h"
+
+namespace lenslab {
+
+// Pinhole camera: maps film coordinates (pixels, y down) to primary rays.
+class Camera {
+public:
+    Camera(const CameraSettings& s, int width, int height);
+    // (px, py) in pixel units: (0, 0) is the top-left corner of the image.
+    Ray generate_ray(double px, double py) const;
+
+private:
+    Vec3 m_origin, m_forward, m_right, m_up;
+    double m_half_height = 1, m_half_width = 1;
+    int m_width, m_height;
+};
+
+}  // namespace lenslab

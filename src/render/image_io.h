@@ -1,0 +1,36 @@
+#pragma once
+// Image files: PNG (8-bit sRGB, exposure applied) and OpenEXR (linear float), chosen by the
+// file name's extension.
+
+#include <stdexcept>
+#include <string>
+
+#include "render/film.h"
+
+namespace lenslab {
+
+class ImageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Linear value -> sRGB-encoded [0, 1] (IEC 61966-2-1 transfer function).
+double linear_to_srgb(double v);
+
+// Writes `film` to `path`: .png (sRGB, scaled by 2^exposure_stops and clipped) or .exr
+// (linear, exposure also applied). Writes to a temporary file and renames it, so an
+// interrupted write never leaves a half image. Throws ImageError.
+void write_image(const Film& film, const std::string& path, double exposure_stops = 0.0);
+
+// True if the extension is one write_image understands.
+bool is_supported_image_path(const std::string& path);
+
+// 8-bit RGB image, for reading PNGs back (golden-image tests, viewers).
+struct Image8 {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgb;  // width * height * 3
+};
+Image8 read_png(const std::string& path);
+Image8 to_srgb8(const Film& film, double exposure_stops = 0.0);
+
+}  // namespace lenslab

@@ -1,0 +1,44 @@
+#include "render/integrators/whitted.h"
+
+#include <limits>
+#include <numbers>
+
+#include "math/rng.h"
+#include "render/direct_light.h"
+#include "scene/scattering.h"
+
+namespace lenslab {
+
+Rgb WhittedIntegrator::radiance(const Ray& ray, Rng& rng) const { return trace(ray, 0, 1.0, rng); }
+
+Rgb WhittedIntegrator::trace(const Ray& ray, int depth, double weight, Rng& rng) const {
+    const Scene& scene = m_scene;
+    SceneHit hit;
+    if (!scene.intersect(ray, surface_epsilon(ray.origin), std::numeric_limits<double>::infinity(), hit)) {
+        return scene.render.background;
+    }
+    const SceneObject& object = scene.objects[hit.object];
+    const Material& m = scene.materials[object.material];
+    const Vec3& p = hit.surface.point;
+    const Vec3& n = hit.surface.normal;
+    const bool front_side = dot(ray.direction, n) < 0.0;
+
+    Rgb l;
+    if (m.is_emitter() && front_side) l += m.emitted_radiance();
+
+    const Scattering s = scatter(m, object.shape->is_closed(), ray.direction, n);
+    if (s.diffuse > 0.0) {
+        const Vec3 facing = front_side ? n : -n;
+        const Rgb e = direct_irradiance(scene, p, facing, scene.render.light_samples, rng);
+        l += m.color * s.diffuse * (scene.render.ambient + e * (1.0 / std::numbers::pi));
+    }
+    if (depth >= scene.render.max_depth) return l;
+    for (int i = 0; i < s.count; ++i) {
+        const Branch& b = s.branches[i];
+        if (weight * b.weight < scene.render.min_weight) continue;
+        l += trace({p, b.direction}, depth + 1, weight * b.weight, rng) * b.weight;
+    }
+    return l;
+}
+
+}  // namespace lenslab

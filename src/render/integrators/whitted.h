@@ -1,0 +1,25 @@
+#pragma once
+// Recursive backward ray tracing with the report's illumination model:
+//   I = ka Ia + sum_j Ij (N . Lj) + kr Ir + ks Is
+// The diffuse part (weight 1 - transparency - specular, albedo `color`) takes ambient light
+// and direct light from every source through shadow rays; the specular part follows the
+// mirror ray and, at a dielectric, the Fresnel-weighted reflected and refracted rays, up to
+// render.max_depth. Radiometry is physical: a Lambertian surface of albedo a under
+// irradiance E has radiance a E / pi. Light through glass (caustics) needs photon maps.
+
+#include "render/integrator.h"
+
+namespace lenslab {
+
+class WhittedIntegrator final : public PixelIntegrator {
+public:
+    explicit WhittedIntegrator(const Scene& scene) : PixelIntegrator(scene) {}
+
+protected:
+    Rgb radiance(const Ray& ray, Rng& rng) const override;
+
+private:
+    Rgb trace(const Ray& ray, int depth, double weight, Rng& rng) const;
+};
+
+}  // namespace lenslab

@@ -1,0 +1,36 @@
+#include "render/render_session.h"
+
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+
+#include <tbb/task_arena.h>
+
+#include "render/camera.h"
+#include "render/integrators/whitted.h"
+
+namespace lenslab {
+
+namespace {
+
+std::unique_ptr<Integrator> make_integrator(const Scene& scene) {
+    if (scene.render.integrator == "whitted") return std::make_unique<WhittedIntegrator>(scene);
+    throw std::invalid_argument("unknown integrator '" + scene.render.integrator + "'");
+}
+
+}  // namespace
+
+RenderResult render_scene(const Scene& scene, RenderControl& control, int threads) {
+    const auto start = std::chrono::steady_clock::now();
+    RenderResult result;
+    result.film = Film(scene.render.width, scene.render.height);
+    const Camera camera(scene.camera, scene.render.width, scene.render.height);
+    auto integrator = make_integrator(scene);
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    arena.execute([&] { integrator->render(scene, camera, result.film, control); });
+    result.cancelled = control.cancelled();
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,74 @@
+#pragma once
+// Reads one JSON object while remembering where it is ("objects[2].front"), so every error
+// names the exact path, and refuses keys nobody asked for, so typos never pass silently.
+
+#include <initializer_list>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "math/vec3.h"
+#include "optics/rgb.h"
+
+namespace lenslab {
+
+// An error in a scene or its JSON: what() is "path: reason".
+class SceneError : public std::runtime_error {
+public:
+    SceneError(const std::string& path, const std::string& reason)
+        : std::runtime_error(path.empty() ? reason : path + ": " + reason),
+          m_path(path), m_reason(reason) {}
+    const std::string& path() const { return m_path; }
+    const std::string& reason() const { return m_reason; }
+
+private:
+    std::string m_path;
+    std::string m_reason;
+};
+
+// Formats a number for messages the way a user typed it: 5, -1, 0.25.
+std::string format_number(double v);
+
+class JsonObjectReader {
+public:
+    // Throws if `value` is not a JSON object, or if it holds a key not in `allowed` (with a
+    // "did you mean" suggestion). Every key the reader is later asked for must be allowed.
+    JsonObjectReader(const nlohmann::json& value, std::string path,
+                     std::initializer_list<const char*> allowed);
+
+    const std::string& path() const { return m_path; }
+    std::string child_path(const std::string& key) const;
+    bool has(const std::string& key) const;
+
+    // Raw access. `require` throws if the key is missing.
+    const nlohmann::json& require(const std::string& key);
+    const nlohmann::json* find(const std::string& key);
+
+    double number(const std::string& key);
+    double number(const std::string& key, double fallback);
+    double positive(const std::string& key);  // > 0
+    double positive(const std::string& key, double fallback);
+    int integer(const std::string& key, int fallback, int min_value, int max_value);
+    std::string string(const std::string& key);
+    std::string string(const std::string& key, const std::string& fallback);
+    Vec3 vec3(const std::string& key);
+    Vec3 direction(const std::string& key);  // non-zero, returned normalised
+    Vec3 direction(const std::string& key, const Vec3& fallback);
+    // A colour: a number (grey) or [r, g, b], each >= 0 and finite.
+    Rgb color(const std::string& key, const Rgb& fallback);
+    double fraction(const std::string& key, double fallback);  // in [0, 1]
+
+    // Helpers for values that are not members of an object reader.
+    static double as_number(const nlohmann::json& v, const std::string& path);
+    static Vec3 as_vec3(const nlohmann::json& v, const std::string& path);
+    static Rgb as_color(const nlohmann::json& v, const std::string& path);
+
+private:
+    const nlohmann::json& m_value;
+    std::string m_path;
+    std::set<std::string> m_allowed;
+};
+
+}  // namespace lenslab

@@ -1,0 +1,62 @@
+#include "scene/scattering.h"
+
+#include <cmath>
+
+#include "optics/fresnel.h"
+#include "optics/refraction.h"
+
+namespace lenslab {
+
+const char* event_name(Event e) {
+    switch (e) {
+        case Event::Refract: return "refract";
+        case Event::Reflect: return "reflect";
+        case Event::Tir: return "tir";
+        case Event::Absorb: return "absorb";
+        case Event::Escape: return "escape";
+    }
+    return "unknown";
+}
+
+Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& outward_normal) {
+    Scattering s;
+    s.diffuse = m.diffuse_weight();
+    const bool entering = dot(d, outward_normal) < 0.0;
+    const Vec3 facing = entering ? outward_normal : -outward_normal;  // towards the arriving ray
+    const Vec3 mirrored = reflect(d, facing);
+    const double cos_i = -dot(d, facing);
+
+    double reflected = m.specular;
+    Event reflect_event = Event::Reflect;
+    if (m.transparency > 0.0) {
+        if (closed) {
+            const double eta_i = entering ? kOutsideIor : m.ior;
+            const double eta_t = entering ? m.ior : kOutsideIor;
+            const FresnelTerms f = fresnel_dielectric(cos_i, eta_i, eta_t);
+            if (f.total_internal_reflection) {
+                reflected += m.transparency;
+                reflect_event = Event::Tir;
+            } else {
+                const double r = f.reflectance();
+                reflected += m.transparency * r;
+                if (auto t = refract(d, facing, eta_i / eta_t)) {
+                    s.branches[s.count++] = {Event::Refract, *t, m.transparency * (1.0 - r)};
+                }
+            }
+        } else {
+            const double r = fresnel_dielectric(cos_i, kOutsideIor, m.ior).reflectance();
+            const double r_pane = 2.0 * r / (1.0 + r);
+            reflected += m.transparency * r_pane;
+            s.branches[s.count++] = {Event::Refract, d, m.transparency * (1.0 - r_pane)};
+        }
+    }
+    if (reflected > 0.0) {
+        // Keep the reflected branch first: tests and traces list it before the refracted one.
+        if (s.count == 1) s.branches[1] = s.branches[0];
+        s.branches[0] = {reflect_event, mirrored, reflected};
+        ++s.count;
+    }
+    return s;
+}
+
+}  // namespace lenslab

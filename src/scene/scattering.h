@@ -1,0 +1,39 @@
+#pragma once
+// How a material splits light arriving along a direction: into the specular branches
+// (mirror reflection, Fresnel reflection and refraction at the dielectric interface, total
+// internal reflection) and the diffuse part. One place for the whitted integrator, the ray
+// tracer of `lenslab trace` and, later, photon tracing.
+
+#include <array>
+
+#include "math/vec3.h"
+#include "scene/material.h"
+
+namespace lenslab {
+
+enum class Event { Refract, Reflect, Tir, Absorb, Escape };
+
+const char* event_name(Event e);
+
+struct Branch {
+    Event event = Event::Reflect;
+    Vec3 direction;     // unit, leaving the surface
+    double weight = 0;  // fraction of the arriving power carried by this branch
+};
+
+struct Scattering {
+    std::array<Branch, 2> branches;  // at most one reflected and one transmitted branch
+    int count = 0;
+    double diffuse = 0;  // fraction scattered diffusely (the `absorb` part of a trace)
+};
+
+// Medium outside every object: air, taken as vacuum-like n = 1.
+inline constexpr double kOutsideIor = 1.0;
+
+// `d`: unit arriving direction; `outward_normal`: unit, out of the solid (for an open
+// surface, its face normal); `closed`: whether the surface bounds a volume. An open
+// transparent surface is a thin pane: light passes straight through, and its two faces
+// reflect 2R / (1 + R) of it (incoherent multiple reflections).
+Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& outward_normal);
+
+}  // namespace lenslab

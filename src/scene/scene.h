@@ -1,0 +1,56 @@
+#pragma once
+// The scene model: what the scene file describes, plus the acceleration structure built
+// from it. Immutable once built; renders and traces only read it.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "accel/bvh.h"
+#include "scene/camera_settings.h"
+#include "scene/light.h"
+#include "scene/material.h"
+#include "scene/render_settings.h"
+
+namespace lenslab {
+
+enum class ObjectType { Sphere, Triangle, Lens };
+
+struct SceneObject {
+    std::string name;  // the user's `name`, or the JSON path "objects[i]"
+    ObjectType type = ObjectType::Sphere;
+    std::shared_ptr<const Shape> shape;
+    int material = 0;  // index into Scene::materials
+};
+
+struct SceneHit {
+    SurfaceHit surface;
+    int object = -1;
+};
+
+class Scene {
+public:
+    CameraSettings camera;
+    RenderSettings render;
+    std::vector<Material> materials;
+    std::vector<SceneObject> objects;
+    std::vector<PointLight> point_lights;
+    std::vector<BeamLight> beams;
+
+    // Builds the acceleration structure and the emitter list; call after filling the fields.
+    void build();
+
+    bool intersect(const Ray& ray, double t_min, double t_max, SceneHit& hit) const;
+    bool occluded(const Ray& ray, double t_min, double t_max) const;
+
+    const Material& material_of(int object) const { return materials[objects[object].material]; }
+    // Objects whose material emits light: spheres (the report's lights).
+    const std::vector<int>& emitters() const { return m_emitters; }
+    Aabb bounds() const { return m_bvh.bounds(); }
+
+private:
+    Bvh m_bvh;
+    std::vector<int> m_emitters;
+};
+
+}  // namespace lenslab

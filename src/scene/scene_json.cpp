@@ -1,0 +1,316 @@
+#include "scene/scene_json.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "geometry/lens/flat_surface.h"
+#include "geometry/lens/lens_solid.h"
+#include "geometry/lens/spherical_surface.h"
+#include "geometry/sphere.h"
+#include "geometry/triangle.h"
+#include "scene/json_reader.h"
+
+namespace lenslab {
+
+namespace {
+
+using nlohmann::json;
+
+std::string index_path(const std::string& base, size_t i) {
+    return base + "[" + std::to_string(i) + "]";
+}
+
+void read_camera(const json& j, CameraSettings& cam) {
+    JsonObjectReader r(j, "camera", {"position", "look_at", "direction", "up", "fov"});
+    cam.position = r.vec3("position");
+    if (r.has("look_at") && r.has("direction")) {
+        throw SceneError("camera.direction", "give either look_at or direction, not both");
+    }
+    if (r.has("look_at")) {
+        const Vec3 d = r.vec3("look_at") - cam.position;
+        if (!(length(d) > 1e-12)) throw SceneError("camera.look_at", "must differ from position");
+        cam.direction = normalize(d);
+    } else {
+        cam.direction = r.direction("direction");
+    }
+    cam.up = r.direction("up", {0, 1, 0});
+    if (length(cross(cam.up, cam.direction)) < 1e-9) {
+        throw SceneError("camera.up", "must not be parallel to the view direction");
+    }
+    cam.fov_deg = r.number("fov", cam.fov_deg);
+    if (!(cam.fov_deg > 0 && cam.fov_deg < 180)) {
+        throw SceneError("camera.fov", "must be between 0 and 180 degrees (exclusive), got " +
+                                           format_number(cam.fov_deg));
+    }
+}
+
+void read_render(const json& j, RenderSettings& s) {
+    JsonObjectReader r(j, "render",
+                       {"width", "height", "spp", "max_depth", "seed", "ambient", "background",
+                        "light_samples", "min_weight", "integrator"});
+    s.width = r.integer("width", s.width, 1, 16384);
+    s.height = r.integer("height", s.height, 1, 16384);
+    s.spp = r.integer("spp", s.spp, 1, 1 << 20);
+    s.max_depth = r.integer("max_depth", s.max_depth, 0, 1000);
+    s.seed = static_cast<uint64_t>(r.integer("seed", static_cast<int>(s.seed), 0, 2147483647));
+    s.ambient = r.color("ambient", s.ambient);
+    s.background = r.color("background", s.background);
+    s.light_samples = r.integer("light_samples", s.light_samples, 1, 4096);
+    s.min_weight = r.fraction("min_weight", s.min_weight);
+    s.integrator = r.string("integrator", s.integrator);
+    if (s.integrator != "whitted") {
+        throw SceneError("render.integrator", "unknown integrator '" + s.integrator +
+                                                  "' (known: whitted)");
+    }
+}
+
+Material read_material(const json& j, const std::string& path, const std::string& name) {
+    JsonObjectReader r(j, path, {"color", "transparency", "specular", "ior", "emission"});
+    Material m;
+    m.name = name;
+    m.color = r.color("color", m.color);
+    m.transparency = r.fraction("transparency", m.transparency);
+    m.specular = r.fraction("specular", m.specular);
+    if (m.transparency + m.specular > 1.0 + 1e-12) {
+        throw SceneError(r.child_path("specular"),
+                         "transparency + specular must be at most 1, got " +
+                             format_number(m.transparency + m.specular));
+    }
+    m.ior = r.positive("ior", m.ior);
+    if (const json* e = r.find("emission")) {
+        JsonObjectReader er(*e, r.child_path("emission"), {"color", "intensity"});
+        m.emission_color = er.color("color", m.emission_color);
+        m.emission_intensity = er.number("intensity", 1.0);
+        if (m.emission_intensity < 0) {
+            throw SceneError(er.child_path("intensity"),
+                             "must be >= 0, got " + format_number(m.emission_intensity));
+        }
+    }
+    return m;
+}
+
+std::map<std::string, int> read_materials(const json& j, std::vector<Material>& out) {
+    std::map<std::string, int> by_name;
+    if (!j.is_object()) throw SceneError("materials", "must be an object mapping names to materials");
+    for (const auto& [name, value] : j.items()) {
+        by_name[name] = static_cast<int>(out.size());
+        out.push_back(read_material(value, "materials." + name, name));
+    }
+    return by_name;
+}
+
+std::shared_ptr<const LensSurface> read_surface(const json& j, const std::string& path) {
+    JsonObjectReader r(j, path, {"shape", "radius"});
+    const std::string shape = r.string("shape");
+    if (shape == "flat") {
+        if (r.has("radius")) {
+            throw SceneError(r.child_path("radius"), "a flat surface has no radius");
+        }
+        return std::make_shared<FlatSurface>();
+    }
+    if (shape == "sphere") {
+        const double radius = r.number("radius");
+        if (radius == 0) {
+            throw SceneError(r.child_path("radius"),
+                             "must not be 0 (use {\"shape\": \"flat\"} for a plane)");
+        }
+        return std::make_shared<SphericalSurface>(radius);
+    }
+    throw SceneError(r.child_path("shape"), "unknown surface shape '" + shape + "' (known: sphere, flat)");
+}
+
+std::shared_ptr<const Shape> read_lens(JsonObjectReader& r) {
+    const Vec3 centre = r.vec3("center");
+    const Vec3 axis = r.direction("axis");
+    LensPrescription p;
+    if (r.has("curvature_radius") || r.has("aperture_radius")) {
+        for (const char* key : {"thickness", "diameter", "front", "back"}) {
+            if (r.has(key)) {
+                throw SceneError(r.child_path(key),
+                                 "belongs to the prescription form; the report form "
+                                 "(curvature_radius, aperture_radius) cannot take it");
+            }
+        }
+        const double radius = r.positive("curvature_radius");
+        const double aperture = r.positive("aperture_radius");
+        if (aperture > radius) {
+            throw SceneError(r.child_path("aperture_radius"),
+                             "two spheres of radius " + format_number(radius) +
+                                 " cannot meet in a circle of radius " + format_number(aperture) +
+                                 " (must be <= curvature_radius)");
+        }
+        p = LensSolid::symmetric_biconvex(centre, axis, radius, aperture);
+    } else {
+        p.centre = centre;
+        p.axis = axis;
+        p.thickness = r.positive("thickness");
+        p.diameter = r.positive("diameter");
+        p.front = read_surface(r.require("front"), r.child_path("front"));
+        p.back = read_surface(r.require("back"), r.child_path("back"));
+    }
+    if (auto problem = LensSolid::check_prescription(p)) {
+        throw SceneError(r.child_path(problem->field), problem->reason);
+    }
+    return std::make_shared<LensSolid>(std::move(p));
+}
+
+SceneObject read_object(const json& j, const std::string& path,
+                        const std::map<std::string, int>& materials, std::vector<Material>& all) {
+    JsonObjectReader r(j, path,
+                       {"type", "name", "material", "center", "radius", "vertices", "axis",
+                        "curvature_radius", "aperture_radius", "thickness", "diameter", "front",
+                        "back"});
+    SceneObject o;
+    const std::string type = r.string("type");
+    o.name = r.string("name", path);
+
+    // Each type accepts only its own keys; another type's key is most likely a mistake.
+    auto refuse = [&](std::initializer_list<const char*> keys) {
+        for (const char* key : keys) {
+            if (r.has(key)) throw SceneError(r.child_path(key), "not a property of a " + type);
+        }
+    };
+    if (type == "sphere") {
+        refuse({"vertices", "axis", "curvature_radius", "aperture_radius", "thickness",
+                "diameter", "front", "back"});
+        o.type = ObjectType::Sphere;
+        o.shape = std::make_shared<Sphere>(r.vec3("center"), r.positive("radius"));
+    } else if (type == "triangle") {
+        refuse({"center", "radius", "axis", "curvature_radius", "aperture_radius", "thickness",
+                "diameter", "front", "back"});
+        o.type = ObjectType::Triangle;
+        const json& v = r.require("vertices");
+        const std::string vpath = r.child_path("vertices");
+        if (!v.is_array() || v.size() != 3) {
+            throw SceneError(vpath, "must be an array of 3 points [[x,y,z], [x,y,z], [x,y,z]]");
+        }
+        Vec3 p[3];
+        for (int i = 0; i < 3; ++i) p[i] = JsonObjectReader::as_vec3(v[i], index_path(vpath, i));
+        const double area2 = length(cross(p[1] - p[0], p[2] - p[0]));
+        if (!(area2 > 1e-12 * std::max(1.0, length_squared(p[1] - p[0])))) {
+            throw SceneError(vpath, "the three vertices are collinear (zero area)");
+        }
+        o.shape = std::make_shared<Triangle>(p[0], p[1], p[2]);
+    } else if (type == "lens") {
+        refuse({"radius", "vertices"});
+        o.type = ObjectType::Lens;
+        o.shape = read_lens(r);
+    } else {
+        throw SceneError(r.child_path("type"),
+                         "unknown object type '" + type + "' (known: sphere, triangle, lens)");
+    }
+
+    const json& m = r.require("material");
+    if (m.is_string()) {
+        const auto it = materials.find(m.get<std::string>());
+        if (it == materials.end()) {
+            throw SceneError(r.child_path("material"),
+                             "unknown material '" + m.get<std::string>() + "' (not in materials)");
+        }
+        o.material = it->second;
+    } else {
+        o.material = static_cast<int>(all.size());
+        all.push_back(read_material(m, r.child_path("material"), o.name));
+    }
+    if (all[o.material].is_emitter() && o.type != ObjectType::Sphere) {
+        throw SceneError(r.child_path("material"),
+                         "only spheres can emit light (the material has an emission)");
+    }
+    return o;
+}
+
+void read_light(const json& j, const std::string& path, Scene& scene) {
+    JsonObjectReader r(j, path, {"type", "position", "origin", "direction", "radius", "color",
+                                 "power"});
+    const std::string type = r.string("type");
+    if (type == "point") {
+        for (const char* key : {"origin", "direction", "radius"}) {
+            if (r.has(key)) throw SceneError(r.child_path(key), "not a property of a point light");
+        }
+        PointLight l;
+        l.position = r.vec3("position");
+        l.color = r.color("color", l.color);
+        l.power = r.positive("power");
+        scene.point_lights.push_back(l);
+    } else if (type == "beam") {
+        if (r.has("position")) {
+            throw SceneError(r.child_path("position"), "a beam has an origin, not a position");
+        }
+        BeamLight b;
+        b.origin = r.vec3("origin");
+        b.direction = r.direction("direction");
+        b.radius = r.positive("radius");
+        b.color = r.color("color", b.color);
+        b.power = r.positive("power");
+        scene.beams.push_back(b);
+    } else {
+        throw SceneError(r.child_path("type"), "unknown light type '" + type + "' (known: point, beam)");
+    }
+}
+
+// nlohmann's parse errors read "[json.exception.parse_error.101] parse error at line 3,
+// column 5: ..."; keep the part after the tag.
+std::string syntax_message(const json::parse_error& e) {
+    std::string what = e.what();
+    const size_t tag_end = what.find("] ");
+    if (tag_end != std::string::npos) what = what.substr(tag_end + 2);
+    return "invalid JSON: " + what;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const std::string& source) {
+    json root;
+    try {
+        root = json::parse(text);
+    } catch (const json::parse_error& e) {
+        throw SceneError(source, syntax_message(e));
+    }
+    JsonObjectReader r(root, "",
+                       {"version", "description", "camera", "render", "materials", "objects",
+                        "lights"});
+    const int version = r.integer("version", 1, 1, 1000);
+    if (version != 1) throw SceneError("version", "this lenslab reads version 1 scene files");
+    (void)r.string("description", "");
+
+    Scene scene;
+    read_camera(r.require("camera"), scene.camera);
+    if (const json* jr = r.find("render")) read_render(*jr, scene.render);
+    std::map<std::string, int> by_name;
+    if (const json* jm = r.find("materials")) by_name = read_materials(*jm, scene.materials);
+    if (const json* jo = r.find("objects")) {
+        if (!jo->is_array()) throw SceneError("objects", "must be an array");
+        for (size_t i = 0; i < jo->size(); ++i) {
+            scene.objects.push_back(
+                read_object((*jo)[i], index_path("objects", i), by_name, scene.materials));
+        }
+    }
+    if (const json* jl = r.find("lights")) {
+        if (!jl->is_array()) throw SceneError("lights", "must be an array");
+        for (size_t i = 0; i < jl->size(); ++i) read_light((*jl)[i], index_path("lights", i), scene);
+    }
+    scene.build();
+    return scene;
+}
+
+Scene load_scene_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneError(path, std::string("cannot open scene file: ") + std::strerror(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    try {
+        return parse_scene(text.str(), path);
+    } catch (const SceneError& e) {
+        // Prefix the file name so the message says where, whatever the JSON path.
+        if (e.path() == path) throw;
+        throw SceneError(path + ": " + e.path(), e.reason());
+    }
+}
+
+Scene default_scene() { return parse_scene(default_scene_text(), "default scene"); }
+
+}  // namespace lenslab
