@@ -71,6 +71,12 @@ double LensSolid::edge_thickness() const {
     return back_z(a) - front_z(a);
 }
 
+bool LensSolid::contains(const Vec3& world) const {
+    const Vec3 p = m_frame.to_local(world - m_p.centre);
+    const double r = std::hypot(p.x, p.y);
+    return r <= 0.5 * m_p.diameter && p.z >= front_z(r) && p.z <= back_z(r);
+}
+
 bool LensSolid::intersect(const Ray& world_ray, double t_min, double t_max,
                           SurfaceHit& hit) const {
     const Ray ray{m_frame.to_local(world_ray.origin - m_p.centre),

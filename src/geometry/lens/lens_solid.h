@@ -43,6 +43,9 @@ public:
     Aabb bounds() const override;
     bool is_closed() const override { return true; }
 
+    // True for points inside or on the solid.
+    bool contains(const Vec3& p) const;
+
     const LensPrescription& prescription() const { return m_p; }
     // Axial positions, in the local frame, of the front and back surfaces at radius r.
     double front_z(double r) const { return -0.5 * m_p.thickness + m_p.front->sag(r); }
