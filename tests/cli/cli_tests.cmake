@@ -1,0 +1,92 @@
+# Command-line tests: what a user of `lenslab` sees. Included from tests/CMakeLists.txt.
+# Each test runs the binary through run_lenslab.cmake, which checks the exit code, the
+# message on stderr, stdout and whether an image was written. Test names start with "cli.".
+#
+# The commands run from the source root, so scene paths (and therefore the messages that
+# name them) are the short relative ones a user would type.
+
+set(LENSLAB_CLI_RUNNER ${CMAKE_CURRENT_LIST_DIR}/run_lenslab.cmake)
+set(LENSLAB_CLI_OUT ${CMAKE_CURRENT_BINARY_DIR}/cli_out)
+
+# lenslab_cli_test(NAME <name> ARGS <arg>... [CHECKS -DKEY=VALUE...])
+function(lenslab_cli_test)
+    cmake_parse_arguments(T "" "NAME" "ARGS;CHECKS" ${ARGN})
+    list(JOIN T_ARGS "|" joined)
+    add_test(NAME cli.${T_NAME}
+        COMMAND ${CMAKE_COMMAND}
+            -DLENSLAB=$<TARGET_FILE:lenslab>
+            "-DARGS=${joined}"
+            ${T_CHECKS}
+            -P ${LENSLAB_CLI_RUNNER}
+        WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+    set_tests_properties(cli.${T_NAME} PROPERTIES TIMEOUT 180 LABELS cli)
+endfunction()
+
+# A bad scene: non-zero exit, exactly one line "lenslab: error: FILE: PATH: REASON" on
+# stderr, and no image written.
+function(lenslab_cli_bad_scene stem message)
+    set(file tests/scene/bad/${stem}.json)
+    set(out ${LENSLAB_CLI_OUT}/${stem}.png)
+    lenslab_cli_test(NAME render.bad.${stem}
+        ARGS render ${file} -o ${out} --width 16 --height 16 --spp 1
+        CHECKS -DEXPECT_EXIT=1 "-DSTDERR_LINE=lenslab: error: ${file}: ${message}"
+               -DOUTPUT=${out} -DOUTPUT_CREATED=OFF)
+endfunction()
+
+lenslab_cli_bad_scene(sphere_negative_radius "objects[2].radius: must be > 0, got -1")
+lenslab_cli_bad_scene(missing_camera "camera: missing (required)")
+lenslab_cli_bad_scene(unknown_key_typo "objects[0].radiu: unknown key (did you mean 'radius'?)")
+lenslab_cli_bad_scene(unknown_material_name
+    "objects[0].material: unknown material 'glas' (not in materials)")
+lenslab_cli_bad_scene(report_lens_aperture_too_big
+    "objects[0].aperture_radius: two spheres of radius 0.9 cannot meet in a circle of radius 1.2 (must be <= curvature_radius)")
+lenslab_cli_bad_scene(lens_diameter_exceeds_2r
+    "objects[0].front: a sphere R=10 surface cannot span the lens diameter 30 (its largest diameter is 20)")
+lenslab_cli_bad_scene(triangle_emission
+    "objects[0].material: only spheres can emit light (the material has an emission)")
+
+# A syntax error: the reason is nlohmann's text after the position, so check up to there.
+set(syntax_out ${LENSLAB_CLI_OUT}/syntax_trailing_comma.png)
+lenslab_cli_test(NAME render.bad.syntax_trailing_comma
+    ARGS render tests/scene/bad/syntax_trailing_comma.json -o ${syntax_out}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_PREFIX=lenslab: error: tests/scene/bad/syntax_trailing_comma.json: invalid JSON: parse error at line 5, column 3:"
+           -DOUTPUT=${syntax_out} -DOUTPUT_CREATED=OFF)
+
+# `trace` refuses a bad scene the same way.
+lenslab_cli_test(NAME trace.bad.lens_surfaces_cross
+    ARGS trace tests/scene/bad/lens_surfaces_cross.json --origin 0,0,5 --direction 0,0,-1
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_PREFIX=lenslab: error: tests/scene/bad/lens_surfaces_cross.json: objects[0].thickness: the lens surfaces cross inside the diameter")
+
+# A scene path that does not exist: a failure that names it, and no image.
+set(missing_out ${LENSLAB_CLI_OUT}/missing_scene.png)
+lenslab_cli_test(NAME render.missing_scene
+    ARGS render tests/scene/bad/does_not_exist.json -o ${missing_out}
+    CHECKS -DEXPECT_EXIT=nonzero "-DSTDERR_CONTAINS=tests/scene/bad/does_not_exist.json"
+           -DOUTPUT=${missing_out} -DOUTPUT_CREATED=OFF)
+
+# An output name with no known image type is refused before any work.
+set(bad_ext_out ${LENSLAB_CLI_OUT}/image.bmp)
+lenslab_cli_test(NAME render.unknown_image_type
+    ARGS render -o ${bad_ext_out} --width 8 --height 8 --spp 1
+    CHECKS -DEXPECT_EXIT=nonzero "-DSTDERR_CONTAINS=unknown image type"
+           -DOUTPUT=${bad_ext_out} -DOUTPUT_CREATED=OFF)
+
+# The built-in default scene renders and writes a PNG.
+set(default_out ${LENSLAB_CLI_OUT}/default_scene.png)
+lenslab_cli_test(NAME render.default_scene
+    ARGS render -o ${default_out} --width 32 --height 24 --spp 1
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=wrote ${default_out} (32x24, 1 spp"
+           -DOUTPUT=${default_out} -DOUTPUT_CREATED=ON)
+
+# The default scene file renders too (the file, not the compiled-in copy).
+set(default_file_out ${LENSLAB_CLI_OUT}/default_scene_file.png)
+lenslab_cli_test(NAME render.default_scene_file
+    ARGS render scenes/default.json -o ${default_file_out} --width 32 --height 24 --spp 1 -q
+    CHECKS -DEXPECT_EXIT=zero -DOUTPUT=${default_file_out} -DOUTPUT_CREATED=ON)
+
+# `trace` prints one JSON document: a tree whose root is the start and whose nodes have events.
+lenslab_cli_test(NAME trace.default_scene
+    ARGS trace scenes/default.json --origin 0,3,0 --direction 0,-1,0
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=\"event\"" -DSTDOUT_JSON=ON -DJSON_EVENT=start)

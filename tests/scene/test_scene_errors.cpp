@@ -1,0 +1,182 @@
+// Every malformed scene in tests/scene/bad must be refused with one SceneError that names
+// the JSON path of the problem and says why. The table below is the specification: each file
+// has exactly one expectation, and a file without one fails the coverage test.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <ostream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "scene/json_reader.h"
+#include "scene/scene_json.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BadScene {
+    const char* file;    // in tests/scene/bad
+    const char* path;    // JSON path the error must name ("" for a JSON syntax error)
+    const char* reason;  // text the reason must contain
+};
+
+// clang-format off
+const BadScene kBadScenes[] = {
+    // JSON syntax: the reason gives line and column; the path is the file alone.
+    {"syntax_trailing_comma.json", "",
+     "invalid JSON: parse error at line 5, column 3"},
+    // Top level.
+    {"missing_camera.json", "camera", "missing (required)"},
+    {"top_level_typo.json", "object", "unknown key (did you mean 'objects'?)"},
+    {"unsupported_version.json", "version", "this lenslab reads version 1 scene files"},
+    {"objects_not_array.json", "objects", "must be an array"},
+    // Camera.
+    {"fov_out_of_range.json", "camera.fov",
+     "must be between 0 and 180 degrees (exclusive), got 180"},
+    {"camera_look_at_and_direction.json", "camera.direction",
+     "give either look_at or direction, not both"},
+    {"camera_up_parallel.json", "camera.up", "must not be parallel to the view direction"},
+    // Render block.
+    {"render_width_fraction.json", "render.width", "must be a whole number, got 320.5"},
+    {"render_unknown_integrator.json", "render.integrator",
+     "unknown integrator 'path' (known: whitted)"},
+    // Materials.
+    {"unknown_material_name.json", "objects[0].material",
+     "unknown material 'glas' (not in materials)"},
+    {"transparency_plus_specular.json", "materials.half_mirror.specular",
+     "transparency + specular must be at most 1, got 1.2"},
+    {"color_negative.json", "objects[0].material.color", "components must be >= 0"},
+    {"emission_negative_intensity.json", "materials.lamp.emission.intensity",
+     "must be >= 0, got -5"},
+    {"ior_zero.json", "materials.weird.ior", "must be > 0, got 0"},
+    // Spheres and keys.
+    {"sphere_missing_radius.json", "objects[0].radius", "missing (required)"},
+    {"sphere_negative_radius.json", "objects[2].radius", "must be > 0, got -1"},
+    {"unknown_key_typo.json", "objects[0].radiu", "unknown key (did you mean 'radius'?)"},
+    {"wrong_type_string.json", "objects[0].radius", "must be a number, got a string"},
+    {"unknown_object_type.json", "objects[0].type",
+     "unknown object type 'cube' (known: sphere, triangle, lens)"},
+    {"sphere_with_lens_key.json", "objects[0].axis", "not a property of a sphere"},
+    // Triangles.
+    {"triangle_collinear.json", "objects[0].vertices",
+     "the three vertices are collinear (zero area)"},
+    {"triangle_two_vertices.json", "objects[0].vertices", "must be an array of 3 points"},
+    {"triangle_emission.json", "objects[0].material",
+     "only spheres can emit light (the material has an emission)"},
+    // Lenses.
+    {"lens_zero_axis.json", "objects[0].axis", "must be a non-zero vector"},
+    {"lens_surfaces_cross.json", "objects[0].thickness",
+     "the lens surfaces cross inside the diameter"},
+    {"lens_diameter_exceeds_2r.json", "objects[0].front",
+     "a sphere R=10 surface cannot span the lens diameter 30 (its largest diameter is 20)"},
+    {"report_lens_aperture_too_big.json", "objects[0].aperture_radius",
+     "two spheres of radius 0.9 cannot meet in a circle of radius 1.2 "
+     "(must be <= curvature_radius)"},
+    {"lens_mixed_forms.json", "objects[0].thickness",
+     "belongs to the prescription form; the report form (curvature_radius, aperture_radius) "
+     "cannot take it"},
+    {"surface_flat_with_radius.json", "objects[0].back.radius", "a flat surface has no radius"},
+    {"surface_zero_radius.json", "objects[0].front.radius",
+     "must not be 0 (use {\"shape\": \"flat\"} for a plane)"},
+    {"surface_unknown_shape.json", "objects[0].front.shape",
+     "unknown surface shape 'parabola' (known: sphere, flat)"},
+    // Lights.
+    {"unknown_light_type.json", "lights[1].type", "unknown light type 'spot' (known: point, beam)"},
+    {"beam_with_position.json", "lights[0].position", "a beam has an origin, not a position"},
+    {"point_light_zero_power.json", "lights[0].power", "must be > 0, got 0"},
+};
+// clang-format on
+
+// What GoogleTest prints for a parameter (and what ctest lists): the file name.
+void PrintTo(const BadScene& c, std::ostream* os) { *os << c.file; }
+
+std::string bad_dir() { return std::string(LENSLAB_TEST_DATA) + "/scene/bad"; }
+
+class BadSceneFile : public ::testing::TestWithParam<BadScene> {};
+
+TEST_P(BadSceneFile, IsRefusedWithPathAndReason) {
+    const BadScene& c = GetParam();
+    const std::string file = bad_dir() + "/" + c.file;
+    ASSERT_TRUE(fs::is_regular_file(file)) << file << " is in the table but not on disk";
+
+    try {
+        (void)lenslab::load_scene_file(file);
+        FAIL() << c.file << " loaded without an error";
+    } catch (const lenslab::SceneError& e) {
+        const std::string what = e.what();
+        // The path is the file name, then the JSON path (none for a syntax error).
+        const std::string expected_path =
+            std::string(c.path).empty() ? file : file + ": " + c.path;
+        EXPECT_EQ(e.path(), expected_path) << what;
+        EXPECT_NE(e.reason().find(c.reason), std::string::npos)
+            << "reason \"" << e.reason() << "\" lacks \"" << c.reason << "\"";
+        // The whole message reads "FILE: JSON.PATH: REASON", on one line.
+        EXPECT_EQ(what, expected_path + ": " + e.reason());
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    } catch (const std::exception& e) {
+        FAIL() << c.file << " threw a non-SceneError: " << e.what();
+    }
+}
+
+std::string file_stem(const ::testing::TestParamInfo<BadScene>& info) {
+    return fs::path(info.param.file).stem().string();
+}
+
+// Names start with "scene" so that `ctest -R scene` selects them.
+INSTANTIATE_TEST_SUITE_P(scene_errors, BadSceneFile, ::testing::ValuesIn(kBadScenes), file_stem);
+
+// A new bad file without an expectation in the table is an error, and so is a duplicate.
+TEST(scene_errors, EveryBadFileHasOneExpectation) {
+    std::multiset<std::string> in_table;
+    for (const BadScene& c : kBadScenes) in_table.insert(c.file);
+
+    std::vector<std::string> on_disk;
+    for (const auto& entry : fs::directory_iterator(bad_dir())) {
+        if (entry.path().extension() == ".json") on_disk.push_back(entry.path().filename().string());
+    }
+    std::sort(on_disk.begin(), on_disk.end());
+    ASSERT_GE(on_disk.size(), 14u) << "expected at least 14 bad scenes in " << bad_dir();
+
+    for (const std::string& name : on_disk) {
+        EXPECT_EQ(in_table.count(name), 1u)
+            << name << " has " << in_table.count(name)
+            << " expectations in kBadScenes (test_scene_errors.cpp); it needs exactly one";
+    }
+    for (const std::string& name : in_table) {
+        EXPECT_TRUE(std::binary_search(on_disk.begin(), on_disk.end(), name))
+            << name << " is in kBadScenes but not in " << bad_dir();
+    }
+}
+
+// The same texts through parse_scene (no file): the path has no file prefix.
+TEST(scene_errors, ParseSceneNamesThePathWithoutAFile) {
+    try {
+        (void)lenslab::parse_scene(R"({"camera": {"position": [0, 0, 5], "fov": 40,
+                                       "look_at": [0, 0, 0]},
+                                       "objects": [{"type": "sphere", "center": [0, 0, 0],
+                                                    "radius": -1, "material": {}}]})");
+        FAIL() << "a negative radius was accepted";
+    } catch (const lenslab::SceneError& e) {
+        EXPECT_STREQ(e.what(), "objects[0].radius: must be > 0, got -1");
+        EXPECT_EQ(e.path(), "objects[0].radius");
+        EXPECT_EQ(e.reason(), "must be > 0, got -1");
+    }
+}
+
+// A missing file is a SceneError too, naming the file.
+TEST(scene_errors, MissingFileIsASceneError) {
+    const std::string file = bad_dir() + "/no_such_scene.json";
+    try {
+        (void)lenslab::load_scene_file(file);
+        FAIL() << "loading a missing file succeeded";
+    } catch (const lenslab::SceneError& e) {
+        EXPECT_EQ(e.path(), file);
+        EXPECT_NE(e.reason().find("cannot open scene file"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
