@@ -91,8 +91,7 @@ int run(const RenderArgs& a) {
 Action add_render_command(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image (PNG or EXR)");
-    cmd->add_option("scene", args->scene, "Scene file (JSON); omit for the built-in default scene")
-        ->check(CLI::ExistingFile);
+    cmd->add_option("scene", args->scene, "Scene file (JSON); omit for the built-in default scene");
     cmd->add_option("-o,--output", args->output, "Output image: .png (sRGB) or .exr (linear)")
         ->capture_default_str();
     cmd->add_option("--width", args->width, "Image width in pixels (overrides the scene)")

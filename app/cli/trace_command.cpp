@@ -35,7 +35,7 @@ int run(const TraceArgs& a) {
 Action add_trace_command(CLI::App& app) {
     auto args = std::make_shared<TraceArgs>();
     CLI::App* cmd = app.add_subcommand("trace", "Trace one ray and print the tree of its paths as JSON");
-    cmd->add_option("scene", args->scene, "Scene file (JSON)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("scene", args->scene, "Scene file (JSON)")->required();
     cmd->add_option("--origin", args->origin, "Ray origin x,y,z")
         ->required()->delimiter(',')->expected(3);
     cmd->add_option("--direction", args->direction, "Ray direction x,y,z (need not be unit length)")

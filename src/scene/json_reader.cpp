@@ -37,6 +37,103 @@ size_t edit_distance(const std::string& a, const std::string& b) {
 
 }  // namespace
 
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
+    std::string best;
+    size_t best_distance = 3;
+    for (const std::string& c : candidates) {
+        const size_t d = edit_distance(word, c);
+        if (d < best_distance) {
+            best_distance = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+namespace {
+
+// Tracks where the parser is ("objects[2].front") so a duplicated key can be named.
+class DuplicateKeyFinder {
+public:
+    bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        using E = nlohmann::json::parse_event_t;
+        switch (event) {
+            case E::object_start:
+            case E::array_start:
+                count_element();
+                m_frames.push_back({event == E::array_start, -1, {}, {}});
+                break;
+            case E::object_end:
+            case E::array_end:
+                m_frames.pop_back();
+                break;
+            case E::key: {
+                Frame& top = m_frames.back();
+                top.key = parsed.get<std::string>();
+                if (!top.keys.insert(top.key).second && m_duplicate.empty()) {
+                    m_duplicate = current_path();
+                }
+                break;
+            }
+            case E::value:
+                count_element();
+                break;
+        }
+        return true;
+    }
+    const std::string& duplicate() const { return m_duplicate; }
+
+private:
+    struct Frame {
+        bool array;
+        int index;
+        std::string key;
+        std::set<std::string> keys;
+    };
+    void count_element() {
+        if (!m_frames.empty() && m_frames.back().array) ++m_frames.back().index;
+    }
+    std::string current_path() const {
+        std::string path;
+        for (const Frame& f : m_frames) {
+            if (f.array) {
+                path += "[" + std::to_string(f.index) + "]";
+            } else {
+                path += (path.empty() ? "" : ".") + f.key;
+            }
+        }
+        return path;
+    }
+
+    std::vector<Frame> m_frames;
+    std::string m_duplicate;
+};
+
+// nlohmann's messages read "[json.exception.parse_error.101] parse error at line 3,
+// column 5: ..."; keep the part after the tag.
+std::string without_tag(const std::string& what) {
+    const size_t tag_end = what.find("] ");
+    return tag_end == std::string::npos ? what : what.substr(tag_end + 2);
+}
+
+}  // namespace
+
+nlohmann::json parse_json_strict(const std::string& text, const std::string& source) {
+    DuplicateKeyFinder finder;
+    nlohmann::json root;
+    try {
+        root = nlohmann::json::parse(text, std::ref(finder));
+    } catch (const nlohmann::json::parse_error& e) {
+        throw SceneError(source, "invalid JSON: " + without_tag(e.what()));
+    } catch (const nlohmann::json::exception& e) {
+        throw SceneError(source, "invalid JSON: " + without_tag(e.what()));
+    }
+    if (!finder.duplicate().empty()) {
+        throw SceneError(finder.duplicate(), "key given twice in the same object");
+    }
+    return root;
+}
+
 std::string format_number(double v) {
     std::ostringstream s;
     s.precision(10);
@@ -53,15 +150,8 @@ JsonObjectReader::JsonObjectReader(const nlohmann::json& value, std::string path
     for (const auto& [key, unused] : m_value.items()) {
         if (m_allowed.count(key)) continue;
         std::string reason = "unknown key";
-        std::string best;
-        size_t best_distance = 3;  // suggest only close spellings
-        for (const std::string& known : m_allowed) {
-            const size_t d = edit_distance(key, known);
-            if (d < best_distance) {
-                best_distance = d;
-                best = known;
-            }
-        }
+        const std::string best =
+            closest_match(key, std::vector<std::string>(m_allowed.begin(), m_allowed.end()));
         if (!best.empty()) reason += " (did you mean '" + best + "'?)";
         throw SceneError(child_path(key), reason);
     }
@@ -106,18 +196,24 @@ Vec3 JsonObjectReader::as_vec3(const nlohmann::json& v, const std::string& path)
     return out;
 }
 
-Rgb JsonObjectReader::as_color(const nlohmann::json& v, const std::string& path) {
-    Rgb c;
-    if (v.is_number()) {
-        c = Rgb::grey(as_number(v, path));
-    } else if (v.is_array() && v.size() == 3) {
-        c = {as_number(v[0], path + "[0]"), as_number(v[1], path + "[1]"),
-             as_number(v[2], path + "[2]")};
-    } else {
-        throw SceneError(path, std::string("must be a number or [r, g, b], got ") + type_name(v));
+Rgb JsonObjectReader::as_color(const nlohmann::json& v, const std::string& path,
+                               double max_component) {
+    auto component = [&](const nlohmann::json& value, const std::string& where) {
+        const double c = as_number(value, where);
+        if (c < 0) throw SceneError(where, "must be >= 0, got " + format_number(c));
+        if (c > max_component) {
+            throw SceneError(where, "must be <= " + format_number(max_component) +
+                                        " (a surface cannot reflect more than it receives), got " +
+                                        format_number(c));
+        }
+        return c;
+    };
+    if (v.is_number()) return Rgb::grey(component(v, path));
+    if (v.is_array() && v.size() == 3) {
+        return {component(v[0], path + "[0]"), component(v[1], path + "[1]"),
+                component(v[2], path + "[2]")};
     }
-    if (c.r < 0 || c.g < 0 || c.b < 0) throw SceneError(path, "components must be >= 0");
-    return c;
+    throw SceneError(path, std::string("must be a number or [r, g, b], got ") + type_name(v));
 }
 
 double JsonObjectReader::number(const std::string& key) {
@@ -182,6 +278,11 @@ Vec3 JsonObjectReader::direction(const std::string& key, const Vec3& fallback) {
 Rgb JsonObjectReader::color(const std::string& key, const Rgb& fallback) {
     const nlohmann::json* v = find(key);
     return v ? as_color(*v, child_path(key)) : fallback;
+}
+
+Rgb JsonObjectReader::albedo(const std::string& key, const Rgb& fallback) {
+    const nlohmann::json* v = find(key);
+    return v ? as_color(*v, child_path(key), 1.0) : fallback;
 }
 
 double JsonObjectReader::fraction(const std::string& key, double fallback) {

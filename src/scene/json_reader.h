@@ -2,10 +2,12 @@
 // Reads one JSON object while remembering where it is ("objects[2].front"), so every error
 // names the exact path, and refuses keys nobody asked for, so typos never pass silently.
 
+#include <cmath>
 #include <initializer_list>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -30,6 +32,15 @@ private:
 
 // Formats a number for messages the way a user typed it: 5, -1, 0.25.
 std::string format_number(double v);
+
+// Parses JSON text, refusing what nlohmann would accept silently: a key given twice in one
+// object (the first value would be lost). Throws SceneError with path `source` for syntax
+// errors and numbers out of range, and with the JSON path of a duplicated key.
+nlohmann::json parse_json_strict(const std::string& text, const std::string& source);
+
+// The candidate spelled most like `word` (at most 2 edits away), or "" if none is close:
+// for "did you mean" hints.
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
 
 class JsonObjectReader {
 public:
@@ -58,12 +69,15 @@ public:
     Vec3 direction(const std::string& key, const Vec3& fallback);
     // A colour: a number (grey) or [r, g, b], each >= 0 and finite.
     Rgb color(const std::string& key, const Rgb& fallback);
+    // A reflectance colour: as `color`, each component also <= 1 (energy conservation).
+    Rgb albedo(const std::string& key, const Rgb& fallback);
     double fraction(const std::string& key, double fallback);  // in [0, 1]
 
     // Helpers for values that are not members of an object reader.
     static double as_number(const nlohmann::json& v, const std::string& path);
     static Vec3 as_vec3(const nlohmann::json& v, const std::string& path);
-    static Rgb as_color(const nlohmann::json& v, const std::string& path);
+    static Rgb as_color(const nlohmann::json& v, const std::string& path,
+                        double max_component = INFINITY);
 
 private:
     const nlohmann::json& m_value;

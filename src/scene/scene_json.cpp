@@ -27,6 +27,9 @@ std::string index_path(const std::string& base, size_t i) {
 void read_camera(const json& j, CameraSettings& cam) {
     JsonObjectReader r(j, "camera", {"position", "look_at", "direction", "up", "fov"});
     cam.position = r.vec3("position");
+    if (!r.has("look_at") && !r.has("direction")) {
+        throw SceneError("camera", "give look_at (a point) or direction (a vector)");
+    }
     if (r.has("look_at") && r.has("direction")) {
         throw SceneError("camera.direction", "give either look_at or direction, not both");
     }
@@ -72,7 +75,7 @@ Material read_material(const json& j, const std::string& path, const std::string
     JsonObjectReader r(j, path, {"color", "transparency", "specular", "ior", "emission"});
     Material m;
     m.name = name;
-    m.color = r.color("color", m.color);
+    m.color = r.albedo("color", m.color);
     m.transparency = r.fraction("transparency", m.transparency);
     m.specular = r.fraction("specular", m.specular);
     if (m.transparency + m.specular > 1.0 + 1e-12) {
@@ -127,7 +130,15 @@ std::shared_ptr<const Shape> read_lens(JsonObjectReader& r) {
     const Vec3 centre = r.vec3("center");
     const Vec3 axis = r.direction("axis");
     LensPrescription p;
-    if (r.has("curvature_radius") || r.has("aperture_radius")) {
+    const bool report_form = r.has("curvature_radius") || r.has("aperture_radius");
+    const bool prescription_form =
+        r.has("thickness") || r.has("diameter") || r.has("front") || r.has("back");
+    if (!report_form && !prescription_form) {
+        throw SceneError(r.path(),
+                         "a lens needs either curvature_radius and aperture_radius (the report's "
+                         "form) or thickness, diameter, front and back (a prescription)");
+    }
+    if (report_form) {
         for (const char* key : {"thickness", "diameter", "front", "back"}) {
             if (r.has(key)) {
                 throw SceneError(r.child_path(key),
@@ -190,8 +201,10 @@ SceneObject read_object(const json& j, const std::string& path,
         }
         Vec3 p[3];
         for (int i = 0; i < 3; ++i) p[i] = JsonObjectReader::as_vec3(v[i], index_path(vpath, i));
-        const double area2 = length(cross(p[1] - p[0], p[2] - p[0]));
-        if (!(area2 > 1e-12 * std::max(1.0, length_squared(p[1] - p[0])))) {
+        // Relative to the edges, so tiny triangles in a large-unit scene are fine: the sine
+        // of the angle at vertex 0 must not vanish.
+        const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
+        if (!(length(cross(e1, e2)) > 1e-10 * length(e1) * length(e2))) {
             throw SceneError(vpath, "the three vertices are collinear (zero area)");
         }
         o.shape = std::make_shared<Triangle>(p[0], p[1], p[2]);
@@ -206,10 +219,15 @@ SceneObject read_object(const json& j, const std::string& path,
 
     const json& m = r.require("material");
     if (m.is_string()) {
-        const auto it = materials.find(m.get<std::string>());
+        const std::string name = m.get<std::string>();
+        const auto it = materials.find(name);
         if (it == materials.end()) {
+            std::vector<std::string> names;
+            for (const auto& [known, index] : materials) names.push_back(known);
+            const std::string best = closest_match(name, names);
             throw SceneError(r.child_path("material"),
-                             "unknown material '" + m.get<std::string>() + "' (not in materials)");
+                             "unknown material '" + name + "' (not in materials" +
+                                 (best.empty() ? "" : "; did you mean '" + best + "'?") + ")");
         }
         o.material = it->second;
     } else {
@@ -252,24 +270,11 @@ void read_light(const json& j, const std::string& path, Scene& scene) {
     }
 }
 
-// nlohmann's parse errors read "[json.exception.parse_error.101] parse error at line 3,
-// column 5: ..."; keep the part after the tag.
-std::string syntax_message(const json::parse_error& e) {
-    std::string what = e.what();
-    const size_t tag_end = what.find("] ");
-    if (tag_end != std::string::npos) what = what.substr(tag_end + 2);
-    return "invalid JSON: " + what;
-}
-
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& source) {
-    json root;
-    try {
-        root = json::parse(text);
-    } catch (const json::parse_error& e) {
-        throw SceneError(source, syntax_message(e));
-    }
+    const json root = parse_json_strict(text, source);
+    if (!root.is_object()) throw SceneError(source, "the top level must be a JSON object { ... }");
     JsonObjectReader r(root, "",
                        {"version", "description", "camera", "render", "materials", "objects",
                         "lights"});
@@ -306,7 +311,7 @@ Scene load_scene_file(const std::string& path) {
         return parse_scene(text.str(), path);
     } catch (const SceneError& e) {
         // Prefix the file name so the message says where, whatever the JSON path.
-        if (e.path() == path) throw;
+        if (e.path() == path || e.path().empty()) throw SceneError(path, e.reason());
         throw SceneError(path + ": " + e.path(), e.reason());
     }
 }

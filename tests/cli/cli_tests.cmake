@@ -36,8 +36,13 @@ endfunction()
 lenslab_cli_bad_scene(sphere_negative_radius "objects[2].radius: must be > 0, got -1")
 lenslab_cli_bad_scene(missing_camera "camera: missing (required)")
 lenslab_cli_bad_scene(unknown_key_typo "objects[0].radiu: unknown key (did you mean 'radius'?)")
-lenslab_cli_bad_scene(unknown_material_name
-    "objects[0].material: unknown material 'glas' (not in materials)")
+# (A ';' cannot pass through a CMake argument list, so the did-you-mean tail is checked in
+# test_scene_errors.cpp.)
+lenslab_cli_test(NAME render.bad.unknown_material_name
+    ARGS render tests/scene/bad/unknown_material_name.json -o ${LENSLAB_CLI_OUT}/unknown_material_name.png
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_PREFIX=lenslab: error: tests/scene/bad/unknown_material_name.json: objects[0].material: unknown material 'glas' (not in materials"
+           -DOUTPUT=${LENSLAB_CLI_OUT}/unknown_material_name.png -DOUTPUT_CREATED=OFF)
 lenslab_cli_bad_scene(report_lens_aperture_too_big
     "objects[0].aperture_radius: two spheres of radius 0.9 cannot meet in a circle of radius 1.2 (must be <= curvature_radius)")
 lenslab_cli_bad_scene(lens_diameter_exceeds_2r

@@ -29,6 +29,9 @@ const BadScene kBadScenes[] = {
     // JSON syntax: the reason gives line and column; the path is the file alone.
     {"syntax_trailing_comma.json", "",
      "invalid JSON: parse error at line 5, column 3"},
+    {"number_overflow.json", "", "invalid JSON: number overflow parsing '1e400'"},
+    {"duplicate_key.json", "objects[1].radius", "key given twice in the same object"},
+    {"top_level_array.json", "", "the top level must be a JSON object"},
     // Top level.
     {"missing_camera.json", "camera", "missing (required)"},
     {"top_level_typo.json", "object", "unknown key (did you mean 'objects'?)"},
@@ -39,6 +42,7 @@ const BadScene kBadScenes[] = {
      "must be between 0 and 180 degrees (exclusive), got 180"},
     {"camera_look_at_and_direction.json", "camera.direction",
      "give either look_at or direction, not both"},
+    {"camera_no_direction.json", "camera", "give look_at (a point) or direction (a vector)"},
     {"camera_up_parallel.json", "camera.up", "must not be parallel to the view direction"},
     // Render block.
     {"render_width_fraction.json", "render.width", "must be a whole number, got 320.5"},
@@ -46,10 +50,12 @@ const BadScene kBadScenes[] = {
      "unknown integrator 'path' (known: whitted)"},
     // Materials.
     {"unknown_material_name.json", "objects[0].material",
-     "unknown material 'glas' (not in materials)"},
+     "unknown material 'glas' (not in materials; did you mean 'glass'?)"},
     {"transparency_plus_specular.json", "materials.half_mirror.specular",
      "transparency + specular must be at most 1, got 1.2"},
-    {"color_negative.json", "objects[0].material.color", "components must be >= 0"},
+    {"color_negative.json", "objects[0].material.color[1]", "must be >= 0, got -0.1"},
+    {"albedo_above_one.json", "materials.glowing_paint.color[1]",
+     "must be <= 1 (a surface cannot reflect more than it receives), got 1.5"},
     {"emission_negative_intensity.json", "materials.lamp.emission.intensity",
      "must be >= 0, got -5"},
     {"ior_zero.json", "materials.weird.ior", "must be > 0, got 0"},
@@ -70,7 +76,12 @@ const BadScene kBadScenes[] = {
     // Lenses.
     {"lens_zero_axis.json", "objects[0].axis", "must be a non-zero vector"},
     {"lens_surfaces_cross.json", "objects[0].thickness",
-     "the lens surfaces cross inside the diameter"},
+     "the lens surfaces cross inside the diameter: at 5 from the axis the back surface lies "
+     "2.179491924 in front of the front surface; the centre thickness must be at least "
+     "2.679491924 for diameter 10"},
+    {"lens_no_form.json", "objects[0]",
+     "a lens needs either curvature_radius and aperture_radius (the report's form) or "
+     "thickness, diameter, front and back (a prescription)"},
     {"lens_diameter_exceeds_2r.json", "objects[0].front",
      "a sphere R=10 surface cannot span the lens diameter 30 (its largest diameter is 20)"},
     {"report_lens_aperture_too_big.json", "objects[0].aperture_radius",

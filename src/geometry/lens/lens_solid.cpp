@@ -25,6 +25,7 @@ LensSolid::LensSolid(LensPrescription p) : m_p(std::move(p)), m_frame(Frame::fro
 
 std::optional<LensSolid::Problem> LensSolid::check_prescription(const LensPrescription& p) {
     std::ostringstream msg;
+    msg.precision(10);
     if (!(p.thickness > 0)) {
         msg << "must be > 0, got " << p.thickness;
         return Problem{"thickness", msg.str()};
@@ -44,15 +45,22 @@ std::optional<LensSolid::Problem> LensSolid::check_prescription(const LensPrescr
     }
     // The gap may close to exactly zero at the rim (a knife edge) but must not go negative.
     const double tolerance = 1e-12 * std::max(1.0, p.thickness);
+    double worst_gap = 0.0, worst_r = 0.0;
     for (int i = 0; i <= kGapSamples; ++i) {
         const double r = a * i / kGapSamples;
         const double gap = gap_at(p, r);
-        if (gap < -tolerance) {
-            msg << "the lens surfaces cross inside the diameter: at " << r
-                << " from the axis the back surface lies " << -gap
-                << " in front of the front surface (increase thickness or reduce diameter)";
-            return Problem{"thickness", msg.str()};
+        if (gap < worst_gap) {
+            worst_gap = gap;
+            worst_r = r;
         }
+    }
+    if (worst_gap < -tolerance) {
+        msg << "the lens surfaces cross inside the diameter: at " << worst_r
+            << " from the axis the back surface lies " << -worst_gap
+            << " in front of the front surface; the centre thickness must be at least "
+            << p.thickness - worst_gap << " for diameter " << p.diameter
+            << " (or reduce the diameter)";
+        return Problem{"thickness", msg.str()};
     }
     return std::nullopt;
 }
