@@ -2,6 +2,7 @@
 
 #include <iostream>
 #include <memory>
+#include <regex>
 
 #include "analysis/ray_tree.h"
 #include "commands.h"
@@ -26,7 +27,9 @@ int run(const TraceArgs& a) {
     const Scene scene = load_scene_file(a.scene);
     const Ray ray{{a.origin[0], a.origin[1], a.origin[2]}, normalize(d)};
     const RayTree tree = trace_ray_tree(scene, ray, a.options);
-    std::cout << to_json(scene, tree).dump(2) << "\n";
+    // Points and directions on one line each, so a tree reads segment by segment.
+    static const std::regex triple(R"(\[\s*([^,\[\]\s]+),\s*([^,\[\]\s]+),\s*([^,\[\]\s]+)\s*\])");
+    std::cout << std::regex_replace(to_json(scene, tree).dump(2), triple, "[$1, $2, $3]") << "\n";
     return 0;
 }
 

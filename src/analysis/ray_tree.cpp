@@ -54,19 +54,21 @@ private:
     RayTree& m_tree;
 };
 
-nlohmann::json vec_json(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+using Json = nlohmann::ordered_json;
 
-nlohmann::json node_json(const Scene& scene, const RayTreeNode& node) {
-    nlohmann::json j;
+Json vec_json(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
+
+Json node_json(const Scene& scene, const RayTreeNode& node) {
+    Json j;
     j["from"] = vec_json(node.from);
-    j["to"] = node.to ? vec_json(*node.to) : nlohmann::json(nullptr);
-    j["object"] = node.object >= 0 ? nlohmann::json(scene.objects[node.object].name) : nlohmann::json(nullptr);
+    j["to"] = node.to ? vec_json(*node.to) : Json(nullptr);
+    j["object"] = node.object >= 0 ? Json(scene.objects[node.object].name) : Json(nullptr);
     if (node.object >= 0) j["object_index"] = node.object;
     j["event"] = node.event ? event_name(*node.event) : "start";
     j["weight"] = node.weight;
     j["direction"] = vec_json(node.direction);
     if (node.truncated) j["truncated"] = true;
-    j["children"] = nlohmann::json::array();
+    j["children"] = Json::array();
     for (const RayTreeNode& c : node.children) j["children"].push_back(node_json(scene, c));
     return j;
 }
@@ -88,8 +90,8 @@ RayTree trace_ray_tree(const Scene& scene, const Ray& ray, const RayTreeOptions&
     return tree;
 }
 
-nlohmann::json to_json(const Scene& scene, const RayTree& tree) {
-    nlohmann::json j;
+nlohmann::ordered_json to_json(const Scene& scene, const RayTree& tree) {
+    Json j;
     j["tree"] = node_json(scene, tree.root);
     j["summary"] = {{"escaped", tree.escaped}, {"absorbed", tree.absorbed}, {"truncated", tree.truncated}};
     return j;

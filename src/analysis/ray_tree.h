@@ -41,6 +41,7 @@ struct RayTree {
 
 RayTree trace_ray_tree(const Scene& scene, const Ray& ray, const RayTreeOptions& options);
 
-nlohmann::json to_json(const Scene& scene, const RayTree& tree);
+// Keys keep the documented order (from, to, object, event, weight, direction, children).
+nlohmann::ordered_json to_json(const Scene& scene, const RayTree& tree);
 
 }  // namespace lenslab

@@ -1,1 +1,108 @@
+// Reading valid scenes: defaults, both material forms, both lens forms, the example scenes
+// and every complete scene shown in docs/scene-format.md.
+
 #include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "geometry/lens/lens_solid.h"
+#include "scene/json_reader.h"
+#include "scene/scene_json.h"
+
+namespace lenslab {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_file(const fs::path& p) {
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+TEST(SceneJson, MinimalSceneGetsTheDocumentedDefaults) {
+    const Scene s = parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}})");
+    EXPECT_EQ(s.render.width, 640);
+    EXPECT_EQ(s.render.height, 480);
+    EXPECT_EQ(s.render.spp, 4);
+    EXPECT_EQ(s.render.max_depth, 8);
+    EXPECT_EQ(s.render.integrator, "whitted");
+    EXPECT_DOUBLE_EQ(s.camera.fov_deg, 40.0);
+    EXPECT_NEAR(s.camera.direction.z, -1.0, 1e-15);
+    EXPECT_TRUE(s.objects.empty());
+}
+
+TEST(SceneJson, NamedAndInlineMaterials) {
+    const Scene s = parse_scene(R"({
+      "camera": {"position": [0, 0, 5], "direction": [0, 0, -2]},
+      "materials": {"glass": {"transparency": 1, "ior": 1.52}},
+      "objects": [
+        {"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "glass"},
+        {"name": "red", "type": "sphere", "center": [3, 0, 0], "radius": 1,
+         "material": {"color": [0.9, 0.1, 0.1], "specular": 0.2}}
+      ]})");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_DOUBLE_EQ(s.material_of(0).ior, 1.52);
+    EXPECT_EQ(s.objects[0].name, "objects[0]");
+    EXPECT_EQ(s.objects[1].name, "red");
+    EXPECT_DOUBLE_EQ(s.material_of(1).color.r, 0.9);
+    EXPECT_DOUBLE_EQ(s.material_of(1).diffuse_weight(), 0.8);
+}
+
+TEST(SceneJson, ReportLensEqualsItsPrescription) {
+    // curvature_radius 1, aperture_radius 0.6 is the prescription R1 = 1, R2 = -1,
+    // thickness 2 (1 - sqrt(1 - 0.36)) = 0.4, diameter 1.2.
+    const Scene s = parse_scene(R"({
+      "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+      "objects": [
+        {"type": "lens", "center": [0, 0, 0], "axis": [0, 0, 1], "curvature_radius": 1,
+         "aperture_radius": 0.6, "material": {"transparency": 1}},
+        {"type": "lens", "center": [0, 0, 0], "axis": [0, 0, 1], "thickness": 0.4, "diameter": 1.2,
+         "front": {"shape": "sphere", "radius": 1}, "back": {"shape": "sphere", "radius": -1},
+         "material": {"transparency": 1}}
+      ]})");
+    const auto& a = static_cast<const LensSolid&>(*s.objects[0].shape);
+    const auto& b = static_cast<const LensSolid&>(*s.objects[1].shape);
+    EXPECT_NEAR(a.prescription().thickness, b.prescription().thickness, 1e-12);
+    EXPECT_NEAR(a.prescription().diameter, b.prescription().diameter, 1e-15);
+    for (double r = 0; r <= 0.6; r += 0.05) EXPECT_NEAR(a.front_z(r), b.front_z(r), 1e-12);
+}
+
+TEST(SceneJson, CompiledInDefaultSceneIsScenesDefaultJson) {
+    EXPECT_EQ(default_scene_text(), read_file(fs::path(LENSLAB_SOURCE_DIR) / "scenes/default.json"));
+}
+
+TEST(SceneJson, EveryExampleSceneLoads) {
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(fs::path(LENSLAB_SOURCE_DIR) / "scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        SCOPED_TRACE(entry.path().string());
+        EXPECT_NO_THROW(load_scene_file(entry.path().string()));
+        ++count;
+    }
+    EXPECT_GE(count, 3);
+}
+
+// Every complete scene (a JSON block with a camera) in the format reference must load, so
+// the documentation cannot drift from the reader.
+TEST(SceneJson, DocumentedExamplesLoad) {
+    const std::string doc = read_file(fs::path(LENSLAB_SOURCE_DIR) / "docs/scene-format.md");
+    const std::regex block("```json\\n([\\s\\S]*?)```");
+    int complete = 0;
+    for (std::sregex_iterator it(doc.begin(), doc.end(), block), end; it != end; ++it) {
+        const std::string text = (*it)[1].str();
+        nlohmann::json j;
+        ASSERT_NO_THROW(j = nlohmann::json::parse(text)) << text;
+        if (!j.is_object() || !j.contains("camera")) continue;
+        EXPECT_NO_THROW(parse_scene(text)) << text;
+        ++complete;
+    }
+    EXPECT_GE(complete, 2);
+}
+
+}  // namespace
+}  // namespace lenslab
