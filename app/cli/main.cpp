@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "render/image_io.h"
+#include "render/photon_tracer.h"
 #include "scene/json_reader.h"
 
 int main(int argc, char** argv) {
@@ -22,6 +23,9 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("render")) return render();
         if (app.got_subcommand("trace")) return trace();
     } catch (const lenslab::SceneError& e) {
+        std::cerr << "lenslab: error: " << e.what() << "\n";
+        return 1;
+    } catch (const lenslab::ResourceError& e) {
         std::cerr << "lenslab: error: " << e.what() << "\n";
         return 1;
     } catch (const lenslab::ImageError& e) {

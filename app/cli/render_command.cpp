@@ -22,6 +22,10 @@ struct RenderArgs {
     std::string output = "lenslab.png";
     int width = 0, height = 0, spp = 0, max_depth = -1, threads = 0;
     int64_t seed = -1;
+    std::string integrator, filter;
+    int64_t photons = 0;
+    double radius = 0, filter_k = 0;
+    int max_photons_per_estimate = 0;
     double exposure = 0.0;
     bool quiet = false;
 };
@@ -64,6 +68,12 @@ int run(const RenderArgs& a) {
     if (a.spp > 0) s.spp = a.spp;
     if (a.max_depth >= 0) s.max_depth = a.max_depth;
     if (a.seed >= 0) s.seed = static_cast<uint64_t>(a.seed);
+    if (!a.integrator.empty()) s.integrator = a.integrator;
+    if (a.photons > 0) s.photons = a.photons;
+    if (a.radius > 0) s.radius = a.radius;
+    if (!a.filter.empty()) s.filter = a.filter;
+    if (a.filter_k > 0) s.filter_k = a.filter_k;
+    if (a.max_photons_per_estimate > 0) s.max_photons_per_estimate = a.max_photons_per_estimate;
 
     const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
     const std::string label = "rendering " + std::to_string(s.width) + "x" +
@@ -79,6 +89,14 @@ int run(const RenderArgs& a) {
     if (result.cancelled) {
         std::cerr << "\nlenslab: render cancelled; nothing written\n";
         return 130;
+    }
+    if (result.photons && !a.quiet) {
+        const PhotonTracingStats& p = *result.photons;
+        std::fprintf(stderr,
+                     "photons: %lld emitted, %zu direct + %zu caustic stored (%.1f MiB), traced in "
+                     "%.3f s, maps built in %.3f s\n",
+                     static_cast<long long>(p.emitted), p.direct, p.caustic,
+                     p.memory_bytes / (1024.0 * 1024.0), p.trace_seconds, p.build_seconds);
     }
     write_image(result.film, a.output, a.exposure);
     std::printf("wrote %s (%dx%d, %d spp, %.2f s)\n", a.output.c_str(), s.width, s.height, s.spp,
@@ -109,6 +127,19 @@ Action add_render_command(CLI::App& app) {
     cmd->add_option("--exposure", args->exposure, "Exposure in stops applied before writing")
         ->capture_default_str();
     cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
+    cmd->add_option("--integrator", args->integrator, "whitted or photon_map (overrides the scene)")
+        ->check(CLI::IsMember({"whitted", "photon_map"}));
+    cmd->add_option("--photons", args->photons, "Photons emitted per light (photon_map)")
+        ->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
+    cmd->add_option("--radius", args->radius, "Photon gather radius (photon_map)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--filter", args->filter, "Photon filter: cone, gaussian or box")
+        ->check(CLI::IsMember({"cone", "gaussian", "box"}));
+    cmd->add_option("--filter-k", args->filter_k, "Cone filter constant k >= 1")
+        ->check(CLI::Range(1.0, 1e9));
+    cmd->add_option("--max-photons-per-estimate", args->max_photons_per_estimate,
+                    "Cap on the photons one radiance estimate gathers")
+        ->check(CLI::Range(1, 1000000));
     return [args] { return run(*args); };
 }
 

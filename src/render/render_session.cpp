@@ -7,6 +7,7 @@
 #include <tbb/task_arena.h>
 
 #include "render/camera.h"
+#include "render/integrators/photon_map.h"
 #include "render/integrators/whitted.h"
 
 namespace lenslab {
@@ -15,6 +16,7 @@ namespace {
 
 std::unique_ptr<Integrator> make_integrator(const Scene& scene) {
     if (scene.render.integrator == "whitted") return std::make_unique<WhittedIntegrator>(scene);
+    if (scene.render.integrator == "photon_map") return std::make_unique<PhotonMapIntegrator>(scene);
     throw std::invalid_argument("unknown integrator '" + scene.render.integrator + "'");
 }
 
@@ -28,6 +30,9 @@ RenderResult render_scene(const Scene& scene, RenderControl& control, int thread
     auto integrator = make_integrator(scene);
     tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
     arena.execute([&] { integrator->render(scene, camera, result.film, control); });
+    if (const auto* pm = dynamic_cast<const PhotonMapIntegrator*>(integrator.get())) {
+        result.photons = pm->photon_stats();
+    }
     result.cancelled = control.cancelled();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

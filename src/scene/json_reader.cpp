@@ -235,19 +235,31 @@ double JsonObjectReader::positive(const std::string& key, double fallback) {
     return has(key) ? positive(key) : fallback;
 }
 
-int JsonObjectReader::integer(const std::string& key, int fallback, int min_value, int max_value) {
+int64_t JsonObjectReader::integer(const std::string& key, int64_t fallback, int64_t min_value,
+                                  int64_t max_value) {
     const nlohmann::json* v = find(key);
     if (!v) return fallback;
     const double d = as_number(*v, child_path(key));
     if (d != std::floor(d)) {
         throw SceneError(child_path(key), "must be a whole number, got " + format_number(d));
     }
-    if (d < min_value || d > max_value) {
+    if (d < static_cast<double>(min_value) || d > static_cast<double>(max_value)) {
         throw SceneError(child_path(key), "must be between " + std::to_string(min_value) +
                                               " and " + std::to_string(max_value) + ", got " +
                                               format_number(d));
     }
-    return static_cast<int>(d);
+    return static_cast<int64_t>(d);
+}
+
+std::string JsonObjectReader::choice(const std::string& key, const std::string& fallback,
+                                     std::initializer_list<const char*> choices) {
+    const std::string v = string(key, fallback);
+    std::string known;
+    for (const char* c : choices) {
+        if (v == c) return v;
+        known += (known.empty() ? "" : ", ") + std::string(c);
+    }
+    throw SceneError(child_path(key), "unknown " + key + " '" + v + "' (known: " + known + ")");
 }
 
 std::string JsonObjectReader::string(const std::string& key) {

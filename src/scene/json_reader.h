@@ -61,7 +61,10 @@ public:
     double number(const std::string& key, double fallback);
     double positive(const std::string& key);  // > 0
     double positive(const std::string& key, double fallback);
-    int integer(const std::string& key, int fallback, int min_value, int max_value);
+    int64_t integer(const std::string& key, int64_t fallback, int64_t min_value, int64_t max_value);
+    // A string that must be one of `choices` (the message lists them).
+    std::string choice(const std::string& key, const std::string& fallback,
+                       std::initializer_list<const char*> choices);
     std::string string(const std::string& key);
     std::string string(const std::string& key, const std::string& fallback);
     Vec3 vec3(const std::string& key);

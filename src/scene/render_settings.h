@@ -18,7 +18,15 @@ struct RenderSettings {
     Rgb background{0, 0, 0};  // radiance of rays that leave the scene
     int light_samples = 1;  // shadow rays per area light per camera sample
     double min_weight = 1e-4;  // specular branches carrying less are not followed
-    std::string integrator = "whitted";
+    std::string integrator = "whitted";  // whitted | photon_map
+
+    // Photon mapping (integrator photon_map).
+    int64_t photons = 200000;            // photons emitted per light
+    double radius = 0;                   // gather radius; 0 = auto (0.5% of the scene's diagonal)
+    std::string filter = "cone";         // cone | gaussian | box
+    double filter_k = 1.1;               // cone filter constant k >= 1
+    int max_photons_per_estimate = 500;  // cap on the photons one estimate gathers
+    std::string direct = "shadow_rays";  // shadow_rays | photon_map
 };
 
 }  // namespace lenslab

@@ -54,21 +54,29 @@ void read_camera(const json& j, CameraSettings& cam) {
 void read_render(const json& j, RenderSettings& s) {
     JsonObjectReader r(j, "render",
                        {"width", "height", "spp", "max_depth", "seed", "ambient", "background",
-                        "light_samples", "min_weight", "integrator"});
-    s.width = r.integer("width", s.width, 1, 16384);
-    s.height = r.integer("height", s.height, 1, 16384);
-    s.spp = r.integer("spp", s.spp, 1, 1 << 20);
-    s.max_depth = r.integer("max_depth", s.max_depth, 0, 1000);
-    s.seed = static_cast<uint64_t>(r.integer("seed", static_cast<int>(s.seed), 0, 2147483647));
+                        "light_samples", "min_weight", "integrator", "photons", "radius",
+                        "filter", "filter_k", "max_photons_per_estimate", "direct"});
+    s.width = static_cast<int>(r.integer("width", s.width, 1, 16384));
+    s.height = static_cast<int>(r.integer("height", s.height, 1, 16384));
+    s.spp = static_cast<int>(r.integer("spp", s.spp, 1, 1 << 20));
+    s.max_depth = static_cast<int>(r.integer("max_depth", s.max_depth, 0, 1000));
+    s.seed = static_cast<uint64_t>(r.integer("seed", static_cast<int64_t>(s.seed), 0, 2147483647));
     s.ambient = r.color("ambient", s.ambient);
     s.background = r.color("background", s.background);
-    s.light_samples = r.integer("light_samples", s.light_samples, 1, 4096);
+    s.light_samples = static_cast<int>(r.integer("light_samples", s.light_samples, 1, 4096));
     s.min_weight = r.fraction("min_weight", s.min_weight);
-    s.integrator = r.string("integrator", s.integrator);
-    if (s.integrator != "whitted") {
-        throw SceneError("render.integrator", "unknown integrator '" + s.integrator +
-                                                  "' (known: whitted)");
+    s.integrator = r.choice("integrator", s.integrator, {"whitted", "photon_map"});
+    s.photons = r.integer("photons", s.photons, 1, int64_t{1} << 40);
+    s.radius = r.positive("radius", s.radius);
+    s.filter = r.choice("filter", s.filter, {"cone", "gaussian", "box"});
+    s.filter_k = r.number("filter_k", s.filter_k);
+    if (!(s.filter_k >= 1.0)) {
+        throw SceneError("render.filter_k", "must be >= 1 (the cone reaches zero at k r), got " +
+                                                format_number(s.filter_k));
     }
+    s.max_photons_per_estimate = static_cast<int>(
+        r.integer("max_photons_per_estimate", s.max_photons_per_estimate, 1, 1000000));
+    s.direct = r.choice("direct", s.direct, {"shadow_rays", "photon_map"});
 }
 
 Material read_material(const json& j, const std::string& path, const std::string& name) {

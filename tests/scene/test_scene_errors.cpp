@@ -47,7 +47,7 @@ const BadScene kBadScenes[] = {
     // Render block.
     {"render_width_fraction.json", "render.width", "must be a whole number, got 320.5"},
     {"render_unknown_integrator.json", "render.integrator",
-     "unknown integrator 'path' (known: whitted)"},
+     "unknown integrator 'path' (known: whitted, photon_map)"},
     // Materials.
     {"unknown_material_name.json", "objects[0].material",
      "unknown material 'glas' (not in materials; did you mean 'glass'?)"},

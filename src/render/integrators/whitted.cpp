@@ -11,6 +11,10 @@ namespace lenslab {
 
 Rgb WhittedIntegrator::radiance(const Ray& ray, Rng& rng) const { return trace(ray, 0, 1.0, rng); }
 
+Rgb WhittedIntegrator::diffuse_irradiance(const Vec3& p, const Vec3& n, Rng& rng) const {
+    return direct_irradiance(m_scene, p, n, m_scene.render.light_samples, rng);
+}
+
 Rgb WhittedIntegrator::trace(const Ray& ray, int depth, double weight, Rng& rng) const {
     const Scene& scene = m_scene;
     SceneHit hit;
@@ -29,7 +33,7 @@ Rgb WhittedIntegrator::trace(const Ray& ray, int depth, double weight, Rng& rng)
     const Scattering s = scatter(m, object.shape->is_closed(), ray.direction, n);
     if (s.diffuse > 0.0) {
         const Vec3 facing = front_side ? n : -n;
-        const Rgb e = direct_irradiance(scene, p, facing, scene.render.light_samples, rng);
+        const Rgb e = diffuse_irradiance(p, facing, rng);
         l += m.color * s.diffuse * (scene.render.ambient + e * (1.0 / std::numbers::pi));
     }
     if (depth >= scene.render.max_depth) return l;

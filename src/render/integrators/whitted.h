@@ -11,12 +11,15 @@
 
 namespace lenslab {
 
-class WhittedIntegrator final : public PixelIntegrator {
+class WhittedIntegrator : public PixelIntegrator {
 public:
     explicit WhittedIntegrator(const Scene& scene) : PixelIntegrator(scene) {}
 
 protected:
     Rgb radiance(const Ray& ray, Rng& rng) const override;
+    // Irradiance reaching a diffuse point `p` whose normal `n` faces the viewer: here the
+    // direct light through shadow rays. The photon-map integrator adds caustics.
+    virtual Rgb diffuse_irradiance(const Vec3& p, const Vec3& n, Rng& rng) const;
 
 private:
     Rgb trace(const Ray& ray, int depth, double weight, Rng& rng) const;

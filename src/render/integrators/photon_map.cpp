@@ -1,0 +1,49 @@
+#include "render/integrators/photon_map.h"
+
+#include "render/direct_light.h"
+
+namespace lenslab {
+
+double default_gather_radius(const Scene& scene) {
+    const Aabb b = scene.bounds();
+    if (b.empty()) return 0.05;
+    return 0.005 * length(b.extent());
+}
+
+GatherSettings gather_settings(const Scene& scene) {
+    const RenderSettings& r = scene.render;
+    GatherSettings g;
+    g.radius = r.radius > 0 ? r.radius : default_gather_radius(scene);
+    g.max_photons = static_cast<size_t>(r.max_photons_per_estimate);
+    g.filter = parse_photon_filter(r.filter);
+    g.cone_k = r.filter_k;
+    return g;
+}
+
+PhotonTracingSettings photon_tracing_settings(const Scene& scene) {
+    return {scene.render.photons, scene.render.max_depth, scene.render.seed};
+}
+
+PhotonMapIntegrator::PhotonMapIntegrator(const Scene& scene)
+    : WhittedIntegrator(scene), m_gather(gather_settings(scene)) {}
+
+void PhotonMapIntegrator::render(const Scene& scene, const Camera& camera, Film& film,
+                                 RenderControl& control) {
+    if (!m_have_map) {
+        m_map = trace_photons(scene, photon_tracing_settings(scene), control, &m_stats);
+        m_have_map = true;
+    }
+    if (control.cancelled()) return;
+    WhittedIntegrator::render(scene, camera, film, control);
+}
+
+Rgb PhotonMapIntegrator::diffuse_irradiance(const Vec3& p, const Vec3& n, Rng& rng) const {
+    thread_local std::vector<PhotonNeighbour> scratch;
+    Rgb e = m_scene.render.direct == "photon_map"
+                ? PhotonMap::irradiance(m_map.direct(), p, n, m_gather, scratch)
+                : direct_irradiance(m_scene, p, n, m_scene.render.light_samples, rng);
+    e += PhotonMap::irradiance(m_map.caustic(), p, n, m_gather, scratch);
+    return e;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,67 @@
+#include "render/photon_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include <tbb/parallel_invoke.h>
+
+namespace lenslab {
+
+PhotonFilter parse_photon_filter(const std::string& name) {
+    if (name == "cone") return PhotonFilter::Cone;
+    if (name == "gaussian") return PhotonFilter::Gaussian;
+    if (name == "box") return PhotonFilter::Box;
+    throw std::invalid_argument("unknown photon filter '" + name + "' (known: cone, gaussian, box)");
+}
+
+const char* photon_filter_name(PhotonFilter f) {
+    switch (f) {
+        case PhotonFilter::Cone: return "cone";
+        case PhotonFilter::Gaussian: return "gaussian";
+        case PhotonFilter::Box: return "box";
+    }
+    return "cone";
+}
+
+PhotonMap::PhotonMap(std::vector<Photon> photons) : m_storage(std::move(photons)) {
+    // Direct photons first, then caustic ones, then the empty slots; std::partition is
+    // deterministic, so the maps are the same for any thread count.
+    auto first_caustic = std::partition(m_storage.begin(), m_storage.end(),
+                                        [](const Photon& p) { return p.kind == PhotonKind::Direct; });
+    auto first_empty = std::partition(first_caustic, m_storage.end(),
+                                      [](const Photon& p) { return p.kind == PhotonKind::Caustic; });
+    const size_t n_direct = static_cast<size_t>(first_caustic - m_storage.begin());
+    m_storage.erase(first_empty, m_storage.end());
+    m_storage.shrink_to_fit();
+    Photon* base = m_storage.data();
+    tbb::parallel_invoke([&] { m_direct = PhotonKdTree(base, n_direct); },
+                         [&] { m_caustic = PhotonKdTree(base + n_direct, m_storage.size() - n_direct); });
+}
+
+Rgb PhotonMap::irradiance(const PhotonKdTree& map, const Vec3& x, const Vec3& n,
+                          const GatherSettings& g, std::vector<PhotonNeighbour>& scratch) {
+    const double r2 = map.nearest(x, g.radius, g.max_photons, &n, scratch);
+    if (scratch.empty() || r2 <= 0.0) return {};
+    const double r = std::sqrt(r2);
+    double sum[3] = {0, 0, 0};
+    double norm = 1.0;
+    // Gaussian filter constants (Jensen 2001, eq. 7.7, after Pavicic 1990).
+    constexpr double kAlpha = 0.918, kBeta = 1.953;
+    const double gauss_denominator = 1.0 - std::exp(-kBeta);
+    for (const PhotonNeighbour& nb : scratch) {
+        double w = 1.0;
+        if (g.filter == PhotonFilter::Cone) {
+            w = 1.0 - std::sqrt(static_cast<double>(nb.dist2)) / (g.cone_k * r);
+        } else if (g.filter == PhotonFilter::Gaussian) {
+            w = kAlpha * (1.0 - (1.0 - std::exp(-kBeta * nb.dist2 / (2.0 * r2))) / gauss_denominator);
+        }
+        for (int c = 0; c < 3; ++c) sum[c] += w * nb.photon->power[c];
+    }
+    if (g.filter == PhotonFilter::Cone) norm = 1.0 - 2.0 / (3.0 * g.cone_k);
+    const double scale = 1.0 / (norm * std::numbers::pi * r2);
+    return {sum[0] * scale, sum[1] * scale, sum[2] * scale};
+}
+
+}  // namespace lenslab

@@ -1,0 +1,50 @@
+#pragma once
+// The photon maps: one block of stored photons partitioned into the direct map (L D) and
+// the caustic map (L S+ D), each with its kd-tree, and the radiance estimate that reads them.
+
+#include <string>
+#include <vector>
+
+#include "accel/photon_kdtree.h"
+
+namespace lenslab {
+
+// Weighting of the photons inside the gather disc (Jensen 2001, section 7.2.2).
+enum class PhotonFilter { Box, Cone, Gaussian };
+
+PhotonFilter parse_photon_filter(const std::string& name);  // throws std::invalid_argument
+const char* photon_filter_name(PhotonFilter f);
+
+struct GatherSettings {
+    double radius = 0.05;        // largest gather radius
+    size_t max_photons = 500;    // cap on photons per estimate (k nearest within the radius)
+    PhotonFilter filter = PhotonFilter::Cone;
+    double cone_k = 1.1;         // cone filter constant, >= 1
+};
+
+class PhotonMap {
+public:
+    PhotonMap() = default;
+    // Takes the photons (kind None entries are dropped) and builds both kd-trees.
+    explicit PhotonMap(std::vector<Photon> photons);
+    PhotonMap(PhotonMap&&) = default;
+    PhotonMap& operator=(PhotonMap&&) = default;
+
+    const PhotonKdTree& direct() const { return m_direct; }
+    const PhotonKdTree& caustic() const { return m_caustic; }
+    size_t memory_bytes() const { return m_storage.capacity() * sizeof(Photon); }
+
+    // Irradiance (W/m^2 per channel) at `x` on a surface whose normal `n` faces the side
+    // being lit, from the photons of `map` that arrived on that side:
+    //   E = sum_p w_p Phi_p / (norm * pi r^2),
+    // with the cone filter w = 1 - d / (k r), norm = 1 - 2 / (3k), or the Gaussian filter.
+    // `scratch` is reused between calls to avoid allocations.
+    static Rgb irradiance(const PhotonKdTree& map, const Vec3& x, const Vec3& n,
+                          const GatherSettings& g, std::vector<PhotonNeighbour>& scratch);
+
+private:
+    std::vector<Photon> m_storage;
+    PhotonKdTree m_direct, m_caustic;
+};
+
+}  // namespace lenslab

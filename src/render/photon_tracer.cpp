@@ -1,0 +1,177 @@
+#include "render/photon_tracer.h"
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "geometry/sphere.h"
+#include "math/frame.h"
+#include "math/rng.h"
+#include "math/sampling.h"
+#include "scene/scattering.h"
+
+namespace lenslab {
+
+namespace {
+
+// Random streams for photons are offset from the per-pixel camera streams.
+constexpr uint64_t kPhotonStreamBase = uint64_t{1} << 62;
+constexpr int64_t kChunk = 4096;
+
+struct EmittedPhoton {
+    Ray ray;
+    Rgb power;
+};
+
+// Samples photon `i` of light `light` (emitting spheres first, then point lights, then beams).
+EmittedPhoton emit(const Scene& scene, int light, int64_t n, Rng& rng) {
+    const double inv_n = 1.0 / static_cast<double>(n);
+    const int spheres = static_cast<int>(scene.emitters().size());
+    const int points = static_cast<int>(scene.point_lights.size());
+    if (light < spheres) {
+        // A Lambertian sphere of radiance L and radius R emits pi L 4 pi R^2: uniform points
+        // on the surface, cosine-distributed directions about the normal.
+        const int object = scene.emitters()[light];
+        const auto& sphere = static_cast<const Sphere&>(*scene.objects[object].shape);
+        const Vec3 normal = sample_uniform_sphere(rng.uniform(), rng.uniform());
+        const Vec3 dir = Frame::from_axis(normal).to_world(sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
+        const double area = 4.0 * std::numbers::pi * sphere.radius() * sphere.radius();
+        const Rgb flux = scene.material_of(object).emitted_radiance() * (std::numbers::pi * area);
+        return {{sphere.centre() + normal * sphere.radius(), dir}, flux * inv_n};
+    }
+    if (light < spheres + points) {
+        const PointLight& l = scene.point_lights[light - spheres];
+        return {{l.position, sample_uniform_sphere(rng.uniform(), rng.uniform())}, l.color * (l.power * inv_n)};
+    }
+    const BeamLight& b = scene.beams[light - spheres - points];
+    double x, y;
+    sample_disc_concentric(rng.uniform(), rng.uniform(), x, y);
+    const Frame f = Frame::from_axis(b.direction);
+    return {{b.origin + (f.u * x + f.v * y) * b.radius, b.direction}, b.color * (b.power * inv_n)};
+}
+
+Photon make_photon(const Vec3& p, const Rgb& power, const Vec3& towards, PhotonKind kind) {
+    Photon ph{};
+    ph.position[0] = static_cast<float>(p.x);
+    ph.position[1] = static_cast<float>(p.y);
+    ph.position[2] = static_cast<float>(p.z);
+    ph.power[0] = static_cast<float>(power.r);
+    ph.power[1] = static_cast<float>(power.g);
+    ph.power[2] = static_cast<float>(power.b);
+    encode_octahedral(towards, ph.towards);
+    ph.kind = kind;
+    return ph;
+}
+
+// Follows one photon until it is stored, absorbed, escapes or exceeds the depth. Returns
+// the stored photon (kind None if none). Russian roulette picks one event per hit with the
+// material's weights: diffuse (store; power / p_diffuse keeps the estimate unbiased),
+// one of the specular branches (power unchanged: its weight equals its probability), or
+// absorption.
+Photon trace_one(const Scene& scene, EmittedPhoton e, int max_depth, Rng& rng) {
+    Ray ray = e.ray;
+    for (int depth = 0; depth <= max_depth; ++depth) {
+        SceneHit hit;
+        if (!scene.intersect(ray, surface_epsilon(ray.origin), std::numeric_limits<double>::infinity(), hit)) break;
+        const SceneObject& object = scene.objects[hit.object];
+        const Material& m = scene.materials[object.material];
+        const Scattering s = scatter(m, object.shape->is_closed(), ray.direction, hit.surface.normal);
+        double u = rng.uniform();
+        const double p_diffuse = m.color.is_black() ? 0.0 : s.diffuse;
+        if (u < p_diffuse) {
+            const PhotonKind kind = depth == 0 ? PhotonKind::Direct : PhotonKind::Caustic;
+            return make_photon(hit.surface.point, e.power * (1.0 / p_diffuse), -ray.direction, kind);
+        }
+        u -= p_diffuse;
+        const Branch* chosen = nullptr;
+        for (int i = 0; i < s.count && !chosen; ++i) {
+            if (u < s.branches[i].weight) chosen = &s.branches[i];
+            u -= s.branches[i].weight;
+        }
+        if (!chosen) break;  // absorbed (or the diffuse share of a black surface)
+        ray = {hit.surface.point, chosen->direction};
+    }
+    return Photon{};
+}
+
+}  // namespace
+
+int photon_light_count(const Scene& scene) {
+    return static_cast<int>(scene.emitters().size() + scene.point_lights.size() + scene.beams.size());
+}
+
+uint64_t photon_storage_bytes(const Scene& scene, int64_t photons_per_light) {
+    // One slot per emitted photon: a photon is stored at most once (at its first diffuse
+    // surface), and the slots are compacted afterwards.
+    const long double bytes = static_cast<long double>(photons_per_light) * photon_light_count(scene) * sizeof(Photon);
+    return bytes > static_cast<long double>(std::numeric_limits<uint64_t>::max())
+               ? std::numeric_limits<uint64_t>::max()
+               : static_cast<uint64_t>(bytes);
+}
+
+uint64_t available_memory_bytes() {
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key;
+    uint64_t kib = 0;
+    while (meminfo >> key >> kib) {
+        if (key == "MemAvailable:") return kib * 1024;
+        meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    }
+    return static_cast<uint64_t>(sysconf(_SC_PHYS_PAGES)) * static_cast<uint64_t>(sysconf(_SC_PAGE_SIZE));
+}
+
+PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& settings,
+                        RenderControl& control, PhotonTracingStats* stats) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int lights = photon_light_count(scene);
+    const int64_t n = settings.photons_per_light;
+    const uint64_t need = photon_storage_bytes(scene, n);
+    const uint64_t have = available_memory_bytes();
+    // Leave room for the image, the scene and the system: use at most 80% of what is free.
+    if (need > have / 10 * 8) {
+        std::ostringstream msg;
+        msg << "photons: " << n << " photons per light x " << lights << " light(s) need "
+            << need / (1024 * 1024) << " MiB of photon storage, but only " << have / (1024 * 1024)
+            << " MiB of memory is available; use fewer photons";
+        throw ResourceError(msg.str());
+    }
+
+    std::vector<Photon> slots(static_cast<size_t>(n) * lights);
+    const int64_t chunks_per_light = (n + kChunk - 1) / kChunk;
+    const int64_t chunks = chunks_per_light * lights;
+    tbb::parallel_for(tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
+        for (int64_t chunk = r.begin(); chunk != r.end(); ++chunk) {
+            if (control.cancelled()) return;
+            const int light = static_cast<int>(chunk / chunks_per_light);
+            const int64_t first = (chunk % chunks_per_light) * kChunk;
+            const int64_t last = std::min(n, first + kChunk);
+            for (int64_t i = first; i < last; ++i) {
+                const int64_t slot = light * n + i;
+                Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(slot));
+                slots[static_cast<size_t>(slot)] = trace_one(scene, emit(scene, light, n, rng), settings.max_depth, rng);
+            }
+        }
+    });
+    const auto t1 = std::chrono::steady_clock::now();
+    PhotonMap map(std::move(slots));
+    const auto t2 = std::chrono::steady_clock::now();
+    if (stats) {
+        stats->emitted = n * lights;
+        stats->direct = map.direct().size();
+        stats->caustic = map.caustic().size();
+        stats->trace_seconds = std::chrono::duration<double>(t1 - t0).count();
+        stats->build_seconds = std::chrono::duration<double>(t2 - t1).count();
+        stats->memory_bytes = map.memory_bytes();
+    }
+    return map;
+}
+
+}  // namespace lenslab

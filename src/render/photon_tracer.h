@@ -1,0 +1,47 @@
+#pragma once
+// Photon tracing (Jensen 2001, chapter 5): photons leave every light, bounce off mirrors and
+// through glass chosen by Russian roulette on the Fresnel weights, and are stored where they
+// meet a diffuse surface. Each light emits the same number of photons; a photon carries the
+// light's power divided by that number, so the estimate does not change with the count.
+
+#include <cstdint>
+#include <stdexcept>
+
+#include "render/photon_map.h"
+#include "render/render_control.h"
+#include "scene/scene.h"
+
+namespace lenslab {
+
+struct PhotonTracingSettings {
+    int64_t photons_per_light = 200000;
+    int max_depth = 8;   // specular bounces followed before a photon is dropped
+    uint64_t seed = 1;
+};
+
+struct PhotonTracingStats {
+    int64_t emitted = 0;
+    size_t direct = 0, caustic = 0;
+    double trace_seconds = 0, build_seconds = 0;
+    size_t memory_bytes = 0;
+};
+
+// Thrown before any work when the photons asked for cannot fit in memory.
+class ResourceError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Number of light sources that emit photons: emitting spheres, point lights, beams.
+int photon_light_count(const Scene& scene);
+
+// Bytes of photon storage the settings need at most, and the memory available for it.
+uint64_t photon_storage_bytes(const Scene& scene, int64_t photons_per_light);
+uint64_t available_memory_bytes();
+
+// Traces the photons and builds the maps. Deterministic for a given seed at any thread
+// count (one random stream per photon). Throws ResourceError if storage would not fit.
+PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& settings,
+                        RenderControl& control, PhotonTracingStats* stats = nullptr);
+
+}  // namespace lenslab
