@@ -12,6 +12,7 @@ using Action = std::function<int()>;
 
 Action add_render_command(CLI::App& app);
 Action add_trace_command(CLI::App& app);
+Action add_bench_command(CLI::App& app);
 
 
 }  // namespace lenslab::cli

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "lenslab 0.1.0");
     const auto render = lenslab::cli::add_render_command(app);
     const auto trace = lenslab::cli::add_trace_command(app);
+    const auto bench = lenslab::cli::add_bench_command(app);
 
     try {
         app.parse(argc, argv);
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand("render")) return render();
         if (app.got_subcommand("trace")) return trace();
+        if (app.got_subcommand("bench")) return bench();
     } catch (const lenslab::SceneError& e) {
         std::cerr << "lenslab: error: " << e.what() << "\n";
         return 1;

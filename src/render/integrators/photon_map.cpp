@@ -29,9 +29,9 @@ PhotonMapIntegrator::PhotonMapIntegrator(const Scene& scene)
 
 void PhotonMapIntegrator::render(const Scene& scene, const Camera& camera, Film& film,
                                  RenderControl& control) {
-    if (!m_have_map) {
-        m_map = trace_photons(scene, photon_tracing_settings(scene), control, &m_stats);
-        m_have_map = true;
+    if (!m_map) {
+        m_map = std::make_shared<const PhotonMap>(
+            trace_photons(scene, photon_tracing_settings(scene), control, &m_stats));
     }
     if (control.cancelled()) return;
     WhittedIntegrator::render(scene, camera, film, control);
@@ -40,9 +40,9 @@ void PhotonMapIntegrator::render(const Scene& scene, const Camera& camera, Film&
 Rgb PhotonMapIntegrator::diffuse_irradiance(const Vec3& p, const Vec3& n, Rng& rng) const {
     thread_local std::vector<PhotonNeighbour> scratch;
     Rgb e = m_scene.render.direct == "photon_map"
-                ? PhotonMap::irradiance(m_map.direct(), p, n, m_gather, scratch)
+                ? PhotonMap::irradiance(m_map->direct(), p, n, m_gather, scratch)
                 : direct_irradiance(m_scene, p, n, m_scene.render.light_samples, rng);
-    e += PhotonMap::irradiance(m_map.caustic(), p, n, m_gather, scratch);
+    e += PhotonMap::irradiance(m_map->caustic(), p, n, m_gather, scratch);
     return e;
 }
 

@@ -7,6 +7,8 @@
 //     render.radius with the cone filter (render.filter_k) and at most
 //     render.max_photons_per_estimate photons per estimate.
 
+#include <memory>
+
 #include "render/integrators/whitted.h"
 #include "render/photon_map.h"
 #include "render/photon_tracer.h"
@@ -22,17 +24,15 @@ public:
 
     const PhotonTracingStats& photon_stats() const { return m_stats; }
     // Uses maps traced elsewhere (benchmarks reuse one map across several renders).
-    void set_photon_map(PhotonMap map) { m_map = std::move(map); m_have_map = true; }
-    const PhotonMap& photon_map() const { return m_map; }
+    void set_photon_map(std::shared_ptr<const PhotonMap> map) { m_map = std::move(map); }
 
 protected:
     Rgb diffuse_irradiance(const Vec3& p, const Vec3& n, Rng& rng) const override;
 
 private:
     GatherSettings m_gather;
-    PhotonMap m_map;
+    std::shared_ptr<const PhotonMap> m_map;
     PhotonTracingStats m_stats;
-    bool m_have_map = false;
 };
 
 // Gather radius when the scene gives none: 0.5% of the diagonal of the scene's bounds

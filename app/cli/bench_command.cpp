@@ -1,0 +1,107 @@
+// `lenslab bench report`: the course report's cost experiment, with its figures beside ours.
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "analysis/report_benchmark.h"
+#include "commands.h"
+#include "render/image_io.h"
+#include "scene/scene_json.h"
+
+namespace lenslab::cli {
+
+namespace {
+
+struct BenchArgs {
+    std::string scene;
+    std::string out_dir = "bench-report";
+    ReportBenchmarkSettings settings;
+};
+
+// Draws the report's Figures 4.2 (build time) and 4.3 (render time) with gnuplot; returns
+// false when gnuplot is not installed (its data and script are written all the same).
+bool plot(const std::filesystem::path& dir, const ReportBenchmarkSettings& s,
+          const ReportBenchmarkResult& r) {
+    // One gnuplot data block per radius: photons, ours (build, render), report's (build, render).
+    const auto data = dir / "plot_data.dat";
+    std::ofstream dat(data);
+    for (double radius : s.radii) {
+        dat << "# radius " << radius << "\n";
+        for (const ReportBuildTiming& b : r.builds) {
+            for (const ReportRenderTiming& rt : r.renders) {
+                if (rt.photons != b.photons || rt.radius != radius) continue;
+                dat << b.photons << " " << b.trace_seconds + b.build_seconds << " "
+                    << report_build_seconds(b.photons) << " " << rt.render_seconds << " "
+                    << report_render_seconds(b.photons, radius) << "\n";
+            }
+        }
+        dat << "\n\n";
+    }
+    dat.close();
+    const auto script = dir / "plots.gp";
+    const std::string d = "'" + data.string() + "'";
+    std::ofstream gp(script);
+    gp << "set terminal pngcairo size 900,600\nset key top left\nset grid\nset logscale y\n"
+          "set xlabel 'photons per light'\nset ylabel 'seconds'\n"
+          "set output '" << (dir / "build_time.png").string() << "'\n"
+          "set title 'Photon tracing + map build time (report Table 4.1, Figure 4.2)'\n"
+          "plot " << d << " index 0 using 1:2 with linespoints lw 2 title 'lenslab', " << d
+       << " index 0 using 1:3 with linespoints dt 2 title 'report'\n"
+          "set output '" << (dir / "render_time.png").string() << "'\n"
+          "set title 'Render time against photons per light, per gather radius (report Table 4.2, Figure 4.3)'\n"
+          "plot ";
+    for (size_t i = 0; i < s.radii.size(); ++i) {
+        gp << (i ? ", " : "") << d << " index " << i << " using 1:4 with linespoints lw 2 lc " << i + 1
+           << " title 'lenslab r=" << s.radii[i] << "', " << d << " index " << i
+           << " using 1:5 with linespoints dt 2 lc " << i + 1 << " title 'report r=" << s.radii[i] << "'";
+    }
+    gp << "\n";
+    gp.close();
+    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) return false;
+    return std::system(("gnuplot '" + script.string() + "'").c_str()) == 0;
+}
+
+int run(const BenchArgs& a) {
+    const Scene scene = a.scene.empty() ? default_scene() : load_scene_file(a.scene);
+    const std::filesystem::path dir(a.out_dir);
+    std::filesystem::create_directories(dir);
+    const ReportBenchmarkResult r =
+        run_report_benchmark(scene, a.settings, [](const std::string& line) { std::cerr << line << "\n"; });
+    std::ofstream(dir / "report.csv") << report_benchmark_csv(r);
+    write_image(r.grid, (dir / "grid.png").string());
+    const bool plotted = plot(dir, a.settings, r);
+    std::printf("wrote %s/report.csv, %s/grid.png%s\n", dir.c_str(), dir.c_str(),
+                plotted ? (", " + (dir / "build_time.png").string() + ", " + (dir / "render_time.png").string()).c_str()
+                        : " (install gnuplot for the plots: plots.gp is written)");
+    return 0;
+}
+
+}  // namespace
+
+Action add_bench_command(CLI::App& app) {
+    auto args = std::make_shared<BenchArgs>();
+    CLI::App* bench = app.add_subcommand("bench", "Measure lenslab's speed");
+    bench->require_subcommand(1);
+    CLI::App* report = bench->add_subcommand(
+        "report", "The course report's experiment: map build and render times against photons and radius");
+    report->add_option("scene", args->scene, "Scene file (default: the built-in default scene)");
+    report->add_option("-o,--output", args->out_dir, "Folder for report.csv, the plots and grid.png")
+        ->capture_default_str();
+    ReportBenchmarkSettings& s = args->settings;
+    report->add_option("--photons", s.photons, "Photons per light to measure")
+        ->delimiter(',')->capture_default_str()->check(CLI::Range(int64_t{1}, int64_t{1} << 36));
+    report->add_option("--radii", s.radii, "Gather radii to measure")
+        ->delimiter(',')->capture_default_str()->check(CLI::PositiveNumber);
+    report->add_option("--width", s.width, "Image width")->capture_default_str()->check(CLI::Range(1, 16384));
+    report->add_option("--height", s.height, "Image height")->capture_default_str()->check(CLI::Range(1, 16384));
+    report->add_option("--spp", s.spp, "Samples per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 16));
+    report->add_option("--repeats", s.repeats, "Runs per timing (the median is kept)")
+        ->capture_default_str()->check(CLI::Range(1, 100));
+    report->add_option("--threads", s.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+    return [args] { return run(*args); };
+}
+
+}  // namespace lenslab::cli
