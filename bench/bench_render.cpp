@@ -11,6 +11,7 @@ namespace {
 
 void BM_WhittedDefaultScene(benchmark::State& state) {
     Scene scene = default_scene();
+    scene.render.integrator = "whitted";
     scene.render.width = 200;
     scene.render.height = 150;
     scene.render.spp = 4;

@@ -85,9 +85,12 @@ double PhotonKdTree::nearest(const Vec3& x, double radius, size_t max_count, con
         if (dist2 >= r2) continue;
         if (facing && dot(ph.incoming(), *facing) <= 0.0) continue;
         if (out.size() < max_count) {
+            // Plain appends until the cap is reached; only then does the order matter.
             out.push_back({&ph, static_cast<float>(dist2)});
-            std::push_heap(out.begin(), out.end(), farther);
-            if (out.size() == max_count) r2 = out.front().dist2;
+            if (out.size() == max_count) {
+                std::make_heap(out.begin(), out.end(), farther);
+                r2 = out.front().dist2;
+            }
         } else {
             std::pop_heap(out.begin(), out.end(), farther);
             out.back() = {&ph, static_cast<float>(dist2)};
