@@ -11,6 +11,8 @@ namespace {
 
 // Below this many photons a subtree is built on the current thread.
 constexpr size_t kParallelBuildThreshold = 1 << 15;
+// Ranges this small are scanned linearly by queries instead of descended.
+constexpr size_t kLeafSize = 32;
 
 }  // namespace
 
@@ -65,25 +67,11 @@ double PhotonKdTree::nearest(const Vec3& x, double radius, size_t max_count, con
     Range stack[128];
     int top = 0;
     stack[top++] = {0, m_count, 0.0};
-    while (top > 0) {
-        const Range range = stack[--top];
-        if (range.plane_dist2 >= r2 || range.lo >= range.hi) continue;
-        const size_t mid = range.lo + (range.hi - range.lo) / 2;
-        const Photon& ph = m_photons[mid];
-        const int axis = ph.split_axis;
-        const double d = static_cast<double>(p[axis]) - ph.position[axis];
-        // Push the far half first so the near half is searched first.
-        if (d < 0) {
-            stack[top++] = {mid + 1, range.hi, d * d};
-            stack[top++] = {range.lo, mid, 0.0};
-        } else {
-            stack[top++] = {range.lo, mid, d * d};
-            stack[top++] = {mid + 1, range.hi, 0.0};
-        }
+    auto consider = [&](const Photon& ph) {
         const double dx = p[0] - ph.position[0], dy = p[1] - ph.position[1], dz = p[2] - ph.position[2];
         const double dist2 = dx * dx + dy * dy + dz * dz;
-        if (dist2 >= r2) continue;
-        if (facing && dot(ph.incoming(), *facing) <= 0.0) continue;
+        if (dist2 >= r2) return;
+        if (facing && dot(ph.incoming(), *facing) <= 0.0) return;
         if (out.size() < max_count) {
             // Plain appends until the cap is reached; only then does the order matter.
             out.push_back({&ph, static_cast<float>(dist2)});
@@ -97,6 +85,28 @@ double PhotonKdTree::nearest(const Vec3& x, double radius, size_t max_count, con
             std::push_heap(out.begin(), out.end(), farther);
             r2 = out.front().dist2;
         }
+    };
+    while (top > 0) {
+        const Range range = stack[--top];
+        if (range.plane_dist2 >= r2) continue;
+        if (range.hi - range.lo <= kLeafSize) {
+            // Small subtrees are cheaper to scan than to descend.
+            for (size_t i = range.lo; i < range.hi; ++i) consider(m_photons[i]);
+            continue;
+        }
+        const size_t mid = range.lo + (range.hi - range.lo) / 2;
+        const Photon& ph = m_photons[mid];
+        const int axis = ph.split_axis;
+        const double d = static_cast<double>(p[axis]) - ph.position[axis];
+        // Push the far half first so the near half is searched first.
+        if (d < 0) {
+            stack[top++] = {mid + 1, range.hi, d * d};
+            stack[top++] = {range.lo, mid, 0.0};
+        } else {
+            stack[top++] = {range.lo, mid, d * d};
+            stack[top++] = {mid + 1, range.hi, 0.0};
+        }
+        consider(ph);
     }
     return r2;
 }
