@@ -92,15 +92,15 @@ Action add_bench_command(CLI::App& app) {
         ->capture_default_str();
     ReportBenchmarkSettings& s = args->settings;
     report->add_option("--photons", s.photons, "Photons per light to measure")
-        ->delimiter(',')->capture_default_str()->check(CLI::Range(int64_t{1}, int64_t{1} << 36));
+        ->delimiter(',')->capture_default_str()->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 36));
     report->add_option("--radii", s.radii, "Gather radii to measure")
         ->delimiter(',')->capture_default_str()->check(CLI::PositiveNumber);
-    report->add_option("--width", s.width, "Image width")->capture_default_str()->check(CLI::Range(1, 16384));
-    report->add_option("--height", s.height, "Image height")->capture_default_str()->check(CLI::Range(1, 16384));
-    report->add_option("--spp", s.spp, "Samples per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 16));
+    report->add_option("--width", s.width, "Image width")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 16384));
+    report->add_option("--height", s.height, "Image height")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 16384));
+    report->add_option("--spp", s.spp, "Samples per pixel")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 16));
     report->add_option("--repeats", s.repeats, "Runs per timing (the median is kept)")
-        ->capture_default_str()->check(CLI::Range(1, 100));
-    report->add_option("--threads", s.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+        ->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 100));
+    report->add_option("--threads", s.threads, "Worker threads (default: all cores)")->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
     return [args] { return run(*args); };
 }
 

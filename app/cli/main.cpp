@@ -18,7 +18,9 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+        std::cerr << "lenslab: error: " << e.what() << "\nRun 'lenslab --help' for usage.\n";
+        return 2;
     }
     try {
         if (app.got_subcommand("render")) return render();

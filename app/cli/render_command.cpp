@@ -1,5 +1,6 @@
 // `lenslab render [SCENE] -o OUT`: render a scene file, or the built-in default scene.
 
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -22,7 +23,7 @@ struct RenderArgs {
     std::string output = "lenslab.png";
     int width = 0, height = 0, spp = 0, max_depth = -1, threads = 0;
     int64_t seed = -1;
-    std::string integrator, filter;
+    std::string integrator, filter, direct;
     int64_t photons = 0;
     double radius = 0, filter_k = 0;
     int max_photons_per_estimate = 0;
@@ -61,6 +62,10 @@ int run(const RenderArgs& a) {
                   << "': unknown image type (use a .png or .exr file name)\n";
         return 2;
     }
+    if (!std::isfinite(a.exposure)) {  // CLI11's range check lets NaN through
+        std::cerr << "lenslab: error: --exposure: must be a number of stops between -64 and 64\n";
+        return 2;
+    }
     Scene scene = a.scene.empty() ? default_scene() : load_scene_file(a.scene);
     RenderSettings& s = scene.render;
     if (a.width > 0) s.width = a.width;
@@ -72,6 +77,7 @@ int run(const RenderArgs& a) {
     if (a.photons > 0) s.photons = a.photons;
     if (a.radius > 0) s.radius = a.radius;
     if (!a.filter.empty()) s.filter = a.filter;
+    if (!a.direct.empty()) s.direct = a.direct;
     if (a.filter_k > 0) s.filter_k = a.filter_k;
     if (a.max_photons_per_estimate > 0) s.max_photons_per_estimate = a.max_photons_per_estimate;
 
@@ -82,9 +88,14 @@ int run(const RenderArgs& a) {
     ProgressPrinter printer(label);
     RenderControl control(a.quiet ? RenderControl::ProgressFn{} : RenderControl::ProgressFn{std::ref(printer)});
     g_control = &control;
-    std::signal(SIGINT, on_interrupt);
+    // The first Ctrl-C asks the render to stop; SA_RESETHAND makes a second one end the
+    // process at once.
+    struct sigaction action {};
+    action.sa_handler = on_interrupt;
+    action.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &action, nullptr);
     const RenderResult result = render_scene(scene, control, threads);
-    std::signal(SIGINT, SIG_DFL);
+    signal(SIGINT, SIG_DFL);
     g_control = nullptr;
     if (result.cancelled) {
         std::cerr << "\nlenslab: render cancelled; nothing written\n";
@@ -113,33 +124,35 @@ Action add_render_command(CLI::App& app) {
     cmd->add_option("-o,--output", args->output, "Output image: .png (sRGB) or .exr (linear)")
         ->capture_default_str();
     cmd->add_option("--width", args->width, "Image width in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 16384));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 16384));
     cmd->add_option("--height", args->height, "Image height in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 16384));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 16384));
     cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")
-        ->check(CLI::Range(1, 1 << 20));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 20));
     cmd->add_option("--max-depth", args->max_depth, "Longest specular chain (overrides the scene)")
-        ->check(CLI::Range(0, 1000));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, 1000));
     cmd->add_option("--seed", args->seed, "Random seed (overrides the scene)")
-        ->check(CLI::Range(int64_t{0}, int64_t{2147483647}));
+        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{0}, int64_t{2147483647}));
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
-        ->check(CLI::Range(1, 1024));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
     cmd->add_option("--exposure", args->exposure, "Exposure in stops applied before writing")
-        ->capture_default_str();
+        ->capture_default_str()->check(CLI::Range(-64.0, 64.0));
     cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
     cmd->add_option("--integrator", args->integrator, "whitted or photon_map (overrides the scene)")
-        ->check(CLI::IsMember({"whitted", "photon_map"}));
+        ->check(CLI::IsMember(kIntegratorNames));
     cmd->add_option("--photons", args->photons, "Photons emitted per light (photon_map)")
-        ->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
+        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
     cmd->add_option("--radius", args->radius, "Photon gather radius (photon_map)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--filter", args->filter, "Photon filter: cone, gaussian or box")
-        ->check(CLI::IsMember({"cone", "gaussian", "box"}));
+        ->check(CLI::IsMember(kPhotonFilterNames));
+    cmd->add_option("--direct", args->direct, "Direct light from shadow_rays or the photon_map")
+        ->check(CLI::IsMember(kDirectLightNames));
     cmd->add_option("--filter-k", args->filter_k, "Cone filter constant k >= 1")
         ->check(CLI::Range(1.0, 1e9));
     cmd->add_option("--max-photons-per-estimate", args->max_photons_per_estimate,
                     "Cap on the photons one radiance estimate gathers")
-        ->check(CLI::Range(1, 1000000));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1000000));
     return [args] { return run(*args); };
 }
 

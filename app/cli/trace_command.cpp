@@ -20,12 +20,17 @@ struct TraceArgs {
 
 int run(const TraceArgs& a) {
     const Vec3 d{a.direction[0], a.direction[1], a.direction[2]};
+    const Vec3 o{a.origin[0], a.origin[1], a.origin[2]};
+    if (!is_finite(o) || !is_finite(d)) {
+        std::cerr << "lenslab: error: --origin and --direction must be finite numbers\n";
+        return 2;
+    }
     if (!(length(d) > 0)) {
         std::cerr << "lenslab: error: --direction: must be a non-zero vector\n";
         return 2;
     }
     const Scene scene = load_scene_file(a.scene);
-    const Ray ray{{a.origin[0], a.origin[1], a.origin[2]}, normalize(d)};
+    const Ray ray{o, normalize(d)};
     const RayTree tree = trace_ray_tree(scene, ray, a.options);
     // Points and directions on one line each, so a tree reads segment by segment.
     static const std::regex triple(R"(\[\s*([^,\[\]\s]+),\s*([^,\[\]\s]+),\s*([^,\[\]\s]+)\s*\])");
@@ -43,11 +48,11 @@ Action add_trace_command(CLI::App& app) {
         ->required()->delimiter(',')->expected(3);
     cmd->add_option("--direction", args->direction, "Ray direction x,y,z (need not be unit length)")
         ->required()->delimiter(',')->expected(3);
-    cmd->add_option("--max-depth", args->options.max_depth, "Events followed along any one path")
-        ->check(CLI::Range(0, 1000))->capture_default_str();
+    cmd->add_option("--max-depth", args->options.max_depth, "Specular bounces followed along any one path")
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, 1000))->capture_default_str();
     cmd->add_option("--min-weight", args->options.min_weight,
                     "Branches carrying less of the ray's power are dropped")
-        ->check(CLI::Range(0.0, 1.0))->capture_default_str();
+        ->check(CLI::Range(kMinBranchWeight, 1.0))->capture_default_str();
     return [args] { return run(*args); };
 }
 

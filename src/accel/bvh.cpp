@@ -9,6 +9,10 @@ namespace {
 
 constexpr int kBins = 16;
 constexpr int kMaxLeafSize = 4;
+// Past this depth nodes split at the median, which bounds the remaining depth by log2(n):
+// SAH alone can make a chain as deep as the primitive count (objects at scales 2^k).
+constexpr int kMaxSahDepth = 48;
+constexpr int kStackSize = 128;
 
 double surface_area(const Aabb& b) {
     if (b.empty()) return 0.0;
@@ -30,11 +34,11 @@ Bvh::Bvh(std::vector<const Shape*> shapes) : m_shapes(std::move(shapes)) {
     m_order.resize(n);
     for (int i = 0; i < n; ++i) m_order[i] = i;
     m_nodes.reserve(2 * n);
-    build(m_order, 0, n, boxes, centres);
+    build(m_order, 0, n, boxes, centres, 0);
 }
 
 int Bvh::build(std::vector<int>& items, int begin, int end, const std::vector<Aabb>& boxes,
-               const std::vector<Vec3>& centres) {
+               const std::vector<Vec3>& centres, int depth) {
     const int index = static_cast<int>(m_nodes.size());
     m_nodes.push_back({});
     Aabb box, centre_box;
@@ -49,6 +53,17 @@ int Bvh::build(std::vector<int>& items, int begin, int end, const std::vector<Aa
     if (count <= kMaxLeafSize || extent[axis] <= 0.0) {
         m_nodes[index].first = begin;
         m_nodes[index].count = count;
+        return index;
+    }
+
+    m_nodes[index].axis = axis;
+    if (depth >= kMaxSahDepth) {
+        const int mid = begin + count / 2;
+        std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+                         [&](int a, int b) { return centres[a][axis] < centres[b][axis]; });
+        build(items, begin, mid, boxes, centres, depth + 1);
+        m_nodes[index].first = build(items, mid, end, boxes, centres, depth + 1);
+        m_nodes[index].count = 0;
         return index;
     }
 
@@ -85,9 +100,8 @@ int Bvh::build(std::vector<int>& items, int begin, int end, const std::vector<Aa
                        [&](int item) { return bin_of(item) <= split; }) - items.begin());
     if (mid == begin || mid == end) mid = begin + count / 2;  // all in one bin: split in half
 
-    m_nodes[index].axis = axis;
-    build(items, begin, mid, boxes, centres);
-    m_nodes[index].first = build(items, mid, end, boxes, centres);
+    build(items, begin, mid, boxes, centres, depth + 1);
+    m_nodes[index].first = build(items, mid, end, boxes, centres, depth + 1);
     m_nodes[index].count = 0;
     return index;
 }
@@ -96,7 +110,7 @@ template <bool AnyHit>
 bool Bvh::traverse(const Ray& ray, double t_min, double t_max, BvhHit* hit) const {
     if (m_nodes.empty()) return false;
     const Vec3 inv{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z};
-    int stack[64];
+    int stack[kStackSize];  // depth <= kMaxSahDepth + log2(n) + 1, far below the size
     int top = 0;
     stack[top++] = 0;
     bool found = false;

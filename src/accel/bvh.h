@@ -36,7 +36,7 @@ private:
     template <bool AnyHit>
     bool traverse(const Ray& ray, double t_min, double t_max, BvhHit* hit) const;
     int build(std::vector<int>& items, int begin, int end, const std::vector<Aabb>& boxes,
-              const std::vector<Vec3>& centres);
+              const std::vector<Vec3>& centres, int depth);
 
     std::vector<const Shape*> m_shapes;
     std::vector<int> m_order;

@@ -1,6 +1,6 @@
 #include "analysis/ray_tree.h"
 
-#include <limits>
+#include "scene/interaction.h"
 
 namespace lenslab {
 
@@ -11,23 +11,24 @@ public:
     TreeBuilder(const Scene& scene, const RayTreeOptions& options, RayTree& tree)
         : m_scene(scene), m_options(options), m_tree(tree) {}
 
-    // Follows the ray leaving `parent` and appends what happens at its next hit.
+    // Follows the ray leaving `parent` and appends what happens at its next hit. `depth`
+    // counts the specular bounces before this hit; as in the renderer, at most
+    // `max_depth` of them are followed.
     void follow(RayTreeNode& parent, int depth) {
         const Vec3 origin = parent.to.value_or(parent.from);
         const Ray ray{origin, parent.direction};
         const double w = parent.weight;
-        SceneHit hit;
-        if (!m_scene.intersect(ray, surface_epsilon(origin), std::numeric_limits<double>::infinity(), hit)) {
+        Interaction it;
+        if (!next_interaction(m_scene, ray, it)) {
             parent.children.push_back({origin, std::nullopt, -1, Event::Escape, ray.direction, w, false, {}});
             m_tree.escaped += w;
             return;
         }
-        const SceneObject& object = m_scene.objects[hit.object];
-        const Material& m = m_scene.materials[object.material];
-        const Vec3& p = hit.surface.point;
-        const Scattering s = scatter(m, object.shape->is_closed(), ray.direction, hit.surface.normal);
+        const Vec3& p = it.point();
+        const int object = it.hit.object;
+        const Scattering& s = it.scattering;
         if (s.diffuse > 0.0) {
-            parent.children.push_back({origin, p, hit.object, Event::Absorb, ray.direction, w * s.diffuse, false, {}});
+            parent.children.push_back({origin, p, object, Event::Absorb, ray.direction, w * s.diffuse, false, {}});
             m_tree.absorbed += w * s.diffuse;
         }
         for (int i = 0; i < s.count; ++i) {
@@ -37,9 +38,9 @@ public:
                 m_tree.truncated += bw;
                 continue;
             }
-            parent.children.push_back({origin, p, hit.object, b.event, b.direction, bw, false, {}});
+            parent.children.push_back({origin, p, object, b.event, b.direction, bw, false, {}});
             RayTreeNode& child = parent.children.back();
-            if (depth + 1 >= m_options.max_depth) {
+            if (depth >= m_options.max_depth) {
                 child.truncated = true;
                 m_tree.truncated += bw;
             } else {
@@ -81,11 +82,6 @@ RayTree trace_ray_tree(const Scene& scene, const Ray& ray, const RayTreeOptions&
     tree.root.to = ray.origin;
     tree.root.direction = normalize(ray.direction);
     tree.root.weight = 1.0;
-    if (options.max_depth <= 0) {
-        tree.root.truncated = true;
-        tree.truncated = 1.0;
-        return tree;
-    }
     TreeBuilder(scene, options, tree).follow(tree.root, 0);
     return tree;
 }

@@ -24,12 +24,12 @@ struct RayTreeNode {
     std::optional<Event> event;  // empty for the root
     Vec3 direction;
     double weight = 0;
-    bool truncated = false;  // max depth reached: the branch was not followed further
+    bool truncated = false;  // max_depth reached: this branch was not followed further
     std::vector<RayTreeNode> children;
 };
 
 struct RayTreeOptions {
-    int max_depth = 16;        // events followed along any one path
+    int max_depth = 16;        // specular bounces followed along any one path
     double min_weight = 1e-3;  // branches carrying less are dropped (counted as truncated)
 };
 

@@ -13,6 +13,10 @@ struct Ray {
     Vec3 at(double t) const { return origin + direction * t; }
 };
 
+// True when t lies strictly inside (t_min, t_max). Written so that a NaN t is rejected:
+// every intersection routine filters its roots through this one test.
+inline bool in_range(double t, double t_min, double t_max) { return t > t_min && t < t_max; }
+
 // Relative offset used to leave a surface without re-hitting it: scene units are about 1,
 // lens prescriptions about 100, so the offset scales with the coordinates' magnitude.
 inline double surface_epsilon(const Vec3& p) {

@@ -12,9 +12,9 @@ bool Sphere::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& h
         return false;
     }
     double t = t0;
-    if (t <= t_min || t >= t_max) {
+    if (!in_range(t, t_min, t_max)) {
         t = t1;
-        if (t <= t_min || t >= t_max) return false;
+        if (!in_range(t, t_min, t_max)) return false;
     }
     hit.t = t;
     hit.point = ray.at(t);

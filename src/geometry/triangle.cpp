@@ -23,7 +23,7 @@ bool Triangle::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit&
     const double v = dot(ray.direction, q) * inv_det;
     if (v < 0.0 || u + v > 1.0) return false;
     const double t = dot(e2, q) * inv_det;
-    if (t <= t_min || t >= t_max) return false;
+    if (!in_range(t, t_min, t_max)) return false;
     hit.t = t;
     hit.point = ray.at(t);
     hit.normal = m_normal;

@@ -15,7 +15,7 @@ inline bool solve_half_quadratic(double a, double h, double c, double& t0, doubl
         return true;
     }
     const double disc = h * h - a * c;
-    if (disc < 0.0) return false;
+    if (!(disc >= 0.0)) return false;  // also refuses NaN coefficients
     const double q = -(h + std::copysign(std::sqrt(disc), h));
     if (q == 0.0) {  // h == 0 and disc == 0: double root at 0
         t0 = t1 = 0.0;

@@ -31,9 +31,9 @@ Rgb from_beam(const Scene& scene, const BeamLight& b, const Vec3& p, const Vec3&
     return b.color * (b.power / (std::numbers::pi * b.radius * b.radius) * cos_n);
 }
 
-Rgb from_sphere_emitter(const Scene& scene, int object, const Vec3& p, const Vec3& n,
-                        int samples, Rng& rng, double eps) {
-    const auto& sphere = static_cast<const Sphere&>(*scene.objects[object].shape);
+Rgb from_sphere_emitter(const Scene& scene, const SphereEmitter& emitter, const Vec3& p,
+                        const Vec3& n, int samples, Rng& rng, double eps) {
+    const Sphere& sphere = *emitter.sphere;
     const Vec3 to_centre = sphere.centre() - p;
     const double d2 = length_squared(to_centre);
     const double r2 = sphere.radius() * sphere.radius();
@@ -44,7 +44,6 @@ Rgb from_sphere_emitter(const Scene& scene, int object, const Vec3& p, const Vec
     const double one_minus_cos = (r2 / d2) / (1.0 + cos_max);
     const double inv_pdf = 2.0 * std::numbers::pi * one_minus_cos;
     const Frame frame = Frame::from_axis(to_centre / d);
-    const Rgb radiance = scene.material_of(object).emitted_radiance();
 
     double sum = 0.0;
     for (int s = 0; s < samples; ++s) {
@@ -56,7 +55,7 @@ Rgb from_sphere_emitter(const Scene& scene, int object, const Vec3& p, const Vec
         if (scene.occluded({p, wi}, eps, h.t - eps)) continue;
         sum += cos_n;
     }
-    return radiance * (sum * inv_pdf / samples);
+    return emitter.radiance * (sum * inv_pdf / samples);
 }
 
 }  // namespace
@@ -66,7 +65,7 @@ Rgb direct_irradiance(const Scene& scene, const Vec3& p, const Vec3& n, int samp
     Rgb e;
     for (const PointLight& l : scene.point_lights) e += from_point_light(scene, l, p, n, eps);
     for (const BeamLight& b : scene.beams) e += from_beam(scene, b, p, n, eps);
-    for (int object : scene.emitters()) e += from_sphere_emitter(scene, object, p, n, samples, rng, eps);
+    for (const SphereEmitter& s : scene.emitters()) e += from_sphere_emitter(scene, s, p, n, samples, rng, eps);
     return e;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Linear, float, RGB pixel storage: the image before tone mapping.
 
+#include <limits>
 #include <vector>
 
 #include "optics/rgb.h"
@@ -20,12 +21,17 @@ public:
     int height() const { return m_height; }
     PixelRgb& at(int x, int y) { return m_pixels[size_t(y) * m_width + x]; }
     const PixelRgb& at(int x, int y) const { return m_pixels[size_t(y) * m_width + x]; }
-    void set(int x, int y, const Rgb& c) {
-        at(x, y) = {static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b)};
-    }
+    // Stores a linear value, clamped to what a float holds: no Inf or NaN in a pixel.
+    void set(int x, int y, const Rgb& c) { at(x, y) = {to_float(c.r), to_float(c.g), to_float(c.b)}; }
     const std::vector<PixelRgb>& pixels() const { return m_pixels; }
 
 private:
+    static float to_float(double v) {
+        if (!(v > 0.0)) return 0.0f;  // negative and NaN
+        return v < std::numeric_limits<float>::max() ? static_cast<float>(v)
+                                                     : std::numeric_limits<float>::max();
+    }
+
     int m_width = 0, m_height = 0;
     std::vector<PixelRgb> m_pixels;
 };

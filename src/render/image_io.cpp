@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 
 namespace lenslab {
 
@@ -36,11 +37,14 @@ void write_png(const Image8& img, const std::string& path) {
 void write_exr(const Film& film, const std::string& path, double scale) {
     const int w = film.width(), h = film.height();
     std::vector<float> r(size_t(w) * h), g(r.size()), b(r.size());
+    auto scaled = [scale](float v) {
+        return static_cast<float>(std::min(v * scale, double(std::numeric_limits<float>::max())));
+    };
     for (size_t i = 0; i < r.size(); ++i) {
         const PixelRgb& p = film.pixels()[i];
-        r[i] = static_cast<float>(p.r * scale);
-        g[i] = static_cast<float>(p.g * scale);
-        b[i] = static_cast<float>(p.b * scale);
+        r[i] = scaled(p.r);
+        g[i] = scaled(p.g);
+        b[i] = scaled(p.b);
     }
     try {
         Imf::Header header(w, h);

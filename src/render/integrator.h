@@ -15,8 +15,9 @@ class Integrator {
 public:
     virtual ~Integrator() = default;
     // Fills `film` (already sized). Runs on the calling thread's TBB arena; stops early,
-    // leaving unfinished pixels black, when `control` is cancelled.
-    virtual void render(const Scene& scene, const Camera& camera, Film& film,
+    // leaving unfinished pixels black, when `control` is cancelled. Returns true when every
+    // pixel was finished.
+    virtual bool render(const Scene& scene, const Camera& camera, Film& film,
                         RenderControl& control) = 0;
 };
 
@@ -24,7 +25,7 @@ public:
 // tiles, the threads, the per-pixel random streams and the pixel samples.
 class PixelIntegrator : public Integrator {
 public:
-    void render(const Scene& scene, const Camera& camera, Film& film,
+    bool render(const Scene& scene, const Camera& camera, Film& film,
                 RenderControl& control) override;
 
 protected:

@@ -16,7 +16,7 @@
 #include "math/frame.h"
 #include "math/rng.h"
 #include "math/sampling.h"
-#include "scene/scattering.h"
+#include "scene/interaction.h"
 
 namespace lenslab {
 
@@ -39,12 +39,12 @@ EmittedPhoton emit(const Scene& scene, int light, int64_t n, Rng& rng) {
     if (light < spheres) {
         // A Lambertian sphere of radiance L and radius R emits pi L 4 pi R^2: uniform points
         // on the surface, cosine-distributed directions about the normal.
-        const int object = scene.emitters()[light];
-        const auto& sphere = static_cast<const Sphere&>(*scene.objects[object].shape);
+        const SphereEmitter& emitter = scene.emitters()[light];
+        const Sphere& sphere = *emitter.sphere;
         const Vec3 normal = sample_uniform_sphere(rng.uniform(), rng.uniform());
         const Vec3 dir = Frame::from_axis(normal).to_world(sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
         const double area = 4.0 * std::numbers::pi * sphere.radius() * sphere.radius();
-        const Rgb flux = scene.material_of(object).emitted_radiance() * (std::numbers::pi * area);
+        const Rgb flux = emitter.radiance * (std::numbers::pi * area);
         return {{sphere.centre() + normal * sphere.radius(), dir}, flux * inv_n};
     }
     if (light < spheres + points) {
@@ -79,16 +79,14 @@ Photon make_photon(const Vec3& p, const Rgb& power, const Vec3& towards, PhotonK
 Photon trace_one(const Scene& scene, EmittedPhoton e, int max_depth, Rng& rng) {
     Ray ray = e.ray;
     for (int depth = 0; depth <= max_depth; ++depth) {
-        SceneHit hit;
-        if (!scene.intersect(ray, surface_epsilon(ray.origin), std::numeric_limits<double>::infinity(), hit)) break;
-        const SceneObject& object = scene.objects[hit.object];
-        const Material& m = scene.materials[object.material];
-        const Scattering s = scatter(m, object.shape->is_closed(), ray.direction, hit.surface.normal);
+        Interaction it;
+        if (!next_interaction(scene, ray, it)) break;
+        const Scattering& s = it.scattering;
         double u = rng.uniform();
-        const double p_diffuse = m.color.is_black() ? 0.0 : s.diffuse;
+        const double p_diffuse = it.material->color.is_black() ? 0.0 : s.diffuse;
         if (u < p_diffuse) {
             const PhotonKind kind = depth == 0 ? PhotonKind::Direct : PhotonKind::Caustic;
-            return make_photon(hit.surface.point, e.power * (1.0 / p_diffuse), -ray.direction, kind);
+            return make_photon(it.point(), e.power * (1.0 / p_diffuse), -ray.direction, kind);
         }
         u -= p_diffuse;
         const Branch* chosen = nullptr;
@@ -97,7 +95,7 @@ Photon trace_one(const Scene& scene, EmittedPhoton e, int max_depth, Rng& rng) {
             u -= s.branches[i].weight;
         }
         if (!chosen) break;  // absorbed (or the diffuse share of a black surface)
-        ray = {hit.surface.point, chosen->direction};
+        ray = {it.point(), chosen->direction};
     }
     return Photon{};
 }

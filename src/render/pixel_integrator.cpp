@@ -20,7 +20,7 @@ uint64_t pixel_stream(int x, int y, int width) {
 
 }  // namespace
 
-void PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& film,
+bool PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& film,
                              RenderControl& control) {
     const int w = film.width(), h = film.height();
     const int tiles_x = (w + kTileSize - 1) / kTileSize;
@@ -38,6 +38,8 @@ void PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& fil
             const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
             for (int y = y0; y < std::min(y0 + kTileSize, h); ++y) {
                 for (int x = x0; x < std::min(x0 + kTileSize, w); ++x) {
+                    // Checked per pixel: one pixel of a deep scene at many spp can take long.
+                    if (control.cancelled()) return;
                     Rng rng(scene.render.seed, pixel_stream(x, y, w));
                     Rgb sum;
                     for (int s = 0; s < spp; ++s) {
@@ -57,6 +59,7 @@ void PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& fil
             control.report(static_cast<double>(++done) / tiles);
         }
     });
+    return done == tiles;
 }
 
 }  // namespace lenslab

@@ -29,11 +29,12 @@ RenderResult render_scene(const Scene& scene, RenderControl& control, int thread
     const Camera camera(scene.camera, scene.render.width, scene.render.height);
     auto integrator = make_integrator(scene);
     tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-    arena.execute([&] { integrator->render(scene, camera, result.film, control); });
+    bool finished = false;
+    arena.execute([&] { finished = integrator->render(scene, camera, result.film, control); });
     if (const auto* pm = dynamic_cast<const PhotonMapIntegrator*>(integrator.get())) {
         result.photons = pm->photon_stats();
     }
-    result.cancelled = control.cancelled();
+    result.cancelled = !finished;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }

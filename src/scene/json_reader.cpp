@@ -142,17 +142,18 @@ std::string format_number(double v) {
 }
 
 JsonObjectReader::JsonObjectReader(const nlohmann::json& value, std::string path,
-                                   std::initializer_list<const char*> allowed)
+                                   const std::vector<std::string>& allowed, const std::string& owner)
     : m_value(value), m_path(std::move(path)), m_allowed(allowed.begin(), allowed.end()) {
     if (!value.is_object()) {
         throw SceneError(m_path, std::string("must be an object, got ") + type_name(value));
     }
     for (const auto& [key, unused] : m_value.items()) {
         if (m_allowed.count(key)) continue;
-        std::string reason = "unknown key";
-        const std::string best =
-            closest_match(key, std::vector<std::string>(m_allowed.begin(), m_allowed.end()));
-        if (!best.empty()) reason += " (did you mean '" + best + "'?)";
+        // A near miss is a typo; anything else is most likely another kind's key.
+        const std::string best = closest_match(key, allowed);
+        const std::string reason =
+            !best.empty() ? "unknown key (did you mean '" + best + "'?)"
+                          : (owner.empty() ? "unknown key" : "not a property of " + owner);
         throw SceneError(child_path(key), reason);
     }
 }
@@ -181,7 +182,10 @@ const nlohmann::json& JsonObjectReader::require(const std::string& key) {
 double JsonObjectReader::as_number(const nlohmann::json& v, const std::string& path) {
     if (!v.is_number()) throw SceneError(path, std::string("must be a number, got ") + type_name(v));
     const double d = v.get<double>();
-    if (!std::isfinite(d)) throw SceneError(path, "must be finite");
+    // Scene values stay far from double's range, so squares and products cannot overflow.
+    if (!(std::abs(d) <= kMaxSceneNumber)) {
+        throw SceneError(path, "must be between -1e15 and 1e15, got " + format_number(d));
+    }
     return d;
 }
 
@@ -252,12 +256,12 @@ int64_t JsonObjectReader::integer(const std::string& key, int64_t fallback, int6
 }
 
 std::string JsonObjectReader::choice(const std::string& key, const std::string& fallback,
-                                     std::initializer_list<const char*> choices) {
+                                     const std::vector<std::string>& choices) {
     const std::string v = string(key, fallback);
     std::string known;
-    for (const char* c : choices) {
+    for (const std::string& c : choices) {
         if (v == c) return v;
-        known += (known.empty() ? "" : ", ") + std::string(c);
+        known += (known.empty() ? "" : ", ") + c;
     }
     throw SceneError(child_path(key), "unknown " + key + " '" + v + "' (known: " + known + ")");
 }

@@ -30,6 +30,9 @@ private:
     std::string m_reason;
 };
 
+// Largest magnitude any number in a scene file may have.
+inline constexpr double kMaxSceneNumber = 1e15;
+
 // Formats a number for messages the way a user typed it: 5, -1, 0.25.
 std::string format_number(double v);
 
@@ -46,8 +49,10 @@ class JsonObjectReader {
 public:
     // Throws if `value` is not a JSON object, or if it holds a key not in `allowed` (with a
     // "did you mean" suggestion). Every key the reader is later asked for must be allowed.
+    // `owner` ("a sphere") words the refusal of a key another kind of object would take:
+    // "not a property of a sphere".
     JsonObjectReader(const nlohmann::json& value, std::string path,
-                     std::initializer_list<const char*> allowed);
+                     const std::vector<std::string>& allowed, const std::string& owner = "");
 
     const std::string& path() const { return m_path; }
     std::string child_path(const std::string& key) const;
@@ -64,7 +69,7 @@ public:
     int64_t integer(const std::string& key, int64_t fallback, int64_t min_value, int64_t max_value);
     // A string that must be one of `choices` (the message lists them).
     std::string choice(const std::string& key, const std::string& fallback,
-                       std::initializer_list<const char*> choices);
+                       const std::vector<std::string>& choices);
     std::string string(const std::string& key);
     std::string string(const std::string& key, const std::string& fallback);
     Vec3 vec3(const std::string& key);

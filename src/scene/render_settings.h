@@ -2,10 +2,20 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "optics/rgb.h"
 
 namespace lenslab {
+
+// Smallest `min_weight` accepted: the specular branches of one ray that each carry at least
+// w number at most about 1/w, so this bounds the work per camera ray.
+inline constexpr double kMinBranchWeight = 1e-6;
+
+// The names the scene file and the command line accept, declared once for both.
+inline const std::vector<std::string> kIntegratorNames{"whitted", "photon_map"};
+inline const std::vector<std::string> kPhotonFilterNames{"cone", "gaussian", "box"};
+inline const std::vector<std::string> kDirectLightNames{"shadow_rays", "photon_map"};
 
 // The scene file's `render` block; the command line may override any of it.
 struct RenderSettings {

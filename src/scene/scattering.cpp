@@ -44,8 +44,10 @@ Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& ou
                 }
             }
         } else {
-            const double r = fresnel_dielectric(cos_i, kOutsideIor, m.ior).reflectance();
-            const double r_pane = 2.0 * r / (1.0 + r);
+            // Incoherent sum of the reflections between the two faces, 2R / (1 + R), taken
+            // per polarisation: the sum does not commute with averaging Rs and Rp.
+            const FresnelTerms f = fresnel_dielectric(cos_i, kOutsideIor, m.ior);
+            const double r_pane = 0.5 * (2.0 * f.rs / (1.0 + f.rs) + 2.0 * f.rp / (1.0 + f.rp));
             reflected += m.transparency * r_pane;
             s.branches[s.count++] = {Event::Refract, d, m.transparency * (1.0 - r_pane)};
         }

@@ -33,7 +33,8 @@ inline constexpr double kOutsideIor = 1.0;
 // `d`: unit arriving direction; `outward_normal`: unit, out of the solid (for an open
 // surface, its face normal); `closed`: whether the surface bounds a volume. An open
 // transparent surface is a thin pane: light passes straight through, and its two faces
-// reflect 2R / (1 + R) of it (incoherent multiple reflections).
+// reflect (R'_s + R'_p) / 2 of it, R' = 2R / (1 + R) per polarisation (incoherent multiple
+// reflections, Hecht section 9.7; absorption neglected).
 Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& outward_normal);
 
 }  // namespace lenslab

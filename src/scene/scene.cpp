@@ -8,8 +8,11 @@ void Scene::build() {
     m_emitters.clear();
     for (size_t i = 0; i < objects.size(); ++i) {
         shapes.push_back(objects[i].shape.get());
-        if (objects[i].type == ObjectType::Sphere && materials[objects[i].material].is_emitter()) {
-            m_emitters.push_back(static_cast<int>(i));
+        const Material& m = materials[objects[i].material];
+        // The scene reader lets only spheres emit; other emitting shapes are not lights.
+        const auto* sphere = dynamic_cast<const Sphere*>(objects[i].shape.get());
+        if (m.is_emitter() && sphere) {
+            m_emitters.push_back({static_cast<int>(i), sphere, m.emitted_radiance()});
         }
     }
     m_bvh = Bvh(std::move(shapes));

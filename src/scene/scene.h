@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "accel/bvh.h"
+#include "geometry/sphere.h"
 #include "scene/camera_settings.h"
 #include "scene/light.h"
 #include "scene/material.h"
@@ -21,6 +22,13 @@ struct SceneObject {
     ObjectType type = ObjectType::Sphere;
     std::shared_ptr<const Shape> shape;
     int material = 0;  // index into Scene::materials
+};
+
+// An emitting sphere: the report's light source.
+struct SphereEmitter {
+    int object;            // index into Scene::objects
+    const Sphere* sphere;  // its shape
+    Rgb radiance;          // emitted radiance
 };
 
 struct SceneHit {
@@ -45,12 +53,12 @@ public:
 
     const Material& material_of(int object) const { return materials[objects[object].material]; }
     // Objects whose material emits light: spheres (the report's lights).
-    const std::vector<int>& emitters() const { return m_emitters; }
+    const std::vector<SphereEmitter>& emitters() const { return m_emitters; }
     Aabb bounds() const { return m_bvh.bounds(); }
 
 private:
     Bvh m_bvh;
-    std::vector<int> m_emitters;
+    std::vector<SphereEmitter> m_emitters;
 };
 
 }  // namespace lenslab

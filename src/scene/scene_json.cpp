@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -40,9 +41,12 @@ void read_camera(const json& j, CameraSettings& cam) {
     } else {
         cam.direction = r.direction("direction");
     }
+    const bool up_given = r.has("up");
     cam.up = r.direction("up", {0, 1, 0});
     if (length(cross(cam.up, cam.direction)) < 1e-9) {
-        throw SceneError("camera.up", "must not be parallel to the view direction");
+        throw SceneError("camera.up", up_given ? "must not be parallel to the view direction"
+                                               : "the default up [0, 1, 0] is parallel to the view "
+                                                 "direction; give camera.up");
     }
     cam.fov_deg = r.number("fov", cam.fov_deg);
     if (!(cam.fov_deg > 0 && cam.fov_deg < 180)) {
@@ -65,10 +69,15 @@ void read_render(const json& j, RenderSettings& s) {
     s.background = r.color("background", s.background);
     s.light_samples = static_cast<int>(r.integer("light_samples", s.light_samples, 1, 4096));
     s.min_weight = r.fraction("min_weight", s.min_weight);
-    s.integrator = r.choice("integrator", s.integrator, {"whitted", "photon_map"});
+    if (s.min_weight < kMinBranchWeight) {
+        throw SceneError("render.min_weight",
+                         "must be at least 1e-06 (each camera ray then spawns at most about "
+                         "a million rays), got " + format_number(s.min_weight));
+    }
+    s.integrator = r.choice("integrator", s.integrator, kIntegratorNames);
     s.photons = r.integer("photons", s.photons, 1, int64_t{1} << 40);
     s.radius = r.positive("radius", s.radius);
-    s.filter = r.choice("filter", s.filter, {"cone", "gaussian", "box"});
+    s.filter = r.choice("filter", s.filter, kPhotonFilterNames);
     s.filter_k = r.number("filter_k", s.filter_k);
     if (!(s.filter_k >= 1.0)) {
         throw SceneError("render.filter_k", "must be >= 1 (the cone reaches zero at k r), got " +
@@ -76,7 +85,7 @@ void read_render(const json& j, RenderSettings& s) {
     }
     s.max_photons_per_estimate = static_cast<int>(
         r.integer("max_photons_per_estimate", s.max_photons_per_estimate, 1, 1000000));
-    s.direct = r.choice("direct", s.direct, {"shadow_rays", "photon_map"});
+    s.direct = r.choice("direct", s.direct, kDirectLightNames);
 }
 
 Material read_material(const json& j, const std::string& path, const std::string& name) {
@@ -177,71 +186,80 @@ std::shared_ptr<const Shape> read_lens(JsonObjectReader& r) {
     return std::make_shared<LensSolid>(std::move(p));
 }
 
+// The `type` of an object or light, read first: it decides which other keys belong.
+std::string peek_type(const json& j, const std::string& path) {
+    if (!j.is_object()) throw SceneError(path, "must be an object { \"type\": ... }");
+    const auto it = j.find("type");
+    if (it == j.end()) throw SceneError(path + ".type", "missing (required)");
+    if (!it->is_string()) throw SceneError(path + ".type", "must be a string");
+    return it->get<std::string>();
+}
+
+int read_material_ref(JsonObjectReader& r, const std::string& owner_name,
+                      const std::map<std::string, int>& materials, std::vector<Material>& all) {
+    const json& m = r.require("material");
+    const std::string path = r.child_path("material");
+    if (m.is_object()) {
+        all.push_back(read_material(m, path, owner_name));
+        return static_cast<int>(all.size()) - 1;
+    }
+    if (!m.is_string()) throw SceneError(path, "must be a material name or a material object { ... }");
+    const std::string name = m.get<std::string>();
+    const auto it = materials.find(name);
+    if (it != materials.end()) return it->second;
+    std::vector<std::string> names;
+    for (const auto& [known, index] : materials) names.push_back(known);
+    const std::string best = closest_match(name, names);
+    throw SceneError(path, "unknown material '" + name + "' (not in materials" +
+                               (best.empty() ? "" : "; did you mean '" + best + "'?") + ")");
+}
+
+std::shared_ptr<const Shape> read_triangle(JsonObjectReader& r) {
+    const json& v = r.require("vertices");
+    const std::string vpath = r.child_path("vertices");
+    if (!v.is_array() || v.size() != 3) {
+        throw SceneError(vpath, "must be an array of 3 points [[x,y,z], [x,y,z], [x,y,z]]");
+    }
+    Vec3 p[3];
+    for (int i = 0; i < 3; ++i) p[i] = JsonObjectReader::as_vec3(v[i], index_path(vpath, i));
+    // Relative to the edges, so tiny triangles in a large-unit scene are fine: the sine of
+    // the angle at vertex 0 must not vanish.
+    const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
+    if (!(length(cross(e1, e2)) > 1e-10 * length(e1) * length(e2))) {
+        throw SceneError(vpath, "the three vertices are collinear (zero area)");
+    }
+    return std::make_shared<Triangle>(p[0], p[1], p[2]);
+}
+
 SceneObject read_object(const json& j, const std::string& path,
                         const std::map<std::string, int>& materials, std::vector<Material>& all) {
-    JsonObjectReader r(j, path,
-                       {"type", "name", "material", "center", "radius", "vertices", "axis",
-                        "curvature_radius", "aperture_radius", "thickness", "diameter", "front",
-                        "back"});
+    const std::string type = peek_type(j, path);
+    std::vector<std::string> keys{"type", "name", "material"};
     SceneObject o;
-    const std::string type = r.string("type");
-    o.name = r.string("name", path);
-
-    // Each type accepts only its own keys; another type's key is most likely a mistake.
-    auto refuse = [&](std::initializer_list<const char*> keys) {
-        for (const char* key : keys) {
-            if (r.has(key)) throw SceneError(r.child_path(key), "not a property of a " + type);
-        }
-    };
     if (type == "sphere") {
-        refuse({"vertices", "axis", "curvature_radius", "aperture_radius", "thickness",
-                "diameter", "front", "back"});
         o.type = ObjectType::Sphere;
-        o.shape = std::make_shared<Sphere>(r.vec3("center"), r.positive("radius"));
+        keys.insert(keys.end(), {"center", "radius"});
     } else if (type == "triangle") {
-        refuse({"center", "radius", "axis", "curvature_radius", "aperture_radius", "thickness",
-                "diameter", "front", "back"});
         o.type = ObjectType::Triangle;
-        const json& v = r.require("vertices");
-        const std::string vpath = r.child_path("vertices");
-        if (!v.is_array() || v.size() != 3) {
-            throw SceneError(vpath, "must be an array of 3 points [[x,y,z], [x,y,z], [x,y,z]]");
-        }
-        Vec3 p[3];
-        for (int i = 0; i < 3; ++i) p[i] = JsonObjectReader::as_vec3(v[i], index_path(vpath, i));
-        // Relative to the edges, so tiny triangles in a large-unit scene are fine: the sine
-        // of the angle at vertex 0 must not vanish.
-        const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
-        if (!(length(cross(e1, e2)) > 1e-10 * length(e1) * length(e2))) {
-            throw SceneError(vpath, "the three vertices are collinear (zero area)");
-        }
-        o.shape = std::make_shared<Triangle>(p[0], p[1], p[2]);
+        keys.insert(keys.end(), {"vertices"});
     } else if (type == "lens") {
-        refuse({"radius", "vertices"});
         o.type = ObjectType::Lens;
-        o.shape = read_lens(r);
+        keys.insert(keys.end(), {"center", "axis", "curvature_radius", "aperture_radius",
+                                 "thickness", "diameter", "front", "back"});
     } else {
-        throw SceneError(r.child_path("type"),
+        throw SceneError(path + ".type",
                          "unknown object type '" + type + "' (known: sphere, triangle, lens)");
     }
-
-    const json& m = r.require("material");
-    if (m.is_string()) {
-        const std::string name = m.get<std::string>();
-        const auto it = materials.find(name);
-        if (it == materials.end()) {
-            std::vector<std::string> names;
-            for (const auto& [known, index] : materials) names.push_back(known);
-            const std::string best = closest_match(name, names);
-            throw SceneError(r.child_path("material"),
-                             "unknown material '" + name + "' (not in materials" +
-                                 (best.empty() ? "" : "; did you mean '" + best + "'?") + ")");
-        }
-        o.material = it->second;
-    } else {
-        o.material = static_cast<int>(all.size());
-        all.push_back(read_material(m, r.child_path("material"), o.name));
+    JsonObjectReader r(j, path, keys, "a " + type);
+    o.name = r.string("name", path);
+    switch (o.type) {
+        case ObjectType::Sphere:
+            o.shape = std::make_shared<Sphere>(r.vec3("center"), r.positive("radius"));
+            break;
+        case ObjectType::Triangle: o.shape = read_triangle(r); break;
+        case ObjectType::Lens: o.shape = read_lens(r); break;
     }
+    o.material = read_material_ref(r, o.name, materials, all);
     if (all[o.material].is_emitter() && o.type != ObjectType::Sphere) {
         throw SceneError(r.child_path("material"),
                          "only spheres can emit light (the material has an emission)");
@@ -250,22 +268,17 @@ SceneObject read_object(const json& j, const std::string& path,
 }
 
 void read_light(const json& j, const std::string& path, Scene& scene) {
-    JsonObjectReader r(j, path, {"type", "position", "origin", "direction", "radius", "color",
-                                 "power"});
-    const std::string type = r.string("type");
+    const std::string type = peek_type(j, path);
     if (type == "point") {
-        for (const char* key : {"origin", "direction", "radius"}) {
-            if (r.has(key)) throw SceneError(r.child_path(key), "not a property of a point light");
-        }
+        JsonObjectReader r(j, path, {"type", "position", "color", "power"}, "a point light");
         PointLight l;
         l.position = r.vec3("position");
         l.color = r.color("color", l.color);
         l.power = r.positive("power");
         scene.point_lights.push_back(l);
     } else if (type == "beam") {
-        if (r.has("position")) {
-            throw SceneError(r.child_path("position"), "a beam has an origin, not a position");
-        }
+        JsonObjectReader r(j, path, {"type", "origin", "direction", "radius", "color", "power"},
+                           "a beam");
         BeamLight b;
         b.origin = r.vec3("origin");
         b.direction = r.direction("direction");
@@ -274,7 +287,7 @@ void read_light(const json& j, const std::string& path, Scene& scene) {
         b.power = r.positive("power");
         scene.beams.push_back(b);
     } else {
-        throw SceneError(r.child_path("type"), "unknown light type '" + type + "' (known: point, beam)");
+        throw SceneError(path + ".type", "unknown light type '" + type + "' (known: point, beam)");
     }
 }
 
@@ -311,10 +324,15 @@ Scene parse_scene(const std::string& text, const std::string& source) {
 }
 
 Scene load_scene_file(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        throw SceneError(path, "is a directory, not a scene file");
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(path, std::string("cannot open scene file: ") + std::strerror(errno));
     std::ostringstream text;
     text << in.rdbuf();
+    if (in.bad()) throw SceneError(path, "cannot read scene file");
     try {
         return parse_scene(text.str(), path);
     } catch (const SceneError& e) {

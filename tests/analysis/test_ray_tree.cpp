@@ -67,7 +67,8 @@ TEST(RayTree, TotalInternalReflectionInsideGlass) {
 
 TEST(RayTree, MaxDepthTruncates) {
     const Scene scene = parse_scene(kGlassBallOverFloor);
-    const RayTree tree = trace_ray_tree(scene, {{0, 5, 0}, {0, -1, 0}}, {1, 1e-9});
+    // max_depth 0: the first hit is recorded, no bounce after it is followed.
+    const RayTree tree = trace_ray_tree(scene, {{0, 5, 0}, {0, -1, 0}}, {0, 1e-9});
     ASSERT_EQ(tree.root.children.size(), 2u);
     EXPECT_TRUE(tree.root.children[1].truncated);
     EXPECT_NEAR(tree.truncated, 1.0, 1e-12);

@@ -94,6 +94,21 @@ TEST(RenderSession, CancelStopsEarly) {
     EXPECT_TRUE(render_scene(scene, control).cancelled);
 }
 
+TEST(RenderSession, CancelDuringARenderStopsIt) {
+    Scene scene = default_scene();
+    scene.render.integrator = "whitted";
+    scene.render.width = 256;
+    scene.render.height = 256;
+    RenderControl* self = nullptr;
+    RenderControl control([&](double) { self->cancel(); });  // cancel after the first tile
+    self = &control;
+    const RenderResult r = render_scene(scene, control, 1);
+    EXPECT_TRUE(r.cancelled);
+    size_t black = 0;
+    for (const PixelRgb& p : r.film.pixels()) black += p.r == 0 && p.g == 0 && p.b == 0;
+    EXPECT_GT(black, r.film.pixels().size() / 2);  // most of the image was never rendered
+}
+
 TEST(RenderSession, ProgressReachesOne) {
     Scene scene = default_scene();
     scene.render.width = 40;

@@ -45,6 +45,7 @@ const BadScene kBadScenes[] = {
     {"camera_no_direction.json", "camera", "give look_at (a point) or direction (a vector)"},
     {"camera_up_parallel.json", "camera.up", "must not be parallel to the view direction"},
     // Render block.
+    {"min_weight_zero.json", "render.min_weight", "must be at least 1e-06"},
     {"render_width_fraction.json", "render.width", "must be a whole number, got 320.5"},
     {"render_unknown_integrator.json", "render.integrator",
      "unknown integrator 'path' (known: whitted, photon_map)"},
@@ -60,6 +61,9 @@ const BadScene kBadScenes[] = {
      "must be >= 0, got -5"},
     {"ior_zero.json", "materials.weird.ior", "must be > 0, got 0"},
     // Spheres and keys.
+    {"number_too_large.json", "objects[0].radius", "must be between -1e15 and 1e15, got 1e+155"},
+    {"material_number.json", "objects[0].material",
+     "must be a material name or a material object { ... }"},
     {"sphere_missing_radius.json", "objects[0].radius", "missing (required)"},
     {"sphere_negative_radius.json", "objects[2].radius", "must be > 0, got -1"},
     {"unknown_key_typo.json", "objects[0].radiu", "unknown key (did you mean 'radius'?)"},
@@ -97,7 +101,7 @@ const BadScene kBadScenes[] = {
      "unknown surface shape 'parabola' (known: sphere, flat)"},
     // Lights.
     {"unknown_light_type.json", "lights[1].type", "unknown light type 'spot' (known: point, beam)"},
-    {"beam_with_position.json", "lights[0].position", "a beam has an origin, not a position"},
+    {"beam_with_position.json", "lights[0].position", "not a property of a beam"},
     {"point_light_zero_power.json", "lights[0].power", "must be > 0, got 0"},
 };
 // clang-format on

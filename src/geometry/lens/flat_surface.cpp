@@ -10,7 +10,7 @@ bool FlatSurface::intersect(const Ray& ray, double semi_diameter, double t_min, 
                             double& t) const {
     if (ray.direction.z == 0.0) return false;
     const double tc = -ray.origin.z / ray.direction.z;
-    if (tc <= t_min || tc >= t_max) return false;
+    if (!in_range(tc, t_min, t_max)) return false;
     const Vec3 p = ray.at(tc);
     const double limit = semi_diameter * (1.0 + kSeamTolerance);
     if (p.x * p.x + p.y * p.y > limit * limit) return false;

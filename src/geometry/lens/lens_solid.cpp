@@ -122,7 +122,7 @@ bool LensSolid::intersect(const Ray& world_ray, double t_min, double t_max,
                              ray.origin.x * ray.origin.x + ray.origin.y * ray.origin.y - a * a,
                              roots[0], roots[1])) {
         for (double tc : roots) {
-            if (tc <= t_min || tc >= best_t) continue;
+            if (!in_range(tc, t_min, best_t)) continue;
             const Vec3 p = ray.at(tc);
             if (p.z < z_lo - pad || p.z > z_hi + pad) continue;
             best_t = tc;

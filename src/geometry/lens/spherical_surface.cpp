@@ -18,17 +18,21 @@ double SphericalSurface::max_semi_diameter() const { return std::abs(m_radius); 
 
 bool SphericalSurface::intersect(const Ray& ray, double semi_diameter, double t_min,
                                  double t_max, double& t) const {
-    const Vec3 oc{ray.origin.x, ray.origin.y, ray.origin.z - m_radius};
+    // In curvature form, c |p|^2 - 2 p_z = 0 with c = 1/R: no R^2 term to overflow or to
+    // swamp the sag of a weakly curved surface, and it tends to the plane z = 0 as c -> 0.
+    const double c = 1.0 / m_radius;
+    const Vec3& o = ray.origin;
+    const Vec3& d = ray.direction;
     double roots[2];
-    if (!solve_half_quadratic(dot(ray.direction, ray.direction), dot(oc, ray.direction),
-                              dot(oc, oc) - m_radius * m_radius, roots[0], roots[1])) {
+    if (!solve_half_quadratic(c * dot(d, d), c * dot(o, d) - d.z, c * dot(o, o) - 2.0 * o.z,
+                              roots[0], roots[1])) {
         return false;
     }
     const double limit = semi_diameter * (1.0 + kSeamTolerance);
     for (double tc : roots) {
-        if (tc <= t_min || tc >= t_max) continue;
+        if (!in_range(tc, t_min, t_max)) continue;
         const Vec3 p = ray.at(tc);
-        const bool on_vertex_half = p.z / m_radius <= 1.0;
+        const bool on_vertex_half = p.z * c <= 1.0;
         if (on_vertex_half && p.x * p.x + p.y * p.y <= limit * limit) {
             t = tc;
             return true;
@@ -40,7 +44,8 @@ bool SphericalSurface::intersect(const Ray& ray, double semi_diameter, double t_
 Vec3 SphericalSurface::normal(const Vec3& p) const {
     // (centre - p) / R: the centre lies on the +z side for R > 0 and the -z side for R < 0,
     // so dividing by the signed radius always gives a positive z component on the cap.
-    return normalize(Vec3{-p.x, -p.y, m_radius - p.z} / m_radius);
+    const double c = 1.0 / m_radius;
+    return normalize(Vec3{-c * p.x, -c * p.y, 1.0 - c * p.z});
 }
 
 std::string SphericalSurface::describe() const {

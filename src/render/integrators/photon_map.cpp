@@ -27,14 +27,14 @@ PhotonTracingSettings photon_tracing_settings(const Scene& scene) {
 PhotonMapIntegrator::PhotonMapIntegrator(const Scene& scene)
     : WhittedIntegrator(scene), m_gather(gather_settings(scene)) {}
 
-void PhotonMapIntegrator::render(const Scene& scene, const Camera& camera, Film& film,
+bool PhotonMapIntegrator::render(const Scene& scene, const Camera& camera, Film& film,
                                  RenderControl& control) {
     if (!m_map) {
         m_map = std::make_shared<const PhotonMap>(
             trace_photons(scene, photon_tracing_settings(scene), control, &m_stats));
     }
-    if (control.cancelled()) return;
-    WhittedIntegrator::render(scene, camera, film, control);
+    if (control.cancelled()) return false;
+    return WhittedIntegrator::render(scene, camera, film, control);
 }
 
 Rgb PhotonMapIntegrator::diffuse_irradiance(const Vec3& p, const Vec3& n, Rng& rng) const {

@@ -20,7 +20,7 @@ public:
     explicit PhotonMapIntegrator(const Scene& scene);
 
     // Traces the photons, builds the maps, then renders the pixels.
-    void render(const Scene& scene, const Camera& camera, Film& film, RenderControl& control) override;
+    bool render(const Scene& scene, const Camera& camera, Film& film, RenderControl& control) override;
 
     const PhotonTracingStats& photon_stats() const { return m_stats; }
     // Uses maps traced elsewhere (benchmarks reuse one map across several renders).

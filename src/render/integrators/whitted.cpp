@@ -1,11 +1,10 @@
 #include "render/integrators/whitted.h"
 
-#include <limits>
 #include <numbers>
 
 #include "math/rng.h"
 #include "render/direct_light.h"
-#include "scene/scattering.h"
+#include "scene/interaction.h"
 
 namespace lenslab {
 
@@ -17,20 +16,17 @@ Rgb WhittedIntegrator::diffuse_irradiance(const Vec3& p, const Vec3& n, Rng& rng
 
 Rgb WhittedIntegrator::trace(const Ray& ray, int depth, double weight, Rng& rng) const {
     const Scene& scene = m_scene;
-    SceneHit hit;
-    if (!scene.intersect(ray, surface_epsilon(ray.origin), std::numeric_limits<double>::infinity(), hit)) {
-        return scene.render.background;
-    }
-    const SceneObject& object = scene.objects[hit.object];
-    const Material& m = scene.materials[object.material];
-    const Vec3& p = hit.surface.point;
-    const Vec3& n = hit.surface.normal;
+    Interaction it;
+    if (!next_interaction(scene, ray, it)) return scene.render.background;
+    const Material& m = *it.material;
+    const Vec3& p = it.point();
+    const Vec3& n = it.normal();
     const bool front_side = dot(ray.direction, n) < 0.0;
 
     Rgb l;
     if (m.is_emitter() && front_side) l += m.emitted_radiance();
 
-    const Scattering s = scatter(m, object.shape->is_closed(), ray.direction, n);
+    const Scattering& s = it.scattering;
     if (s.diffuse > 0.0) {
         const Vec3 facing = front_side ? n : -n;
         const Rgb e = diffuse_irradiance(p, facing, rng);

@@ -1,0 +1,25 @@
+#pragma once
+// The step every tracer repeats: find the next surface along a ray and how its material
+// splits the light arriving there. Shared by the Whitted integrator, photon tracing and
+// `lenslab trace`, so all three see the same optics.
+
+#include "scene/scattering.h"
+#include "scene/scene.h"
+
+namespace lenslab {
+
+struct Interaction {
+    SceneHit hit;
+    const SceneObject* object = nullptr;
+    const Material* material = nullptr;
+    Scattering scattering;
+
+    const Vec3& point() const { return hit.surface.point; }
+    const Vec3& normal() const { return hit.surface.normal; }  // outward
+};
+
+// False when the ray leaves the scene. The ray's origin is taken to lie on the surface it
+// left, so hits closer than surface_epsilon(origin) are ignored.
+bool next_interaction(const Scene& scene, const Ray& ray, Interaction& out);
+
+}  // namespace lenslab

@@ -1,0 +1,57 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "render/image_io.h"
+
+namespace lenslab {
+namespace {
+
+TEST(Film, NeverHoldsInfOrNan) {
+    Film f(2, 1);
+    f.set(0, 0, {INFINITY, NAN, -1.0});
+    EXPECT_EQ(f.at(0, 0).r, std::numeric_limits<float>::max());
+    EXPECT_EQ(f.at(0, 0).g, 0.0f);
+    EXPECT_EQ(f.at(0, 0).b, 0.0f);
+    f.set(1, 0, {1e39, 0.5, 2.0});
+    EXPECT_TRUE(std::isfinite(f.at(1, 0).r));
+}
+
+TEST(ImageIo, SrgbTransferFunction) {
+    // IEC 61966-2-1: linear 0.5 encodes as 0.7354, the linear segment below 0.0031308.
+    EXPECT_NEAR(linear_to_srgb(0.5), 0.735357, 1e-6);
+    EXPECT_NEAR(linear_to_srgb(0.002), 0.002 * 12.92, 1e-12);
+    EXPECT_EQ(linear_to_srgb(2.0), 1.0);
+    EXPECT_EQ(linear_to_srgb(NAN), 0.0);
+}
+
+TEST(ImageIo, PngRoundTripAndExrWrite) {
+    Film f(3, 2);
+    f.set(0, 0, {1, 0, 0});
+    f.set(2, 1, {0.5, 0.5, 0.5});
+    const auto dir = std::filesystem::temp_directory_path();
+    const std::string png = (dir / "lenslab_test_io.png").string();
+    write_image(f, png);
+    const Image8 img = read_png(png);
+    ASSERT_EQ(img.width, 3);
+    ASSERT_EQ(img.height, 2);
+    EXPECT_EQ(img.rgb[0], 255);
+    EXPECT_EQ(img.rgb[(1 * 3 + 2) * 3], 188);  // round(255 * 0.7354)
+    const std::string exr = (dir / "lenslab_test_io.exr").string();
+    write_image(f, exr, 1.0);
+    EXPECT_GT(std::filesystem::file_size(exr), 0u);
+    EXPECT_FALSE(std::filesystem::exists(exr + ".tmp.exr"));  // written through a temp file
+    std::filesystem::remove(png);
+    std::filesystem::remove(exr);
+}
+
+TEST(ImageIo, RefusesUnknownExtensions) {
+    EXPECT_FALSE(is_supported_image_path("out.bmp"));
+    EXPECT_TRUE(is_supported_image_path("OUT.PNG"));
+    EXPECT_THROW(write_image(Film(1, 1), "/tmp/x.bmp"), ImageError);
+}
+
+}  // namespace
+}  // namespace lenslab
