@@ -12,15 +12,11 @@
 
 namespace lenslab {
 
-namespace {
-
 std::unique_ptr<Integrator> make_integrator(const Scene& scene) {
     if (scene.render.integrator == "whitted") return std::make_unique<WhittedIntegrator>(scene);
     if (scene.render.integrator == "photon_map") return std::make_unique<PhotonMapIntegrator>(scene);
     throw std::invalid_argument("unknown integrator '" + scene.render.integrator + "'");
 }
-
-}  // namespace
 
 RenderResult render_scene(const Scene& scene, RenderControl& control, int threads) {
     const auto start = std::chrono::steady_clock::now();

@@ -1,6 +1,7 @@
 #pragma once
 // Runs one render of a scene: picks the integrator, sets the thread count, reports progress.
 
+#include <memory>
 #include <optional>
 
 #include "render/film.h"
@@ -16,6 +17,9 @@ struct RenderResult {
     bool cancelled = false;
     std::optional<PhotonTracingStats> photons;  // set by the photon-map integrator
 };
+
+// The integrator the scene's render block asks for.
+std::unique_ptr<class Integrator> make_integrator(const Scene& scene);
 
 // threads <= 0 means all hardware threads. The result is identical for any thread count.
 RenderResult render_scene(const Scene& scene, RenderControl& control, int threads = 0);

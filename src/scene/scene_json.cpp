@@ -296,6 +296,10 @@ void read_light(const json& j, const std::string& path, Scene& scene) {
 Scene parse_scene(const std::string& text, const std::string& source) {
     const json root = parse_json_strict(text, source);
     if (!root.is_object()) throw SceneError(source, "the top level must be a JSON object { ... }");
+    return scene_from_json(root);
+}
+
+Scene scene_from_json(const nlohmann::json& root) {
     JsonObjectReader r(root, "",
                        {"version", "description", "camera", "render", "materials", "objects",
                         "lights"});

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "scene/scene.h"
 
 namespace lenslab {
@@ -11,6 +13,9 @@ namespace lenslab {
 // Parses scene JSON text. `source` names the text in syntax-error messages (a file name).
 // Throws SceneError; the returned scene is built and ready to render.
 Scene parse_scene(const std::string& text, const std::string& source = "scene");
+
+// Builds a scene from an already parsed JSON document (an editor's model). Throws SceneError.
+Scene scene_from_json(const nlohmann::json& root);
 
 // Reads and parses a scene file. Throws SceneError (unreadable file, syntax, content).
 Scene load_scene_file(const std::string& path);

@@ -25,6 +25,7 @@ public:
     const PhotonTracingStats& photon_stats() const { return m_stats; }
     // Uses maps traced elsewhere (benchmarks reuse one map across several renders).
     void set_photon_map(std::shared_ptr<const PhotonMap> map) { m_map = std::move(map); }
+    const std::shared_ptr<const PhotonMap>& shared_photon_map() const { return m_map; }
 
 protected:
     Rgb diffuse_irradiance(const Vec3& p, const Vec3& n, Rng& rng) const override;
