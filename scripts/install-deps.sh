@@ -10,6 +10,7 @@ PACKAGES=(
     libnanoflann-dev libmuparser-dev libpcg-cpp-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     gnuplot-nox
+    qt6-base-dev
 )
 
 missing=()

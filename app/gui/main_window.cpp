@@ -1,0 +1,306 @@
+#include "main_window.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolBar>
+
+#include "property_panel.h"
+#include "render/image_io.h"
+#include "render_controller.h"
+#include "scene_document.h"
+#include "scene_tree.h"
+#include "viewport.h"
+
+namespace lenslab::gui {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr int kMaxRecent = 8;
+
+// A new element of each kind, placed where the camera looks.
+json new_element(const QString& kind, const json& at) {
+    if (kind == "sphere") {
+        return {{"type", "sphere"}, {"name", "sphere"}, {"center", at}, {"radius", 0.4},
+                {"material", {{"color", {0.7, 0.7, 0.7}}}}};
+    }
+    if (kind == "triangle") {
+        const double x = at[0], y = at[1], z = at[2];
+        return {{"type", "triangle"}, {"name", "triangle"},
+                {"vertices", {{x - 0.5, y - 0.5, z}, {x + 0.5, y - 0.5, z}, {x, y + 0.5, z}}},
+                {"material", {{"color", {0.7, 0.7, 0.7}}}}};
+    }
+    if (kind == "lens") {
+        return {{"type", "lens"}, {"name", "lens"}, {"center", at}, {"axis", {0, 0, 1}},
+                {"thickness", 0.3}, {"diameter", 1.0},
+                {"front", {{"shape", "sphere"}, {"radius", 1.5}}},
+                {"back", {{"shape", "sphere"}, {"radius", -1.5}}},
+                {"material", {{"color", 1}, {"transparency", 1}, {"ior", 1.5}}}};
+    }
+    if (kind == "point") return {{"type", "point"}, {"position", {0, 4, 0}}, {"power", 100}};
+    return {{"type", "beam"}, {"origin", {0, 4, 0}}, {"direction", {0, -1, 0}}, {"radius", 0.3}, {"power", 10}};
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      m_document(new SceneDocument(this)),
+      m_renderer(new RenderController(this)),
+      m_tree(new SceneTree(m_document, this)),
+      m_panel(new PropertyPanel(m_document, this)),
+      m_viewport(new Viewport(m_document, this)),
+      m_status(new QLabel(this)) {
+    setObjectName("main_window");
+    setCentralWidget(m_viewport);
+
+    auto* tree_dock = new QDockWidget(tr("Scene"), this);
+    tree_dock->setObjectName("scene_dock");
+    tree_dock->setWidget(m_tree);
+    addDockWidget(Qt::LeftDockWidgetArea, tree_dock);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(m_panel);
+    scroll->setWidgetResizable(true);
+    auto* panel_dock = new QDockWidget(tr("Properties"), this);
+    panel_dock->setObjectName("properties_dock");
+    panel_dock->setWidget(scroll);
+    addDockWidget(Qt::RightDockWidgetArea, panel_dock);
+    statusBar()->addWidget(m_status, 1);
+
+    connect(m_tree, &SceneTree::pointer_selected, m_panel, &PropertyPanel::show_pointer);
+    connect(m_viewport, &Viewport::object_picked, this, [this](int object) {
+        m_tree->select_pointer(object >= 0 ? QString("/objects/%1").arg(object) : QString());
+    });
+    connect(m_panel, &PropertyPanel::edit_refused, this, &MainWindow::show_message);
+    connect(m_viewport, &Viewport::edit_refused, this, &MainWindow::show_message);
+    connect(m_document, &SceneDocument::changed, this, [this] {
+        m_renderer->restart(m_document->scene());
+        update_title();
+    });
+    connect(m_document->undo_stack(), &QUndoStack::cleanChanged, this, &MainWindow::update_title);
+    connect(m_document, &SceneDocument::path_changed, this, &MainWindow::update_title);
+    connect(m_renderer, &RenderController::frame_ready, this,
+            [this](const QImage& image, int passes, qint64 photons, double seconds) {
+                m_viewport->set_image(image);
+                m_status->setText(tr("passes %1 · photons %2 · %3 s")
+                                      .arg(passes).arg(photons).arg(seconds, 0, 'f', 1));
+            });
+    connect(m_renderer, &RenderController::render_failed, this, &MainWindow::show_message);
+
+    build_menus();
+    resize(1280, 800);
+    resizeDocks({tree_dock, panel_dock}, {230, 380}, Qt::Horizontal);
+    update_title();
+    m_tree->select_pointer("/camera");
+    m_renderer->restart(m_document->scene(), 0);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::build_menus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New (default scene)"), this, [this] {
+        if (maybe_save()) m_document->load_default();
+    });
+    file->addAction(tr("&Open..."), QKeySequence::Open, this, [this] {
+        if (!maybe_save()) return;
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), QString(), tr("Scenes (*.json)"));
+        if (!path.isEmpty()) open_file(path);
+    });
+    QMenu* examples = file->addMenu(tr("Open &example"));
+    for (const QFileInfo& info : QDir(LENSLAB_SCENES_DIR).entryInfoList({"*.json"}, QDir::Files, QDir::Name)) {
+        examples->addAction(info.baseName(), this, [this, path = info.absoluteFilePath()] {
+            if (maybe_save()) open_file(path);
+        });
+    }
+    m_recent_menu = file->addMenu(tr("Open &recent"));
+    update_recent_menu();
+    file->addSeparator();
+    file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { save(); });
+    file->addAction(tr("Save &as..."), QKeySequence::SaveAs, this, [this] { save_as(); });
+    file->addAction(tr("&Export image..."), this, &MainWindow::export_image);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = m_document->undo_stack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = m_document->undo_stack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    QToolBar* tools = addToolBar(tr("Edit"));
+    tools->setObjectName("edit_toolbar");
+    for (const auto& [kind, label] : {std::pair{"sphere", tr("Add sphere")}, std::pair{"triangle", tr("Add triangle")},
+                                      std::pair{"lens", tr("Add lens")}, std::pair{"point", tr("Add point light")},
+                                      std::pair{"beam", tr("Add beam")}}) {
+        QAction* a = edit->addAction(label, this, [this, k = QString(kind)] { add_element(k); });
+        tools->addAction(a);
+    }
+    edit->addAction(tr("&Duplicate"), QKeySequence(tr("Ctrl+D")), this, &MainWindow::duplicate_selected);
+    edit->addAction(tr("De&lete"), QKeySequence::Delete, this, &MainWindow::delete_selected);
+
+    QMenu* render = menuBar()->addMenu(tr("&Render"));
+    QAction* start = render->addAction(tr("&Start"), this, [this] { m_renderer->restart(m_document->scene(), 0); });
+    QAction* stop = render->addAction(tr("S&top"), this, [this] { m_renderer->stop_rendering(); });
+    tools->addSeparator();
+    tools->addAction(start);
+    tools->addAction(stop);
+}
+
+void MainWindow::update_title() {
+    const QString name = m_document->path().isEmpty() ? tr("default scene") : QFileInfo(m_document->path()).fileName();
+    setWindowTitle(QString("%1%2 — lenslab").arg(name, m_document->is_modified() ? " *" : ""));
+}
+
+void MainWindow::show_message(const QString& text) { statusBar()->showMessage(text, 10000); }
+
+bool MainWindow::open_file(const QString& path, QString* error) {
+    QString message;
+    if (!m_document->open(path, &message)) {
+        if (error) {
+            *error = message;
+        } else {
+            auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open scene"), message, QMessageBox::Ok, this);
+            box->setAttribute(Qt::WA_DeleteOnClose);
+            box->open();
+        }
+        show_message(message);
+        return false;
+    }
+    remember_recent(path);
+    m_tree->select_pointer("/camera");
+    return true;
+}
+
+bool MainWindow::save_file(const QString& path, QString* error) {
+    QString message;
+    if (!m_document->save(path, &message)) {
+        if (error) *error = message;
+        else QMessageBox::warning(this, tr("Cannot save"), message);
+        return false;
+    }
+    remember_recent(path);
+    return true;
+}
+
+bool MainWindow::save() { return m_document->path().isEmpty() ? save_as() : save_file(m_document->path()); }
+
+bool MainWindow::save_as() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save scene"), m_document->path(), tr("Scenes (*.json)"));
+    return !path.isEmpty() && save_file(path);
+}
+
+bool MainWindow::maybe_save() {
+    if (!m_document->is_modified()) return true;
+    const auto answer = QMessageBox::question(this, tr("Unsaved changes"), tr("Save the changes to this scene?"),
+                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (maybe_save()) {
+        m_renderer->stop_rendering();
+        event->accept();
+    } else {
+        event->ignore();
+    }
+}
+
+void MainWindow::export_image() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export image"), "lenslab.png", tr("Images (*.png *.exr)"));
+    if (path.isEmpty()) return;
+    try {
+        write_image(m_renderer->last_film(), path.toStdString());
+        show_message(tr("wrote %1").arg(path));
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Cannot export"), QString::fromStdString(e.what()));
+    }
+}
+
+void MainWindow::remember_recent(const QString& path) {
+    QSettings settings("lenslab", "lenslab-gui");
+    QStringList recent = settings.value("recent").toStringList();
+    recent.removeAll(QFileInfo(path).absoluteFilePath());
+    recent.prepend(QFileInfo(path).absoluteFilePath());
+    while (recent.size() > kMaxRecent) recent.removeLast();
+    settings.setValue("recent", recent);
+    update_recent_menu();
+}
+
+void MainWindow::update_recent_menu() {
+    m_recent_menu->clear();
+    for (const QString& path : QSettings("lenslab", "lenslab-gui").value("recent").toStringList()) {
+        m_recent_menu->addAction(path, this, [this, path] {
+            if (maybe_save()) open_file(path);
+        });
+    }
+    m_recent_menu->setEnabled(!m_recent_menu->isEmpty());
+}
+
+void MainWindow::add_element(const QString& kind) {
+    json edited = m_document->json();
+    const Scene& s = m_document->scene();
+    const Vec3 at = s.camera.position + s.camera.direction * 3.0;
+    const bool light = kind == "point" || kind == "beam";
+    const char* list = light ? "lights" : "objects";
+    if (!edited.contains(list)) edited[list] = json::array();
+    edited[list].push_back(new_element(kind, json::array({at.x, at.y, at.z})));
+    QString error;
+    if (!m_document->apply(edited, tr("Add %1").arg(kind), &error)) {
+        show_message(error);
+        return;
+    }
+    m_tree->select_pointer(QString("/%1/%2").arg(list).arg(edited[list].size() - 1));
+}
+
+void MainWindow::duplicate_selected() {
+    const QString pointer = m_tree->selected_pointer();
+    if (!pointer.startsWith("/objects/") && !pointer.startsWith("/lights/")) return;
+    json edited = m_document->json();
+    json copy = edited[json::json_pointer(pointer.toStdString())];
+    if (copy.contains("center")) copy["center"][0] = copy["center"][0].get<double>() + 0.5;
+    if (copy.contains("position")) copy["position"][0] = copy["position"][0].get<double>() + 0.5;
+    if (copy.contains("vertices")) {
+        for (auto& v : copy["vertices"]) v[0] = v[0].get<double>() + 0.5;
+    }
+    if (copy.contains("name")) copy["name"] = copy["name"].get<std::string>() + " copy";
+    const std::string list = pointer.section('/', 1, 1).toStdString();
+    edited[list].push_back(copy);
+    QString error;
+    if (!m_document->apply(edited, tr("Duplicate"), &error)) {
+        show_message(error);
+        return;
+    }
+    m_tree->select_pointer(QString("/%1/%2").arg(QString::fromStdString(list)).arg(edited[list].size() - 1));
+}
+
+void MainWindow::delete_selected() {
+    const QString pointer = m_tree->selected_pointer();
+    if (!pointer.startsWith("/objects/") && !pointer.startsWith("/lights/")) return;
+    json edited = m_document->json();
+    const std::string list = pointer.section('/', 1, 1).toStdString();
+    edited[list].erase(size_t(pointer.section('/', 2, 2).toInt()));
+    QString error;
+    if (!m_document->apply(edited, tr("Delete"), &error)) {
+        show_message(error);
+        return;
+    }
+    m_tree->select_pointer(QString());
+    m_panel->show_pointer(QString());
+}
+
+}  // namespace lenslab::gui

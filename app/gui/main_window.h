@@ -1,0 +1,63 @@
+#pragma once
+// The editor's main window: scene tree (left), viewport (centre), properties (right),
+// menus for files, edits and rendering, and a status bar with passes, photons and time.
+
+#include <QLabel>
+#include <QMainWindow>
+
+namespace lenslab::gui {
+
+class PropertyPanel;
+class RenderController;
+class SceneDocument;
+class SceneTree;
+class Viewport;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Opens a scene file. A broken file leaves the current scene as it is; its error is
+    // returned in `error` if given, else shown in a message box.
+    bool open_file(const QString& path, QString* error = nullptr);
+    bool save_file(const QString& path, QString* error = nullptr);
+
+    SceneDocument* document() const { return m_document; }
+    RenderController* renderer() const { return m_renderer; }
+    SceneTree* tree() const { return m_tree; }
+    PropertyPanel* panel() const { return m_panel; }
+    Viewport* viewport() const { return m_viewport; }
+    QString status_text() const { return m_status->text(); }
+
+    // Adds an object or light of `kind` (sphere, triangle, lens, point, beam) and selects it.
+    void add_element(const QString& kind);
+    void duplicate_selected();
+    void delete_selected();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void build_menus();
+    void update_title();
+    void update_recent_menu();
+    void remember_recent(const QString& path);
+    bool maybe_save();  // asks about unsaved changes; false means "cancel"
+    bool save();
+    bool save_as();
+    void export_image();
+    void show_message(const QString& text);
+
+    SceneDocument* m_document;
+    RenderController* m_renderer;
+    SceneTree* m_tree;
+    PropertyPanel* m_panel;
+    Viewport* m_viewport;
+    QLabel* m_status;
+    QMenu* m_recent_menu = nullptr;
+};
+
+}  // namespace lenslab::gui

@@ -1,0 +1,293 @@
+#include "property_panel.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+#include "scene/material.h"
+#include "scene/render_settings.h"
+#include "scene_document.h"
+
+namespace lenslab::gui {
+
+namespace {
+
+using nlohmann::json;
+
+QStringList to_qt(const std::vector<std::string>& names) {
+    QStringList out;
+    for (const auto& n : names) out << QString::fromStdString(n);
+    return out;
+}
+
+json rgb_json(const Rgb& c) { return json::array({c.r, c.g, c.b}); }
+
+// A colour given as one number means grey; the form always edits three components.
+json as_triple(const json& v) {
+    if (v.is_number()) return json::array({v, v, v});
+    return v;
+}
+
+}  // namespace
+
+PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document), m_error(new QLabel(this)) {
+    auto* layout = new QVBoxLayout(this);
+    m_error->setObjectName("property_error");
+    m_error->setWordWrap(true);
+    m_error->setStyleSheet("color: #c0392b;");
+    layout->addStretch(1);
+    layout->addWidget(m_error);
+    connect(document, &SceneDocument::changed, this, &PropertyPanel::rebuild);
+}
+
+void PropertyPanel::show_pointer(const QString& pointer) {
+    m_pointer = pointer;
+    m_error->clear();
+    rebuild();
+}
+
+const json* PropertyPanel::value_at(const std::string& key) const {
+    const json& doc = m_document->json();
+    const json::json_pointer p(m_pointer.toStdString() + (key.empty() ? "" : "/" + key));
+    return doc.contains(p) ? &doc.at(p) : nullptr;
+}
+
+void PropertyPanel::commit(const std::string& key, const json& value, const QString& label) {
+    const json* current = value_at(key);
+    if (current && *current == value) return;
+    QString error;
+    const json::json_pointer p(m_pointer.toStdString() + "/" + key);
+    if (m_document->set_value(p, value, tr("Change %1").arg(label), &error)) {
+        m_error->clear();
+    } else {
+        m_error->setText(error);
+        emit edit_refused(error);
+        rebuild();  // show the value the document still holds
+    }
+}
+
+void PropertyPanel::rebuild() {
+    if (m_form_widget) m_form_widget->deleteLater();
+    m_form_widget = new QWidget(this);
+    m_form = new QFormLayout(m_form_widget);
+    static_cast<QVBoxLayout*>(layout())->insertWidget(0, m_form_widget);
+    const json& doc = m_document->json();
+    if (m_pointer.isEmpty() || !doc.contains(json::json_pointer(m_pointer.toStdString()))) return;
+    if (m_pointer == "/camera") build_camera();
+    else if (m_pointer == "/render") build_render();
+    else if (m_pointer.startsWith("/materials/")) build_material("");
+    else if (m_pointer.startsWith("/objects/")) build_object();
+    else if (m_pointer.startsWith("/lights/")) build_light();
+}
+
+void PropertyPanel::add_heading(const QString& text) {
+    auto* heading = new QLabel("<b>" + text + "</b>", m_form_widget);
+    m_form->addRow(heading);
+}
+
+void PropertyPanel::add_number(const QString& label, const std::string& key, double fallback,
+                               double min, double max, int decimals) {
+    auto* box = new QDoubleSpinBox(m_form_widget);
+    box->setObjectName(QString::fromStdString("field:" + key));
+    box->setDecimals(decimals);
+    box->setRange(min, max);
+    box->setKeyboardTracking(false);
+    const json* v = value_at(key);
+    box->setValue(v && v->is_number() ? v->get<double>() : fallback);
+    connect(box, &QDoubleSpinBox::editingFinished, this, [this, box, key, label] {
+        commit(key, box->value(), label);
+    });
+    m_form->addRow(label, box);
+}
+
+void PropertyPanel::add_integer(const QString& label, const std::string& key, long long fallback,
+                                long long min, long long max) {
+    // QSpinBox holds an int; photon counts beyond it are edited as whole-number doubles.
+    auto* box = new QDoubleSpinBox(m_form_widget);
+    box->setObjectName(QString::fromStdString("field:" + key));
+    box->setDecimals(0);
+    box->setRange(double(min), double(max));
+    box->setKeyboardTracking(false);
+    const json* v = value_at(key);
+    box->setValue(v && v->is_number() ? v->get<double>() : double(fallback));
+    connect(box, &QDoubleSpinBox::editingFinished, this, [this, box, key, label] {
+        commit(key, static_cast<long long>(box->value()), label);
+    });
+    m_form->addRow(label, box);
+}
+
+void PropertyPanel::add_vec3(const QString& label, const std::string& key, const json& fallback,
+                             double min, double max) {
+    auto* row = new QWidget(m_form_widget);
+    auto* h = new QHBoxLayout(row);
+    h->setContentsMargins(0, 0, 0, 0);
+    const json* v = value_at(key);
+    const json value = as_triple(v ? *v : fallback);
+    std::array<QDoubleSpinBox*, 3> boxes{};
+    for (int i = 0; i < 3; ++i) {
+        boxes[i] = new QDoubleSpinBox(row);
+        boxes[i]->setObjectName(QString::fromStdString("field:" + key + "." + "xyz"[i]));
+        boxes[i]->setDecimals(4);
+        boxes[i]->setRange(min, max);
+        boxes[i]->setKeyboardTracking(false);
+        boxes[i]->setValue(value.is_array() && value.size() == 3 ? value[i].get<double>() : 0.0);
+        h->addWidget(boxes[i]);
+    }
+    for (int i = 0; i < 3; ++i) {
+        connect(boxes[i], &QDoubleSpinBox::editingFinished, this, [this, boxes, key, label] {
+            commit(key, json::array({boxes[0]->value(), boxes[1]->value(), boxes[2]->value()}), label);
+        });
+    }
+    m_form->addRow(label, row);
+}
+
+void PropertyPanel::add_choice(const QString& label, const std::string& key, const std::string& fallback,
+                               const QStringList& choices,
+                               const std::function<void(const std::string&)>& on_choose) {
+    auto* box = new QComboBox(m_form_widget);
+    box->setObjectName(QString::fromStdString("field:" + key));
+    box->addItems(choices);
+    const json* v = value_at(key);
+    box->setCurrentText(QString::fromStdString(v && v->is_string() ? v->get<std::string>() : fallback));
+    connect(box, &QComboBox::activated, this, [this, box, key, label, on_choose] {
+        const std::string chosen = box->currentText().toStdString();
+        if (on_choose) {
+            on_choose(chosen);
+        } else {
+            commit(key, chosen, label);
+        }
+    });
+    m_form->addRow(label, box);
+}
+
+void PropertyPanel::add_text(const QString& label, const std::string& key, const std::string& fallback) {
+    auto* edit = new QLineEdit(m_form_widget);
+    edit->setObjectName(QString::fromStdString("field:" + key));
+    const json* v = value_at(key);
+    edit->setText(QString::fromStdString(v && v->is_string() ? v->get<std::string>() : fallback));
+    connect(edit, &QLineEdit::editingFinished, this, [this, edit, key, label] {
+        commit(key, edit->text().toStdString(), label);
+    });
+    m_form->addRow(label, edit);
+}
+
+void PropertyPanel::build_camera() {
+    add_heading(tr("Camera"));
+    add_vec3(tr("Position"), "position", json::array({0, 0, 5}));
+    if (value_at("look_at")) {
+        add_vec3(tr("Look at"), "look_at", json::array({0, 0, 0}));
+    } else {
+        add_vec3(tr("Direction"), "direction", json::array({0, 0, -1}), -1e6, 1e6);
+    }
+    add_vec3(tr("Up"), "up", json::array({0, 1, 0}));
+    add_number(tr("Field of view (deg)"), "fov", 40.0, 0.1, 179.9, 2);
+}
+
+void PropertyPanel::build_render() {
+    const RenderSettings d;
+    add_heading(tr("Render settings"));
+    add_integer(tr("Width"), "width", d.width, 1, 16384);
+    add_integer(tr("Height"), "height", d.height, 1, 16384);
+    add_integer(tr("Samples per pixel"), "spp", d.spp, 1, 1 << 20);
+    add_integer(tr("Max depth"), "max_depth", d.max_depth, 0, 1000);
+    add_integer(tr("Seed"), "seed", static_cast<long long>(d.seed), 0, 2147483647);
+    add_vec3(tr("Ambient"), "ambient", rgb_json(d.ambient), 0, 1e6);
+    add_vec3(tr("Background"), "background", rgb_json(d.background), 0, 1e6);
+    add_choice(tr("Integrator"), "integrator", d.integrator, to_qt(kIntegratorNames));
+    add_heading(tr("Photon map"));
+    add_integer(tr("Photons per light"), "photons", d.photons, 1, 1LL << 40);
+    add_number(tr("Gather radius"), "radius", 0.05, 1e-6, 1e6, 5);
+    add_choice(tr("Filter"), "filter", d.filter, to_qt(kPhotonFilterNames));
+    add_number(tr("Filter constant k"), "filter_k", d.filter_k, 1.0, 1e6, 3);
+    add_integer(tr("Max photons per estimate"), "max_photons_per_estimate", d.max_photons_per_estimate, 1, 1000000);
+    add_choice(tr("Direct light"), "direct", d.direct, to_qt(kDirectLightNames));
+}
+
+void PropertyPanel::build_material(const std::string& prefix) {
+    const Material d;
+    add_vec3(tr("Colour (albedo)"), prefix + "color", rgb_json(d.color), 0, 1);
+    add_number(tr("Transparency"), prefix + "transparency", d.transparency, 0, 1);
+    add_number(tr("Specular (mirror)"), prefix + "specular", d.specular, 0, 1);
+    add_number(tr("Refractive index"), prefix + "ior", d.ior, 0.01, 100);
+    add_number(tr("Emission intensity"), prefix + "emission/intensity", d.emission_intensity, 0, 1e12);
+    add_vec3(tr("Emission colour"), prefix + "emission/color", rgb_json(d.emission_color), 0, 1e6);
+}
+
+void PropertyPanel::build_object() {
+    const json& o = *value_at("");
+    const std::string type = o.value("type", "");
+    add_heading(QString::fromStdString(type));
+    add_text(tr("Name"), "name", "");
+    if (type == "sphere") {
+        add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
+        add_number(tr("Radius"), "radius", 1.0, 1e-9, 1e6);
+    } else if (type == "triangle") {
+        for (int i = 0; i < 3; ++i) {
+            add_vec3(tr("Vertex %1").arg(i + 1), "vertices/" + std::to_string(i), json::array({0, 0, 0}));
+        }
+    } else if (type == "lens") {
+        build_lens();
+    }
+    // The material: a named one is chosen from the list; an inline one is edited here.
+    QStringList names;
+    if (m_document->json().contains("materials")) {
+        for (const auto& [name, v] : m_document->json()["materials"].items()) names << QString::fromStdString(name);
+    }
+    add_heading(tr("Material"));
+    const json* m = value_at("material");
+    if (m && m->is_string()) {
+        add_choice(tr("Material"), "material", m->get<std::string>(), names);
+    } else {
+        build_material("material/");
+    }
+}
+
+void PropertyPanel::build_lens() {
+    add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
+    add_vec3(tr("Axis"), "axis", json::array({0, 0, 1}));
+    if (value_at("curvature_radius")) {
+        add_number(tr("Curvature radius"), "curvature_radius", 1.0, 1e-9, 1e6);
+        add_number(tr("Aperture radius"), "aperture_radius", 0.5, 1e-9, 1e6);
+        return;
+    }
+    add_number(tr("Centre thickness"), "thickness", 1.0, 1e-9, 1e6);
+    add_number(tr("Diameter"), "diameter", 1.0, 1e-9, 1e6);
+    build_surface(tr("Front surface"), "front");
+    build_surface(tr("Back surface"), "back");
+}
+
+void PropertyPanel::build_surface(const QString& label, const std::string& key) {
+    const json* s = value_at(key);
+    const std::string shape = s ? s->value("shape", "sphere") : "sphere";
+    // Switching the shape replaces the whole surface: a flat one has no radius.
+    const double diameter = value_at("diameter") ? value_at("diameter")->get<double>() : 1.0;
+    add_choice(label, key + "/shape", shape, {"sphere", "flat"}, [this, key, label, diameter](const std::string& chosen) {
+        commit(key, chosen == "flat" ? json{{"shape", "flat"}} : json{{"shape", "sphere"}, {"radius", 2.0 * diameter}},
+               label);
+    });
+    if (shape == "sphere") {
+        add_number(label + tr(" radius (signed)"), key + "/radius", 2.0 * diameter, -1e6, 1e6);
+    }
+}
+
+void PropertyPanel::build_light() {
+    const json& l = *value_at("");
+    const std::string type = l.value("type", "");
+    add_heading(QString::fromStdString(type) + tr(" light"));
+    if (type == "point") {
+        add_vec3(tr("Position"), "position", json::array({0, 0, 0}));
+    } else {
+        add_vec3(tr("Origin"), "origin", json::array({0, 0, 0}));
+        add_vec3(tr("Direction"), "direction", json::array({0, 0, -1}));
+        add_number(tr("Beam radius"), "radius", 1.0, 1e-9, 1e6);
+    }
+    add_number(tr("Power (W)"), "power", 1.0, 1e-12, 1e15);
+    add_vec3(tr("Colour"), "color", json::array({1, 1, 1}), 0, 1e6);
+}
+
+}  // namespace lenslab::gui

@@ -1,0 +1,73 @@
+#pragma once
+// Edits what is selected in the scene tree: a form of typed fields (numbers with their valid
+// ranges, vectors, colours, choices) built for the kind of element selected: camera, render
+// settings, material, sphere, triangle, lens (both forms, every surface shape), light.
+// Each committed field is one undoable edit; a value the scene reader refuses is not
+// applied and the reason shows under the form.
+
+#include <QLabel>
+#include <QPointer>
+#include <QWidget>
+
+#include <functional>
+
+#include <nlohmann/json.hpp>
+
+class QFormLayout;
+
+namespace lenslab::gui {
+
+class SceneDocument;
+
+class PropertyPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    PropertyPanel(SceneDocument* document, QWidget* parent = nullptr);
+
+    // Shows the fields of the element at `pointer` ("/objects/2"), or nothing for "".
+    void show_pointer(const QString& pointer);
+    const QString& pointer() const { return m_pointer; }
+    QString error_text() const { return m_error->text(); }
+
+signals:
+    void edit_refused(const QString& message);
+
+private:
+    void rebuild();
+    // Commits `value` at `key` (a pointer relative to the selected element).
+    void commit(const std::string& key, const nlohmann::json& value, const QString& label);
+
+    // Field builders; `key` is relative to the selected element, `fallback` is shown when
+    // the file leaves the key out (the reader's default).
+    void add_number(const QString& label, const std::string& key, double fallback, double min,
+                    double max, int decimals = 4);
+    void add_integer(const QString& label, const std::string& key, long long fallback,
+                     long long min, long long max);
+    void add_vec3(const QString& label, const std::string& key, const nlohmann::json& fallback,
+                  double min = -1e6, double max = 1e6);
+    // `on_choose` replaces the default commit (the chosen string at `key`).
+    void add_choice(const QString& label, const std::string& key, const std::string& fallback,
+                    const QStringList& choices,
+                    const std::function<void(const std::string&)>& on_choose = {});
+    void add_text(const QString& label, const std::string& key, const std::string& fallback);
+    void add_heading(const QString& text);
+
+    void build_camera();
+    void build_render();
+    void build_material(const std::string& prefix);
+    void build_object();
+    void build_lens();
+    void build_surface(const QString& label, const std::string& key);
+    void build_light();
+
+    const nlohmann::json* value_at(const std::string& key) const;
+
+    SceneDocument* m_document;
+    QString m_pointer;
+    QPointer<QWidget> m_form_widget;
+    QFormLayout* m_form = nullptr;
+    QLabel* m_error;
+};
+
+}  // namespace lenslab::gui

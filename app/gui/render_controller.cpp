@@ -1,0 +1,133 @@
+#include "render_controller.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/image_io.h"
+#include "render/progressive_render.h"
+
+namespace lenslab::gui {
+
+QImage to_qimage(const Film& film) {
+    const Image8 img = to_srgb8(film);
+    QImage out(img.width, img.height, QImage::Format_RGB888);
+    for (int y = 0; y < img.height; ++y) {
+        std::copy_n(img.rgb.data() + size_t(y) * img.width * 3, img.width * 3, out.scanLine(y));
+    }
+    return out;
+}
+
+RenderController::RenderController(QObject* parent, int preview_size)
+    : QThread(parent), m_preview_size(preview_size) {
+    m_debounce.setSingleShot(true);
+    connect(&m_debounce, &QTimer::timeout, this, &RenderController::start_pending);
+    start();
+}
+
+RenderController::~RenderController() {
+    {
+        QMutexLocker lock(&m_mutex);
+        m_quit = true;
+        if (m_control) m_control->cancel();
+        m_wake.wakeAll();
+    }
+    wait();
+}
+
+void RenderController::restart(const Scene& scene, int delay_ms) {
+    Scene preview = scene;
+    const int largest = std::max(preview.render.width, preview.render.height);
+    if (largest > m_preview_size) {
+        const double s = double(m_preview_size) / largest;
+        preview.render.width = std::max(1, int(std::lround(preview.render.width * s)));
+        preview.render.height = std::max(1, int(std::lround(preview.render.height * s)));
+    }
+    m_next = std::move(preview);
+    {
+        // Cancel the pass in flight now, so the worker is free when the debounce ends.
+        QMutexLocker lock(&m_mutex);
+        if (m_control) m_control->cancel();
+    }
+    m_debounce.start(delay_ms);
+}
+
+void RenderController::start_pending() {
+    if (!m_next) return;
+    QMutexLocker lock(&m_mutex);
+    m_job = std::move(m_next);
+    m_next.reset();
+    m_stop = false;
+    if (m_control) m_control->cancel();
+    m_wake.wakeAll();
+}
+
+void RenderController::stop_rendering() {
+    m_debounce.stop();
+    m_next.reset();
+    QMutexLocker lock(&m_mutex);
+    m_stop = true;
+    m_job.reset();
+    if (m_control) m_control->cancel();
+}
+
+bool RenderController::is_rendering() const {
+    QMutexLocker lock(&m_mutex);
+    return m_busy;
+}
+
+Film RenderController::last_film() const {
+    QMutexLocker lock(&m_mutex);
+    return m_last;
+}
+
+void RenderController::run() {
+    for (;;) {
+        Scene scene;
+        {
+            QMutexLocker lock(&m_mutex);
+            while (!m_quit && !m_job) m_wake.wait(&m_mutex);
+            if (m_quit) return;
+            scene = std::move(*m_job);
+            m_job.reset();
+            m_busy = true;
+        }
+        emit rendering_changed(true);
+        QElapsedTimer clock;
+        clock.start();
+        try {
+            ProgressiveRender render(scene);
+            for (int pass = 0; pass < m_max_passes; ++pass) {
+                RenderControl control;
+                {
+                    QMutexLocker lock(&m_mutex);
+                    if (m_quit || m_stop || m_job) break;  // a newer scene waits, or stopped
+                    m_control = &control;
+                }
+                const bool finished = render.add_pass(control);
+                {
+                    QMutexLocker lock(&m_mutex);
+                    m_control = nullptr;
+                }
+                if (!finished) break;
+                const Film film = render.image();
+                {
+                    QMutexLocker lock(&m_mutex);
+                    m_last = film;
+                }
+                const auto& stats = render.photon_stats();
+                emit frame_ready(to_qimage(film), render.passes(),
+                                 stats ? qint64(stats->direct + stats->caustic) : 0,
+                                 clock.elapsed() / 1000.0);
+            }
+        } catch (const std::exception& e) {
+            emit render_failed(QString::fromStdString(e.what()));
+        }
+        {
+            QMutexLocker lock(&m_mutex);
+            m_busy = false;
+        }
+        emit rendering_changed(false);
+    }
+}
+
+}  // namespace lenslab::gui

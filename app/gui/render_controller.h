@@ -1,0 +1,68 @@
+#pragma once
+// Renders the scene progressively on a worker thread: pass after pass, each frame sent back
+// through a queued signal. A new scene (after an edit) cancels the pass in flight and starts
+// again; restarts are debounced so a burst of edits costs one restart. The worker renders an
+// immutable copy of the scene; it never touches the document.
+
+#include <QElapsedTimer>
+#include <QImage>
+#include <QMutex>
+#include <QThread>
+#include <QTimer>
+#include <QWaitCondition>
+
+#include <optional>
+
+#include "render/film.h"
+#include "render/render_control.h"
+#include "scene/scene.h"
+
+namespace lenslab::gui {
+
+class RenderController : public QThread {
+    Q_OBJECT
+
+public:
+    // `preview_size`: the larger image side is scaled down to at most this many pixels.
+    explicit RenderController(QObject* parent = nullptr, int preview_size = 480);
+    ~RenderController() override;
+
+    // Schedules a render of `scene` (debounced by `delay_ms`; 0 starts at once).
+    void restart(const Scene& scene, int delay_ms = 120);
+    // Stops after cancelling the pass in flight; the last frame stays.
+    void stop_rendering();
+    bool is_rendering() const;
+    int max_passes() const { return m_max_passes; }
+    void set_max_passes(int n) { m_max_passes = n; }
+    // The latest averaged frame in linear RGB, for export.
+    Film last_film() const;
+
+signals:
+    // `passes`: passes averaged so far; `photons`: stored photons (0 without photon maps).
+    void frame_ready(const QImage& image, int passes, qint64 photons, double seconds);
+    void render_failed(const QString& message);
+    void rendering_changed(bool rendering);
+
+protected:
+    void run() override;
+
+private:
+    void start_pending();
+
+    QTimer m_debounce;
+    std::optional<Scene> m_next;  // GUI thread only: the scene waiting for the debounce
+    int m_preview_size;
+    int m_max_passes = 256;
+
+    mutable QMutex m_mutex;
+    QWaitCondition m_wake;
+    std::optional<Scene> m_job;     // handed to the worker
+    RenderControl* m_control = nullptr;  // the pass in flight, to cancel it
+    bool m_quit = false, m_stop = false, m_busy = false;
+    Film m_last;
+};
+
+// 8-bit sRGB image of a linear film, for display.
+QImage to_qimage(const Film& film);
+
+}  // namespace lenslab::gui

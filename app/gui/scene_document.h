@@ -1,0 +1,63 @@
+#pragma once
+// The scene being edited: its JSON document (the single source of truth, saved as it is),
+// the file it came from, and the undo stack. Every edit is checked by the same reader the
+// command line uses, so the editor cannot hold a scene that `lenslab render` would refuse.
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene.h"
+
+namespace lenslab::gui {
+
+class SceneDocument : public QObject {
+    Q_OBJECT
+
+public:
+    explicit SceneDocument(QObject* parent = nullptr);
+
+    const nlohmann::json& json() const { return m_json; }
+    const Scene& scene() const { return m_scene; }
+    const QString& path() const { return m_path; }
+    bool is_modified() const { return !m_undo.isClean(); }
+    QUndoStack* undo_stack() { return &m_undo; }
+
+    // Replaces the document with the built-in default scene (not modified, no path).
+    void load_default();
+    // Opens a scene file. On failure the current scene is kept and `error` says why.
+    bool open(const QString& path, QString* error);
+    // Writes the document atomically (a temporary file renamed over the target).
+    bool save(const QString& path, QString* error);
+
+    // Applies an edit as one undoable step. Refused (nothing changes, `error` says why)
+    // when the resulting scene would not load.
+    bool apply(const nlohmann::json& edited, const QString& description, QString* error);
+    // Sets one value, e.g. pointer "/objects/2/radius".
+    bool set_value(const nlohmann::json::json_pointer& pointer, const nlohmann::json& value,
+                   const QString& description, QString* error);
+
+    // Interactive edits (camera drags): `preview` changes the document without an undo
+    // step; `commit_preview` at the end of the drag records one step from `before` to now.
+    bool preview(const nlohmann::json& edited);
+    void commit_preview(const nlohmann::json& before, const QString& description);
+
+    // Used by the undo command: installs an already validated document.
+    void install(const nlohmann::json& json);
+
+signals:
+    void changed();           // the document (and so the scene) changed
+    void path_changed();      // a new file name (open, save as)
+
+private:
+    bool validate(const nlohmann::json& j, Scene& out, QString* error) const;
+
+    nlohmann::json m_json;
+    Scene m_scene;
+    QString m_path;
+    QUndoStack m_undo;
+};
+
+}  // namespace lenslab::gui

@@ -1,0 +1,81 @@
+#include "scene_tree.h"
+
+#include <QHeaderView>
+
+#include "scene_document.h"
+
+namespace lenslab::gui {
+
+namespace {
+
+constexpr int kPointerRole = Qt::UserRole;
+
+QTreeWidgetItem* add_item(QTreeWidgetItem* parent, const QString& text, const QString& pointer) {
+    auto* item = new QTreeWidgetItem(parent, {text});
+    item->setData(0, kPointerRole, pointer);
+    return item;
+}
+
+}  // namespace
+
+SceneTree::SceneTree(SceneDocument* document, QWidget* parent) : QTreeWidget(parent), m_document(document) {
+    setHeaderHidden(true);
+    setObjectName("scene_tree");
+    connect(document, &SceneDocument::changed, this, &SceneTree::rebuild);
+    connect(this, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
+        emit pointer_selected(item ? item->data(0, kPointerRole).toString() : QString());
+    });
+    rebuild();
+}
+
+QString SceneTree::selected_pointer() const {
+    return currentItem() ? currentItem()->data(0, kPointerRole).toString() : QString();
+}
+
+void SceneTree::select_pointer(const QString& pointer) {
+    for (QTreeWidgetItemIterator it(this); *it; ++it) {
+        if ((*it)->data(0, kPointerRole).toString() == pointer) {
+            setCurrentItem(*it);
+            return;
+        }
+    }
+    setCurrentItem(nullptr);
+}
+
+void SceneTree::rebuild() {
+    const QString keep = selected_pointer();
+    const QSignalBlocker block(this);
+    clear();
+    const auto& j = m_document->json();
+    add_item(invisibleRootItem(), tr("Camera"), "/camera");
+    add_item(invisibleRootItem(), tr("Render settings"), "/render");
+    auto* materials = add_item(invisibleRootItem(), tr("Materials"), "");
+    if (j.contains("materials")) {
+        for (const auto& [name, value] : j["materials"].items()) {
+            add_item(materials, QString::fromStdString(name), "/materials/" + QString::fromStdString(name));
+        }
+    }
+    auto* objects = add_item(invisibleRootItem(), tr("Objects"), "");
+    if (j.contains("objects")) {
+        for (size_t i = 0; i < j["objects"].size(); ++i) {
+            const auto& o = j["objects"][i];
+            const QString type = QString::fromStdString(o.value("type", "?"));
+            const QString name = o.contains("name") ? QString::fromStdString(o["name"].get<std::string>())
+                                                    : QString("objects[%1]").arg(i);
+            add_item(objects, QString("%1 (%2)").arg(name, type), QString("/objects/%1").arg(i));
+        }
+    }
+    auto* lights = add_item(invisibleRootItem(), tr("Lights"), "");
+    if (j.contains("lights")) {
+        for (size_t i = 0; i < j["lights"].size(); ++i) {
+            add_item(lights, QString("%1 light %2").arg(QString::fromStdString(j["lights"][i].value("type", "?"))).arg(i),
+                     QString("/lights/%1").arg(i));
+        }
+    }
+    materials->setExpanded(true);
+    objects->setExpanded(true);
+    lights->setExpanded(true);
+    select_pointer(keep);
+}
+
+}  // namespace lenslab::gui
