@@ -72,7 +72,13 @@ void PropertyPanel::commit(const std::string& key, const json& value, const QStr
 }
 
 void PropertyPanel::rebuild() {
-    if (m_form_widget) m_form_widget->deleteLater();
+    if (m_form_widget) {
+        // Detached at once (so nothing finds its fields), deleted later: the edit that led
+        // here may still be running inside one of them.
+        m_form_widget->hide();
+        m_form_widget->setParent(nullptr);
+        m_form_widget->deleteLater();
+    }
     m_form_widget = new QWidget(this);
     m_form = new QFormLayout(m_form_widget);
     static_cast<QVBoxLayout*>(layout())->insertWidget(0, m_form_widget);
@@ -132,7 +138,7 @@ void PropertyPanel::add_vec3(const QString& label, const std::string& key, const
     for (int i = 0; i < 3; ++i) {
         boxes[i] = new QDoubleSpinBox(row);
         boxes[i]->setObjectName(QString::fromStdString("field:" + key + "." + "xyz"[i]));
-        boxes[i]->setDecimals(4);
+        boxes[i]->setDecimals(6);
         boxes[i]->setRange(min, max);
         boxes[i]->setKeyboardTracking(false);
         boxes[i]->setValue(value.is_array() && value.size() == 3 ? value[i].get<double>() : 0.0);
@@ -225,7 +231,7 @@ void PropertyPanel::build_object() {
     add_text(tr("Name"), "name", "");
     if (type == "sphere") {
         add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
-        add_number(tr("Radius"), "radius", 1.0, 1e-9, 1e6);
+        add_number(tr("Radius"), "radius", 1.0, 1e-6, 1e6);
     } else if (type == "triangle") {
         for (int i = 0; i < 3; ++i) {
             add_vec3(tr("Vertex %1").arg(i + 1), "vertices/" + std::to_string(i), json::array({0, 0, 0}));
@@ -251,12 +257,12 @@ void PropertyPanel::build_lens() {
     add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
     add_vec3(tr("Axis"), "axis", json::array({0, 0, 1}));
     if (value_at("curvature_radius")) {
-        add_number(tr("Curvature radius"), "curvature_radius", 1.0, 1e-9, 1e6);
-        add_number(tr("Aperture radius"), "aperture_radius", 0.5, 1e-9, 1e6);
+        add_number(tr("Curvature radius"), "curvature_radius", 1.0, 1e-6, 1e6);
+        add_number(tr("Aperture radius"), "aperture_radius", 0.5, 1e-6, 1e6);
         return;
     }
-    add_number(tr("Centre thickness"), "thickness", 1.0, 1e-9, 1e6);
-    add_number(tr("Diameter"), "diameter", 1.0, 1e-9, 1e6);
+    add_number(tr("Centre thickness"), "thickness", 1.0, 1e-6, 1e6);
+    add_number(tr("Diameter"), "diameter", 1.0, 1e-6, 1e6);
     build_surface(tr("Front surface"), "front");
     build_surface(tr("Back surface"), "back");
 }
@@ -284,9 +290,9 @@ void PropertyPanel::build_light() {
     } else {
         add_vec3(tr("Origin"), "origin", json::array({0, 0, 0}));
         add_vec3(tr("Direction"), "direction", json::array({0, 0, -1}));
-        add_number(tr("Beam radius"), "radius", 1.0, 1e-9, 1e6);
+        add_number(tr("Beam radius"), "radius", 1.0, 1e-6, 1e6);
     }
-    add_number(tr("Power (W)"), "power", 1.0, 1e-12, 1e15);
+    add_number(tr("Power (W)"), "power", 1.0, 1e-6, 1e15);
     add_vec3(tr("Colour"), "color", json::array({1, 1, 1}), 0, 1e6);
 }
 

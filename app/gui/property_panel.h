@@ -41,7 +41,7 @@ private:
     // Field builders; `key` is relative to the selected element, `fallback` is shown when
     // the file leaves the key out (the reader's default).
     void add_number(const QString& label, const std::string& key, double fallback, double min,
-                    double max, int decimals = 4);
+                    double max, int decimals = 6);
     void add_integer(const QString& label, const std::string& key, long long fallback,
                      long long min, long long max);
     void add_vec3(const QString& label, const std::string& key, const nlohmann::json& fallback,

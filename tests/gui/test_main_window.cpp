@@ -1,0 +1,192 @@
+// The editor driven as a user would, on the offscreen platform: open, edit in a panel, see a
+// new frame, undo, save and reopen, refuse a broken file and an invalid value.
+
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "main_window.h"
+#include "property_panel.h"
+#include "render_controller.h"
+#include "scene_document.h"
+#include "scene_tree.h"
+#include "viewport.h"
+
+using lenslab::gui::MainWindow;
+using lenslab::gui::RenderController;
+using nlohmann::json;
+
+namespace {
+
+const QString kSmallScene = QStringLiteral(LENSLAB_TEST_DATA "/gui/small_scene.json");
+
+QDoubleSpinBox* field(MainWindow& w, const QString& name) {
+    return w.panel()->findChild<QDoubleSpinBox*>("field:" + name);
+}
+
+// Sets a spin box as a user would (value, then leaving the field).
+void type_value(QDoubleSpinBox* box, double v) {
+    box->setValue(v);
+    emit box->editingFinished();
+}
+
+// Waits for a frame rendered from the scene as it is now (pass 1 after a restart).
+bool wait_for_fresh_frame(MainWindow& w, int timeout_ms = 20000) {
+    QSignalSpy spy(w.renderer(), &RenderController::frame_ready);
+    QElapsedTimer t;
+    t.start();
+    while (t.elapsed() < timeout_ms) {
+        if (!spy.wait(timeout_ms - int(t.elapsed()))) return false;
+        for (const auto& args : spy) {
+            if (args.at(1).toInt() == 1) return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void opens_a_scene() {
+        MainWindow w;
+        QString error;
+        QVERIFY2(w.open_file(kSmallScene, &error), qPrintable(error));
+        QCOMPARE(w.document()->scene().objects.size(), size_t(3));
+        QVERIFY(wait_for_fresh_frame(w));
+        QVERIFY(!w.viewport()->image().isNull());
+        QVERIFY(w.status_text().contains("passes"));
+    }
+
+    void panel_edit_changes_the_scene_renders_and_undoes() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.tree()->select_pointer("/objects/0");
+        QCOMPARE(w.panel()->pointer(), QString("/objects/0"));
+        QDoubleSpinBox* radius = field(w, "radius");
+        QVERIFY(radius);
+        QCOMPARE(radius->value(), 0.5);
+
+        QSignalSpy frames(w.renderer(), &RenderController::frame_ready);
+        QElapsedTimer latency;
+        latency.start();
+        type_value(radius, 0.7);
+        QCOMPARE(w.document()->json()["objects"][0]["radius"].get<double>(), 0.7);
+        QVERIFY(wait_for_fresh_frame(w));
+        qInfo("edit -> first frame of the edited scene: %lld ms", static_cast<long long>(latency.elapsed()));
+        QVERIFY(w.document()->is_modified());
+
+        w.document()->undo_stack()->undo();
+        QCOMPARE(w.document()->json()["objects"][0]["radius"].get<double>(), 0.5);
+        QVERIFY(field(w, "radius"));
+        QCOMPARE(field(w, "radius")->value(), 0.5);  // the panel shows the restored value
+        w.document()->undo_stack()->redo();
+        QCOMPARE(w.document()->json()["objects"][0]["radius"].get<double>(), 0.7);
+    }
+
+    void save_then_reopen_gives_the_same_scene() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.tree()->select_pointer("/objects/0");
+        type_value(field(w, "center.y"), 0.75);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("saved.json");
+        QString error;
+        QVERIFY2(w.save_file(path, &error), qPrintable(error));
+        QVERIFY(!w.document()->is_modified());
+        const json saved = w.document()->json();
+
+        MainWindow other;
+        QVERIFY(other.open_file(path, &error));
+        QCOMPARE(other.document()->json(), saved);
+        QCOMPARE(other.document()->json()["objects"][0]["center"][1].get<double>(), 0.75);
+    }
+
+    void a_broken_file_leaves_the_scene_untouched() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        const json before = w.document()->json();
+        QString error;
+        QVERIFY(!w.open_file(LENSLAB_TEST_DATA "/scene/bad/sphere_negative_radius.json", &error));
+        QVERIFY2(error.contains("objects[2].radius: must be > 0, got -1"), qPrintable(error));
+        QCOMPARE(w.document()->json(), before);
+        QCOMPARE(w.document()->path(), kSmallScene);
+    }
+
+    void an_invalid_value_is_refused() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        // The spin box cannot hold a negative radius at all...
+        w.tree()->select_pointer("/objects/0");
+        QVERIFY(field(w, "radius")->minimum() > 0);
+        // ...and a value the reader refuses (transparency + specular > 1) is not applied.
+        w.tree()->select_pointer("/materials/red");
+        const json before = w.document()->json();
+        type_value(field(w, "transparency"), 0.9);
+        QCOMPARE(w.document()->json(), before);
+        QVERIFY2(w.panel()->error_text().contains("transparency + specular must be at most 1"),
+                 qPrintable(w.panel()->error_text()));
+        QCOMPARE(field(w, "transparency")->value(), 0.0);  // the form shows the kept value
+        QVERIFY(!w.document()->undo_stack()->canUndo());
+    }
+
+    void add_duplicate_delete_and_pick() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.add_element("lens");
+        QCOMPARE(w.document()->json()["objects"].size(), size_t(4));
+        QCOMPARE(w.tree()->selected_pointer(), QString("/objects/3"));
+        w.duplicate_selected();
+        QCOMPARE(w.document()->json()["objects"].size(), size_t(5));
+        w.delete_selected();
+        w.tree()->select_pointer("/objects/3");
+        w.delete_selected();
+        QCOMPARE(w.document()->json()["objects"].size(), size_t(3));
+        // The ball is in the middle of the image.
+        w.resize(1000, 700);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const QPoint centre = w.viewport()->rect().center();
+        QCOMPARE(w.viewport()->pick(centre), 0);
+        QTest::mouseClick(w.viewport(), Qt::LeftButton, {}, centre);
+        QCOMPARE(w.tree()->selected_pointer(), QString("/objects/0"));
+    }
+
+    void camera_drag_is_one_undo_step() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const json before = w.document()->json()["camera"];
+        QWidget* v = w.viewport();
+        const QPoint c = v->rect().center();
+        QTest::mousePress(v, Qt::LeftButton, {}, c);
+        for (int i = 1; i <= 10; ++i) QTest::mouseMove(v, c + QPoint(8 * i, 0));
+        QTest::mouseRelease(v, Qt::LeftButton, {}, c + QPoint(80, 0));
+        QVERIFY(w.document()->json()["camera"] != before);
+        QCOMPARE(w.document()->undo_stack()->count(), 1);
+        w.document()->undo_stack()->undo();
+        QCOMPARE(w.document()->json()["camera"], before);
+    }
+
+    void edit_while_rendering_restarts_promptly() {
+        MainWindow w;
+        QVERIFY(w.open_file(LENSLAB_SOURCE_DIR "/scenes/default.json"));
+        QSignalSpy frames(w.renderer(), &RenderController::frame_ready);
+        QVERIFY(frames.wait(60000));  // rendering is under way
+        w.tree()->select_pointer("/objects/0");
+        QElapsedTimer latency;
+        latency.start();
+        type_value(field(w, "radius"), 0.6);
+        QVERIFY(wait_for_fresh_frame(w, 60000));
+        qInfo("edit while rendering -> first frame of the edited scene: %lld ms (includes tracing "
+              "the photon maps again)", static_cast<long long>(latency.elapsed()));
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "test_main_window.moc"
