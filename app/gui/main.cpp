@@ -10,6 +10,7 @@
 
 #include "main_window.h"
 #include "render_controller.h"
+#include "scene_tree.h"
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
@@ -21,8 +22,10 @@ int main(int argc, char** argv) {
     parser.addPositionalArgument("scene", "Scene file to open (default: the built-in default scene)");
     QCommandLineOption screenshot("screenshot", "Render, save a grab of the window to FILE and exit.", "FILE");
     QCommandLineOption passes("passes", "Passes to render before --screenshot grabs (default 8).", "N", "8");
+    QCommandLineOption select("select", "Select an element first, by JSON pointer (e.g. /objects/1).", "POINTER");
     parser.addOption(screenshot);
     parser.addOption(passes);
+    parser.addOption(select);
     parser.process(app);
 
     lenslab::gui::MainWindow window;
@@ -34,6 +37,7 @@ int main(int argc, char** argv) {
             if (parser.isSet(screenshot)) return 1;
         }
     }
+    if (parser.isSet(select)) window.tree()->select_pointer(parser.value(select));
     window.show();
 
     if (parser.isSet(screenshot)) {

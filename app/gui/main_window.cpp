@@ -72,6 +72,7 @@ MainWindow::MainWindow(QWidget* parent)
     auto* scroll = new QScrollArea(this);
     scroll->setWidget(m_panel);
     scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     auto* panel_dock = new QDockWidget(tr("Properties"), this);
     panel_dock->setObjectName("properties_dock");
     panel_dock->setWidget(scroll);
@@ -100,7 +101,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     build_menus();
     resize(1280, 800);
-    resizeDocks({tree_dock, panel_dock}, {230, 380}, Qt::Horizontal);
+    resizeDocks({tree_dock, panel_dock}, {230, 420}, Qt::Horizontal);
     update_title();
     m_tree->select_pointer("/camera");
     m_renderer->restart(m_document->scene(), 0);

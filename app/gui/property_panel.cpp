@@ -24,6 +24,18 @@ QStringList to_qt(const std::vector<std::string>& names) {
     return out;
 }
 
+// Spin boxes shrink with the panel instead of sizing themselves for their widest value.
+QDoubleSpinBox* make_spin_box(QWidget* parent, const std::string& name, int decimals, double min, double max) {
+    auto* box = new QDoubleSpinBox(parent);
+    box->setObjectName(QString::fromStdString("field:" + name));
+    box->setDecimals(decimals);
+    box->setRange(min, max);
+    box->setKeyboardTracking(false);
+    box->setMinimumWidth(40);
+    box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    return box;
+}
+
 json rgb_json(const Rgb& c) { return json::array({c.r, c.g, c.b}); }
 
 // A colour given as one number means grey; the form always edits three components.
@@ -98,11 +110,7 @@ void PropertyPanel::add_heading(const QString& text) {
 
 void PropertyPanel::add_number(const QString& label, const std::string& key, double fallback,
                                double min, double max, int decimals) {
-    auto* box = new QDoubleSpinBox(m_form_widget);
-    box->setObjectName(QString::fromStdString("field:" + key));
-    box->setDecimals(decimals);
-    box->setRange(min, max);
-    box->setKeyboardTracking(false);
+    auto* box = make_spin_box(m_form_widget, key, decimals, min, max);
     const json* v = value_at(key);
     box->setValue(v && v->is_number() ? v->get<double>() : fallback);
     connect(box, &QDoubleSpinBox::editingFinished, this, [this, box, key, label] {
@@ -114,11 +122,7 @@ void PropertyPanel::add_number(const QString& label, const std::string& key, dou
 void PropertyPanel::add_integer(const QString& label, const std::string& key, long long fallback,
                                 long long min, long long max) {
     // QSpinBox holds an int; photon counts beyond it are edited as whole-number doubles.
-    auto* box = new QDoubleSpinBox(m_form_widget);
-    box->setObjectName(QString::fromStdString("field:" + key));
-    box->setDecimals(0);
-    box->setRange(double(min), double(max));
-    box->setKeyboardTracking(false);
+    auto* box = make_spin_box(m_form_widget, key, 0, double(min), double(max));
     const json* v = value_at(key);
     box->setValue(v && v->is_number() ? v->get<double>() : double(fallback));
     connect(box, &QDoubleSpinBox::editingFinished, this, [this, box, key, label] {
@@ -136,11 +140,8 @@ void PropertyPanel::add_vec3(const QString& label, const std::string& key, const
     const json value = as_triple(v ? *v : fallback);
     std::array<QDoubleSpinBox*, 3> boxes{};
     for (int i = 0; i < 3; ++i) {
-        boxes[i] = new QDoubleSpinBox(row);
-        boxes[i]->setObjectName(QString::fromStdString("field:" + key + "." + "xyz"[i]));
-        boxes[i]->setDecimals(6);
-        boxes[i]->setRange(min, max);
-        boxes[i]->setKeyboardTracking(false);
+        boxes[i] = make_spin_box(row, key + "." + "xyz"[i], 6, min, max);
+        boxes[i]->setButtonSymbols(QAbstractSpinBox::NoButtons);  // three abreast must fit
         boxes[i]->setValue(value.is_array() && value.size() == 3 ? value[i].get<double>() : 0.0);
         h->addWidget(boxes[i]);
     }

@@ -24,7 +24,7 @@ class RenderController : public QThread {
 
 public:
     // `preview_size`: the larger image side is scaled down to at most this many pixels.
-    explicit RenderController(QObject* parent = nullptr, int preview_size = 480);
+    explicit RenderController(QObject* parent = nullptr, int preview_size = 640);
     ~RenderController() override;
 
     // Schedules a render of `scene` (debounced by `delay_ms`; 0 starts at once).
