@@ -9,7 +9,7 @@ PACKAGES=(
     libpng-dev libopenexr-dev
     libnanoflann-dev libmuparser-dev libpcg-cpp-dev
     libgtest-dev libgmock-dev libbenchmark-dev
-    gnuplot-nox
+    gnuplot-nox colord-data
     qt6-base-dev
 )
 

@@ -73,7 +73,7 @@ void PropertyPanel::commit(const std::string& key, const json& value, const QStr
     const json* current = value_at(key);
     if (current && *current == value) return;
     QString error;
-    const json::json_pointer p(m_pointer.toStdString() + "/" + key);
+    const json::json_pointer p(m_pointer.toStdString() + (key.empty() ? "" : "/" + key));
     if (m_document->set_value(p, value, tr("Change %1").arg(label), &error)) {
         m_error->clear();
     } else {
@@ -220,7 +220,29 @@ void PropertyPanel::build_material(const std::string& prefix) {
     add_vec3(tr("Colour (albedo)"), prefix + "color", rgb_json(d.color), 0, 1);
     add_number(tr("Transparency"), prefix + "transparency", d.transparency, 0, 1);
     add_number(tr("Specular (mirror)"), prefix + "specular", d.specular, 0, 1);
-    add_number(tr("Refractive index"), prefix + "ior", d.ior, 0.01, 100);
+    // Glass picker: a catalogue glass, or a constant index typed in.
+    QStringList glasses{tr("constant index")};
+    for (const Glass& g : glass_catalogue()) glasses << QString::fromStdString(g.name);
+    const json* glass = value_at(prefix + "glass");
+    const std::string material_key = prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1);
+    add_choice(tr("Glass"), prefix + "glass", glass ? glass->get<std::string>() : "constant index", glasses,
+               [this, material_key](const std::string& chosen) {
+                   json material = *value_at(material_key);
+                   material.erase("glass");
+                   material.erase("ior");
+                   if (chosen == "constant index") {
+                       material["ior"] = 1.5;
+                   } else {
+                       material["glass"] = chosen;
+                   }
+                   commit(material_key, material, tr("glass"));
+               });
+    const json* ior = value_at(prefix + "ior");
+    if (!glass && (!ior || ior->is_number())) {
+        add_number(tr("Refractive index"), prefix + "ior", d.ior(kLineD), 0.01, 100);
+    } else if (!glass) {
+        m_form->addRow(tr("Refractive index"), new QLabel(tr("dispersion model (edit the file)"), m_form_widget));
+    }
     add_number(tr("Emission intensity"), prefix + "emission/intensity", d.emission_intensity, 0, 1e12);
     add_vec3(tr("Emission colour"), prefix + "emission/color", rgb_json(d.emission_color), 0, 1e6);
 }

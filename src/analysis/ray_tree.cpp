@@ -19,7 +19,7 @@ public:
         const Ray ray{origin, parent.direction};
         const double w = parent.weight;
         Interaction it;
-        if (!next_interaction(m_scene, ray, it)) {
+        if (!next_interaction(m_scene, ray, m_options.wavelength_nm, it)) {
             parent.children.push_back({origin, std::nullopt, -1, Event::Escape, ray.direction, w, false, {}});
             m_tree.escaped += w;
             return;

@@ -11,7 +11,8 @@ namespace lenslab {
 
 namespace {
 
-Rgb from_point_light(const Scene& scene, const PointLight& l, const Vec3& p, const Vec3& n, double eps) {
+SampledSpectrum from_point_light(const Scene& scene, const PointLight& l, const Vec3& p, const Vec3& n,
+                                 const SampledWavelengths& w, double eps) {
     const Vec3 to_light = l.position - p;
     const double dist2 = length_squared(to_light);
     const double dist = std::sqrt(dist2);
@@ -19,20 +20,22 @@ Rgb from_point_light(const Scene& scene, const PointLight& l, const Vec3& p, con
     const double cos_n = dot(n, wi);
     if (cos_n <= 0.0 || scene.occluded({p, wi}, eps, dist - eps)) return {};
     // E = I cos(theta) / r^2 with I = Phi / (4 pi) for an isotropic source.
-    return l.color * (l.power / (4.0 * std::numbers::pi) * cos_n / dist2);
+    return l.spectrum->sample(w) * (cos_n / (4.0 * std::numbers::pi * dist2));
 }
 
-Rgb from_beam(const Scene& scene, const BeamLight& b, const Vec3& p, const Vec3& n, double eps) {
+SampledSpectrum from_beam(const Scene& scene, const BeamLight& b, const Vec3& p, const Vec3& n,
+                          const SampledWavelengths& w, double eps) {
     const Vec3 v = p - b.origin;
     const double along = dot(v, b.direction);
     if (along <= 0.0 || length_squared(v - b.direction * along) > b.radius * b.radius) return {};
     const double cos_n = -dot(n, b.direction);
     if (cos_n <= 0.0 || scene.occluded({p, -b.direction}, eps, along - eps)) return {};
-    return b.color * (b.power / (std::numbers::pi * b.radius * b.radius) * cos_n);
+    return b.spectrum->sample(w) * (cos_n / (std::numbers::pi * b.radius * b.radius));
 }
 
-Rgb from_sphere_emitter(const Scene& scene, const SphereEmitter& emitter, const Vec3& p,
-                        const Vec3& n, int samples, Rng& rng, double eps) {
+SampledSpectrum from_sphere_emitter(const Scene& scene, const SphereEmitter& emitter, const Vec3& p,
+                                    const Vec3& n, int samples, const SampledWavelengths& w, Rng& rng,
+                                    double eps) {
     const Sphere& sphere = *emitter.sphere;
     const Vec3 to_centre = sphere.centre() - p;
     const double d2 = length_squared(to_centre);
@@ -55,17 +58,18 @@ Rgb from_sphere_emitter(const Scene& scene, const SphereEmitter& emitter, const 
         if (scene.occluded({p, wi}, eps, h.t - eps)) continue;
         sum += cos_n;
     }
-    return emitter.radiance * (sum * inv_pdf / samples);
+    return emitter.radiance->sample(w) * (sum * inv_pdf / samples);
 }
 
 }  // namespace
 
-Rgb direct_irradiance(const Scene& scene, const Vec3& p, const Vec3& n, int samples, Rng& rng) {
+SampledSpectrum direct_irradiance(const Scene& scene, const Vec3& p, const Vec3& n, int samples,
+                                  const SampledWavelengths& w, Rng& rng) {
     const double eps = surface_epsilon(p);
-    Rgb e;
-    for (const PointLight& l : scene.point_lights) e += from_point_light(scene, l, p, n, eps);
-    for (const BeamLight& b : scene.beams) e += from_beam(scene, b, p, n, eps);
-    for (const SphereEmitter& s : scene.emitters()) e += from_sphere_emitter(scene, s, p, n, samples, rng, eps);
+    SampledSpectrum e;
+    for (const PointLight& l : scene.point_lights) e += from_point_light(scene, l, p, n, w, eps);
+    for (const BeamLight& b : scene.beams) e += from_beam(scene, b, p, n, w, eps);
+    for (const SphereEmitter& s : scene.emitters()) e += from_sphere_emitter(scene, s, p, n, samples, w, rng, eps);
     return e;
 }
 

@@ -3,14 +3,16 @@
 // Shared by every integrator that computes direct light explicitly.
 
 #include "math/rng.h"
+#include "optics/spectrum.h"
 #include "scene/scene.h"
 
 namespace lenslab {
 
-// Irradiance (W/m^2 per channel) on a surface at `p` with unit normal `n` facing the side
-// being lit. Emitting spheres are sampled uniformly in the cone they subtend
+// Spectral irradiance at the wavelengths `w` on a surface at `p` with unit normal `n` facing
+// the side being lit. Emitting spheres are sampled uniformly in the cone they subtend
 // (`samples` shadow rays each); point lights and beams are exact. Any object blocks light:
 // light that passes through glass arrives as caustics, which need photon maps.
-Rgb direct_irradiance(const Scene& scene, const Vec3& p, const Vec3& n, int samples, Rng& rng);
+SampledSpectrum direct_irradiance(const Scene& scene, const Vec3& p, const Vec3& n, int samples,
+                                  const SampledWavelengths& w, Rng& rng);
 
 }  // namespace lenslab

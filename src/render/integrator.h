@@ -6,6 +6,7 @@
 
 #include "render/camera.h"
 #include "render/film.h"
+#include "optics/spectrum.h"
 #include "render/render_control.h"
 #include "scene/scene.h"
 
@@ -30,7 +31,8 @@ public:
 
 protected:
     explicit PixelIntegrator(const Scene& scene) : m_scene(scene) {}
-    virtual Rgb radiance(const Ray& ray, class Rng& rng) const = 0;
+    // Radiance along `ray` at the sampled wavelengths.
+    virtual SampledSpectrum radiance(const Ray& ray, const SampledWavelengths& w, class Rng& rng) const = 0;
     const Scene& m_scene;
 };
 

@@ -26,13 +26,38 @@ namespace {
 constexpr uint64_t kPhotonStreamBase = uint64_t{1} << 62;
 constexpr int64_t kChunk = 4096;
 
+// A photon carries its light's whole spectrum (its power is the exact colour of its share)
+// until it meets a dispersive refraction; only there does it draw one wavelength from the
+// light's spectrum and become that wavelength's colour. Scenes without dispersion thus get
+// no colour noise from wavelength sampling.
 struct EmittedPhoton {
     Ray ray;
     Rgb power;
+    const Spectrum* spectrum;  // spectral flux shape of its light
+    double scale;              // this photon's share of it
+    double lambda_nm = 0;      // 0 until a dispersive refraction picks one
+
+    void pick_wavelength(Rng& rng) {
+        double nm;
+        const double pdf = spectrum->sample_wavelength(rng.uniform(), nm);
+        power = sample_to_rgb(spectrum->eval(nm) * scale, nm, pdf);
+        lambda_nm = nm;
+    }
 };
 
-// Samples photon `i` of light `light` (emitting spheres first, then point lights, then beams).
-EmittedPhoton emit(const Scene& scene, int light, int64_t n, Rng& rng) {
+// The spectrum of light `light` (emitting spheres first, then point lights, then beams).
+const Spectrum& light_spectrum(const Scene& scene, int light) {
+    const int spheres = static_cast<int>(scene.emitters().size());
+    const int points = static_cast<int>(scene.point_lights.size());
+    if (light < spheres) return *scene.emitters()[light].radiance;
+    if (light < spheres + points) return *scene.point_lights[light - spheres].spectrum;
+    return *scene.beams[light - spheres - points].spectrum;
+}
+
+// Samples one photon of light `light`, whose spectrum's colour is `colour`.
+EmittedPhoton emit(const Scene& scene, int light, const Rgb& colour, int64_t n, Rng& rng) {
+    const Spectrum& spectrum = light_spectrum(scene, light);
+    auto make_emitted = [&](Ray ray, double scale) { return EmittedPhoton{ray, colour * scale, &spectrum, scale}; };
     const double inv_n = 1.0 / static_cast<double>(n);
     const int spheres = static_cast<int>(scene.emitters().size());
     const int points = static_cast<int>(scene.point_lights.size());
@@ -44,18 +69,17 @@ EmittedPhoton emit(const Scene& scene, int light, int64_t n, Rng& rng) {
         const Vec3 normal = sample_uniform_sphere(rng.uniform(), rng.uniform());
         const Vec3 dir = Frame::from_axis(normal).to_world(sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
         const double area = 4.0 * std::numbers::pi * sphere.radius() * sphere.radius();
-        const Rgb flux = emitter.radiance * (std::numbers::pi * area);
-        return {{sphere.centre() + normal * sphere.radius(), dir}, flux * inv_n};
+        return make_emitted({sphere.centre() + normal * sphere.radius(), dir}, std::numbers::pi * area * inv_n);
     }
     if (light < spheres + points) {
         const PointLight& l = scene.point_lights[light - spheres];
-        return {{l.position, sample_uniform_sphere(rng.uniform(), rng.uniform())}, l.color * (l.power * inv_n)};
+        return make_emitted({l.position, sample_uniform_sphere(rng.uniform(), rng.uniform())}, inv_n);
     }
     const BeamLight& b = scene.beams[light - spheres - points];
     double x, y;
     sample_disc_concentric(rng.uniform(), rng.uniform(), x, y);
     const Frame f = Frame::from_axis(b.direction);
-    return {{b.origin + (f.u * x + f.v * y) * b.radius, b.direction}, b.color * (b.power * inv_n)};
+    return make_emitted({b.origin + (f.u * x + f.v * y) * b.radius, b.direction}, inv_n);
 }
 
 Photon make_photon(const Vec3& p, const Rgb& power, const Vec3& towards, PhotonKind kind) {
@@ -80,7 +104,12 @@ Photon trace_one(const Scene& scene, EmittedPhoton e, int max_depth, Rng& rng) {
     Ray ray = e.ray;
     for (int depth = 0; depth <= max_depth; ++depth) {
         Interaction it;
-        if (!next_interaction(scene, ray, it)) break;
+        if (!next_interaction(scene, ray, e.lambda_nm > 0 ? e.lambda_nm : kLineD, it)) break;
+        if (e.lambda_nm == 0 && it.scattering.dispersive) {
+            e.pick_wavelength(rng);
+            it.scattering = scatter(*it.material, it.object->shape->is_closed(), ray.direction, it.normal(),
+                                    e.lambda_nm);
+        }
         const Scattering& s = it.scattering;
         double u = rng.uniform();
         const double p_diffuse = it.material->color.is_black() ? 0.0 : s.diffuse;
@@ -143,6 +172,8 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
     }
 
     std::vector<Photon> slots(static_cast<size_t>(n) * lights);
+    std::vector<Rgb> colours;
+    for (int l = 0; l < lights; ++l) colours.push_back(spectrum_to_rgb(light_spectrum(scene, l)));
     const int64_t chunks_per_light = (n + kChunk - 1) / kChunk;
     const int64_t chunks = chunks_per_light * lights;
     tbb::parallel_for(tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
@@ -154,7 +185,7 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
             for (int64_t i = first; i < last; ++i) {
                 const int64_t slot = light * n + i;
                 Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(slot));
-                slots[static_cast<size_t>(slot)] = trace_one(scene, emit(scene, light, n, rng), settings.max_depth, rng);
+                slots[static_cast<size_t>(slot)] = trace_one(scene, emit(scene, light, colours[light], n, rng), settings.max_depth, rng);
             }
         }
     });

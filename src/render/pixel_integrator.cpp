@@ -48,7 +48,12 @@ bool PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& fil
                             jx = ((s % strata) + jx) / strata;
                             jy = ((s / strata) + jy) / strata;
                         }
-                        const Rgb l = radiance(camera.generate_ray(x + jx, y + jy), rng);
+                        // Each camera sample carries its own four wavelengths; the hero
+                        // wavelengths of a pixel's samples are stratified too, visited in a
+                        // scrambled order so they do not follow the sample positions.
+                        const double u_lambda = ((s * 7919 + 13) % spp + rng.uniform()) / spp;
+                        const SampledWavelengths lambdas = SampledWavelengths::sample(u_lambda);
+                        const Rgb l = to_rgb(radiance(camera.generate_ray(x + jx, y + jy), lambdas, rng), lambdas);
                         // A non-finite sample would poison the pixel; it is a bug, but the
                         // picture must stay usable (DESIGN.md: no NaN reaches a pixel).
                         if (l.is_finite()) sum += l;

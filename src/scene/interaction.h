@@ -19,7 +19,8 @@ struct Interaction {
 };
 
 // False when the ray leaves the scene. The ray's origin is taken to lie on the surface it
-// left, so hits closer than surface_epsilon(origin) are ignored.
-bool next_interaction(const Scene& scene, const Ray& ray, Interaction& out);
+// left, so hits closer than surface_epsilon(origin) are ignored. Refraction is computed for
+// the wavelength `lambda_nm`.
+bool next_interaction(const Scene& scene, const Ray& ray, double lambda_nm, Interaction& out);
 
 }  // namespace lenslab

@@ -1,9 +1,12 @@
 #pragma once
-// Light sources other than emitting objects. Powers are radiant fluxes in watts per RGB
-// channel: the emitted power is color * power.
+// Light sources other than emitting objects. `power` is the radiant flux; the spectrum's
+// shape comes from `color` (D65 white for [1, 1, 1]) or from a named spectrum (blackbody,
+// D65, laser line), normalised to the radiant power of D65 white, so a spectrum changes the
+// colour and not the energy.
 
 #include "math/vec3.h"
 #include "optics/rgb.h"
+#include "optics/spectrum.h"
 
 namespace lenslab {
 
@@ -12,6 +15,7 @@ struct PointLight {
     Vec3 position;
     Rgb color{1, 1, 1};
     double power = 0;
+    SpectrumPtr spectrum;  // emitted power per nm, shape times power (scene reader sets it)
 };
 
 // Collimated beam: parallel rays along `direction` leaving a disc of `radius` centred on
@@ -23,6 +27,7 @@ struct BeamLight {
     double radius = 0;
     Rgb color{1, 1, 1};
     double power = 0;
+    SpectrumPtr spectrum;  // as for PointLight
 };
 
 }  // namespace lenslab

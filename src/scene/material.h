@@ -1,17 +1,19 @@
 #pragma once
-// The report's "graphic parameters" of a surface.
+// The report's "graphic parameters" of a surface, with wavelength-dependent optics.
 //
 // | key          | meaning                                                    | default        |
 // | color        | diffuse albedo (RGB, each in [0, 1])                       | [0.8,0.8,0.8]  |
 // | transparency | fraction of light meeting the dielectric interface, kt     | 0              |
 // | specular     | fraction reflected by a perfect mirror, ks                 | 0              |
-// | ior          | absolute refractive index of the interior                  | 1.5            |
-// | emission     | {color, intensity}: emitted radiance = color * intensity   | none           |
+// | ior / glass  | refractive index: a number, a model, or a catalogue glass  | 1.5            |
+// | emission     | {color or spectrum, intensity}: emitted radiance           | none           |
 // The rest, 1 - transparency - specular, is diffuse (Lambertian) with albedo `color`.
 
 #include <string>
 
+#include "optics/glass.h"
 #include "optics/rgb.h"
+#include "optics/spectrum.h"
 
 namespace lenslab {
 
@@ -20,15 +22,23 @@ struct Material {
     Rgb color{0.8, 0.8, 0.8};
     double transparency = 0.0;
     double specular = 0.0;
-    double ior = 1.5;
+    IndexModelPtr index = constant_index(1.5);
+    std::string glass;  // catalogue name when the index came from the catalogue
     Rgb emission_color{1.0, 1.0, 1.0};
     double emission_intensity = 0.0;  // radiance scale, W m^-2 sr^-1
+    SpectrumPtr emission_spectrum;    // set when the emission gives a spectrum, else from the colour
+
+    // Spectra derived from the colours; `finish()` builds them after the fields are set.
+    SpectrumPtr albedo;
+    SpectrumPtr emission;  // emitted radiance spectrum (intensity included)
+    void finish();
 
     double diffuse_weight() const { return std::max(0.0, 1.0 - transparency - specular); }
-    Rgb emitted_radiance() const { return emission_color * emission_intensity; }
-    bool is_emitter() const {
-        return emission_intensity > 0.0 && !emission_color.is_black();
-    }
+    double ior(double nm) const { return index->n(nm); }
+    bool is_emitter() const { return emission_intensity > 0.0 && emission && !emission_color.is_black(); }
 };
+
+// `s` times a constant.
+SpectrumPtr scaled_spectrum(SpectrumPtr s, double scale);
 
 }  // namespace lenslab

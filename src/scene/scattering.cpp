@@ -18,7 +18,8 @@ const char* event_name(Event e) {
     return "unknown";
 }
 
-Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& outward_normal) {
+Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& outward_normal,
+                   double lambda_nm) {
     Scattering s;
     s.diffuse = m.diffuse_weight();
     const bool entering = dot(d, outward_normal) < 0.0;
@@ -30,8 +31,9 @@ Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& ou
     Event reflect_event = Event::Reflect;
     if (m.transparency > 0.0) {
         if (closed) {
-            const double eta_i = entering ? kOutsideIor : m.ior;
-            const double eta_t = entering ? m.ior : kOutsideIor;
+            const double n = m.ior(lambda_nm);
+            const double eta_i = entering ? kOutsideIor : n;
+            const double eta_t = entering ? n : kOutsideIor;
             const FresnelTerms f = fresnel_dielectric(cos_i, eta_i, eta_t);
             if (f.total_internal_reflection) {
                 reflected += m.transparency;
@@ -41,12 +43,13 @@ Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& ou
                 reflected += m.transparency * r;
                 if (auto t = refract(d, facing, eta_i / eta_t)) {
                     s.branches[s.count++] = {Event::Refract, *t, m.transparency * (1.0 - r)};
+                    s.dispersive = m.index->dispersive();
                 }
             }
         } else {
             // Incoherent sum of the reflections between the two faces, 2R / (1 + R), taken
             // per polarisation: the sum does not commute with averaging Rs and Rp.
-            const FresnelTerms f = fresnel_dielectric(cos_i, kOutsideIor, m.ior);
+            const FresnelTerms f = fresnel_dielectric(cos_i, kOutsideIor, m.ior(lambda_nm));
             const double r_pane = 0.5 * (2.0 * f.rs / (1.0 + f.rs) + 2.0 * f.rp / (1.0 + f.rp));
             reflected += m.transparency * r_pane;
             s.branches[s.count++] = {Event::Refract, d, m.transparency * (1.0 - r_pane)};

@@ -25,6 +25,9 @@ struct Scattering {
     std::array<Branch, 2> branches;  // at most one reflected and one transmitted branch
     int count = 0;
     double diffuse = 0;  // fraction scattered diffusely (the `absorb` part of a trace)
+    // The refraction bent each wavelength differently: only `lambda_nm` follows the
+    // refracted branch (the other sampled wavelengths must be dropped from it).
+    bool dispersive = false;
 };
 
 // Medium outside every object: air, taken as vacuum-like n = 1.
@@ -35,6 +38,8 @@ inline constexpr double kOutsideIor = 1.0;
 // transparent surface is a thin pane: light passes straight through, and its two faces
 // reflect (R'_s + R'_p) / 2 of it, R' = 2R / (1 + R) per polarisation (incoherent multiple
 // reflections, Hecht section 9.7; absorption neglected).
-Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& outward_normal);
+// The index is taken at `lambda_nm` (vacuum wavelength).
+Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& outward_normal,
+                   double lambda_nm);
 
 }  // namespace lenslab

@@ -12,7 +12,7 @@ void Scene::build() {
         // The scene reader lets only spheres emit; other emitting shapes are not lights.
         const auto* sphere = dynamic_cast<const Sphere*>(objects[i].shape.get());
         if (m.is_emitter() && sphere) {
-            m_emitters.push_back({static_cast<int>(i), sphere, m.emitted_radiance()});
+            m_emitters.push_back({static_cast<int>(i), sphere, m.emission});
         }
     }
     m_bvh = Bvh(std::move(shapes));

@@ -27,8 +27,8 @@ struct SceneObject {
 // An emitting sphere: the report's light source.
 struct SphereEmitter {
     int object;            // index into Scene::objects
-    const Sphere* sphere;  // its shape
-    Rgb radiance;          // emitted radiance
+    const Sphere* sphere;   // its shape
+    SpectrumPtr radiance;   // emitted spectral radiance
 };
 
 struct SceneHit {

@@ -14,6 +14,7 @@
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "scene/json_reader.h"
+#include "scene/spectral_json.h"
 
 namespace lenslab {
 
@@ -89,7 +90,7 @@ void read_render(const json& j, RenderSettings& s) {
 }
 
 Material read_material(const json& j, const std::string& path, const std::string& name) {
-    JsonObjectReader r(j, path, {"color", "transparency", "specular", "ior", "emission"});
+    JsonObjectReader r(j, path, {"color", "transparency", "specular", "ior", "glass", "emission"});
     Material m;
     m.name = name;
     m.color = r.albedo("color", m.color);
@@ -100,9 +101,22 @@ Material read_material(const json& j, const std::string& path, const std::string
                          "transparency + specular must be at most 1, got " +
                              format_number(m.transparency + m.specular));
     }
-    m.ior = r.positive("ior", m.ior);
+    if (r.has("ior") && r.has("glass")) {
+        throw SceneError(r.child_path("glass"), "give either ior or glass, not both");
+    }
+    if (const json* g = r.find("glass")) {
+        const Glass& glass = read_glass(*g, r.child_path("glass"));
+        m.index = glass.model;
+        m.glass = glass.name;
+    } else if (const json* n = r.find("ior")) {
+        m.index = read_index_model(*n, r.child_path("ior"));
+    }
     if (const json* e = r.find("emission")) {
-        JsonObjectReader er(*e, r.child_path("emission"), {"color", "intensity"});
+        JsonObjectReader er(*e, r.child_path("emission"), {"color", "intensity", "spectrum"});
+        if (const json* s = er.find("spectrum")) {
+            if (er.has("color")) throw SceneError(er.child_path("color"), "give either color or spectrum, not both");
+            m.emission_spectrum = read_spectrum(*s, er.child_path("spectrum"));
+        }
         m.emission_color = er.color("color", m.emission_color);
         m.emission_intensity = er.number("intensity", 1.0);
         if (m.emission_intensity < 0) {
@@ -110,6 +124,7 @@ Material read_material(const json& j, const std::string& path, const std::string
                              "must be >= 0, got " + format_number(m.emission_intensity));
         }
     }
+    m.finish();
     return m;
 }
 
@@ -270,21 +285,21 @@ SceneObject read_object(const json& j, const std::string& path,
 void read_light(const json& j, const std::string& path, Scene& scene) {
     const std::string type = peek_type(j, path);
     if (type == "point") {
-        JsonObjectReader r(j, path, {"type", "position", "color", "power"}, "a point light");
+        JsonObjectReader r(j, path, {"type", "position", "color", "spectrum", "power"}, "a point light");
         PointLight l;
         l.position = r.vec3("position");
-        l.color = r.color("color", l.color);
         l.power = r.positive("power");
+        l.spectrum = light_spectrum(r, l.color, l.power);
         scene.point_lights.push_back(l);
     } else if (type == "beam") {
-        JsonObjectReader r(j, path, {"type", "origin", "direction", "radius", "color", "power"},
+        JsonObjectReader r(j, path, {"type", "origin", "direction", "radius", "color", "spectrum", "power"},
                            "a beam");
         BeamLight b;
         b.origin = r.vec3("origin");
         b.direction = r.direction("direction");
         b.radius = r.positive("radius");
-        b.color = r.color("color", b.color);
         b.power = r.positive("power");
+        b.spectrum = light_spectrum(r, b.color, b.power);
         scene.beams.push_back(b);
     } else {
         throw SceneError(path + ".type", "unknown light type '" + type + "' (known: point, beam)");

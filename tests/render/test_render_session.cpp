@@ -15,7 +15,9 @@ constexpr double kPi = std::numbers::pi;
 
 // A camera looking straight down at a diffuse floor (albedo 0.5) through a narrow field, so
 // the centre pixel sees the point below the light.
-std::string floor_scene(const std::string& lights_and_objects, int spp = 1) {
+// 256 samples: each carries 4 wavelengths, and a pixel's 1024 wavelengths are stratified, so
+// a white light on a grey floor comes out grey to a fraction of a percent.
+std::string floor_scene(const std::string& lights_and_objects, int spp = 256) {
     return R"({
       "camera": {"position": [0, 1, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 1},
       "render": {"width": 3, "height": 3, "spp": )" + std::to_string(spp) + R"(},
@@ -38,7 +40,7 @@ TEST(Radiometry, PointLightGivesLambertRadiance) {
     const Scene scene = parse_scene(
         floor_scene(R"(], "lights": [{"type": "point", "position": [0, 2, 0], "power": 100}])"));
     const double expected = 0.5 * (P / (4 * kPi) / (h * h)) / kPi;
-    EXPECT_NEAR(centre_radiance(scene), expected, 1e-4 * expected);
+    EXPECT_NEAR(centre_radiance(scene), expected, 5e-3 * expected);
 }
 
 TEST(Radiometry, BeamGivesUniformIrradiance) {
@@ -47,7 +49,7 @@ TEST(Radiometry, BeamGivesUniformIrradiance) {
     const Scene scene = parse_scene(floor_scene(
         R"(], "lights": [{"type": "beam", "origin": [0, 3, 0], "direction": [0, -1, 0], "radius": 0.5, "power": 2}])"));
     const double expected = 0.5 * (2 / (kPi * 0.25)) / kPi;
-    EXPECT_NEAR(centre_radiance(scene), expected, 1e-4 * expected);
+    EXPECT_NEAR(centre_radiance(scene), expected, 5e-3 * expected);
 }
 
 TEST(Radiometry, EmittingSphereMatchesTheSolidAngleFormula) {

@@ -20,8 +20,8 @@ double total(const Scattering& s) {
 TEST(Scattering, GlassSplitsByFresnelAndConservesPower) {
     Material glass;
     glass.transparency = 1;
-    glass.ior = 1.5;
-    const Scattering s = scatter(glass, true, {0, 0, -1}, {0, 0, 1});
+    glass.index = constant_index(1.5);
+    const Scattering s = scatter(glass, true, {0, 0, -1}, {0, 0, 1}, kLineD);
     ASSERT_EQ(s.count, 2);
     EXPECT_EQ(s.branches[0].event, Event::Reflect);
     EXPECT_NEAR(s.branches[0].weight, 0.04, 1e-15);
@@ -35,7 +35,7 @@ TEST(Scattering, MixedMaterialSharesAddUpToOne) {
     m.specular = 0.3;
     for (double a = 0; a < 89; a += 7) {
         const double r = a * std::numbers::pi / 180;
-        const Scattering s = scatter(m, true, {std::sin(r), 0, -std::cos(r)}, {0, 0, 1});
+        const Scattering s = scatter(m, true, {std::sin(r), 0, -std::cos(r)}, {0, 0, 1}, kLineD);
         EXPECT_NEAR(total(s), 1.0, 1e-12) << a;
     }
 }
@@ -45,9 +45,9 @@ TEST(Scattering, ThinPaneSumsReflectionsPerPolarisation) {
     // then averaged: at 60 degrees on n = 1.5, 0.1519 (averaging R first would give 0.1638).
     Material pane;
     pane.transparency = 1;
-    pane.ior = 1.5;
+    pane.index = constant_index(1.5);
     const double a = 60 * std::numbers::pi / 180;
-    const Scattering s = scatter(pane, false, {std::sin(a), 0, -std::cos(a)}, {0, 0, 1});
+    const Scattering s = scatter(pane, false, {std::sin(a), 0, -std::cos(a)}, {0, 0, 1}, kLineD);
     const FresnelTerms f = fresnel_dielectric(std::cos(a), 1.0, 1.5);
     const double expected = 0.5 * (2 * f.rs / (1 + f.rs) + 2 * f.rp / (1 + f.rp));
     ASSERT_EQ(s.count, 2);
@@ -61,7 +61,7 @@ TEST(Scattering, TotalInternalReflectionSendsEverythingBack) {
     Material glass;
     glass.transparency = 1;
     const double a = 50 * std::numbers::pi / 180;  // > 41.8 degrees, from inside
-    const Scattering s = scatter(glass, true, {std::sin(a), 0, std::cos(a)}, {0, 0, 1});
+    const Scattering s = scatter(glass, true, {std::sin(a), 0, std::cos(a)}, {0, 0, 1}, kLineD);
     ASSERT_EQ(s.count, 1);
     EXPECT_EQ(s.branches[0].event, Event::Tir);
     EXPECT_NEAR(s.branches[0].weight, 1.0, 1e-15);

@@ -46,7 +46,7 @@ TEST(SceneJson, NamedAndInlineMaterials) {
          "material": {"color": [0.9, 0.1, 0.1], "specular": 0.2}}
       ]})");
     ASSERT_EQ(s.objects.size(), 2u);
-    EXPECT_DOUBLE_EQ(s.material_of(0).ior, 1.52);
+    EXPECT_DOUBLE_EQ(s.material_of(0).ior(kLineD), 1.52);
     EXPECT_EQ(s.objects[0].name, "objects[0]");
     EXPECT_EQ(s.objects[1].name, "red");
     EXPECT_DOUBLE_EQ(s.material_of(1).color.r, 0.9);

@@ -37,13 +37,19 @@ bool PhotonMapIntegrator::render(const Scene& scene, const Camera& camera, Film&
     return WhittedIntegrator::render(scene, camera, film, control);
 }
 
-Rgb PhotonMapIntegrator::diffuse_irradiance(const Vec3& p, const Vec3& n, Rng& rng) const {
+SampledSpectrum PhotonMapIntegrator::diffuse_irradiance(const Vec3& p, const Vec3& n, const SampledWavelengths& w,
+                                                        Rng& rng) const {
     thread_local std::vector<PhotonNeighbour> scratch;
-    Rgb e = m_scene.render.direct == "photon_map"
-                ? PhotonMap::irradiance(m_map->direct(), p, n, m_gather, scratch)
-                : direct_irradiance(m_scene, p, n, m_scene.render.light_samples, rng);
-    e += PhotonMap::irradiance(m_map->caustic(), p, n, m_gather, scratch);
-    return e;
+    // Photons store the colour of their single wavelength; the estimate is turned back into a
+    // spectrum at the camera sample's wavelengths.
+    Rgb from_maps = PhotonMap::irradiance(m_map->caustic(), p, n, m_gather, scratch);
+    SampledSpectrum e;
+    if (m_scene.render.direct == "photon_map") {
+        from_maps += PhotonMap::irradiance(m_map->direct(), p, n, m_gather, scratch);
+    } else {
+        e = direct_irradiance(m_scene, p, n, m_scene.render.light_samples, w, rng);
+    }
+    return e + illuminant_from_rgb(from_maps, w);
 }
 
 }  // namespace lenslab

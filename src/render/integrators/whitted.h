@@ -16,13 +16,16 @@ public:
     explicit WhittedIntegrator(const Scene& scene) : PixelIntegrator(scene) {}
 
 protected:
-    Rgb radiance(const Ray& ray, Rng& rng) const override;
+    SampledSpectrum radiance(const Ray& ray, const SampledWavelengths& w, Rng& rng) const override;
     // Irradiance reaching a diffuse point `p` whose normal `n` faces the viewer: here the
     // direct light through shadow rays. The photon-map integrator adds caustics.
-    virtual Rgb diffuse_irradiance(const Vec3& p, const Vec3& n, Rng& rng) const;
+    virtual SampledSpectrum diffuse_irradiance(const Vec3& p, const Vec3& n, const SampledWavelengths& w,
+                                               Rng& rng) const;
 
 private:
-    Rgb trace(const Ray& ray, int depth, double weight, Rng& rng) const;
+    // `hero_only`: a dispersive refraction upstream already kept only the hero wavelength.
+    SampledSpectrum trace(const Ray& ray, int depth, double weight, const SampledWavelengths& w,
+                          bool hero_only, Rng& rng) const;
 };
 
 }  // namespace lenslab

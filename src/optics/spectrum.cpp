@@ -1,0 +1,256 @@
+#include "optics/spectrum.h"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <vector>
+
+#include "optics/cie_tables.h"
+
+namespace lenslab {
+
+namespace {
+
+double table_lookup(const double* table, int count, double start, double nm) {
+    const double x = (nm - start) / cie::kStepNm;
+    if (!(x >= 0.0) || x > count - 1) return 0.0;
+    const int i = std::min(static_cast<int>(x), count - 2);
+    const double f = x - i;
+    return table[i] * (1.0 - f) + table[i + 1] * f;
+}
+
+double d65_raw(double nm) { return table_lookup(cie::kD65, cie::kD65Count, cie::kD65StartNm, nm); }
+
+// Integral over the visible range of f(nm), midpoint rule on a 0.1 nm grid: the same
+// integral (of the linearly interpolated tables, with sharp band edges) that the Monte
+// Carlo wavelength estimates converge to, so calibrations and estimates agree.
+template <class F>
+double integrate(F f) {
+    constexpr double step = 0.1;
+    double s = 0.0;
+    for (double nm = kLambdaMinNm + 0.5 * step; nm < kLambdaMaxNm; nm += step) s += f(nm);
+    return s * step;
+}
+
+int band_of(double nm) { return nm < 490.0 ? 2 : (nm < 585.0 ? 1 : 0); }  // 0 red, 1 green, 2 blue
+
+// Constants derived once from the tables: D65 scaled to Y = 1, and the 3x3 matrix taking
+// band weights to the linear sRGB of the banded spectrum lit by (or multiplied with) D65.
+struct Calibration {
+    double d65_scale = 1.0;       // D65 * d65_scale has Y = 1
+    double d65_power = 1.0;       // int D65 * d65_scale over the visible range
+    Rgb white{1, 1, 1};           // linear sRGB of that D65 before white balancing
+    double inverse[3][3] = {};    // band weights from linear sRGB
+
+    // The tabulated D65 is a hair off the sRGB white point; dividing by its colour makes
+    // D65 exactly [1, 1, 1], so greys round-trip exactly.
+    Rgb balanced(const Vec3& xyz) const {
+        const Rgb c = xyz_to_linear_srgb(xyz);
+        return {c.r / white.r, c.g / white.g, c.b / white.b};
+    }
+
+    Calibration() {
+        const double y_integral = cie_y_integral();
+        d65_scale = y_integral / integrate([](double nm) { return d65_raw(nm) * cie_xyz_bar(nm).y; });
+        d65_power = integrate([&](double nm) { return d65_raw(nm) * d65_scale; });
+        Vec3 white_xyz;
+        for (int c = 0; c < 3; ++c) {
+            white_xyz[c] = integrate([&](double nm) { return d65_raw(nm) * d65_scale * cie_xyz_bar(nm)[c]; }) / y_integral;
+        }
+        white = xyz_to_linear_srgb(white_xyz);
+        double m[3][3];
+        for (int band = 0; band < 3; ++band) {
+            Vec3 xyz;
+            for (int c = 0; c < 3; ++c) {
+                xyz[c] = integrate([&](double nm) {
+                             return band_of(nm) == band ? d65_raw(nm) * d65_scale * cie_xyz_bar(nm)[c] : 0.0;
+                         }) / y_integral;
+            }
+            const Rgb rgb = balanced(xyz);
+            m[0][band] = rgb.r;
+            m[1][band] = rgb.g;
+            m[2][band] = rgb.b;
+        }
+        const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 3; ++c) {
+                const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+                inverse[r][c] = (m[r1][c1] * m[r2][c2] - m[r1][c2] * m[r2][c1]) / det;
+            }
+        }
+    }
+
+    std::array<double, 3> weights(const Rgb& rgb, double max_weight) const {
+        std::array<double, 3> w{};
+        for (int b = 0; b < 3; ++b) {
+            w[b] = std::clamp(inverse[b][0] * rgb.r + inverse[b][1] * rgb.g + inverse[b][2] * rgb.b, 0.0, max_weight);
+        }
+        return w;
+    }
+};
+
+const Calibration& calibration() {
+    static const Calibration c;
+    return c;
+}
+
+class BandSpectrum final : public Spectrum {
+public:
+    BandSpectrum(std::array<double, 3> w, bool lit) : m_w(w), m_lit(lit) {}
+    double eval(double nm) const override {
+        if (nm < kLambdaMinNm || nm > kLambdaMaxNm) return 0.0;
+        const double band = m_w[band_of(nm)];
+        return m_lit ? band * d65_raw(nm) * calibration().d65_scale : band;
+    }
+
+private:
+    std::array<double, 3> m_w;
+    bool m_lit;
+};
+
+// A spectrum given by a function, rescaled to D65 white's radiant power.
+template <class F>
+class PowerNormalised final : public Spectrum {
+public:
+    explicit PowerNormalised(F f) : m_f(f) {
+        double power = 0.0;
+        for (double nm = kLambdaMinNm; nm < kLambdaMaxNm; nm += 0.25) power += m_f(nm + 0.125) * 0.25;
+        m_scale = power > 0 ? calibration().d65_power / power : 0.0;
+    }
+    double eval(double nm) const override {
+        return nm < kLambdaMinNm || nm > kLambdaMaxNm ? 0.0 : m_f(nm) * m_scale;
+    }
+
+private:
+    F m_f;
+    double m_scale = 1.0;
+};
+
+template <class F>
+SpectrumPtr make_normalised(F f) {
+    return std::make_shared<PowerNormalised<F>>(f);
+}
+
+}  // namespace
+
+SampledWavelengths SampledWavelengths::sample(double u) {
+    SampledWavelengths w;
+    const double range = kLambdaMaxNm - kLambdaMinNm;
+    for (int i = 0; i < kWavelengthSamples; ++i) {
+        double t = u + static_cast<double>(i) / kWavelengthSamples;
+        if (t >= 1.0) t -= 1.0;
+        w.nm[i] = kLambdaMinNm + t * range;
+    }
+    return w;
+}
+
+SampledWavelengths SampledWavelengths::single(double nm) {
+    SampledWavelengths w;
+    w.nm.fill(nm);
+    return w;
+}
+
+Vec3 cie_xyz_bar(double nm) {
+    return {table_lookup(cie::kX, cie::kCmfCount, cie::kCmfStartNm, nm),
+            table_lookup(cie::kY, cie::kCmfCount, cie::kCmfStartNm, nm),
+            table_lookup(cie::kZ, cie::kCmfCount, cie::kCmfStartNm, nm)};
+}
+
+double cie_y_integral() {
+    static const double integral = integrate([](double nm) { return cie_xyz_bar(nm).y; });
+    return integral;
+}
+
+Rgb xyz_to_linear_srgb(const Vec3& xyz) {
+    // IEC 61966-2-1 (sRGB), D65 white.
+    return {3.2404542 * xyz.x - 1.5371385 * xyz.y - 0.4985314 * xyz.z,
+            -0.9692660 * xyz.x + 1.8760108 * xyz.y + 0.0415560 * xyz.z,
+            0.0556434 * xyz.x - 0.2040259 * xyz.y + 1.0572252 * xyz.z};
+}
+
+Rgb sample_to_rgb(double value, double nm, double pdf) {
+    return calibration().balanced(cie_xyz_bar(nm) * (value / (pdf * cie_y_integral())));
+}
+
+Rgb spectrum_to_rgb(const Spectrum& s) {
+    Vec3 xyz;
+    for (int c = 0; c < 3; ++c) xyz[c] = integrate([&](double nm) { return s.eval(nm) * cie_xyz_bar(nm)[c]; });
+    return calibration().balanced(xyz * (1.0 / cie_y_integral()));
+}
+
+Rgb to_rgb(const SampledSpectrum& s, const SampledWavelengths& w) {
+    Vec3 xyz;
+    for (int i = 0; i < kWavelengthSamples; ++i) xyz += cie_xyz_bar(w.nm[i]) * s.v[i];
+    return calibration().balanced(xyz * (1.0 / (kWavelengthSamples * SampledWavelengths::pdf() * cie_y_integral())));
+}
+
+SampledSpectrum Spectrum::sample(const SampledWavelengths& w) const {
+    SampledSpectrum s;
+    for (int i = 0; i < kWavelengthSamples; ++i) s.v[i] = eval(w.nm[i]);
+    return s;
+}
+
+double Spectrum::sample_wavelength(double u, double& nm) const {
+    std::call_once(m_cdf_once, [this] {
+        const int bins = static_cast<int>(kLambdaMaxNm - kLambdaMinNm);
+        m_cdf.assign(bins + 1, 0.0);
+        for (int b = 0; b < bins; ++b) {
+            // Several points per bin so a line narrower than a bin is not missed.
+            double v = 0.0;
+            for (int k = 0; k < 8; ++k) v += eval(kLambdaMinNm + b + (k + 0.5) / 8.0);
+            m_cdf[b + 1] = m_cdf[b] + v / 8.0;
+        }
+    });
+    const double total = m_cdf.back();
+    if (total <= 0.0) {
+        nm = kLambdaMinNm + u * (kLambdaMaxNm - kLambdaMinNm);
+        return SampledWavelengths::pdf();
+    }
+    const double target = u * total;
+    const auto it = std::upper_bound(m_cdf.begin() + 1, m_cdf.end(), target);
+    const int b = std::min(static_cast<int>(it - m_cdf.begin()) - 1, static_cast<int>(m_cdf.size()) - 2);
+    const double in_bin = m_cdf[b + 1] - m_cdf[b];
+    nm = kLambdaMinNm + b + (in_bin > 0 ? (target - m_cdf[b]) / in_bin : 0.5);
+    return in_bin / total;  // density per nm, constant over this 1 nm bin
+}
+
+SpectrumPtr reflectance_from_rgb(const Rgb& rgb) {
+    return std::make_shared<BandSpectrum>(calibration().weights(rgb, 1.0), false);
+}
+
+SpectrumPtr illuminant_from_rgb(const Rgb& rgb) {
+    return std::make_shared<BandSpectrum>(calibration().weights(rgb, INFINITY), true);
+}
+
+SampledSpectrum illuminant_from_rgb(const Rgb& rgb, const SampledWavelengths& w) {
+    const auto weights = calibration().weights(rgb, INFINITY);
+    SampledSpectrum s;
+    for (int i = 0; i < kWavelengthSamples; ++i) {
+        s.v[i] = weights[band_of(w.nm[i])] * d65_raw(w.nm[i]) * calibration().d65_scale;
+    }
+    return s;
+}
+
+SpectrumPtr d65_spectrum() { return illuminant_from_rgb(Rgb{1, 1, 1}); }
+
+SpectrumPtr blackbody_spectrum(double kelvin) {
+    // Planck's law, B(l, T) = 2 h c^2 / l^5 / (exp(h c / (l k T)) - 1) (CODATA constants).
+    constexpr double h = 6.62607015e-34, c = 299792458.0, k = 1.380649e-23;
+    return make_normalised([kelvin](double nm) {
+        const double l = nm * 1e-9;
+        return 2.0 * h * c * c / std::pow(l, 5) / std::expm1(h * c / (l * k * kelvin));
+    });
+}
+
+SpectrumPtr line_spectrum(double centre_nm, double width_nm) {
+    const double sigma = std::max(width_nm, 0.05);
+    return make_normalised([centre_nm, sigma](double nm) {
+        const double x = (nm - centre_nm) / sigma;
+        return std::exp(-0.5 * x * x);
+    });
+}
+
+}  // namespace lenslab

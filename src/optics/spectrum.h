@@ -1,0 +1,105 @@
+#pragma once
+// Spectral light transport (STYLE.md rule 4): radiometric quantities are sampled at four
+// wavelengths per camera sample (hero-wavelength sampling, Wilkie et al. 2014, as pbrt-v4
+// does), spectra are functions of wavelength, and colour comes out through the CIE 1931
+// colour matching functions, XYZ and linear sRGB (IEC 61966-2-1).
+
+#include <array>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "math/vec3.h"
+#include "optics/rgb.h"
+
+namespace lenslab {
+
+// The visible range transported; the CIE 1931 tables span exactly this.
+inline constexpr double kLambdaMinNm = 360.0;
+inline constexpr double kLambdaMaxNm = 830.0;
+inline constexpr int kWavelengthSamples = 4;
+
+struct SampledWavelengths {
+    std::array<double, kWavelengthSamples> nm{};
+
+    // Hero wavelength uniform in the visible range, the others spread evenly after it
+    // (wrapping around): stratified, each marginally uniform.
+    static SampledWavelengths sample(double u);
+    // All four at one wavelength (monochromatic tracing).
+    static SampledWavelengths single(double nm);
+    static constexpr double pdf() { return 1.0 / (kLambdaMaxNm - kLambdaMinNm); }
+};
+
+struct SampledSpectrum {
+    std::array<double, kWavelengthSamples> v{};
+
+    static SampledSpectrum constant(double c) { return {{c, c, c, c}}; }
+    SampledSpectrum& operator+=(const SampledSpectrum& o) {
+        for (int i = 0; i < kWavelengthSamples; ++i) v[i] += o.v[i];
+        return *this;
+    }
+    SampledSpectrum& operator*=(const SampledSpectrum& o) {
+        for (int i = 0; i < kWavelengthSamples; ++i) v[i] *= o.v[i];
+        return *this;
+    }
+    SampledSpectrum& operator*=(double s) {
+        for (double& x : v) x *= s;
+        return *this;
+    }
+    bool is_black() const { return v[0] == 0 && v[1] == 0 && v[2] == 0 && v[3] == 0; }
+    // After a dispersive refraction only the hero wavelength follows the refracted ray: it
+    // carries all four samples' weight (pbrt-v4's TerminateSecondary).
+    SampledSpectrum hero_only() const { return {{v[0] * kWavelengthSamples, 0.0, 0.0, 0.0}}; }
+};
+
+inline SampledSpectrum operator+(SampledSpectrum a, const SampledSpectrum& b) { return a += b; }
+inline SampledSpectrum operator*(SampledSpectrum a, const SampledSpectrum& b) { return a *= b; }
+inline SampledSpectrum operator*(SampledSpectrum a, double s) { return a *= s; }
+
+// CIE 1931 colour matching functions at `nm` (linear interpolation of the 5 nm table).
+Vec3 cie_xyz_bar(double nm);
+// Integral of y-bar over the table, which normalises Y.
+double cie_y_integral();
+Rgb xyz_to_linear_srgb(const Vec3& xyz);
+
+// Linear sRGB of a spectrum sampled at `w` (uniform pdf): the Monte Carlo estimate of
+// (1 / int ybar) int S(l) cmf(l) dl, through XYZ.
+Rgb to_rgb(const SampledSpectrum& s, const SampledWavelengths& w);
+// Linear sRGB of a whole spectrum (summed over the 5 nm CIE grid).
+Rgb spectrum_to_rgb(const class Spectrum& s);
+// Linear sRGB of a single wavelength sample of value `value` drawn with density `pdf`.
+Rgb sample_to_rgb(double value, double nm, double pdf);
+
+// A spectral distribution: reflectances, illuminants, blackbodies, laser lines.
+class Spectrum {
+public:
+    virtual ~Spectrum() = default;
+    virtual double eval(double nm) const = 0;
+    SampledSpectrum sample(const SampledWavelengths& w) const;
+    // Draws a wavelength in the visible range with density proportional to a 1 nm
+    // histogram of the spectrum (for photons), so a narrow laser line gets every photon;
+    // returns the density (per nm).
+    double sample_wavelength(double u, double& nm) const;
+
+private:
+    mutable std::once_flag m_cdf_once;
+    mutable std::vector<double> m_cdf;  // built on first use
+};
+
+using SpectrumPtr = std::shared_ptr<const Spectrum>;
+
+// RGB colours as spectra. Both are piecewise constant over three bands (blue < 490 nm <=
+// green < 585 nm <= red), with band weights solved so that the spectrum, lit by (or being)
+// D65, renders back to the same linear sRGB colour: greys and white are exact, saturated
+// colours are clamped to what three bands can make. A reflectance stays within [0, 1].
+SpectrumPtr reflectance_from_rgb(const Rgb& rgb);
+// An illuminant: D65 times the bands; renders to `rgb` (so [1, 1, 1] is D65 white, Y = 1).
+SpectrumPtr illuminant_from_rgb(const Rgb& rgb);
+SampledSpectrum illuminant_from_rgb(const Rgb& rgb, const SampledWavelengths& w);
+// Light spectra normalised to the radiant power of D65 white over the visible range, so a
+// light's `power` means the same energy whatever its spectrum.
+SpectrumPtr d65_spectrum();
+SpectrumPtr blackbody_spectrum(double kelvin);
+SpectrumPtr line_spectrum(double nm, double width_nm = 1.0);
+
+}  // namespace lenslab

@@ -1,0 +1,104 @@
+#include "scene/spectral_json.h"
+
+#include "scene/material.h"
+
+namespace lenslab {
+
+namespace {
+
+std::vector<double> read_numbers(const nlohmann::json& j, const std::string& path) {
+    if (!j.is_array() || j.empty() || j.size() > 8) {
+        throw SceneError(path, "must be an array of 1 to 8 numbers");
+    }
+    std::vector<double> out;
+    for (size_t i = 0; i < j.size(); ++i) {
+        out.push_back(JsonObjectReader::as_number(j[i], path + "[" + std::to_string(i) + "]"));
+    }
+    return out;
+}
+
+}  // namespace
+
+IndexModelPtr read_index_model(const nlohmann::json& j, const std::string& path) {
+    if (j.is_number()) {
+        const double n = JsonObjectReader::as_number(j, path);
+        if (!(n > 0)) throw SceneError(path, "must be > 0, got " + format_number(n));
+        return constant_index(n);
+    }
+    if (!j.is_object()) {
+        throw SceneError(path, "must be a number or a model {\"model\": \"sellmeier\", ...}");
+    }
+    const std::string model =
+        JsonObjectReader(j, path, {"model", "A", "B", "C", "n_d", "V_d"}).choice("model", "sellmeier", {"cauchy", "sellmeier", "abbe"});
+    IndexModelPtr m;
+    if (model == "cauchy") {
+        JsonObjectReader r(j, path, {"model", "A", "B", "C"}, "a Cauchy model");
+        m = cauchy_index(r.positive("A"), r.number("B"), r.number("C", 0.0));
+    } else if (model == "sellmeier") {
+        JsonObjectReader r(j, path, {"model", "B", "C"}, "a Sellmeier model");
+        const auto b = read_numbers(r.require("B"), r.child_path("B"));
+        const auto c = read_numbers(r.require("C"), r.child_path("C"));
+        if (b.size() != c.size()) {
+            throw SceneError(r.child_path("C"), "must have as many terms as B (" + std::to_string(b.size()) + ")");
+        }
+        m = sellmeier_index(b, c);
+    } else {
+        JsonObjectReader r(j, path, {"model", "n_d", "V_d"}, "an Abbe model");
+        const double nd = r.positive("n_d");
+        if (nd <= 1.0) throw SceneError(r.child_path("n_d"), "must be > 1, got " + format_number(nd));
+        m = abbe_index(nd, r.positive("V_d"));
+    }
+    // A model whose index is not a real number > 0 across the visible range is a typo.
+    for (double nm = kLambdaMinNm; nm <= kLambdaMaxNm; nm += 10.0) {
+        const double n = m->n(nm);
+        if (!(n > 0.0) || !std::isfinite(n)) {
+            throw SceneError(path, "the model gives n = " + format_number(n) + " at " + format_number(nm) +
+                                       " nm (must be a positive number across 360-830 nm)");
+        }
+    }
+    return m;
+}
+
+const Glass& read_glass(const nlohmann::json& j, const std::string& path) {
+    if (!j.is_string()) throw SceneError(path, "must be the name of a catalogue glass");
+    const std::string name = j.get<std::string>();
+    if (const Glass* g = find_glass(name)) return *g;
+    std::string known;
+    for (const Glass& g : glass_catalogue()) known += (known.empty() ? "" : ", ") + g.name;
+    throw SceneError(path, "unknown glass '" + name + "' (known: " + known + "; see `lenslab glass`)");
+}
+
+SpectrumPtr read_spectrum(const nlohmann::json& j, const std::string& path) {
+    if (j.is_string()) {
+        if (j.get<std::string>() == "d65") return d65_spectrum();
+        throw SceneError(path, "unknown spectrum '" + j.get<std::string>() +
+                                   "' (use \"d65\", {\"blackbody\": K} or {\"line\": nm})");
+    }
+    JsonObjectReader r(j, path, {"blackbody", "line", "width"}, "a spectrum");
+    if (r.has("blackbody")) {
+        const double k = r.positive("blackbody");
+        if (k < 500 || k > 100000) {
+            throw SceneError(r.child_path("blackbody"), "must be between 500 and 100000 K, got " + format_number(k));
+        }
+        return blackbody_spectrum(k);
+    }
+    if (r.has("line")) {
+        const double nm = r.number("line");
+        if (nm < kLambdaMinNm || nm > kLambdaMaxNm) {
+            throw SceneError(r.child_path("line"), "must be within the visible range 360-830 nm, got " + format_number(nm));
+        }
+        return line_spectrum(nm, r.positive("width", 1.0));
+    }
+    throw SceneError(path, "give \"blackbody\" (kelvin) or \"line\" (nm)");
+}
+
+SpectrumPtr light_spectrum(JsonObjectReader& r, Rgb& color, double power) {
+    if (const nlohmann::json* s = r.find("spectrum")) {
+        if (r.has("color")) throw SceneError(r.child_path("color"), "give either color or spectrum, not both");
+        return scaled_spectrum(read_spectrum(*s, r.child_path("spectrum")), power);
+    }
+    color = r.color("color", color);
+    return scaled_spectrum(illuminant_from_rgb(color), power);
+}
+
+}  // namespace lenslab
