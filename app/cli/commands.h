@@ -13,6 +13,7 @@ using Action = std::function<int()>;
 Action add_render_command(CLI::App& app);
 Action add_trace_command(CLI::App& app);
 Action add_bench_command(CLI::App& app);
+Action add_glass_command(CLI::App& app);
 
 
 }  // namespace lenslab::cli

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     const auto render = lenslab::cli::add_render_command(app);
     const auto trace = lenslab::cli::add_trace_command(app);
     const auto bench = lenslab::cli::add_bench_command(app);
+    const auto glass = lenslab::cli::add_glass_command(app);
 
     try {
         app.parse(argc, argv);
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("render")) return render();
         if (app.got_subcommand("trace")) return trace();
         if (app.got_subcommand("bench")) return bench();
+        if (app.got_subcommand("glass")) return glass();
     } catch (const lenslab::SceneError& e) {
         std::cerr << "lenslab: error: " << e.what() << "\n";
         return 1;

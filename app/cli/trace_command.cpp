@@ -53,6 +53,9 @@ Action add_trace_command(CLI::App& app) {
     cmd->add_option("--min-weight", args->options.min_weight,
                     "Branches carrying less of the ray's power are dropped")
         ->check(CLI::Range(kMinBranchWeight, 1.0))->capture_default_str();
+    cmd->add_option("-w,--wavelength", args->options.wavelength_nm,
+                    "Vacuum wavelength in nm for dispersive materials (default: the d line)")
+        ->check(CLI::Range(kLambdaMinNm, 2500.0))->capture_default_str();
     return [args] { return run(*args); };
 }
 

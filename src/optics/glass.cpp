@@ -133,11 +133,12 @@ const std::vector<Glass>& glass_catalogue() {
                      2.4175, 55.3});
         // Optical plastics are specified by their catalogue code (n_d, V_d); e.g. Evonik
         // PLEXIGLAS (PMMA) n_d 1.4918, V_d 57.2 and Covestro Makrolon (polycarbonate)
-        // n_d 1.5855, V_d 29.9 optical-grade data. Modelled by a two-term Cauchy.
+        // n_d 1.5855, V_d 29.9 optical-grade data. Modelled by a two-term Cauchy through the d,
+    // F and C lines: exact there, an approximation towards the ends of the visible.
         g.push_back({"PMMA", "acrylic (PMMA), moulded lenses", "optical-grade PMMA: n_d 1.4918, V_d 57.2",
-                     with_range(abbe_index(1.4918, 57.2), 400, 1100), 1.4918, 57.2});
+                     with_range(abbe_index(1.4918, 57.2), 360, 1100), 1.4918, 57.2});
         g.push_back({"polycarbonate", "polycarbonate (PC), moulded lenses", "optical-grade PC: n_d 1.5855, V_d 29.9",
-                     with_range(abbe_index(1.5855, 29.9), 400, 1100), 1.5855, 29.9});
+                     with_range(abbe_index(1.5855, 29.9), 360, 1100), 1.5855, 29.9});
         return g;
     }();
     return catalogue;
