@@ -244,7 +244,11 @@ void PropertyPanel::build_material(const std::string& prefix) {
         m_form->addRow(tr("Refractive index"), new QLabel(tr("dispersion model (edit the file)"), m_form_widget));
     }
     add_number(tr("Emission intensity"), prefix + "emission/intensity", d.emission_intensity, 0, 1e12);
-    add_vec3(tr("Emission colour"), prefix + "emission/color", rgb_json(d.emission_color), 0, 1e6);
+    if (value_at(prefix + "emission")) {
+        build_spectrum(prefix + "emission/");
+    } else {
+        add_vec3(tr("Emission colour"), prefix + "emission/color", rgb_json(d.emission_color), 0, 1e6);
+    }
 }
 
 void PropertyPanel::build_object() {
@@ -316,7 +320,29 @@ void PropertyPanel::build_light() {
         add_number(tr("Beam radius"), "radius", 1.0, 1e-6, 1e6);
     }
     add_number(tr("Power (W)"), "power", 1.0, 1e-6, 1e15);
-    add_vec3(tr("Colour"), "color", json::array({1, 1, 1}), 0, 1e6);
+    build_spectrum("");
+}
+
+void PropertyPanel::build_spectrum(const std::string& prefix) {
+    // A colour (D65-based) or a named spectrum; switching rewrites the light's keys.
+    const json* spectrum = value_at(prefix + "spectrum");
+    std::string kind = "colour";
+    if (spectrum && spectrum->is_string()) kind = "d65";
+    if (spectrum && spectrum->is_object()) kind = spectrum->contains("blackbody") ? "blackbody" : "line";
+    const std::string owner = prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1);
+    add_choice(tr("Spectrum"), prefix + "spectrum", kind, {"colour", "d65", "blackbody", "line"},
+               [this, owner](const std::string& chosen) {
+                   json element = *value_at(owner);
+                   element.erase("color");
+                   element.erase("spectrum");
+                   if (chosen == "d65") element["spectrum"] = "d65";
+                   if (chosen == "blackbody") element["spectrum"] = {{"blackbody", 3000}};
+                   if (chosen == "line") element["spectrum"] = {{"line", 532}};
+                   commit(owner, element, tr("spectrum"));
+               });
+    if (kind == "colour") add_vec3(tr("Colour"), prefix + "color", json::array({1, 1, 1}), 0, 1e6);
+    if (kind == "blackbody") add_number(tr("Temperature (K)"), prefix + "spectrum/blackbody", 3000, 500, 100000, 0);
+    if (kind == "line") add_number(tr("Wavelength (nm)"), prefix + "spectrum/line", 532, 360, 830, 1);
 }
 
 }  // namespace lenslab::gui

@@ -60,6 +60,7 @@ private:
     void build_lens();
     void build_surface(const QString& label, const std::string& key);
     void build_light();
+    void build_spectrum(const std::string& prefix);
 
     const nlohmann::json* value_at(const std::string& key) const;
 

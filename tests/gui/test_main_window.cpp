@@ -1,6 +1,7 @@
 // The editor driven as a user would, on the offscreen platform: open, edit in a panel, see a
 // new frame, undo, save and reopen, refuse a broken file and an invalid value.
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -171,6 +172,29 @@ private slots:
         QCOMPARE(w.document()->undo_stack()->count(), 1);
         w.document()->undo_stack()->undo();
         QCOMPARE(w.document()->json()["camera"], before);
+    }
+
+    void glass_picker_and_light_spectrum() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        // Pick a catalogue glass for a material: the document gets "glass", loses "ior".
+        w.tree()->select_pointer("/materials/red");
+        auto* glass = w.panel()->findChild<QComboBox*>("field:glass");
+        QVERIFY(glass);
+        glass->setCurrentText("N-BK7");
+        emit glass->activated(glass->currentIndex());
+        QCOMPARE(w.document()->json()["materials"]["red"]["glass"].get<std::string>(), std::string("N-BK7"));
+        QVERIFY(!w.document()->json()["materials"]["red"].contains("ior"));
+        // Give the point light a 2700 K blackbody spectrum instead of a colour.
+        w.tree()->select_pointer("/lights/0");
+        auto* spectrum = w.panel()->findChild<QComboBox*>("field:spectrum");
+        QVERIFY(spectrum);
+        spectrum->setCurrentText("blackbody");
+        emit spectrum->activated(spectrum->currentIndex());
+        QVERIFY(w.document()->json()["lights"][0]["spectrum"].contains("blackbody"));
+        type_value(field(w, "spectrum/blackbody"), 2700);
+        QCOMPARE(w.document()->json()["lights"][0]["spectrum"]["blackbody"].get<double>(), 2700.0);
+        QVERIFY(wait_for_fresh_frame(w));
     }
 
     void edit_while_rendering_restarts_promptly() {
