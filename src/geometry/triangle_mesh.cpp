@@ -1,12 +1,51 @@
 #include "geometry/triangle_mesh.h"
 
 #include <cmath>
+#include <limits>
+
+#include "accel/bvh_build.h"
 
 namespace lenslab {
 
 namespace {
 
 constexpr int kMaxLeafSize = 4;
+
+float round_down(double v) {
+    const auto f = static_cast<float>(v);
+    return static_cast<double>(f) <= v ? f : std::nextafter(f, -std::numeric_limits<float>::infinity());
+}
+float round_up(double v) {
+    const auto f = static_cast<float>(v);
+    return static_cast<double>(f) >= v ? f : std::nextafter(f, std::numeric_limits<float>::infinity());
+}
+
+// The slab test of Aabb::hit with its conservative far distance (Ize 2013), on a float box,
+// with the near and far planes chosen by the ray's direction signs instead of swapped.
+struct BoxRay {
+    Vec3 origin, inv;
+    int neg[3];
+
+    explicit BoxRay(const Ray& ray)
+        : origin(ray.origin),
+          inv{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z},
+          neg{ray.direction.x < 0, ray.direction.y < 0, ray.direction.z < 0} {}
+
+    bool hit(const float* lo, const float* hi, double t_min, double t_max) const {
+        constexpr double kEps = std::numeric_limits<double>::epsilon() * 0.5;
+        constexpr double kFarScale = 1.0 + 2.0 * (3.0 * kEps / (1.0 - 3.0 * kEps));
+        for (int a = 0; a < 3; ++a) {
+            const double near = neg[a] ? hi[a] : lo[a];
+            const double far = neg[a] ? lo[a] : hi[a];
+            const double t0 = (near - origin[a]) * inv[a];
+            const double t1 = (far - origin[a]) * inv[a] * kFarScale;
+            // NaN (0 * inf) comparisons fail, which keeps the interval: conservative.
+            t_min = t0 > t_min ? t0 : t_min;
+            t_max = t1 < t_max ? t1 : t_max;
+        }
+        return t_min <= t_max;
+    }
+};
 
 // Per-ray set-up of the watertight ray/triangle test (Woop, Benthin & Wald 2013, "Watertight
 // Ray/Triangle Intersection", JCGT 2(1)): the ray becomes the +z axis of a sheared frame, so
@@ -65,8 +104,18 @@ TriangleMesh::TriangleMesh(const std::vector<Vec3>& vertices,
         for (int32_t k : triangles[i]) boxes[i].expand(vertices[k]);
         m_bounds.expand(boxes[i]);
     }
-    BvhLayout layout = build_bvh(boxes, kMaxLeafSize);
-    m_nodes = std::move(layout.nodes);
+    const BvhLayout layout = build_bvh(boxes, kMaxLeafSize);
+    m_nodes.reserve(layout.nodes.size());
+    for (const BvhNode& n : layout.nodes) {
+        Node c{};
+        for (int a = 0; a < 3; ++a) {
+            c.lo[a] = round_down(n.box.lo[a]);
+            c.hi[a] = round_up(n.box.hi[a]);
+        }
+        c.first = n.first;
+        c.count_axis = n.count > 0 ? n.count << 2 : n.axis;
+        m_nodes.push_back(c);
+    }
     // Store the corners in leaf order: a leaf's triangles lie side by side in memory.
     m_triangles.reserve(triangles.size());
     m_normals.reserve(triangles.size());
@@ -81,24 +130,41 @@ TriangleMesh::TriangleMesh(const std::vector<Vec3>& vertices,
 }
 
 bool TriangleMesh::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const {
+    if (m_nodes.empty()) return false;
     const ShearedRay sheared(ray);
+    const BoxRay box_ray(ray);
     int best = -1;
-    double best_t = t_max;
-    traverse_bvh(m_nodes, ray, t_min, t_max, false, [&](int first, int count, double& t_far) {
-        bool found = false;
-        for (int i = first; i < first + count; ++i) {
-            const double t = sheared.hit(m_triangles[i]);
-            if (in_range(t, t_min, t_far)) {
-                t_far = t;
-                best_t = t;
-                best = i;
-                found = true;
+    int stack[kBvhStackSize];  // the builder's depth bound holds here too
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const int index = stack[--top];
+        const Node& node = m_nodes[index];
+        if (!box_ray.hit(node.lo, node.hi, t_min, t_max)) continue;
+        const int count = node.count_axis >> 2;
+        if (count > 0) {
+            for (int i = node.first; i < node.first + count; ++i) {
+                const double t = sheared.hit(m_triangles[i]);
+                if (in_range(t, t_min, t_max)) {
+                    t_max = t;
+                    best = i;
+                }
             }
+            continue;
         }
-        return found;
-    });
+        // The left child holds the lower coordinates along the split axis: visit the nearer
+        // child first so its hits shrink t_max before the farther one is tested.
+        const int left = index + 1, right = node.first;
+        if (box_ray.neg[node.count_axis]) {
+            stack[top++] = left;
+            stack[top++] = right;
+        } else {
+            stack[top++] = right;
+            stack[top++] = left;
+        }
+    }
     if (best < 0) return false;
-    hit.t = best_t;
+    hit.t = t_max;
     hit.point = ray.at(hit.t);
     hit.normal = m_normals[best];
     return true;

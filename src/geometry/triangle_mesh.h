@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "accel/bvh_build.h"
 #include "geometry/shape.h"
 
 namespace lenslab {
@@ -40,7 +39,14 @@ public:
 private:
     std::vector<std::array<Vec3, 3>> m_triangles;  // corners, in BVH leaf order
     std::vector<Vec3> m_normals;                   // unit face normals, same order
-    std::vector<BvhNode> m_nodes;
+    // BVH node, 32 bytes (two per cache line): a 100k-triangle mesh's traversal is bound by
+    // memory, so the box is stored in float, rounded outward so it still holds its triangles.
+    struct Node {
+        float lo[3], hi[3];
+        int32_t first;  // leaf: first triangle; inner: index of the right child (left is next)
+        int32_t count_axis;  // leaf: triangle count << 2; inner: split axis (count 0)
+    };
+    std::vector<Node> m_nodes;
     Aabb m_bounds;
     size_t m_vertex_count = 0;
     bool m_closed = false;
