@@ -29,7 +29,8 @@ struct BoxRay {
     explicit BoxRay(const Ray& ray)
         : origin(ray.origin),
           inv{1.0 / ray.direction.x, 1.0 / ray.direction.y, 1.0 / ray.direction.z},
-          neg{ray.direction.x < 0, ray.direction.y < 0, ray.direction.z < 0} {}
+          // From 1 / d, not d: a direction component of -0 gives -inf, a far side first.
+          neg{inv.x < 0, inv.y < 0, inv.z < 0} {}
 
     bool hit(const float* lo, const float* hi, double t_min, double t_max) const {
         constexpr double kEps = std::numeric_limits<double>::epsilon() * 0.5;

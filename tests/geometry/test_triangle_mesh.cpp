@@ -108,6 +108,16 @@ TEST(TriangleMesh, NearestHitMatchesBruteForce) {
     EXPECT_GT(hits, 2000);
 }
 
+TEST(TriangleMesh, AxisAlignedRaysHitWhateverTheSignOfTheirZeros) {
+    // A direction component of -0 makes 1/d = -inf: the box test must take the far side first.
+    const TriangleMesh mesh = closed_mesh(make_prism({}));
+    for (const Vec3& d : {Vec3{1, 0, 0}, Vec3{1, -0.0, -0.0}, Vec3{-0.0, 1, 0}, Vec3{0, -0.0, -1}}) {
+        SurfaceHit h;
+        EXPECT_TRUE(mesh.intersect({d * -3.0 + Vec3{0, 0.1, 0.01}, d}, 0, INFINITY, h))
+            << d.x << " " << d.y << " " << d.z;
+    }
+}
+
 TEST(TriangleMesh, RaysThroughSharedEdgesAndVerticesNeverSlipThrough) {
     // An octahedron: rays aimed at its centre through the midpoint of every edge and through
     // every vertex meet exactly the boundary between faces, where a non-watertight test can
