@@ -181,6 +181,13 @@ Polygons read_obj(JsonObjectReader& r, const std::string& base_dir) {
     int32_t face = 0;
     std::vector<int32_t> corners;
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+        // tinyobjloader counts a face's corners in a byte: a face of 256 or more corners
+        // would be misread, so refuse it rather than read the wrong faces.
+        size_t corner_total = 0;
+        for (const unsigned char n : shape.mesh.num_face_vertices) corner_total += n;
+        if (corner_total != shape.mesh.indices.size()) {
+            throw SceneError(path, cannot + "a face has more than 255 corners");
+        }
         size_t next = 0;
         for (const unsigned char n : shape.mesh.num_face_vertices) {
             corners.clear();

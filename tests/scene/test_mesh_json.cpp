@@ -178,6 +178,44 @@ TEST(MeshJson, ParseSceneTakesTheFolderForRelativePaths) {
                                            R"(/wedge.obj", "material": {"transparency": 1}})")));
 }
 
+// Problems inside an OBJ file name the file, and its faces and vertices as the file numbers
+// them (from 1).
+TEST(MeshJson, ObjProblemsNameTheFileAndCountFromOne) {
+    const fs::path dir = fs::path(::testing::TempDir()) / "lenslab_mesh_json";
+    fs::create_directories(dir);
+    auto reason_for = [&](const std::string& obj_text, const std::string& material) {
+        std::ofstream(dir / "t.obj") << obj_text;
+        try {
+            (void)parse_scene(scene_with(R"({"type": "mesh", "file": "t.obj", "material": )" +
+                                         material + "}"),
+                              "t", dir.string());
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.path(), "objects[0].file");
+            return e.reason();
+        }
+        return std::string("loaded");
+    };
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    EXPECT_EQ(reason_for(tri + "f 1 2 9\n", "{}"),
+              "cannot read 't.obj': face 1 refers to vertex 9, but the file has 3 vertices");
+    EXPECT_EQ(reason_for(tri, "{}"), "cannot read 't.obj': it has no faces (f lines)");
+    EXPECT_EQ(reason_for(tri + "f 1 2 2\n", "{}"), "cannot read 't.obj': face 1 uses vertex 2 twice");
+    // One triangle is an open surface: fine when opaque, refused when transparent.
+    EXPECT_EQ(reason_for(tri + "f 1 2 3\n", R"({"color": 0.5})"), "loaded");
+    EXPECT_EQ(reason_for(tri + "f -3 -2 -1\n", R"({"transparency": 1})")
+                  .rfind("the mesh is not closed: edge (1, 2) belongs to 1 face (face 1)", 0),
+              0u);
+    EXPECT_EQ(reason_for("", "{}").rfind("cannot read 't.obj': it has no faces", 0), 0u);
+    try {
+        (void)parse_scene(scene_with(R"({"type": "mesh", "file": "absent.obj", "material": {}})"),
+                          "t", dir.string());
+        FAIL() << "a missing OBJ file was accepted";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.reason(), "cannot read 'absent.obj': No such file or directory (looked for " +
+                                  (dir / "absent.obj").string() + ")");
+    }
+}
+
 TEST(MeshJson, PrismFacesAreWhereTheDocumentationSays) {
     // Apex 60, side 2: apex-to-base 2 cos 30 = sqrt(3), half base 1. Axis +y, facing +z,
     // centre (0, 1, 0): apex edge at z = sqrt(3)/2, base at z = -sqrt(3)/2, x in [-1, 1].
