@@ -1,4 +1,6 @@
-// Ray-object intersection throughput for each shape and for the default scene's BVH.
+// Ray-object intersection throughput for each shape, for a 100k-triangle mesh (its own BVH,
+// and the same triangles as separate shapes in the generic scene BVH for comparison), and
+// for the default scene's BVH.
 
 #include <benchmark/benchmark.h>
 
@@ -7,6 +9,9 @@
 
 #include "geometry/lens/lens_solid.h"
 #include "geometry/lens/spherical_surface.h"
+#include "geometry/mesh_shapes.h"
+#include "geometry/triangle_mesh.h"
+#include "accel/bvh.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "math/rng.h"
@@ -46,6 +51,67 @@ void BM_Lens(benchmark::State& state) {
     run(state, LensSolid(LensSolid::symmetric_biconvex({0, 0, 0}, normalize(Vec3{1, 1, 0}), 1.0, 0.5)));
 }
 
+// A UV sphere of radius 0.5 with 250 x 201 bands: 100,000 triangles.
+MeshGeometry sphere_100k() { return make_uv_sphere({0, 0, 0}, 0.5, 250, 201); }
+
+void BM_Mesh100k(benchmark::State& state) {
+    const MeshGeometry g = sphere_100k();
+    const TriangleMesh mesh(g.vertices, g.triangles, true);
+    state.counters["triangles"] = static_cast<double>(mesh.triangle_count());
+    run(state, mesh);
+}
+
+// Rays that start inside the mesh and look for the way out (every one hits).
+void BM_Mesh100kFromInside(benchmark::State& state) {
+    const MeshGeometry g = sphere_100k();
+    const TriangleMesh mesh(g.vertices, g.triangles, true);
+    Rng rng(2, 0);
+    std::vector<Ray> rays(4096);
+    for (Ray& r : rays) {
+        r.origin = Vec3{rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5} * 0.5;
+        r.direction = sample_uniform_sphere(rng.uniform(), rng.uniform());
+    }
+    size_t i = 0, hits = 0;
+    SurfaceHit h;
+    for (auto _ : state) {
+        hits += mesh.intersect(rays[i++ & 4095], 0, INFINITY, h);
+        benchmark::DoNotOptimize(h);
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["hit_fraction"] = double(hits) / state.iterations();
+}
+
+// The same triangles as 100,000 Triangle shapes in the scene's generic BVH (virtual calls,
+// pointer chasing): what the mesh's own BVH is measured against.
+void BM_Mesh100kAsShapesInGenericBvh(benchmark::State& state) {
+    const MeshGeometry g = sphere_100k();
+    std::vector<Triangle> triangles;
+    triangles.reserve(g.triangles.size());
+    for (const MeshTriangle& t : g.triangles) {
+        triangles.emplace_back(g.vertices[t[0]], g.vertices[t[1]], g.vertices[t[2]]);
+    }
+    std::vector<const Shape*> shapes;
+    for (const Triangle& t : triangles) shapes.push_back(&t);
+    const Bvh bvh(shapes);
+    const auto rays = random_rays(4096);
+    size_t i = 0, hits = 0;
+    BvhHit h;
+    for (auto _ : state) {
+        hits += bvh.intersect(rays[i++ & 4095], 0, INFINITY, h);
+        benchmark::DoNotOptimize(h);
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["hit_fraction"] = double(hits) / state.iterations();
+}
+
+void BM_Mesh100kBuild(benchmark::State& state) {
+    const MeshGeometry g = sphere_100k();
+    for (auto _ : state) {
+        const TriangleMesh mesh(g.vertices, g.triangles, true);
+        benchmark::DoNotOptimize(mesh.bounds());
+    }
+}
+
 void BM_DefaultSceneBvh(benchmark::State& state) {
     const Scene scene = default_scene();
     const auto rays = random_rays(4096);
@@ -62,6 +128,10 @@ void BM_DefaultSceneBvh(benchmark::State& state) {
 BENCHMARK(BM_Sphere);
 BENCHMARK(BM_Triangle);
 BENCHMARK(BM_Lens);
+BENCHMARK(BM_Mesh100k);
+BENCHMARK(BM_Mesh100kFromInside);
+BENCHMARK(BM_Mesh100kAsShapesInGenericBvh);
+BENCHMARK(BM_Mesh100kBuild)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DefaultSceneBvh);
 
 }  // namespace

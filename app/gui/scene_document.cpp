@@ -1,6 +1,7 @@
 #include "scene_document.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QSaveFile>
 
 #include "edit_scene_command.h"
@@ -8,6 +9,13 @@
 #include "scene/scene_json.h"
 
 namespace lenslab::gui {
+
+namespace {
+// Files a scene names (OBJ meshes) are relative to the scene file's folder.
+std::string folder_of(const QString& path) {
+    return path.isEmpty() ? std::string() : QFileInfo(path).absolutePath().toStdString();
+}
+}  // namespace
 
 SceneDocument::SceneDocument(QObject* parent) : QObject(parent) { load_default(); }
 
@@ -22,7 +30,7 @@ void SceneDocument::load_default() {
 
 bool SceneDocument::validate(const nlohmann::json& j, Scene& out, QString* error) const {
     try {
-        out = scene_from_json(j);
+        out = scene_from_json(j, folder_of(m_path));
         return true;
     } catch (const SceneError& e) {
         if (error) *error = QString::fromStdString(e.what());
@@ -42,7 +50,7 @@ bool SceneDocument::open(const QString& path, QString* error) {
     try {
         j = parse_json_strict(text, path.toStdString());
         if (!j.is_object()) throw SceneError(path.toStdString(), "the top level must be a JSON object { ... }");
-        scene = scene_from_json(j);
+        scene = scene_from_json(j, folder_of(path));
     } catch (const SceneError& e) {
         if (error) {
             const std::string where = e.path().rfind(path.toStdString(), 0) == 0 ? e.path() : path.toStdString() + ": " + e.path();
@@ -102,7 +110,7 @@ void SceneDocument::commit_preview(const nlohmann::json& before, const QString& 
 
 void SceneDocument::install(const nlohmann::json& json) {
     m_json = json;
-    m_scene = scene_from_json(m_json);  // validated before it entered the stack
+    m_scene = scene_from_json(m_json, folder_of(m_path));  // validated before it entered the stack
     emit changed();
 }
 

@@ -19,12 +19,18 @@ struct Aabb {
     Vec3 extent() const { return hi - lo; }
     bool empty() const { return lo.x > hi.x; }
 
-    // inv_dir = 1 / ray.direction componentwise (infinities are fine).
+    // inv_dir = 1 / ray.direction componentwise (infinities are fine). Conservative: the far
+    // slab distance is enlarged by its worst rounding error, 2 gamma(3) (Ize 2013, "Robust BVH
+    // Ray Traversal", JCGT 2(2); pbrt-v4 Bounds3::IntersectP), so a ray through a corner
+    // or edge shared by two boxes (a mesh vertex on both) is never refused by both.
     bool hit(const Ray& ray, const Vec3& inv_dir, double t_min, double t_max) const {
+        constexpr double kEps = std::numeric_limits<double>::epsilon() * 0.5;
+        constexpr double kFarScale = 1.0 + 2.0 * (3.0 * kEps / (1.0 - 3.0 * kEps));
         for (int a = 0; a < 3; ++a) {
             double t0 = (lo[a] - ray.origin[a]) * inv_dir[a];
             double t1 = (hi[a] - ray.origin[a]) * inv_dir[a];
             if (inv_dir[a] < 0) std::swap(t0, t1);
+            t1 *= kFarScale;
             // NaN (0 * inf) comparisons fail, which keeps the interval: conservative.
             t_min = t0 > t_min ? t0 : t_min;
             t_max = t1 < t_max ? t1 : t_max;

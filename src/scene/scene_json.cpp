@@ -14,6 +14,7 @@
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "scene/json_reader.h"
+#include "scene/mesh_json.h"
 #include "scene/spectral_json.h"
 
 namespace lenslab {
@@ -247,7 +248,8 @@ std::shared_ptr<const Shape> read_triangle(JsonObjectReader& r) {
 }
 
 SceneObject read_object(const json& j, const std::string& path,
-                        const std::map<std::string, int>& materials, std::vector<Material>& all) {
+                        const std::map<std::string, int>& materials, std::vector<Material>& all,
+                        const std::string& base_dir) {
     const std::string type = peek_type(j, path);
     std::vector<std::string> keys{"type", "name", "material"};
     SceneObject o;
@@ -261,9 +263,13 @@ SceneObject read_object(const json& j, const std::string& path,
         o.type = ObjectType::Lens;
         keys.insert(keys.end(), {"center", "axis", "curvature_radius", "aperture_radius",
                                  "thickness", "diameter", "front", "back"});
+    } else if (type == "mesh" || type == "prism") {
+        o.type = ObjectType::Mesh;
+        const auto& more = type == "mesh" ? mesh_keys() : prism_keys();
+        keys.insert(keys.end(), more.begin(), more.end());
     } else {
-        throw SceneError(path + ".type",
-                         "unknown object type '" + type + "' (known: sphere, triangle, lens)");
+        throw SceneError(path + ".type", "unknown object type '" + type +
+                                             "' (known: sphere, triangle, lens, mesh, prism)");
     }
     JsonObjectReader r(j, path, keys, "a " + type);
     o.name = r.string("name", path);
@@ -273,8 +279,12 @@ SceneObject read_object(const json& j, const std::string& path,
             break;
         case ObjectType::Triangle: o.shape = read_triangle(r); break;
         case ObjectType::Lens: o.shape = read_lens(r); break;
+        case ObjectType::Mesh:
+            o.shape = type == "mesh" ? read_mesh(r, base_dir) : read_prism(r);
+            break;
     }
     o.material = read_material_ref(r, o.name, materials, all);
+    if (o.type == ObjectType::Mesh) check_mesh_material(r, *o.shape, all[o.material]);
     if (all[o.material].is_emitter() && o.type != ObjectType::Sphere) {
         throw SceneError(r.child_path("material"),
                          "only spheres can emit light (the material has an emission)");
@@ -308,13 +318,14 @@ void read_light(const json& j, const std::string& path, Scene& scene) {
 
 }  // namespace
 
-Scene parse_scene(const std::string& text, const std::string& source) {
+Scene parse_scene(const std::string& text, const std::string& source,
+                  const std::string& base_dir) {
     const json root = parse_json_strict(text, source);
     if (!root.is_object()) throw SceneError(source, "the top level must be a JSON object { ... }");
-    return scene_from_json(root);
+    return scene_from_json(root, base_dir);
 }
 
-Scene scene_from_json(const nlohmann::json& root) {
+Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir) {
     JsonObjectReader r(root, "",
                        {"version", "description", "camera", "render", "materials", "objects",
                         "lights"});
@@ -331,7 +342,7 @@ Scene scene_from_json(const nlohmann::json& root) {
         if (!jo->is_array()) throw SceneError("objects", "must be an array");
         for (size_t i = 0; i < jo->size(); ++i) {
             scene.objects.push_back(
-                read_object((*jo)[i], index_path("objects", i), by_name, scene.materials));
+                read_object((*jo)[i], index_path("objects", i), by_name, scene.materials, base_dir));
         }
     }
     if (const json* jl = r.find("lights")) {
@@ -353,7 +364,8 @@ Scene load_scene_file(const std::string& path) {
     text << in.rdbuf();
     if (in.bad()) throw SceneError(path, "cannot read scene file");
     try {
-        return parse_scene(text.str(), path);
+        // Files a scene names (OBJ meshes) are found next to it.
+        return parse_scene(text.str(), path, std::filesystem::path(path).parent_path().string());
     } catch (const SceneError& e) {
         // Prefix the file name so the message says where, whatever the JSON path.
         if (e.path() == path || e.path().empty()) throw SceneError(path, e.reason());

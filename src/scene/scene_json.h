@@ -11,13 +11,17 @@
 namespace lenslab {
 
 // Parses scene JSON text. `source` names the text in syntax-error messages (a file name).
-// Throws SceneError; the returned scene is built and ready to render.
-Scene parse_scene(const std::string& text, const std::string& source = "scene");
+// Relative paths in the scene (a mesh's OBJ `file`) are looked up in `base_dir` ("" = the
+// current directory). Throws SceneError; the returned scene is built and ready to render.
+Scene parse_scene(const std::string& text, const std::string& source = "scene",
+                  const std::string& base_dir = "");
 
-// Builds a scene from an already parsed JSON document (an editor's model). Throws SceneError.
-Scene scene_from_json(const nlohmann::json& root);
+// Builds a scene from an already parsed JSON document (an editor's model), resolving
+// relative paths against `base_dir` as parse_scene does. Throws SceneError.
+Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir = "");
 
-// Reads and parses a scene file. Throws SceneError (unreadable file, syntax, content).
+// Reads and parses a scene file; relative paths in it are relative to the file's folder.
+// Throws SceneError (unreadable file, syntax, content).
 Scene load_scene_file(const std::string& path);
 
 // The built-in default scene (scenes/default.json, compiled in).

@@ -136,6 +136,7 @@ TEST(RenderSession, DefaultSceneIsTheReportsExperiment) {
                 break;
             case ObjectType::Lens: lenses += m.transparency > 0; break;
             case ObjectType::Triangle: ++triangles; break;
+            case ObjectType::Mesh: break;
         }
     }
     EXPECT_EQ(glass_spheres, 1);

@@ -88,7 +88,8 @@ TEST(SceneJson, EveryExampleSceneLoads) {
 }
 
 // Every complete scene (a JSON block with a camera) in the format reference must load, so
-// the documentation cannot drift from the reader.
+// the documentation cannot drift from the reader. Files they name (an OBJ mesh) are looked
+// up in scenes/, where the examples say to save them.
 TEST(SceneJson, DocumentedExamplesLoad) {
     const std::string doc = read_file(fs::path(LENSLAB_SOURCE_DIR) / "docs/scene-format.md");
     const std::regex block("```json\\n([\\s\\S]*?)```");
@@ -98,7 +99,8 @@ TEST(SceneJson, DocumentedExamplesLoad) {
         nlohmann::json j;
         ASSERT_NO_THROW(j = nlohmann::json::parse(text)) << text;
         if (!j.is_object() || !j.contains("camera")) continue;
-        EXPECT_NO_THROW(parse_scene(text)) << text;
+        EXPECT_NO_THROW(parse_scene(text, "docs", std::string(LENSLAB_SOURCE_DIR) + "/scenes"))
+            << text;
         ++complete;
     }
     EXPECT_GE(complete, 2);

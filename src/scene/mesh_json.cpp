@@ -1,0 +1,331 @@
+#include "scene/mesh_json.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <tuple>
+
+// The double-precision build of tinyobjloader (target tinyobjloader::tinyobjloader_double,
+// which defines TINYOBJLOADER_USE_DOUBLE): geometry stays in double from the file on.
+#include <tiny_obj_loader.h>
+static_assert(sizeof(tinyobj::real_t) == sizeof(double), "link tinyobjloader_double");
+
+#include "geometry/mesh_shapes.h"
+#include "geometry/mesh_topology.h"
+#include "geometry/triangle_mesh.h"
+
+namespace lenslab {
+
+namespace {
+
+using nlohmann::json;
+
+// Far more than a scene file or an OBJ should hold, and within the 32-bit indices.
+constexpr size_t kMaxMeshElements = size_t{1} << 30;
+
+// Faces as the user numbered them, fan-triangulated, before placement.
+struct Polygons {
+    MeshGeometry geometry;
+    std::vector<int32_t> face_of;  // triangle -> face, for messages
+    int index_base = 0;            // 0 for JSON, 1 for OBJ (as the file numbers them)
+    std::string key;               // "faces" or "file": where problems with the surface point
+};
+
+std::string item_path(const std::string& base, size_t i) {
+    return base + "[" + std::to_string(i) + "]";
+}
+
+// Fans a polygon from its first corner: (0, 1, 2), (0, 2, 3), ... Exact for convex polygons,
+// and it keeps every polygon edge, so closedness does not depend on the triangulation.
+void add_fan(const std::vector<int32_t>& corners, int32_t face, Polygons& p) {
+    for (size_t k = 1; k + 1 < corners.size(); ++k) {
+        p.geometry.triangles.push_back({corners[0], corners[k], corners[k + 1]});
+        p.face_of.push_back(face);
+    }
+}
+
+// A point, checked in place; the path is only built for the error message.
+Vec3 read_vertex(const json& v, const std::string& base, size_t i) {
+    if (v.is_array() && v.size() == 3) {
+        Vec3 p;
+        bool ok = true;
+        for (int k = 0; k < 3; ++k) {
+            const json& c = v[k];
+            ok = ok && c.is_number();
+            if (ok) p[k] = c.get<double>();
+            ok = ok && std::abs(p[k]) <= kMaxSceneNumber;
+        }
+        if (ok) return p;
+    }
+    return JsonObjectReader::as_vec3(v, item_path(base, i));
+}
+
+int32_t read_index(const json& v, const std::string& face_path, size_t k, size_t vertex_count) {
+    if (!v.is_number_integer()) {
+        const std::string path = item_path(face_path, k);
+        const double d = JsonObjectReader::as_number(v, path);
+        if (d != std::floor(d)) {
+            throw SceneError(path, "must be a whole number (a vertex index), got " + format_number(d));
+        }
+        if (d >= 0 && d < static_cast<double>(vertex_count)) return static_cast<int32_t>(d);
+    } else {
+        const int64_t i = v.get<int64_t>();
+        if (i >= 0 && static_cast<uint64_t>(i) < vertex_count) return static_cast<int32_t>(i);
+    }
+    throw SceneError(item_path(face_path, k),
+                     "must be a vertex index from 0 to " + std::to_string(vertex_count - 1) +
+                         " (there are " + std::to_string(vertex_count) + " vertices), got " +
+                         v.dump());
+}
+
+Polygons read_inline(JsonObjectReader& r) {
+    Polygons p;
+    p.key = "faces";
+    const json& vertices = r.require("vertices");
+    const std::string vpath = r.child_path("vertices");
+    if (!vertices.is_array() || vertices.size() < 3) {
+        throw SceneError(vpath, "must be an array of at least 3 points [[x,y,z], ...]");
+    }
+    if (vertices.size() > kMaxMeshElements) throw SceneError(vpath, "too many vertices");
+    p.geometry.vertices.reserve(vertices.size());
+    for (size_t i = 0; i < vertices.size(); ++i) {
+        p.geometry.vertices.push_back(read_vertex(vertices[i], vpath, i));
+    }
+    const json& faces = r.require("faces");
+    const std::string fpath = r.child_path("faces");
+    if (!faces.is_array() || faces.empty()) {
+        throw SceneError(fpath, "must be an array of faces [[i, j, k], ...] (vertex indices)");
+    }
+    if (faces.size() > kMaxMeshElements) throw SceneError(fpath, "too many faces");
+    std::vector<int32_t> corners;
+    for (size_t f = 0; f < faces.size(); ++f) {
+        const json& face = faces[f];
+        if (!face.is_array() || face.size() < 3) {
+            throw SceneError(item_path(fpath, f),
+                             "a face must be an array of at least 3 vertex indices, got " +
+                                 (face.is_array() ? std::to_string(face.size()) + " indices"
+                                                  : face.dump()));
+        }
+        corners.clear();
+        for (size_t k = 0; k < face.size(); ++k) {
+            const int32_t index = read_index(face[k], item_path(fpath, f), k, vertices.size());
+            for (int32_t c : corners) {
+                if (c == index) {
+                    throw SceneError(item_path(fpath, f),
+                                     "vertex " + std::to_string(index) + " appears twice");
+                }
+            }
+            corners.push_back(index);
+        }
+        add_fan(corners, static_cast<int32_t>(f), p);
+    }
+    return p;
+}
+
+std::string one_line(std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    for (char& c : text) {
+        if (c == '\n' || c == '\r') c = ' ';
+    }
+    return text;
+}
+
+Polygons read_obj(JsonObjectReader& r, const std::string& base_dir) {
+    Polygons p;
+    p.key = "file";
+    p.index_base = 1;
+    const std::string file = r.string("file");
+    const std::string path = r.child_path("file");
+    namespace fs = std::filesystem;
+    const fs::path resolved =
+        fs::path(file).is_absolute() || base_dir.empty() ? fs::path(file) : fs::path(base_dir) / file;
+    const std::string cannot = "cannot read '" + file + "': ";
+    const std::string where =
+        resolved.string() == file ? "" : " (looked for " + resolved.string() + ")";
+    std::error_code ec;
+    if (fs::is_directory(resolved, ec)) throw SceneError(path, cannot + "is a directory" + where);
+    std::ifstream in(resolved, std::ios::binary);
+    if (!in) throw SceneError(path, cannot + std::strerror(errno) + where);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw SceneError(path, cannot + "read error" + where);
+
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = false;  // fan-triangulated below, like inline faces
+    config.vertex_color = false;
+    tinyobj::ObjReader reader;
+    // From a string: `mtllib` lines are ignored (the scene's material applies).
+    if (!reader.ParseFromString(text.str(), "", config)) {
+        throw SceneError(path, cannot + one_line(reader.Error()));
+    }
+    const std::vector<double>& xyz = reader.GetAttrib().vertices;
+    const size_t vertex_count = xyz.size() / 3;
+    if (vertex_count > kMaxMeshElements) throw SceneError(path, cannot + "too many vertices");
+    p.geometry.vertices.reserve(vertex_count);
+    for (size_t i = 0; i < vertex_count; ++i) {
+        const Vec3 v{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+        if (!is_finite(v) || std::abs(v.x) > kMaxSceneNumber || std::abs(v.y) > kMaxSceneNumber ||
+            std::abs(v.z) > kMaxSceneNumber) {
+            throw SceneError(path, cannot + "vertex " + std::to_string(i + 1) +
+                                       " has a coordinate that is not a number between -1e15 "
+                                       "and 1e15");
+        }
+        p.geometry.vertices.push_back(v);
+    }
+    // Every group and object of the file is one surface, faces numbered as in the file.
+    int32_t face = 0;
+    std::vector<int32_t> corners;
+    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+        // tinyobjloader counts a face's corners in a byte: a face of 256 or more corners
+        // would be misread, so refuse it rather than read the wrong faces.
+        size_t corner_total = 0;
+        for (const unsigned char n : shape.mesh.num_face_vertices) corner_total += n;
+        if (corner_total != shape.mesh.indices.size()) {
+            throw SceneError(path, cannot + "a face has more than 255 corners");
+        }
+        size_t next = 0;
+        for (const unsigned char n : shape.mesh.num_face_vertices) {
+            corners.clear();
+            for (size_t k = 0; k < n; ++k) {
+                const int index = shape.mesh.indices[next++].vertex_index;
+                if (index < 0 || static_cast<size_t>(index) >= vertex_count) {
+                    throw SceneError(path, cannot + "face " + std::to_string(face + 1) +
+                                               " refers to vertex " + std::to_string(index + 1) +
+                                               ", but the file has " +
+                                               std::to_string(vertex_count) + " vertices");
+                }
+                for (int32_t c : corners) {
+                    if (c == index) {
+                        throw SceneError(path, cannot + "face " + std::to_string(face + 1) +
+                                                   " uses vertex " + std::to_string(index + 1) +
+                                                   " twice");
+                    }
+                }
+                corners.push_back(index);
+            }
+            if (corners.size() < 3) {
+                throw SceneError(path, cannot + "face " + std::to_string(face + 1) +
+                                           " has fewer than 3 vertices");
+            }
+            add_fan(corners, face, p);
+            if (++face < 0 || static_cast<size_t>(face) > kMaxMeshElements) {
+                throw SceneError(path, cannot + "too many faces");
+            }
+        }
+    }
+    if (p.geometry.triangles.empty()) throw SceneError(path, cannot + "it has no faces (f lines)");
+    return p;
+}
+
+// Two perpendicular unit vectors from `first_key` and `second_key` (each with a default).
+// Nearly perpendicular input (within 1e-6 rad) is made exactly perpendicular.
+std::pair<Vec3, Vec3> read_frame(JsonObjectReader& r, const std::string& first_key,
+                                 const Vec3& first_default, const std::string& second_key,
+                                 const Vec3& second_default) {
+    const Vec3 first = r.direction(first_key, first_default);
+    const Vec3 second = r.direction(second_key, second_default);
+    const double c = dot(first, second);
+    if (std::abs(c) > 1e-6) {
+        if (!r.has(second_key)) {
+            throw SceneError(r.child_path(second_key),
+                             "the default " + second_key + " [" + format_number(second_default.x) +
+                                 ", " + format_number(second_default.y) + ", " +
+                                 format_number(second_default.z) + "] is not perpendicular to " +
+                                 first_key + "; give " + second_key);
+        }
+        const double degrees = std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+        throw SceneError(r.child_path(second_key),
+                         "must be perpendicular to " + first_key + " (the angle between them is " +
+                             format_number(std::round(degrees * 1e4) / 1e4) + " degrees)");
+    }
+    return {first, normalize(second - first * c)};
+}
+
+// Orients a closed surface outward and builds the shape.
+std::shared_ptr<const Shape> build_mesh(JsonObjectReader& r, Polygons p) {
+    const std::vector<Vec3>& v = p.geometry.vertices;
+    double area = 0.0;
+    for (const MeshTriangle& t : p.geometry.triangles) {
+        area += length(cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]));
+    }
+    if (!(area > 0.0)) throw SceneError(r.child_path(p.key), "every face has zero area");
+    const MeshTopology topology =
+        check_mesh_topology(v, p.geometry.triangles, p.face_of, p.index_base);
+    // Given inside-out: the divergence theorem counts the volume negative. Turn every face
+    // round so the normals point out of the solid, which refraction relies on.
+    if (topology.closed && topology.signed_volume < 0) flip_triangles(p.geometry.triangles);
+    return std::make_shared<TriangleMesh>(v, p.geometry.triangles, topology.closed,
+                                          topology.closed ? "" : topology.problem);
+}
+
+}  // namespace
+
+const std::vector<std::string>& mesh_keys() {
+    static const std::vector<std::string> keys{"vertices", "faces", "file",    "scale",
+                                               "position", "up",    "facing"};
+    return keys;
+}
+
+const std::vector<std::string>& prism_keys() {
+    static const std::vector<std::string> keys{"apex_angle", "side", "height", "center",
+                                               "axis",       "facing"};
+    return keys;
+}
+
+std::shared_ptr<const Shape> read_mesh(JsonObjectReader& r, const std::string& base_dir) {
+    const bool inline_form = r.has("vertices") || r.has("faces");
+    if (inline_form && r.has("file")) {
+        throw SceneError(r.child_path("file"),
+                         "give either vertices and faces (inline) or file (an OBJ file), not both");
+    }
+    if (!inline_form && !r.has("file")) {
+        throw SceneError(r.path(), "a mesh needs either vertices and faces, or file (an OBJ file)");
+    }
+    Polygons p = inline_form ? read_inline(r) : read_obj(r, base_dir);
+
+    const double scale = r.positive("scale", 1.0);
+    const Vec3 position = r.has("position") ? r.vec3("position") : Vec3{};
+    const auto [up, facing] = read_frame(r, "up", {0, 1, 0}, "facing", {0, 0, 1});
+    const Vec3 right = cross(up, facing);  // where the model's +x goes: a rotation, no mirror
+    for (Vec3& v : p.geometry.vertices) {
+        v = position + (right * v.x + up * v.y + facing * v.z) * scale;
+    }
+    return build_mesh(r, std::move(p));
+}
+
+std::shared_ptr<const Shape> read_prism(JsonObjectReader& r) {
+    PrismSpec spec;
+    spec.apex_angle_deg = r.number("apex_angle", spec.apex_angle_deg);
+    if (!(spec.apex_angle_deg > 0 && spec.apex_angle_deg < 180)) {
+        throw SceneError(r.child_path("apex_angle"),
+                         "must be between 0 and 180 degrees (exclusive), got " +
+                             format_number(spec.apex_angle_deg));
+    }
+    spec.side = r.positive("side");
+    spec.height = r.positive("height");
+    spec.center = r.vec3("center");
+    std::tie(spec.axis, spec.facing) = read_frame(r, "axis", {0, 1, 0}, "facing", {0, 0, 1});
+    MeshGeometry g = make_prism(spec);
+    Polygons p;
+    p.key = "side";
+    p.face_of = {0, 1, 2, 2, 3, 3, 4, 4};
+    p.geometry = std::move(g);
+    return build_mesh(r, std::move(p));
+}
+
+void check_mesh_material(JsonObjectReader& r, const Shape& shape, const Material& material) {
+    const auto* mesh = dynamic_cast<const TriangleMesh*>(&shape);
+    if (!mesh || mesh->is_closed() || material.transparency == 0.0) return;
+    throw SceneError(r.child_path(r.has("file") ? "file" : "faces"),
+                     "the mesh is not closed: " + mesh->open_reason() +
+                         "; only a closed mesh can be transparent (an open one would be a set "
+                         "of thin panes, not a solid): close it, or give it an opaque material "
+                         "(transparency 0)");
+}
+
+}  // namespace lenslab
