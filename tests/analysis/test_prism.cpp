@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "analysis/ray_tree.h"
+#include "optics/glass.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {
@@ -31,8 +32,10 @@ Scene equilateral_prism() {
 // Follows the refracted branch into and out of the prism; the final direction, or nothing if
 // the ray did not go in through one face and out through another.
 std::optional<Vec3> through_both_faces(const Scene& scene, const Ray& ray, Vec3* entry = nullptr,
-                                       Vec3* exit = nullptr) {
-    const RayTree tree = trace_ray_tree(scene, ray, {});
+                                       Vec3* exit = nullptr, double wavelength_nm = kLineD) {
+    RayTreeOptions options;
+    options.wavelength_nm = wavelength_nm;
+    const RayTree tree = trace_ray_tree(scene, ray, options);
     const RayTreeNode* node = &tree.root;
     for (int face = 0; face < 2; ++face) {
         const RayTreeNode* refracted = nullptr;
@@ -104,6 +107,46 @@ TEST(Prism, MinimumDeviationOfAnEquilateralPrism) {
     EXPECT_NEAR(best / kDeg, expected / kDeg, 0.01);
     // At minimum deviation the ray passes symmetrically: incidence asin(n sin(A/2)) = 48.59.
     EXPECT_NEAR(best_i / kDeg, std::asin(n * std::sin(apex / 2)) / kDeg, 0.1);
+}
+
+// Minimum deviation found by scanning the incidence on the left face's middle, as with a
+// spectrometer: coarse 0.05 degree steps, then 0.0005 degree steps around the best.
+double scanned_minimum_deviation(const Scene& scene, double wavelength_nm) {
+    auto deviation = [&](double i) {
+        const Vec3 d{std::cos(30 * kDeg - i), 0, -std::sin(30 * kDeg - i)};
+        const auto out = through_both_faces(scene, {Vec3{-0.25, 0, 0} - d * 2.0, d}, nullptr, nullptr, wavelength_nm);
+        return out ? std::acos(std::clamp(dot(*out, d), -1.0, 1.0)) : INFINITY;
+    };
+    double best_i = 0, best = INFINITY;
+    for (double i = 30 * kDeg; i <= 80 * kDeg; i += 0.05 * kDeg) {
+        if (const double dev = deviation(i); dev < best) { best = dev; best_i = i; }
+    }
+    for (double i = best_i - 0.05 * kDeg; i <= best_i + 0.05 * kDeg; i += 0.0005 * kDeg) {
+        if (const double dev = deviation(i); dev < best) { best = dev; best_i = i; }
+    }
+    return best / kDeg;
+}
+
+TEST(Prism, NBk7MinimumDeviationAtTheFraunhoferLines) {
+    // An equilateral N-BK7 prism at the F, d and C lines: D = 2 asin(n sin 30) - 60 with n
+    // from the SCHOTT data sheet's Sellmeier formula (n_F 1.52238, n_d 1.51680, n_C 1.51432).
+    const Scene scene = parse_scene(R"({
+      "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+      "objects": [{"type": "prism", "apex_angle": 60, "side": 1, "height": 1, "center": [0, 0, 0],
+                   "axis": [0, 1, 0], "facing": [0, 0, 1],
+                   "material": {"transparency": 1, "glass": "N-BK7"}}]})");
+    const IndexModel& bk7 = *find_glass("N-BK7")->model;
+    double previous = INFINITY;
+    for (double nm : {486.1327, 587.5618, 656.2725}) {  // blue F, yellow d, red C
+        const double expected = (2 * std::asin(bk7.n(nm) * 0.5) - 60 * kDeg) / kDeg;
+        const double measured = scanned_minimum_deviation(scene, nm);
+        std::printf("N-BK7 prism at %.1f nm: minimum deviation %.4f deg (formula %.4f)\n", nm, measured, expected);
+        EXPECT_NEAR(measured, expected, 0.01);
+        EXPECT_LT(measured, previous);  // longer wavelengths deviate less: red least
+        previous = measured;
+    }
+    EXPECT_NEAR(bk7.n(486.1327), 1.52238, 2e-5);
+    EXPECT_NEAR(bk7.n(656.2725), 1.51432, 2e-5);
 }
 
 }  // namespace
