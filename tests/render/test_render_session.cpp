@@ -43,6 +43,16 @@ TEST(Radiometry, PointLightGivesLambertRadiance) {
     EXPECT_NEAR(centre_radiance(scene), expected, 5e-3 * expected);
 }
 
+TEST(Radiometry, WhiteFloorUnderWhiteLightIsNeutralGrey) {
+    // D65 light (colour [1, 1, 1]) on a grey floor, rendered spectrally: r = g = b.
+    const Scene scene = parse_scene(
+        floor_scene(R"(], "lights": [{"type": "point", "position": [0, 2, 0], "power": 100, "spectrum": "d65"}])"));
+    RenderControl control;
+    const PixelRgb p = render_scene(scene, control).film.at(1, 1);
+    EXPECT_NEAR(p.r / p.g, 1.0, 5e-3);
+    EXPECT_NEAR(p.b / p.g, 1.0, 5e-3);
+}
+
 TEST(Radiometry, BeamGivesUniformIrradiance) {
     // A collimated beam of power P over a disc of radius r: E = P / (pi r^2) at normal
     // incidence.
