@@ -15,7 +15,7 @@
 
 namespace lenslab {
 
-enum class ObjectType { Sphere, Triangle, Lens };
+enum class ObjectType { Sphere, Triangle, Lens, Implicit };
 
 struct SceneObject {
     std::string name;  // the user's `name`, or the JSON path "objects[i]"

@@ -69,7 +69,7 @@ const BadScene kBadScenes[] = {
     {"unknown_key_typo.json", "objects[0].radiu", "unknown key (did you mean 'radius'?)"},
     {"wrong_type_string.json", "objects[0].radius", "must be a number, got a string"},
     {"unknown_object_type.json", "objects[0].type",
-     "unknown object type 'cube' (known: sphere, triangle, lens)"},
+     "unknown object type 'cube' (known: sphere, triangle, lens, implicit)"},
     {"sphere_with_lens_key.json", "objects[0].axis", "not a property of a sphere"},
     // Triangles.
     {"triangle_collinear.json", "objects[0].vertices",
@@ -98,7 +98,7 @@ const BadScene kBadScenes[] = {
     {"surface_zero_radius.json", "objects[0].front.radius",
      "must not be 0 (use {\"shape\": \"flat\"} for a plane)"},
     {"surface_unknown_shape.json", "objects[0].front.shape",
-     "unknown surface shape 'parabola' (known: sphere, flat)"},
+     "unknown surface shape 'parabola' (known: flat, sphere, conic, asphere, sag)"},
     // Lights.
     {"unknown_light_type.json", "lights[1].type", "unknown light type 'spot' (known: point, beam)"},
     {"beam_with_position.json", "lights[0].position", "not a property of a beam"},
