@@ -27,6 +27,13 @@ std::string strip_position(std::string msg) {
     return msg;
 }
 
+// muparser counts from 0 and places end-of-text errors one or two past the end; users count
+// from 1, and "just after the last character" is the end.
+FormulaError syntax_error(const mu::Parser::exception_type& e, const std::string& text) {
+    const int position = e.GetPos() >= 0 ? std::min(e.GetPos() + 1, int(text.size()) + 1) : 0;
+    return FormulaError(position, describe(position, strip_position(e.GetMsg())));
+}
+
 // Built-in constants users expect to type by name (muparser spells them _pi and _e).
 void define_constants(mu::Parser& p) {
     p.DefineConst("pi", std::numbers::pi);
@@ -114,8 +121,7 @@ Formula::Formula(std::string text, std::vector<std::string> names, const std::st
         // Lists the variables, defined or not, without evaluating.
         for (const auto& [name, address] : parser.GetUsedVar()) m_used.push_back(name);
     } catch (const mu::Parser::exception_type& e) {
-        const int position = e.GetPos() >= 0 ? e.GetPos() + 1 : 0;
-        throw FormulaError(position, describe(position, strip_position(e.GetMsg())));
+        throw syntax_error(e, m_text);
     }
     for (const std::string& name : m_used) {
         if (std::find(m_names.begin(), m_names.end(), name) == m_names.end()) {
@@ -134,8 +140,7 @@ Formula::Formula(std::string text, std::vector<std::string> names, const std::st
             throw FormulaError(0, "must be one expression, not a list separated by ','");
         }
     } catch (const mu::Parser::exception_type& e) {
-        const int position = e.GetPos() >= 0 ? e.GetPos() + 1 : 0;
-        throw FormulaError(position, describe(position, strip_position(e.GetMsg())));
+        throw syntax_error(e, m_text);
     }
     m_impl = std::make_unique<Impl>();
 }
