@@ -27,8 +27,10 @@ Grid grid_for(bool symmetric) {
 DiscPoint grid_point(const Grid& g, double a, int i, int j) {
     const double r = a * i / g.radii;
     if (g.angles == 1) return {r, 0.0};
+    // Snapped so that points on the axes are exact (messages show (0, 10), not (6e-16, 10)).
     const double phi = 2.0 * std::numbers::pi * j / g.angles;
-    return {r * std::cos(phi), r * std::sin(phi)};
+    auto snap = [](double v) { return std::abs(v) < 1e-12 ? 0.0 : v; };
+    return {r * snap(std::cos(phi)), r * snap(std::sin(phi))};
 }
 
 }  // namespace
