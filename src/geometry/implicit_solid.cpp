@@ -19,10 +19,12 @@ bool inside(double v) { return v <= 0.0; }  // NaN counts as outside
 
 }  // namespace
 
-ImplicitSolid::ImplicitSolid(const std::string& formula, const Aabb& box, int steps)
+ImplicitSolid::ImplicitSolid(const std::string& formula, const Aabb& box, int steps,
+                             const Vec3& centre)
     : m_formula(std::make_shared<Formula>(formula, kImplicitVariables, kImplicitHint)),
       m_box(box),
       m_steps(std::max(1, steps)),
+      m_centre(centre),
       m_diagonal(length(box.extent())) {}
 
 std::optional<std::string> ImplicitSolid::check(const std::string& text) {
@@ -62,14 +64,18 @@ std::optional<std::string> ImplicitSolid::check_values() const {
     return std::nullopt;
 }
 
-bool ImplicitSolid::contains(const Vec3& p) const {
+bool ImplicitSolid::contains(const Vec3& world) const {
+    const Vec3 p = world - m_centre;
     for (int a = 0; a < 3; ++a) {
         if (p[a] < m_box.lo[a] || p[a] > m_box.hi[a]) return false;
     }
     return inside(f(p));
 }
 
-bool ImplicitSolid::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const {
+bool ImplicitSolid::intersect(const Ray& world_ray, double t_min, double t_max,
+                              SurfaceHit& hit) const {
+    // Everything below is relative to the centre; only the hit point goes back.
+    const Ray ray{world_ray.origin - m_centre, world_ray.direction};
     const Vec3& o = ray.origin;
     const Vec3& d = ray.direction;
     // The box's slabs (Kay & Kajiya), remembering which face the ray enters and leaves by.
@@ -97,7 +103,7 @@ bool ImplicitSolid::intersect(const Ray& ray, double t_min, double t_max, Surfac
 
     // Entering the box where the solid fills it: the box face is the solid's surface.
     if (in_range(box_in, t_min, t_max) && axis_in >= 0 && inside(phi(box_in))) {
-        hit = {box_in, ray.at(box_in), face_normal(axis_in, -d[axis_in])};
+        hit = {box_in, world_ray.at(box_in), face_normal(axis_in, -d[axis_in])};
         return true;
     }
     const double lo = std::max(t_min, box_in), hi = std::min(t_max, box_out);
@@ -133,7 +139,7 @@ bool ImplicitSolid::intersect(const Ray& ray, double t_min, double t_max, Surfac
                 } else if ((dot(g, d) < 0.0) != entering) {
                     g = g - d * (2.0 * dot(g, d) / dot(d, d));
                 }
-                hit = {*root, p, normalize(g)};
+                hit = {*root, world_ray.at(*root), normalize(g)};
                 return true;
             }
         }
@@ -142,7 +148,7 @@ bool ImplicitSolid::intersect(const Ray& ray, double t_min, double t_max, Surfac
     }
     // Leaving the box while inside the solid: the box face is the way out.
     if (in_range(box_out, t_min, t_max) && inside(f0) && axis_out >= 0) {
-        hit = {box_out, ray.at(box_out), face_normal(axis_out, d[axis_out])};
+        hit = {box_out, world_ray.at(box_out), face_normal(axis_out, d[axis_out])};
         return true;
     }
     return false;

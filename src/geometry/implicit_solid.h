@@ -1,6 +1,6 @@
 #pragma once
 // A refractive solid given by an equation the user types: the points of a bounding box where
-// f(x, y, z) <= 0 (world coordinates, muparser syntax). Where the set {f <= 0} reaches the
+// f(x, y, z) <= 0 (muparser syntax), with x, y, z and the box measured from `centre`. Where the set {f <= 0} reaches the
 // box, the box's faces close it, so it is always a closed solid: a torus, a blob, or a
 // cylinder cut to length by its box.
 //
@@ -26,8 +26,9 @@ public:
     static constexpr int kDefaultSteps = 512;
 
     // Throws FormulaError for a formula that does not parse or uses variables other than
-    // x, y and z. `box` must not be empty in any axis; `steps` >= 1.
-    ImplicitSolid(const std::string& formula, const Aabb& box, int steps = kDefaultSteps);
+    // x, y and z. `box` (relative to `centre`) must not be empty in any axis; `steps` >= 1.
+    ImplicitSolid(const std::string& formula, const Aabb& box, int steps = kDefaultSteps,
+                  const Vec3& centre = {});
 
     // What an editor shows while the formula is typed: the reason it would be refused, or
     // nothing (syntax and variables).
@@ -37,19 +38,21 @@ public:
     std::optional<std::string> check_values() const;
 
     bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const override;
-    Aabb bounds() const override { return m_box; }
+    Aabb bounds() const override { return {m_box.lo + m_centre, m_box.hi + m_centre}; }
     bool is_closed() const override { return true; }
 
-    // True for points inside or on the solid.
+    // True for points (in world coordinates) inside or on the solid.
     bool contains(const Vec3& p) const;
-    double f(const Vec3& p) const { return (*m_formula)({p.x, p.y, p.z, 0.0}); }
+    // f at a point given relative to the centre.
+    double f(const Vec3& local) const { return (*m_formula)({local.x, local.y, local.z, 0.0}); }
     const std::string& formula() const { return m_formula->text(); }
     int steps() const { return m_steps; }
 
 private:
     std::shared_ptr<const Formula> m_formula;
-    Aabb m_box;
+    Aabb m_box;  // relative to m_centre
     int m_steps;
+    Vec3 m_centre;
     double m_diagonal;
 };
 

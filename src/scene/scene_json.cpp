@@ -230,9 +230,10 @@ std::shared_ptr<const Shape> read_implicit(JsonObjectReader& r) {
         }
     }
     const int steps = static_cast<int>(r.integer("steps", ImplicitSolid::kDefaultSteps, 8, 1 << 16));
+    const Vec3 centre = r.has("center") ? r.vec3("center") : Vec3{};
     std::shared_ptr<ImplicitSolid> solid;
     try {
-        solid = std::make_shared<ImplicitSolid>(formula, box, steps);
+        solid = std::make_shared<ImplicitSolid>(formula, box, steps, centre);
     } catch (const FormulaError& e) {
         throw SceneError(r.child_path("formula"), e.message());
     }
@@ -257,7 +258,7 @@ SceneObject read_object(const json& j, const std::string& path,
                                  "thickness", "diameter", "front", "back", "x_axis"});
     } else if (type == "implicit") {
         o.type = ObjectType::Implicit;
-        keys.insert(keys.end(), {"formula", "bounds", "steps"});
+        keys.insert(keys.end(), {"center", "formula", "bounds", "steps"});
     } else {
         throw SceneError(path + ".type", "unknown object type '" + type +
                                              "' (known: sphere, triangle, lens, implicit)");

@@ -80,6 +80,19 @@ TEST(ImplicitSolid, TheBoxClosesASolidThatReachesIt) {
     EXPECT_FALSE(rod.contains({0, 0, 0.6}));
 }
 
+TEST(ImplicitSolid, CentreMovesTheFormulaAndItsBox) {
+    // x, y, z and the bounds are measured from the centre.
+    const ImplicitSolid moved("x^2 + y^2 + z^2 - 0.25", box(-0.6, 0.6), ImplicitSolid::kDefaultSteps, {1, 2, 3});
+    EXPECT_NEAR(moved.bounds().lo.y, 1.4, 1e-15);
+    EXPECT_TRUE(moved.contains({1, 2, 3.4}));
+    EXPECT_FALSE(moved.contains({0, 0, 0}));
+    SurfaceHit h;
+    ASSERT_TRUE(moved.intersect({{1, 2, -5}, {0, 0, 1}}, 0, INFINITY, h));
+    EXPECT_NEAR(h.point.z, 2.5, 1e-12);
+    EXPECT_NEAR(h.t, 7.5, 1e-12);
+    EXPECT_NEAR(h.normal.z, -1.0, 1e-9);
+}
+
 TEST(ImplicitSolid, LoadTimeChecks) {
     EXPECT_EQ(*ImplicitSolid::check("x^2 + r^2 - 1"), "unknown variable 'r' (use x, y and z)");
     EXPECT_EQ(*ImplicitSolid::check("x^2 +* y"), "cannot parse at position 6: Unexpected operator \"*\"");
