@@ -38,6 +38,20 @@ TEST(Formula, EvaluatesWithConstants) {
     EXPECT_FALSE(Formula("x + 1", kXyz, "").uses("y"));
 }
 
+// Everything docs/scene-format.md ("Formulas") lists parses.
+TEST(Formula, TheDocumentedFunctionsAndOperatorsParse) {
+    for (const char* f : {"sqrt", "exp", "ln", "log", "log2", "log10", "sin", "cos", "tan", "asin",
+                          "acos", "atan", "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "abs",
+                          "sign", "rint"}) {
+        EXPECT_EQ(refusal(std::string(f) + "(r + 2)"), "") << f;
+    }
+    for (const char* f : {"min(r, 1, 2)", "max(r, 1)", "sum(r, 1)", "avg(r, 1)", "-r^2 + 1e-3",
+                          "(r < 1) && (r >= 0) || (r != 2) ? r : 0", "r == 1"}) {
+        EXPECT_EQ(refusal(f), "") << f;
+    }
+    EXPECT_DOUBLE_EQ(Formula("-r^2", kR, "")({3.0}), -9.0);  // unary minus after ^
+}
+
 TEST(Formula, SyntaxErrorsNameThePositionCountingFromOne) {
     // The '*' is the fifth character.
     EXPECT_EQ(refusal("r^2/*2"), "cannot parse at position 5: Unexpected operator \"*\"");
