@@ -88,8 +88,14 @@ bool ImplicitSolid::intersect(const Ray& world_ray, double t_min, double t_max,
         }
         double t0 = (m_box.lo[a] - o[a]) / d[a], t1 = (m_box.hi[a] - o[a]) / d[a];
         if (t0 > t1) std::swap(t0, t1);
-        if (t0 > box_in) { box_in = t0; axis_in = a; }
-        if (t1 < box_out) { box_out = t1; axis_out = a; }
+        if (t0 > box_in) {
+            box_in = t0;
+            axis_in = a;
+        }
+        if (t1 < box_out) {
+            box_out = t1;
+            axis_out = a;
+        }
     }
     if (!(box_in < box_out)) return false;
     auto face_normal = [&](int axis, double sign) {
@@ -99,7 +105,10 @@ bool ImplicitSolid::intersect(const Ray& world_ray, double t_min, double t_max,
     };
 
     Formula::Evaluator& f = m_formula->local();
-    auto phi = [&](double t) { const Vec3 p = ray.at(t); return f({p.x, p.y, p.z, 0.0}); };
+    auto phi = [&](double t) {
+        const Vec3 p = ray.at(t);
+        return f({p.x, p.y, p.z, 0.0});
+    };
 
     // Entering the box where the solid fills it: the box face is the solid's surface.
     if (in_range(box_in, t_min, t_max) && axis_in >= 0 && inside(phi(box_in))) {

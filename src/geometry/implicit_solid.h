@@ -1,8 +1,8 @@
 #pragma once
 // A refractive solid given by an equation the user types: the points of a bounding box where
-// f(x, y, z) <= 0 (muparser syntax), with x, y, z and the box measured from `centre`. Where the set {f <= 0} reaches the
-// box, the box's faces close it, so it is always a closed solid: a torus, a blob, or a
-// cylinder cut to length by its box.
+// f(x, y, z) <= 0 (muparser syntax), with x, y, z and the box measured from `centre`. Where the set
+// {f <= 0} reaches the box, the box's faces close it, so it is always a closed solid: a torus, a
+// blob, or a cylinder cut to length by its box.
 //
 // Intersection: the ray is clipped to the box and f is sampled along it in steps of the
 // box's diagonal / `steps`; the first change of sign is refined by bracketed Newton

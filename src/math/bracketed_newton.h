@@ -45,7 +45,8 @@ std::optional<double> bracketed_newton(F&& f, double a, double b, double fa, dou
         }
         // Newton lands outside (lo, hi), or would not halve the step of two iterations ago:
         // bisect instead.
-        const bool newton_leaves = ((x - hi) * v.slope - v.value) * ((x - lo) * v.slope - v.value) >= 0.0;
+        const bool newton_leaves =
+            ((x - hi) * v.slope - v.value) * ((x - lo) * v.slope - v.value) >= 0.0;
         const bool newton_slow = std::abs(2.0 * v.value) > std::abs(step_before * v.slope);
         step_before = step;
         if (!std::isfinite(v.slope) || v.slope == 0.0 || newton_leaves || newton_slow) {

@@ -47,14 +47,38 @@ thread_local const char* t_domain_error = nullptr;
 void note(bool bad, const char* what) {
     if (bad && !t_domain_error) t_domain_error = what;
 }
-double checked_sqrt(double v) { note(v < 0, "sqrt of a negative number"); return std::sqrt(v); }
-double checked_log(double v) { note(v <= 0, "log of a number <= 0"); return std::log(v); }
-double checked_log2(double v) { note(v <= 0, "log2 of a number <= 0"); return std::log2(v); }
-double checked_log10(double v) { note(v <= 0, "log10 of a number <= 0"); return std::log10(v); }
-double checked_asin(double v) { note(std::abs(v) > 1, "asin of a number outside [-1, 1]"); return std::asin(v); }
-double checked_acos(double v) { note(std::abs(v) > 1, "acos of a number outside [-1, 1]"); return std::acos(v); }
-double checked_acosh(double v) { note(v < 1, "acosh of a number < 1"); return std::acosh(v); }
-double checked_atanh(double v) { note(std::abs(v) >= 1, "atanh of a number outside (-1, 1)"); return std::atanh(v); }
+double checked_sqrt(double v) {
+    note(v < 0, "sqrt of a negative number");
+    return std::sqrt(v);
+}
+double checked_log(double v) {
+    note(v <= 0, "log of a number <= 0");
+    return std::log(v);
+}
+double checked_log2(double v) {
+    note(v <= 0, "log2 of a number <= 0");
+    return std::log2(v);
+}
+double checked_log10(double v) {
+    note(v <= 0, "log10 of a number <= 0");
+    return std::log10(v);
+}
+double checked_asin(double v) {
+    note(std::abs(v) > 1, "asin of a number outside [-1, 1]");
+    return std::asin(v);
+}
+double checked_acos(double v) {
+    note(std::abs(v) > 1, "acos of a number outside [-1, 1]");
+    return std::acos(v);
+}
+double checked_acosh(double v) {
+    note(v < 1, "acosh of a number < 1");
+    return std::acosh(v);
+}
+double checked_atanh(double v) {
+    note(std::abs(v) >= 1, "atanh of a number outside (-1, 1)");
+    return std::atanh(v);
+}
 
 }  // namespace
 
@@ -111,7 +135,10 @@ Formula::Formula(std::string text, std::vector<std::string> names, const std::st
         const char before = i > 0 ? m_text[i - 1] : ' ';
         const char after = i + 1 < m_text.size() ? m_text[i + 1] : ' ';
         if (std::string("<>!=").find(before) == std::string::npos && after != '=') {
-            throw FormulaError(int(i) + 1, describe(int(i) + 1, "'=' assigns; a formula cannot (for a comparison write '==')"));
+            throw FormulaError(
+                int(i) + 1,
+                describe(int(i) + 1,
+                         "'=' assigns; a formula cannot (for a comparison write '==')"));
         }
     }
     mu::Parser parser;

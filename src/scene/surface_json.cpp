@@ -61,8 +61,8 @@ std::shared_ptr<const LensSurface> read_lens_surface(const nlohmann::json& j,
     const std::string shape = r.string("shape");
     if (std::find(kSurfaceShapeNames.begin(), kSurfaceShapeNames.end(), shape) ==
         kSurfaceShapeNames.end()) {
-        throw SceneError(r.child_path("shape"), "unknown surface shape '" + shape +
-                                                    "' (known: " + joined(kSurfaceShapeNames) + ")");
+        throw SceneError(r.child_path("shape"), "unknown surface shape '" + shape + "' (known: " +
+                                                    joined(kSurfaceShapeNames) + ")");
     }
     const std::vector<std::string> takes = keys_of(shape);
     for (const char* key : {"radius", "k", "coefficients", "formula"}) {

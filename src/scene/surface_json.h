@@ -21,7 +21,6 @@ extern const std::vector<std::string> kSurfaceShapeNames;
 // unknown shape, a key the shape does not take, a zero radius, bad coefficients, a formula
 // that does not parse. Whether the surface fits the lens is the lens's check.
 std::shared_ptr<const LensSurface> read_lens_surface(const nlohmann::json& j,
-                                                     const std::string& path,
-                                                     double semi_diameter);
+                                                     const std::string& path, double semi_diameter);
 
 }  // namespace lenslab

@@ -23,17 +23,20 @@ namespace lenslab {
 namespace {
 
 constexpr double kN = 1.5, kR = -50.0, kThickness = 5.0, kDiameter = 25.0;
-constexpr double kFocalLength = -kR / (kN - 1.0);                  // 100
-constexpr double kFocusZ = 0.5 * kThickness + kFocalLength;       // back vertex at +d/2
+constexpr double kFocalLength = -kR / (kN - 1.0);            // 100
+constexpr double kFocusZ = 0.5 * kThickness + kFocalLength;  // back vertex at +d/2
 
 Scene plano_convex(const std::string& back) {
     return parse_scene(R"({
       "camera": {"position": [0, 0, -200], "look_at": [0, 0, 0]},
       "objects": [{"type": "lens", "center": [0, 0, 0], "axis": [0, 0, 1],
-                   "thickness": )" + std::to_string(kThickness) + R"(, "diameter": )" +
+                   "thickness": )" +
+                       std::to_string(kThickness) + R"(, "diameter": )" +
                        std::to_string(kDiameter) + R"(,
-                   "front": {"shape": "flat"}, "back": )" + back + R"(,
-                   "material": {"transparency": 1, "ior": )" + std::to_string(kN) + R"(}}]
+                   "front": {"shape": "flat"}, "back": )" +
+                       back + R"(,
+                   "material": {"transparency": 1, "ior": )" +
+                       std::to_string(kN) + R"(}}]
     })");
 }
 
@@ -99,16 +102,19 @@ TEST(AsphericFocus, HyperbolicPlanoConvexFocusesToAPoint) {
         // The same hyperboloid typed as z(r) = c r^2 / (1 + sqrt(1 - (1 + k) c^2 r^2)).
         R"j({"shape": "sag", "formula": "-r^2 / (50 * (1 + sqrt(1 + 1.25 * r^2 / 2500)))"})j",
     };
-    const double sphere_paraxial = rms_at(trace_beam(plano_convex(R"({"shape": "sphere", "radius": -50})")), kFocusZ);
-    const double sphere_best = best_rms(trace_beam(plano_convex(R"({"shape": "sphere", "radius": -50})")));
+    const double sphere_paraxial =
+        rms_at(trace_beam(plano_convex(R"({"shape": "sphere", "radius": -50})")), kFocusZ);
+    const double sphere_best =
+        best_rms(trace_beam(plano_convex(R"({"shape": "sphere", "radius": -50})")));
     for (const std::string& back : forms) {
         SCOPED_TRACE(back);
         const auto rays = trace_beam(plano_convex(back));
         ASSERT_EQ(rays.size(), 468u);
         const double rms = rms_at(rays, kFocusZ);
-        std::printf("hyperboloid %s: RMS spot %.3g (%.3g f); sphere: %.3g at the paraxial focus, "
-                    "%.3g at best focus (%.3g times larger)\n",
-                    back.c_str(), rms, rms / kFocalLength, sphere_paraxial, sphere_best, sphere_best / rms);
+        std::printf(
+            "hyperboloid %s: RMS spot %.3g (%.3g f); sphere: %.3g at the paraxial focus, "
+            "%.3g at best focus (%.3g times larger)\n",
+            back.c_str(), rms, rms / kFocalLength, sphere_paraxial, sphere_best, sphere_best / rms);
         EXPECT_LT(rms, 1e-6 * kFocalLength);
         // Spherical aberration: even at its best focus the sphere's spot is more than 100
         // times the hyperboloid's, and 100 times the 1e-6 f bound itself.

@@ -17,12 +17,15 @@ namespace {
 Aabb box(double lo, double hi) { return {{lo, lo, lo}, {hi, hi, hi}}; }
 
 TEST(ImplicitSolid, SphereMatchesTheAnalyticSphere) {
-    const ImplicitSolid implicit("(x-0.2)^2 + (y+0.1)^2 + z^2 - 0.25", {{-0.4, -0.7, -0.6}, {0.8, 0.5, 0.6}});
+    const ImplicitSolid implicit("(x-0.2)^2 + (y+0.1)^2 + z^2 - 0.25",
+                                 {{-0.4, -0.7, -0.6}, {0.8, 0.5, 0.6}});
     const Sphere sphere({0.2, -0.1, 0}, 0.5);
     Rng rng(5, 5);
     int hits = 0;
     for (int i = 0; i < 20000; ++i) {
-        const Vec3 target = Vec3{0.2, -0.1, 0} + Vec3{rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5} * 1.2;
+        const Vec3 target =
+            Vec3{0.2, -0.1, 0} +
+            Vec3{rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5} * 1.2;
         const Vec3 origin = target + sample_uniform_sphere(rng.uniform(), rng.uniform()) * 3.0;
         const Ray ray{origin, normalize(target - origin)};
         SurfaceHit a, b;
@@ -50,7 +53,8 @@ TEST(ImplicitSolid, SphereMatchesTheAnalyticSphere) {
 TEST(ImplicitSolid, TorusHandComputed) {
     // Torus of major radius 1 and minor 0.3 around y: along x from far away the ray meets
     // the outer equator at x = -1.3; from the centre along x it meets the inner one at 0.7.
-    const ImplicitSolid torus("(sqrt(x^2 + z^2) - 1)^2 + y^2 - 0.09", {{-1.4, -0.4, -1.4}, {1.4, 0.4, 1.4}});
+    const ImplicitSolid torus("(sqrt(x^2 + z^2) - 1)^2 + y^2 - 0.09",
+                              {{-1.4, -0.4, -1.4}, {1.4, 0.4, 1.4}});
     SurfaceHit h;
     ASSERT_TRUE(torus.intersect({{-5, 0, 0}, {1, 0, 0}}, 0, INFINITY, h));
     EXPECT_NEAR(h.point.x, -1.3, 1e-12);
@@ -82,7 +86,8 @@ TEST(ImplicitSolid, TheBoxClosesASolidThatReachesIt) {
 
 TEST(ImplicitSolid, CentreMovesTheFormulaAndItsBox) {
     // x, y, z and the bounds are measured from the centre.
-    const ImplicitSolid moved("x^2 + y^2 + z^2 - 0.25", box(-0.6, 0.6), ImplicitSolid::kDefaultSteps, {1, 2, 3});
+    const ImplicitSolid moved("x^2 + y^2 + z^2 - 0.25", box(-0.6, 0.6),
+                              ImplicitSolid::kDefaultSteps, {1, 2, 3});
     EXPECT_NEAR(moved.bounds().lo.y, 1.4, 1e-15);
     EXPECT_TRUE(moved.contains({1, 2, 3.4}));
     EXPECT_FALSE(moved.contains({0, 0, 0}));
@@ -95,13 +100,15 @@ TEST(ImplicitSolid, CentreMovesTheFormulaAndItsBox) {
 
 TEST(ImplicitSolid, LoadTimeChecks) {
     EXPECT_EQ(*ImplicitSolid::check("x^2 + r^2 - 1"), "unknown variable 'r' (use x, y and z)");
-    EXPECT_EQ(*ImplicitSolid::check("x^2 +* y"), "cannot parse at position 6: Unexpected operator \"*\"");
+    EXPECT_EQ(*ImplicitSolid::check("x^2 +* y"),
+              "cannot parse at position 6: Unexpected operator \"*\"");
     EXPECT_FALSE(ImplicitSolid::check("x^2 + y^2 + z^2 - 1"));
     EXPECT_EQ(*ImplicitSolid("x^2 + y^2 + z^2 + 1", box(-1, 1)).check_values(),
               "f > 0 at every point sampled inside the bounds, so the solid is empty (the inside "
               "is where f <= 0)");
-    EXPECT_EQ(*ImplicitSolid("sqrt(x) - 0.5", box(-1, 1)).check_values(),
-              "f undefined at (x, y, z) = (-1, -1, -1) inside the bounds (sqrt of a negative number)");
+    EXPECT_EQ(
+        *ImplicitSolid("sqrt(x) - 0.5", box(-1, 1)).check_values(),
+        "f undefined at (x, y, z) = (-1, -1, -1) inside the bounds (sqrt of a negative number)");
     EXPECT_FALSE(ImplicitSolid("x^2 + y^2 + z^2 - 1", box(-1, 1)).check_values());
 }
 
@@ -130,7 +137,8 @@ TEST(ImplicitSolid, EveryRayThatEntersExits) {
         ASSERT_TRUE(is_finite(in.point));
         ASSERT_NEAR(length(in.normal), 1.0, 1e-12);
         ASSERT_LT(dot(d, in.normal), 0.0) << s.formula();
-        Vec3 inward = Frame::from_axis(-in.normal).to_world(sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
+        Vec3 inward = Frame::from_axis(-in.normal)
+                          .to_world(sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
         SurfaceHit out;
         ASSERT_TRUE(s.intersect({in.point, inward}, surface_epsilon(in.point), INFINITY, out))
             << s.formula() << " ray " << i;

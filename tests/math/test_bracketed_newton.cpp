@@ -12,7 +12,10 @@ namespace {
 TEST(BracketedNewton, FindsTheRootOfASmoothFunction) {
     // cos x = x at x = 0.7390851332151607 (the Dottie number).
     int calls = 0;
-    auto f = [&](double x) { ++calls; return ValueAndSlope{std::cos(x) - x, -std::sin(x) - 1.0}; };
+    auto f = [&](double x) {
+        ++calls;
+        return ValueAndSlope{std::cos(x) - x, -std::sin(x) - 1.0};
+    };
     const auto root = bracketed_newton(f, 0.0, 1.0, f(0.0).value, f(1.0).value, 1e-14);
     ASSERT_TRUE(root);
     EXPECT_NEAR(*root, 0.7390851332151607, 1e-14);

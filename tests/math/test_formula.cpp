@@ -40,9 +40,9 @@ TEST(Formula, EvaluatesWithConstants) {
 
 // Everything docs/scene-format.md ("Formulas") lists parses.
 TEST(Formula, TheDocumentedFunctionsAndOperatorsParse) {
-    for (const char* f : {"sqrt", "exp", "ln", "log", "log2", "log10", "sin", "cos", "tan", "asin",
-                          "acos", "atan", "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "abs",
-                          "sign", "rint"}) {
+    for (const char* f :
+         {"sqrt", "exp",  "ln",   "log",  "log2",  "log10", "sin",   "cos", "tan",  "asin", "acos",
+          "atan", "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "abs", "sign", "rint"}) {
         EXPECT_EQ(refusal(std::string(f) + "(r + 2)"), "") << f;
     }
     for (const char* f : {"min(r, 1, 2)", "max(r, 1)", "sum(r, 1)", "avg(r, 1)", "-r^2 + 1e-3",
@@ -90,7 +90,9 @@ TEST(Formula, ManyThreadsEvaluateTheSameValues) {
     const Formula f("sin(x) * cos(y) + z^3 - sqrt(abs(x*y*z))", kXyz, "");
     constexpr int n = 200000;
     std::vector<double> serial(n), parallel(n);
-    auto point = [](int i) { return Formula::Values{i * 1e-3, i * 2e-3 - 50, std::sin(i * 1.0), 0.0}; };
+    auto point = [](int i) {
+        return Formula::Values{i * 1e-3, i * 2e-3 - 50, std::sin(i * 1.0), 0.0};
+    };
     for (int i = 0; i < n; ++i) serial[i] = f(point(i));
     tbb::parallel_for(0, n, [&](int i) { parallel[i] = f.local()(point(i)); });
     for (int i = 0; i < n; ++i) ASSERT_EQ(serial[i], parallel[i]) << i;

@@ -72,9 +72,10 @@ void expect_twins(const std::string& analytic, const std::string& equation) {
     const Film reseeded = render(scene_with(analytic, 2));
     const Difference twins = difference(reference, twin);
     const Difference noise = difference(reference, reseeded);
-    std::printf("analytic vs equation: mean %.3g, %.2g%% of pixels differ; seed 1 vs seed 2: "
-                "mean %.3g, %.2g%% of pixels differ\n",
-                twins.mean, 100 * twins.changed, noise.mean, 100 * noise.changed);
+    std::printf(
+        "analytic vs equation: mean %.3g, %.2g%% of pixels differ; seed 1 vs seed 2: "
+        "mean %.3g, %.2g%% of pixels differ\n",
+        twins.mean, 100 * twins.changed, noise.mean, 100 * noise.changed);
     EXPECT_GT(noise.mean, 1e-3);  // the comparison has noise to measure against
     // The twins' hits agree to about 1e-12, so nearly every pixel is the same to the last
     // bit. A few differ by noise: where a path ends on the (black, diffuse) lamp, a point
@@ -86,19 +87,17 @@ void expect_twins(const std::string& analytic, const std::string& equation) {
 }
 
 TEST(EquationTwins, ImplicitSphereRendersAsTheSphere) {
-    expect_twins(
-        R"({"type": "sphere", "center": [0, 0, 0], "radius": 0.8, "material": "glass"})",
-        R"({"type": "implicit", "formula": "x^2 + y^2 + z^2 - 0.64",
+    expect_twins(R"({"type": "sphere", "center": [0, 0, 0], "radius": 0.8, "material": "glass"})",
+                 R"({"type": "implicit", "formula": "x^2 + y^2 + z^2 - 0.64",
             "bounds": [[-0.9, -0.9, -0.9], [0.9, 0.9, 0.9]], "material": "glass"})");
 }
 
 TEST(EquationTwins, SagFormulaLensRendersAsTheSphericalLens) {
     const std::string frame = R"("type": "lens", "center": [0, 0, 0], "axis": [0.3, 0.2, 1],
         "thickness": 0.5, "diameter": 1.6, "material": "glass", )";
-    expect_twins(
-        "{" + frame + R"("front": {"shape": "sphere", "radius": 1.5},
+    expect_twins("{" + frame + R"("front": {"shape": "sphere", "radius": 1.5},
                          "back": {"shape": "sphere", "radius": -1.5}})",
-        "{" + frame + R"j("front": {"shape": "sag", "formula": "1.5 - sqrt(1.5^2 - r^2)"},
+                 "{" + frame + R"j("front": {"shape": "sag", "formula": "1.5 - sqrt(1.5^2 - r^2)"},
                           "back": {"shape": "sag", "formula": "-(1.5 - sqrt(1.5^2 - r^2))"}})j");
 }
 

@@ -58,8 +58,8 @@ struct AsphereSag {
 
 }  // namespace
 
-bool AsphereSurface::intersect(const Ray& ray, const SurfaceSpan& span, double t_min,
-                               double t_max, double& t) const {
+bool AsphereSurface::intersect(const Ray& ray, const SurfaceSpan& span, double t_min, double t_max,
+                               double& t) const {
     AsphereSag sag{*this};
     return intersect_sag(ray, span, t_min, t_max, t, sag);
 }

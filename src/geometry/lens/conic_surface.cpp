@@ -33,8 +33,8 @@ double ConicSurface::max_semi_diameter() const {
     return conic_max_semi_diameter(1.0 / m_radius, m_k);
 }
 
-bool ConicSurface::intersect(const Ray& ray, const SurfaceSpan& span, double t_min,
-                             double t_max, double& t) const {
+bool ConicSurface::intersect(const Ray& ray, const SurfaceSpan& span, double t_min, double t_max,
+                             double& t) const {
     // c (x^2 + y^2 + q z^2) - 2 z = 0 with q = 1 + k, along o + t d: a quadratic in
     // curvature form, like the sphere's (q = 1), with no R^2 term to lose precision to.
     const double c = 1.0 / m_radius;

@@ -57,8 +57,12 @@ public:
     // (along +x for faces that are not surfaces of revolution) and at (x, y).
     double front_z(double r) const { return -0.5 * m_p.thickness + m_p.front->sag(r); }
     double back_z(double r) const { return 0.5 * m_p.thickness + m_p.back->sag(r); }
-    double front_z(double x, double y) const { return -0.5 * m_p.thickness + m_p.front->sag_xy(x, y); }
-    double back_z(double x, double y) const { return 0.5 * m_p.thickness + m_p.back->sag_xy(x, y); }
+    double front_z(double x, double y) const {
+        return -0.5 * m_p.thickness + m_p.front->sag_xy(x, y);
+    }
+    double back_z(double x, double y) const {
+        return 0.5 * m_p.thickness + m_p.back->sag_xy(x, y);
+    }
     // Smallest axial gap between the faces at the rim.
     double edge_thickness() const;
 

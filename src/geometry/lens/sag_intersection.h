@@ -31,8 +31,8 @@ inline constexpr int kSagMarchSteps = 64;
 // `Sag` provides `double value(double x, double y)` and
 // `double value_and_gradient(double x, double y, double& dz_dx, double& dz_dy)`.
 template <class Sag>
-bool intersect_sag(const Ray& ray, const SurfaceSpan& span, double t_min, double t_max,
-                   double& t, Sag& sag) {
+bool intersect_sag(const Ray& ray, const SurfaceSpan& span, double t_min, double t_max, double& t,
+                   Sag& sag) {
     const Vec3& o = ray.origin;
     const Vec3& d = ray.direction;
     const double a = span.semi_diameter * (1.0 + kSeamTolerance);

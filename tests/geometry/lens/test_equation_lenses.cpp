@@ -21,7 +21,9 @@ namespace {
 
 using SurfacePtr = std::shared_ptr<const LensSurface>;
 
-SurfacePtr sag(const std::string& f, double a = 10) { return std::make_shared<SagFormulaSurface>(f, a); }
+SurfacePtr sag(const std::string& f, double a = 10) {
+    return std::make_shared<SagFormulaSurface>(f, a);
+}
 SurfacePtr conic(double r, double k) { return std::make_shared<ConicSurface>(r, k); }
 SurfacePtr asphere(double r, double k, std::vector<double> c) {
     return std::make_shared<AsphereSurface>(r, k, std::move(c));
@@ -40,9 +42,11 @@ struct NamedLens {
 // Equation lenses of diameter 20: every kind of face, convex and concave, round and not.
 std::vector<NamedLens> equation_lenses() {
     return {
-        {"hyperbolic plano-convex", make(5, 20, std::make_shared<FlatSurface>(), conic(-25, -2.25))},
+        {"hyperbolic plano-convex",
+         make(5, 20, std::make_shared<FlatSurface>(), conic(-25, -2.25))},
         {"ellipsoid biconvex", make(6, 20, conic(30, -0.5), conic(-40, 0.8))},
-        {"asphere meniscus", make(4, 20, asphere(25, -1.2, {1e-5, -2e-8}), asphere(40, 0, {-5e-6}))},
+        {"asphere meniscus",
+         make(4, 20, asphere(25, -1.2, {1e-5, -2e-8}), asphere(40, 0, {-5e-6}))},
         {"sag biconcave", make(2, 20, sag("-r^2/60"), sag("r^2/80 + 1e-6*r^4"))},
         {"sag cylinder lens", make(4, 20, sag("x^2/60"), std::make_shared<FlatSurface>())},
         {"sag saddle", make(5, 20, sag("(x^2 - y^2)/80"), sag("-(x^2 + 2*y^2)/120"))},
@@ -56,23 +60,30 @@ TEST(EquationLens, ChecksRefuseImpossibleLenses) {
         EXPECT_FALSE(LensSolid::check_prescription(p));
     }
     // An oblate ellipsoid ends at 1 / (|c| sqrt(1 + k)).
-    auto too_wide = LensSolid::check_prescription(make(5, 20, conic(10, 1), std::make_shared<FlatSurface>()));
+    auto too_wide =
+        LensSolid::check_prescription(make(5, 20, conic(10, 1), std::make_shared<FlatSurface>()));
     ASSERT_TRUE(too_wide);
     EXPECT_EQ(too_wide->field, "front");
-    EXPECT_EQ(too_wide->reason, "a conic R=10 k=1 surface cannot span the lens diameter 20 (its largest diameter is 14.14213562)");
+    EXPECT_EQ(too_wide->reason,
+              "a conic R=10 k=1 surface cannot span the lens diameter 20 (its largest diameter is "
+              "14.14213562)");
     // A formula's sphere ends where its square root does.
     auto undefined = LensSolid::check_prescription(
         make(5, 25.6, sag("10 - sqrt(100 - r^2)"), std::make_shared<FlatSurface>()));
     ASSERT_TRUE(undefined);
     EXPECT_EQ(undefined->field, "front");
-    EXPECT_EQ(undefined->reason, "sag undefined at r = 10.025 inside the diameter (sqrt of a negative number)");
+    EXPECT_EQ(undefined->reason,
+              "sag undefined at r = 10.025 inside the diameter (sqrt of a negative number)");
     // Faces that are not surfaces of revolution cross somewhere off the x axis.
-    auto crossing = LensSolid::check_prescription(make(1, 20, sag("y^2/20"), std::make_shared<FlatSurface>()));
+    auto crossing =
+        LensSolid::check_prescription(make(1, 20, sag("y^2/20"), std::make_shared<FlatSurface>()));
     ASSERT_TRUE(crossing);
     EXPECT_EQ(crossing->field, "thickness");
     EXPECT_NE(crossing->reason.find("the lens surfaces cross inside the diameter: at (x, y) = ("),
-              std::string::npos) << crossing->reason;
-    auto parallel = LensSolid::check_prescription(make(5, 20, sag("x^2/60"), sag("-x^2/60"), {0, 0, 2}));
+              std::string::npos)
+        << crossing->reason;
+    auto parallel =
+        LensSolid::check_prescription(make(5, 20, sag("x^2/60"), sag("-x^2/60"), {0, 0, 2}));
     ASSERT_TRUE(parallel);
     EXPECT_EQ(parallel->field, "x_axis");
 }
@@ -131,8 +142,9 @@ TEST(EquationLens, EveryRayThatEntersExits) {
         const auto& [name, lens] = posed[i % posed.size()];
         const Vec3 centre = lens.prescription().centre;
         const Aabb box = lens.bounds();
-        const Vec3 target = box.lo + Vec3{box.extent().x * rng.uniform(), box.extent().y * rng.uniform(),
-                                          box.extent().z * rng.uniform()};
+        const Vec3 target =
+            box.lo + Vec3{box.extent().x * rng.uniform(), box.extent().y * rng.uniform(),
+                          box.extent().z * rng.uniform()};
         const Vec3 origin = centre + sample_uniform_sphere(rng.uniform(), rng.uniform()) * 60.0;
         const Vec3 d = normalize(target - origin);
         SurfaceHit in;

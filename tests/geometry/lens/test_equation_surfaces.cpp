@@ -37,7 +37,8 @@ TEST(ConicSurface, SagsOfTheNamedConics) {
     EXPECT_NEAR(ConicSurface(R, -1).sag(r), r * r / (2 * R), 1e-15);
     EXPECT_NEAR(ConicSurface(R, 0).sag(r), R - std::sqrt(R * R - r * r), 1e-14);
     const double k = -2.25, c = 1 / R;
-    EXPECT_NEAR(ConicSurface(R, k).sag(r), (1 - std::sqrt(1 - (1 + k) * c * c * r * r)) / ((1 + k) * c), 1e-14);
+    EXPECT_NEAR(ConicSurface(R, k).sag(r),
+                (1 - std::sqrt(1 - (1 + k) * c * c * r * r)) / ((1 + k) * c), 1e-14);
     // Only a prolate/oblate ellipsoid or sphere has an edge: 1 / (|c| sqrt(1 + k)).
     EXPECT_NEAR(ConicSurface(R, 1).max_semi_diameter(), R / std::sqrt(2.0), 1e-12);
     EXPECT_TRUE(std::isinf(ConicSurface(R, -1).max_semi_diameter()));
@@ -96,7 +97,8 @@ TEST(NumericalSags, AgreeWithTheClosedFormConic) {
     const ConicSurface exact(R, k);
     const AsphereSurface asphere(R, k, {0.0});
     const SagFormulaSurface formula("r^2 / (" + std::to_string(R) + " * (1 + sqrt(1 - (1 + " +
-                                        std::to_string(k) + ") * r^2 / " + std::to_string(R * R) + ")))",
+                                        std::to_string(k) + ") * r^2 / " + std::to_string(R * R) +
+                                        ")))",
                                     a);
     EXPECT_NEAR(formula.sag(7.0), exact.sag(7.0), 1e-12);
     const SurfaceSpan span = measure_span(exact, a);
@@ -126,7 +128,7 @@ TEST(SagFormulaSurface, RevolutionOrNot) {
     const SagFormulaSurface cylinder("x^2/100");
     EXPECT_FALSE(cylinder.is_rotationally_symmetric());
     EXPECT_DOUBLE_EQ(cylinder.sag_xy(3, 4), 0.09);
-    EXPECT_DOUBLE_EQ(cylinder.sag(5), 0.25);  // along +x
+    EXPECT_DOUBLE_EQ(cylinder.sag(5), 0.25);               // along +x
     const SagFormulaSurface mixed("r^2/100 + 0.001*x*y");  // r is allowed with x and y
     EXPECT_FALSE(mixed.is_rotationally_symmetric());
     EXPECT_DOUBLE_EQ(mixed.sag_xy(3, 4), 0.25 + 0.012);
@@ -137,14 +139,16 @@ TEST(SagFormulaSurface, RevolutionOrNot) {
 }
 
 TEST(SagFormulaSurface, RefusesWhatCannotBeASurface) {
-    EXPECT_EQ(*SagFormulaSurface::check("r^2/*2"), "cannot parse at position 5: Unexpected operator \"*\"");
+    EXPECT_EQ(*SagFormulaSurface::check("r^2/*2"),
+              "cannot parse at position 5: Unexpected operator \"*\"");
     EXPECT_EQ(*SagFormulaSurface::check("r^2 + q"), "unknown variable 'q' (use r, or x and y)");
     EXPECT_FALSE(SagFormulaSurface::check("x*y/50"));
     try {
         SagFormulaSurface s("1 + r^2");
         FAIL() << "a sag of 1 at the vertex was accepted";
     } catch (const FormulaError& e) {
-        EXPECT_EQ(e.message(), "must be 0 on the axis (z is measured from the vertex), got 1 at r = 0");
+        EXPECT_EQ(e.message(),
+                  "must be 0 on the axis (z is measured from the vertex), got 1 at r = 0");
     }
 }
 
