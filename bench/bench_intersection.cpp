@@ -7,7 +7,11 @@
 #include <cmath>
 #include <vector>
 
+#include "geometry/implicit_solid.h"
+#include "geometry/lens/asphere_surface.h"
+#include "geometry/lens/conic_surface.h"
 #include "geometry/lens/lens_solid.h"
+#include "geometry/lens/sag_formula_surface.h"
 #include "geometry/lens/spherical_surface.h"
 #include "geometry/mesh_shapes.h"
 #include "geometry/triangle_mesh.h"
@@ -112,6 +116,33 @@ void BM_Mesh100kBuild(benchmark::State& state) {
     }
 }
 
+// The same lens as BM_Lens (R = +-1, aperture radius 0.5, knife edge) with its faces written
+// as other surface kinds: the cost of each kind against the analytic sphere's
+// (docs/performance.md, "Equation-defined surfaces").
+LensPrescription report_lens_with(std::shared_ptr<const LensSurface> front,
+                                  std::shared_ptr<const LensSurface> back) {
+    LensPrescription p = LensSolid::symmetric_biconvex({0, 0, 0}, normalize(Vec3{1, 1, 0}), 1.0, 0.5);
+    p.front = std::move(front);
+    p.back = std::move(back);
+    return p;
+}
+void BM_LensConic(benchmark::State& state) {
+    run(state, LensSolid(report_lens_with(std::make_shared<ConicSurface>(1.0, 0.0),
+                                          std::make_shared<ConicSurface>(-1.0, 0.0))));
+}
+void BM_LensAsphere(benchmark::State& state) {
+    run(state, LensSolid(report_lens_with(std::make_shared<AsphereSurface>(1.0, 0.0, std::vector<double>{0.0}),
+                                          std::make_shared<AsphereSurface>(-1.0, 0.0, std::vector<double>{0.0}))));
+}
+void BM_LensSagFormula(benchmark::State& state) {
+    run(state, LensSolid(report_lens_with(std::make_shared<SagFormulaSurface>("1 - sqrt(1 - r^2)", 0.5),
+                                          std::make_shared<SagFormulaSurface>("sqrt(1 - r^2) - 1", 0.5))));
+}
+// A sphere of radius 0.5 written as an implicit equation, against BM_Sphere.
+void BM_ImplicitSphere(benchmark::State& state) {
+    run(state, ImplicitSolid("x^2 + y^2 + z^2 - 0.25", {{-0.55, -0.55, -0.55}, {0.55, 0.55, 0.55}}));
+}
+
 void BM_DefaultSceneBvh(benchmark::State& state) {
     const Scene scene = default_scene();
     const auto rays = random_rays(4096);
@@ -132,6 +163,10 @@ BENCHMARK(BM_Mesh100k);
 BENCHMARK(BM_Mesh100kFromInside);
 BENCHMARK(BM_Mesh100kAsShapesInGenericBvh);
 BENCHMARK(BM_Mesh100kBuild)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LensConic);
+BENCHMARK(BM_LensAsphere);
+BENCHMARK(BM_LensSagFormula);
+BENCHMARK(BM_ImplicitSphere);
 BENCHMARK(BM_DefaultSceneBvh);
 
 }  // namespace

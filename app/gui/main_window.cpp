@@ -48,6 +48,13 @@ json new_element(const QString& kind, const json& at) {
                 {"back", {{"shape", "sphere"}, {"radius", -1.5}}},
                 {"material", {{"color", 1}, {"transparency", 1}, {"ior", 1.5}}}};
     }
+    if (kind == "implicit") {
+        // A glass torus around the vertical axis: (distance from the axis - 0.4)^2 + y^2 <= 0.15^2.
+        return {{"type", "implicit"}, {"name", "torus"}, {"center", at},
+                {"formula", "(sqrt(x^2 + z^2) - 0.4)^2 + y^2 - 0.15^2"},
+                {"bounds", {{-0.6, -0.2, -0.6}, {0.6, 0.2, 0.6}}},
+                {"material", {{"color", 1}, {"transparency", 1}, {"ior", 1.5}}}};
+    }
     if (kind == "point") return {{"type", "point"}, {"position", {0, 4, 0}}, {"power", 100}};
     return {{"type", "beam"}, {"origin", {0, 4, 0}}, {"direction", {0, -1, 0}}, {"radius", 0.3}, {"power", 10}};
 }
@@ -145,7 +152,9 @@ void MainWindow::build_menus() {
     QToolBar* tools = addToolBar(tr("Edit"));
     tools->setObjectName("edit_toolbar");
     for (const auto& [kind, label] : {std::pair{"sphere", tr("Add sphere")}, std::pair{"triangle", tr("Add triangle")},
-                                      std::pair{"lens", tr("Add lens")}, std::pair{"point", tr("Add point light")},
+                                      std::pair{"lens", tr("Add lens")},
+                                      std::pair{"implicit", tr("Add implicit solid")},
+                                      std::pair{"point", tr("Add point light")},
                                       std::pair{"beam", tr("Add beam")}}) {
         QAction* a = edit->addAction(label, this, [this, k = QString(kind)] { add_element(k); });
         tools->addAction(a);
@@ -275,6 +284,9 @@ void MainWindow::duplicate_selected() {
     json copy = edited[json::json_pointer(pointer.toStdString())];
     if (copy.contains("center")) copy["center"][0] = copy["center"][0].get<double>() + 0.5;
     if (copy.contains("position")) copy["position"][0] = copy["position"][0].get<double>() + 0.5;
+    if (copy.contains("type") && copy["type"] == "implicit" && !copy.contains("center")) {
+        copy["center"] = {0.5, 0, 0};
+    }
     if (copy.contains("vertices")) {
         for (auto& v : copy["vertices"]) v[0] = v[0].get<double>() + 0.5;
     }

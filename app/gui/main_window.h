@@ -32,7 +32,8 @@ public:
     Viewport* viewport() const { return m_viewport; }
     QString status_text() const { return m_status->text(); }
 
-    // Adds an object or light of `kind` (sphere, triangle, lens, point, beam) and selects it.
+    // Adds an object or light of `kind` (sphere, triangle, lens, implicit, point, beam) and
+    // selects it.
     void add_element(const QString& kind);
     void duplicate_selected();
     void delete_selected();

@@ -8,8 +8,12 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include "geometry/implicit_solid.h"
+#include "geometry/lens/sag_formula_surface.h"
+#include "scene/json_reader.h"
 #include "scene/material.h"
 #include "scene/render_settings.h"
+#include "scene/surface_json.h"
 #include "scene_document.h"
 
 namespace lenslab::gui {
@@ -42,6 +46,55 @@ json rgb_json(const Rgb& c) { return json::array({c.r, c.g, c.b}); }
 json as_triple(const json& v) {
     if (v.is_number()) return json::array({v, v, v});
     return v;
+}
+
+// A number as a formula term: negative ones in parentheses.
+std::string term(double v) {
+    std::string s = format_number(v);
+    if (v < 0) {  // built in place: GCC 12 warns falsely (-Wrestrict) on "(" + s + ")"
+        s.insert(0, 1, '(');
+        s.push_back(')');
+    }
+    return s;
+}
+
+// The sag formula of a conic or even asphere with these parameters, so that switching a
+// surface to "sag" keeps its shape and shows how it is written.
+std::string sag_formula_of(const json& s) {
+    if (!s.contains("radius")) return "0";
+    const double radius = s.value("radius", 1.0), k = s.value("k", 0.0);
+    const std::string q = k == 0 ? "" : term(1 + k) + "*";
+    std::string f = "r^2/(" + term(radius) + "*(1 + sqrt(1 - " + q + "r^2/" + term(radius) + "^2)))";
+    if (s.contains("coefficients") && s["coefficients"].is_array()) {
+        int power = 4;
+        for (const json& a : s["coefficients"]) {
+            if (a.is_number() && a.get<double>() != 0) f += " + " + term(a.get<double>()) + "*r^" + std::to_string(power);
+            power += 2;
+        }
+    }
+    return f;
+}
+
+// A surface of shape `chosen` that keeps what it can of `current` (radius, k,
+// coefficients); new lenses get a radius of twice the diameter.
+json surface_of_shape(const std::string& chosen, const json* current, double diameter) {
+    const json old = current && current->is_object() ? *current : json::object();
+    json s{{"shape", chosen}};
+    const double radius = old.contains("radius") ? old["radius"].get<double>() : 2.0 * diameter;
+    if (chosen == "sphere" || chosen == "conic" || chosen == "asphere") s["radius"] = radius;
+    if (chosen == "conic" || chosen == "asphere") s["k"] = old.value("k", 0.0);
+    if (chosen == "asphere") s["coefficients"] = old.contains("coefficients") ? old["coefficients"] : json::array({0.0});
+    if (chosen == "sag") s["formula"] = old.contains("formula") ? old["formula"].get<std::string>() : sag_formula_of(old);
+    return s;
+}
+
+QLabel* make_problem_label(QWidget* parent, const std::string& name) {
+    auto* label = new QLabel(parent);
+    label->setObjectName(QString::fromStdString(name));
+    label->setWordWrap(true);
+    label->setStyleSheet("color: #c0392b;");
+    label->hide();
+    return label;
 }
 
 }  // namespace
@@ -183,6 +236,75 @@ void PropertyPanel::add_text(const QString& label, const std::string& key, const
     m_form->addRow(label, edit);
 }
 
+void PropertyPanel::add_formula(const QString& label, const std::string& key, const std::string& fallback,
+                                const std::function<std::optional<std::string>(const std::string&)>& check) {
+    auto* box = new QWidget(m_form_widget);
+    auto* v = new QVBoxLayout(box);
+    v->setContentsMargins(0, 0, 0, 0);
+    auto* edit = new QLineEdit(box);
+    edit->setObjectName(QString::fromStdString("field:" + key));
+    const json* current = value_at(key);
+    edit->setText(QString::fromStdString(current && current->is_string() ? current->get<std::string>() : fallback));
+    QLabel* problem = make_problem_label(box, "formula_error:" + key);
+    v->addWidget(edit);
+    v->addWidget(problem);
+    // Checked on every keystroke (muparser parses a short formula in microseconds).
+    auto validate = [edit, problem, check] {
+        const auto reason = check(edit->text().toStdString());
+        problem->setText(reason ? QString::fromStdString(*reason) : QString());
+        problem->setVisible(reason.has_value());
+        return !reason;
+    };
+    connect(edit, &QLineEdit::textEdited, this, [validate] { validate(); });
+    connect(edit, &QLineEdit::editingFinished, this, [this, edit, key, label, validate] {
+        if (validate()) commit(key, edit->text().toStdString(), label);
+    });
+    m_form->addRow(label, box);
+}
+
+void PropertyPanel::add_number_list(const QString& label, const std::string& key, const json& fallback,
+                                    size_t max_count) {
+    auto* box = new QWidget(m_form_widget);
+    auto* v = new QVBoxLayout(box);
+    v->setContentsMargins(0, 0, 0, 0);
+    auto* edit = new QLineEdit(box);
+    edit->setObjectName(QString::fromStdString("field:" + key));
+    const json* current = value_at(key);
+    QStringList shown;
+    for (const json& x : (current && current->is_array() ? *current : fallback)) {
+        if (x.is_number()) shown << QString::fromStdString(format_number(x.get<double>()));
+    }
+    edit->setText(shown.join(", "));
+    QLabel* problem = make_problem_label(box, "list_error:" + key);
+    v->addWidget(edit);
+    v->addWidget(problem);
+    // The numbers, or nothing (with the reason shown) when the text is not a list of them.
+    auto parse = [edit, problem, max_count]() -> std::optional<json> {
+        json values = json::array();
+        QString reason;
+        for (const QString& part : edit->text().split(',')) {
+            bool ok = false;
+            const double x = part.trimmed().toDouble(&ok);
+            if (!ok) {
+                reason = tr("not a number: '%1'").arg(part.trimmed());
+                break;
+            }
+            values.push_back(x);
+        }
+        if (reason.isEmpty() && (values.empty() || values.size() > max_count)) {
+            reason = tr("give 1 to %1 numbers separated by commas").arg(max_count);
+        }
+        problem->setText(reason);
+        problem->setVisible(!reason.isEmpty());
+        return reason.isEmpty() ? std::optional<json>(values) : std::nullopt;
+    };
+    connect(edit, &QLineEdit::textEdited, this, [parse] { (void)parse(); });
+    connect(edit, &QLineEdit::editingFinished, this, [this, key, label, parse] {
+        if (const auto values = parse()) commit(key, *values, label);
+    });
+    m_form->addRow(label, box);
+}
+
 void PropertyPanel::build_camera() {
     add_heading(tr("Camera"));
     add_vec3(tr("Position"), "position", json::array({0, 0, 5}));
@@ -265,6 +387,8 @@ void PropertyPanel::build_object() {
         }
     } else if (type == "lens") {
         build_lens();
+    } else if (type == "implicit") {
+        build_implicit();
     }
     // The material: a named one is chosen from the list; an inline one is edited here.
     QStringList names;
@@ -292,20 +416,41 @@ void PropertyPanel::build_lens() {
     add_number(tr("Diameter"), "diameter", 1.0, 1e-6, 1e6);
     build_surface(tr("Front surface"), "front");
     build_surface(tr("Back surface"), "back");
+    // Where local +x points matters only for z(x, y) faces.
+    add_vec3(tr("Local x axis"), "x_axis", json::array({1, 0, 0}));
 }
 
 void PropertyPanel::build_surface(const QString& label, const std::string& key) {
     const json* s = value_at(key);
     const std::string shape = s ? s->value("shape", "sphere") : "sphere";
-    // Switching the shape replaces the whole surface: a flat one has no radius.
+    // Switching the shape replaces the whole surface (a flat one has no radius), keeping
+    // what carries over.
     const double diameter = value_at("diameter") ? value_at("diameter")->get<double>() : 1.0;
-    add_choice(label, key + "/shape", shape, {"sphere", "flat"}, [this, key, label, diameter](const std::string& chosen) {
-        commit(key, chosen == "flat" ? json{{"shape", "flat"}} : json{{"shape", "sphere"}, {"radius", 2.0 * diameter}},
-               label);
+    QStringList shapes;
+    for (const std::string& name : kSurfaceShapeNames) shapes << QString::fromStdString(name);
+    add_choice(label, key + "/shape", shape, shapes, [this, key, label, diameter](const std::string& chosen) {
+        commit(key, surface_of_shape(chosen, value_at(key), diameter), label);
     });
-    if (shape == "sphere") {
+    if (shape == "sphere" || shape == "conic" || shape == "asphere") {
         add_number(label + tr(" radius (signed)"), key + "/radius", 2.0 * diameter, -1e6, 1e6);
     }
+    if (shape == "conic" || shape == "asphere") {
+        add_number(label + tr(" conic constant k"), key + "/k", 0.0, -1e6, 1e6);
+    }
+    if (shape == "asphere") {
+        add_number_list(label + tr(" A4, A6, ... A16"), key + "/coefficients", json::array({0.0}), 7);
+    }
+    if (shape == "sag") {
+        add_formula(label + tr(" z(r) or z(x, y)"), key + "/formula", "r^2/100", SagFormulaSurface::check);
+    }
+}
+
+void PropertyPanel::build_implicit() {
+    add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
+    add_formula(tr("f(x, y, z) <= 0"), "formula", "x^2 + y^2 + z^2 - 1", ImplicitSolid::check);
+    add_vec3(tr("Bounds, lower corner"), "bounds/0", json::array({-1, -1, -1}));
+    add_vec3(tr("Bounds, upper corner"), "bounds/1", json::array({1, 1, 1}));
+    add_integer(tr("March steps"), "steps", ImplicitSolid::kDefaultSteps, 8, 1 << 16);
 }
 
 void PropertyPanel::build_light() {

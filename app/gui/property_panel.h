@@ -1,7 +1,10 @@
 #pragma once
 // Edits what is selected in the scene tree: a form of typed fields (numbers with their valid
 // ranges, vectors, colours, choices) built for the kind of element selected: camera, render
-// settings, material, sphere, triangle, lens (both forms, every surface shape), light.
+// settings, material, sphere, triangle, lens (both forms, every surface shape: flat, sphere,
+// conic, asphere, typed sag formula), implicit solid, light. Formulas are checked as they
+// are typed: the reason one would be refused shows next to the field at once, and the
+// field commits only a formula that parses.
 // Each committed field is one undoable edit; a value the scene reader refuses is not
 // applied and the reason shows under the form.
 
@@ -10,6 +13,8 @@
 #include <QWidget>
 
 #include <functional>
+#include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -51,6 +56,13 @@ private:
                     const QStringList& choices,
                     const std::function<void(const std::string&)>& on_choose = {});
     void add_text(const QString& label, const std::string& key, const std::string& fallback);
+    // A formula field: `check` returns why a text would be refused (shown under the field
+    // while typing, in a label named "formula_error:" + key), or nothing.
+    void add_formula(const QString& label, const std::string& key, const std::string& fallback,
+                     const std::function<std::optional<std::string>(const std::string&)>& check);
+    // Comma-separated numbers committed as a JSON array (asphere coefficients).
+    void add_number_list(const QString& label, const std::string& key, const nlohmann::json& fallback,
+                         size_t max_count);
     void add_heading(const QString& text);
 
     void build_camera();
@@ -59,6 +71,7 @@ private:
     void build_object();
     void build_lens();
     void build_surface(const QString& label, const std::string& key);
+    void build_implicit();
     void build_light();
     void build_spectrum(const std::string& prefix);
 

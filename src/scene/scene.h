@@ -15,7 +15,7 @@
 
 namespace lenslab {
 
-enum class ObjectType { Sphere, Triangle, Lens, Mesh };  // Mesh: a mesh or a prism
+enum class ObjectType { Sphere, Triangle, Lens, Mesh, Implicit };  // Mesh: a mesh or a prism
 
 struct SceneObject {
     std::string name;  // the user's `name`, or the JSON path "objects[i]"

@@ -8,14 +8,14 @@
 #include <map>
 #include <sstream>
 
-#include "geometry/lens/flat_surface.h"
+#include "geometry/implicit_solid.h"
 #include "geometry/lens/lens_solid.h"
-#include "geometry/lens/spherical_surface.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "scene/json_reader.h"
 #include "scene/mesh_json.h"
 #include "scene/spectral_json.h"
+#include "scene/surface_json.h"
 
 namespace lenslab {
 
@@ -139,26 +139,6 @@ std::map<std::string, int> read_materials(const json& j, std::vector<Material>& 
     return by_name;
 }
 
-std::shared_ptr<const LensSurface> read_surface(const json& j, const std::string& path) {
-    JsonObjectReader r(j, path, {"shape", "radius"});
-    const std::string shape = r.string("shape");
-    if (shape == "flat") {
-        if (r.has("radius")) {
-            throw SceneError(r.child_path("radius"), "a flat surface has no radius");
-        }
-        return std::make_shared<FlatSurface>();
-    }
-    if (shape == "sphere") {
-        const double radius = r.number("radius");
-        if (radius == 0) {
-            throw SceneError(r.child_path("radius"),
-                             "must not be 0 (use {\"shape\": \"flat\"} for a plane)");
-        }
-        return std::make_shared<SphericalSurface>(radius);
-    }
-    throw SceneError(r.child_path("shape"), "unknown surface shape '" + shape + "' (known: sphere, flat)");
-}
-
 std::shared_ptr<const Shape> read_lens(JsonObjectReader& r) {
     const Vec3 centre = r.vec3("center");
     const Vec3 axis = r.direction("axis");
@@ -172,7 +152,7 @@ std::shared_ptr<const Shape> read_lens(JsonObjectReader& r) {
                          "form) or thickness, diameter, front and back (a prescription)");
     }
     if (report_form) {
-        for (const char* key : {"thickness", "diameter", "front", "back"}) {
+        for (const char* key : {"thickness", "diameter", "front", "back", "x_axis"}) {
             if (r.has(key)) {
                 throw SceneError(r.child_path(key),
                                  "belongs to the prescription form; the report form "
@@ -193,8 +173,9 @@ std::shared_ptr<const Shape> read_lens(JsonObjectReader& r) {
         p.axis = axis;
         p.thickness = r.positive("thickness");
         p.diameter = r.positive("diameter");
-        p.front = read_surface(r.require("front"), r.child_path("front"));
-        p.back = read_surface(r.require("back"), r.child_path("back"));
+        p.front = read_lens_surface(r.require("front"), r.child_path("front"), 0.5 * p.diameter);
+        p.back = read_lens_surface(r.require("back"), r.child_path("back"), 0.5 * p.diameter);
+        if (r.has("x_axis")) p.x_axis = r.direction("x_axis");
     }
     if (auto problem = LensSolid::check_prescription(p)) {
         throw SceneError(r.child_path(problem->field), problem->reason);
@@ -247,6 +228,35 @@ std::shared_ptr<const Shape> read_triangle(JsonObjectReader& r) {
     return std::make_shared<Triangle>(p[0], p[1], p[2]);
 }
 
+std::shared_ptr<const Shape> read_implicit(JsonObjectReader& r) {
+    const std::string formula = r.string("formula");
+    const nlohmann::json& b = r.require("bounds");
+    const std::string bpath = r.child_path("bounds");
+    if (!b.is_array() || b.size() != 2) {
+        throw SceneError(bpath, "must be two corners [[xmin, ymin, zmin], [xmax, ymax, zmax]]");
+    }
+    Aabb box;
+    box.lo = JsonObjectReader::as_vec3(b[0], index_path(bpath, 0));
+    box.hi = JsonObjectReader::as_vec3(b[1], index_path(bpath, 1));
+    for (int a = 0; a < 3; ++a) {
+        if (!(box.hi[a] > box.lo[a])) {
+            throw SceneError(bpath, std::string("the second corner must exceed the first in ") +
+                                        "xyz"[a] + ", got " + format_number(box.lo[a]) +
+                                        " and " + format_number(box.hi[a]));
+        }
+    }
+    const int steps = static_cast<int>(r.integer("steps", ImplicitSolid::kDefaultSteps, 8, 1 << 16));
+    const Vec3 centre = r.has("center") ? r.vec3("center") : Vec3{};
+    std::shared_ptr<ImplicitSolid> solid;
+    try {
+        solid = std::make_shared<ImplicitSolid>(formula, box, steps, centre);
+    } catch (const FormulaError& e) {
+        throw SceneError(r.child_path("formula"), e.message());
+    }
+    if (auto problem = solid->check_values()) throw SceneError(r.child_path("formula"), *problem);
+    return solid;
+}
+
 SceneObject read_object(const json& j, const std::string& path,
                         const std::map<std::string, int>& materials, std::vector<Material>& all,
                         const std::string& base_dir) {
@@ -262,16 +272,19 @@ SceneObject read_object(const json& j, const std::string& path,
     } else if (type == "lens") {
         o.type = ObjectType::Lens;
         keys.insert(keys.end(), {"center", "axis", "curvature_radius", "aperture_radius",
-                                 "thickness", "diameter", "front", "back"});
+                                 "thickness", "diameter", "front", "back", "x_axis"});
     } else if (type == "mesh" || type == "prism") {
         o.type = ObjectType::Mesh;
         const auto& more = type == "mesh" ? mesh_keys() : prism_keys();
         keys.insert(keys.end(), more.begin(), more.end());
+    } else if (type == "implicit") {
+        o.type = ObjectType::Implicit;
+        keys.insert(keys.end(), {"center", "formula", "bounds", "steps"});
     } else {
         throw SceneError(path + ".type", "unknown object type '" + type +
-                                             "' (known: sphere, triangle, lens, mesh, prism)");
+                                             "' (known: sphere, triangle, lens, mesh, prism, implicit)");
     }
-    JsonObjectReader r(j, path, keys, "a " + type);
+    JsonObjectReader r(j, path, keys, (type == "implicit" ? "an " : "a ") + type);
     o.name = r.string("name", path);
     switch (o.type) {
         case ObjectType::Sphere:
@@ -282,6 +295,7 @@ SceneObject read_object(const json& j, const std::string& path,
         case ObjectType::Mesh:
             o.shape = type == "mesh" ? read_mesh(r, base_dir) : read_prism(r);
             break;
+        case ObjectType::Implicit: o.shape = read_implicit(r); break;
     }
     o.material = read_material_ref(r, o.name, materials, all);
     if (o.type == ObjectType::Mesh) check_mesh_material(r, *o.shape, all[o.material]);

@@ -47,6 +47,12 @@ lenslab_cli_bad_scene(report_lens_aperture_too_big
     "objects[0].aperture_radius: two spheres of radius 0.9 cannot meet in a circle of radius 1.2 (must be <= curvature_radius)")
 lenslab_cli_bad_scene(lens_diameter_exceeds_2r
     "objects[0].front: a sphere R=10 surface cannot span the lens diameter 30 (its largest diameter is 20)")
+lenslab_cli_bad_scene(surface_formula_unknown_variable
+    "objects[0].front.formula: unknown variable 'q' (use r, or x and y)")
+lenslab_cli_bad_scene(surface_sag_undefined
+    "objects[0].back: sag undefined at r = 10.025 inside the diameter (sqrt of a negative number)")
+lenslab_cli_bad_scene(implicit_empty
+    "objects[0].formula: f > 0 at every point sampled inside the bounds, so the solid is empty (the inside is where f <= 0)")
 lenslab_cli_bad_scene(triangle_emission
     "objects[0].material: only spheres can emit light (the material has an emission)")
 

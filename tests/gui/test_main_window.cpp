@@ -3,6 +3,8 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
 #include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -195,6 +197,84 @@ private slots:
         type_value(field(w, "spectrum/blackbody"), 2700);
         QCOMPARE(w.document()->json()["lights"][0]["spectrum"]["blackbody"].get<double>(), 2700.0);
         QVERIFY(wait_for_fresh_frame(w));
+    }
+
+    // A lens face switched to a typed formula: a formula that does not parse shows why as it
+    // is typed and is not applied; a good one is, and renders.
+    void lens_surface_formula_shows_parse_errors() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.add_element("lens");
+        const QString lens = w.tree()->selected_pointer();
+        QCOMPARE(w.panel()->pointer(), lens);
+        auto* shape = w.panel()->findChild<QComboBox*>("field:front/shape");
+        QVERIFY(shape);
+        for (const char* s : {"flat", "sphere", "conic", "asphere", "sag"}) QVERIFY(shape->findText(s) >= 0);
+        shape->setCurrentText("sag");
+        emit shape->activated(shape->currentIndex());
+        const json front = w.document()->json()["objects"][3]["front"];
+        QCOMPARE(front["shape"].get<std::string>(), std::string("sag"));
+        // The sphere it was becomes its formula.
+        QVERIFY2(front["formula"].get<std::string>().find("sqrt") != std::string::npos, front.dump().c_str());
+
+        auto* formula = w.panel()->findChild<QLineEdit*>("field:front/formula");
+        auto* problem = w.panel()->findChild<QLabel*>("formula_error:front/formula");
+        QVERIFY(formula && problem);
+        QVERIFY(problem->text().isEmpty());
+        formula->clear();
+        QTest::keyClicks(formula, "r^2/*2");
+        QCOMPARE(problem->text(), QString("cannot parse at position 5: Unexpected operator \"*\""));
+        emit formula->editingFinished();
+        QCOMPARE(w.document()->json()["objects"][3]["front"], front);  // not applied
+        formula->clear();
+        QTest::keyClicks(formula, "r^2 + q");
+        QCOMPARE(problem->text(), QString("unknown variable 'q' (use r, or x and y)"));
+
+        formula->clear();
+        QTest::keyClicks(formula, "r^2/3");
+        QVERIFY(problem->text().isEmpty());
+        emit formula->editingFinished();
+        QCOMPARE(w.document()->json()["objects"][3]["front"]["formula"].get<std::string>(), std::string("r^2/3"));
+        QVERIFY(wait_for_fresh_frame(w));
+        // Every shape has its fields: an asphere's coefficients are a list of numbers.
+        shape = w.panel()->findChild<QComboBox*>("field:front/shape");
+        shape->setCurrentText("asphere");
+        emit shape->activated(shape->currentIndex());
+        QCOMPARE(w.document()->json()["objects"][3]["front"]["shape"].get<std::string>(), std::string("asphere"));
+        QVERIFY(field(w, "front/k"));
+        auto* coefficients = w.panel()->findChild<QLineEdit*>("field:front/coefficients");
+        QVERIFY(coefficients);
+        coefficients->clear();
+        QTest::keyClicks(coefficients, "0.01, -0.002");
+        emit coefficients->editingFinished();
+        QCOMPARE(w.document()->json()["objects"][3]["front"]["coefficients"], json::array({0.01, -0.002}));
+        w.document()->undo_stack()->undo();
+        QCOMPARE(w.document()->json()["objects"][3]["front"]["coefficients"], json::array({0.0}));
+    }
+
+    void implicit_solid_panel() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.add_element("implicit");
+        QCOMPARE(w.document()->scene().objects.back().type, lenslab::ObjectType::Implicit);
+        auto* formula = w.panel()->findChild<QLineEdit*>("field:formula");
+        auto* problem = w.panel()->findChild<QLabel*>("formula_error:formula");
+        QVERIFY(formula && problem);
+        formula->clear();
+        QTest::keyClicks(formula, "x^2 + r^2 - 1");
+        QCOMPARE(problem->text(), QString("unknown variable 'r' (use x, y and z)"));
+        formula->clear();
+        QTest::keyClicks(formula, "x^2 + y^2 + z^2 - 0.04");
+        QVERIFY(problem->text().isEmpty());
+        emit formula->editingFinished();
+        QCOMPARE(w.document()->json()["objects"][3]["formula"].get<std::string>(), std::string("x^2 + y^2 + z^2 - 0.04"));
+        // A formula that parses but leaves nothing inside the box is refused by the reader.
+        formula = w.panel()->findChild<QLineEdit*>("field:formula");
+        formula->clear();
+        QTest::keyClicks(formula, "x^2 + 1");
+        emit formula->editingFinished();
+        QVERIFY2(w.panel()->error_text().contains("the solid is empty"), qPrintable(w.panel()->error_text()));
+        QCOMPARE(w.document()->json()["objects"][3]["formula"].get<std::string>(), std::string("x^2 + y^2 + z^2 - 0.04"));
     }
 
     void edit_while_rendering_restarts_promptly() {

@@ -147,6 +147,7 @@ TEST(RenderSession, DefaultSceneIsTheReportsExperiment) {
             case ObjectType::Lens: lenses += m.transparency > 0; break;
             case ObjectType::Triangle: ++triangles; break;
             case ObjectType::Mesh: break;
+            case ObjectType::Implicit: ADD_FAILURE() << "the report had no implicit solids"; break;
         }
     }
     EXPECT_EQ(glass_spheres, 1);

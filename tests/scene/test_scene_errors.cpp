@@ -69,7 +69,7 @@ const BadScene kBadScenes[] = {
     {"unknown_key_typo.json", "objects[0].radiu", "unknown key (did you mean 'radius'?)"},
     {"wrong_type_string.json", "objects[0].radius", "must be a number, got a string"},
     {"unknown_object_type.json", "objects[0].type",
-     "unknown object type 'cube' (known: sphere, triangle, lens, mesh, prism)"},
+     "unknown object type 'cube' (known: sphere, triangle, lens, mesh, prism, implicit)"},
     {"sphere_with_lens_key.json", "objects[0].axis", "not a property of a sphere"},
     // Triangles.
     {"triangle_collinear.json", "objects[0].vertices",
@@ -98,7 +98,7 @@ const BadScene kBadScenes[] = {
     {"surface_zero_radius.json", "objects[0].front.radius",
      "must not be 0 (use {\"shape\": \"flat\"} for a plane)"},
     {"surface_unknown_shape.json", "objects[0].front.shape",
-     "unknown surface shape 'parabola' (known: sphere, flat)"},
+     "unknown surface shape 'parabola' (known: flat, sphere, conic, asphere, sag)"},
     // Meshes and prisms.
     {"mesh_open_transparent.json", "objects[0].faces",
      "the mesh is not closed: edge (0, 2) belongs to 1 face (face 0): the surface has a hole "
@@ -123,6 +123,44 @@ const BadScene kBadScenes[] = {
     {"prism_default_facing_along_axis.json", "objects[0].facing",
      "the default facing [0, 0, 1] is not perpendicular to axis; give facing"},
     {"prism_with_mesh_key.json", "objects[0].vertices", "not a property of a prism"},
+    // Equation-defined surfaces (issue 6).
+    {"surface_formula_syntax.json", "objects[0].front.formula",
+     "cannot parse at position 5: Unexpected operator \"*\""},
+    {"surface_formula_unknown_variable.json", "objects[0].front.formula",
+     "unknown variable 'q' (use r, or x and y)"},
+    {"surface_formula_empty.json", "objects[0].front.formula", "must not be empty"},
+    {"surface_formula_not_zero_on_axis.json", "objects[0].front.formula",
+     "must be 0 on the axis (z is measured from the vertex), got 1 at r = 0"},
+    {"surface_sag_undefined.json", "objects[0].back",
+     "sag undefined at r = 10.025 inside the diameter (sqrt of a negative number)"},
+    {"surface_sag_undefined_xy.json", "objects[0].front",
+     "sag undefined at (x, y) = (-5, 0) inside the diameter (log of a number <= 0)"},
+    {"surface_conic_missing_k.json", "objects[0].front.k", "missing (required)"},
+    {"surface_sphere_with_k.json", "objects[0].front.k", "a sphere surface has no k (it takes radius)"},
+    {"surface_asphere_coefficients.json", "objects[0].front.coefficients",
+     "must be an array of 1 to 7 numbers [A4, A6, ..., A16]"},
+    {"surface_asphere_coefficient_string.json", "objects[0].front.coefficients[1]",
+     "must be a number, got a string"},
+    {"lens_conic_too_wide.json", "objects[0].front",
+     "a conic R=10 k=1 surface cannot span the lens diameter 20 (its largest diameter is "
+     "14.14213562)"},
+    {"lens_formula_surfaces_cross.json", "objects[0].thickness",
+     "the lens surfaces cross inside the diameter: at (x, y) = (0, 10) the back surface lies 4 "
+     "in front of the front surface; the centre thickness must be at least 5 for diameter 20"},
+    {"lens_x_axis_parallel.json", "objects[0].x_axis", "must not be parallel to the axis"},
+    // Implicit solids.
+    {"implicit_syntax.json", "objects[0].formula",
+     "cannot parse at position 12: Unexpected operator \"*\""},
+    {"implicit_unknown_variable.json", "objects[0].formula", "unknown variable 'r' (use x, y and z)"},
+    {"implicit_empty.json", "objects[0].formula",
+     "f > 0 at every point sampled inside the bounds, so the solid is empty (the inside is "
+     "where f <= 0)"},
+    {"implicit_undefined.json", "objects[0].formula",
+     "f undefined at (x, y, z) = (-1, -1, -1) inside the bounds (sqrt of a negative number)"},
+    {"implicit_bounds_inverted.json", "objects[0].bounds",
+     "the second corner must exceed the first in y, got 1 and -1"},
+    {"implicit_missing_bounds.json", "objects[0].bounds", "missing (required)"},
+    {"implicit_steps_too_few.json", "objects[0].steps", "must be between 8 and 65536, got 2"},
     // Lights.
     {"unknown_light_type.json", "lights[1].type", "unknown light type 'spot' (known: point, beam)"},
     {"beam_with_position.json", "lights[0].position", "not a property of a beam"},

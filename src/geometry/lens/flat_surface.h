@@ -9,7 +9,7 @@ class FlatSurface final : public LensSurface {
 public:
     double sag(double) const override { return 0.0; }
     double max_semi_diameter() const override;
-    bool intersect(const Ray& ray, double semi_diameter, double t_min, double t_max,
+    bool intersect(const Ray& ray, const SurfaceSpan& span, double t_min, double t_max,
                    double& t) const override;
     Vec3 normal(const Vec3&) const override { return {0, 0, 1}; }
     std::string describe() const override { return "flat"; }

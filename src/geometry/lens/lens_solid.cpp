@@ -10,18 +10,41 @@ namespace lenslab {
 
 namespace {
 
-// Axial gap between the two faces at radius r for a prescription not yet built.
-double gap_at(const LensPrescription& p, double r) {
-    return p.thickness + p.back->sag(r) - p.front->sag(r);
+// The lens's local frame: w along the axis, u along x_axis made perpendicular to it (or
+// Duff et al.'s choice when none is given), v = w x u so that (u, v, w) is right-handed.
+Frame lens_frame(const LensPrescription& p) {
+    const Vec3 x = p.x_axis - p.axis * dot(p.x_axis, p.axis);
+    if (!(length(x) > 1e-12)) return Frame::from_axis(p.axis);
+    const Vec3 u = normalize(x);
+    return {u, cross(p.axis, u), p.axis};
 }
 
-// Radii at which the face gap is checked: dense enough to catch surfaces crossing between
-// samples for any smooth sag (spheres, conics, low-order aspheres).
-constexpr int kGapSamples = 512;
+std::string format(double v) {
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+
+std::string where(const DiscPoint& q, bool symmetric) {
+    if (symmetric) return "r = " + format(std::hypot(q.x, q.y));
+    return "(x, y) = (" + format(q.x) + ", " + format(q.y) + ")";
+}
 
 }  // namespace
 
-LensSolid::LensSolid(LensPrescription p) : m_p(std::move(p)), m_frame(Frame::from_axis(m_p.axis)) {}
+LensSolid::LensSolid(LensPrescription p)
+    : m_p(std::move(p)), m_frame(lens_frame(m_p)) {
+    const double a = 0.5 * m_p.diameter;
+    m_front_span = measure_span(*m_p.front, a);
+    m_back_span = measure_span(*m_p.back, a);
+    m_rim_lo = front_z(a);
+    m_rim_hi = back_z(a);
+}
+
+bool LensSolid::symmetric() const {
+    return m_p.front->is_rotationally_symmetric() && m_p.back->is_rotationally_symmetric();
+}
 
 std::optional<LensSolid::Problem> LensSolid::check_prescription(const LensPrescription& p) {
     std::ostringstream msg;
@@ -34,6 +57,9 @@ std::optional<LensSolid::Problem> LensSolid::check_prescription(const LensPrescr
         msg << "must be > 0, got " << p.diameter;
         return Problem{"diameter", msg.str()};
     }
+    if (length(p.x_axis) > 0 && length(cross(p.x_axis, p.axis)) < 1e-9 * length(p.x_axis)) {
+        return Problem{"x_axis", "must not be parallel to the axis"};
+    }
     const double a = 0.5 * p.diameter;
     for (const auto& [name, s] : {std::pair{"front", p.front}, std::pair{"back", p.back}}) {
         if (a > s->max_semi_diameter()) {
@@ -43,20 +69,39 @@ std::optional<LensSolid::Problem> LensSolid::check_prescription(const LensPrescr
             return Problem{name, msg.str()};
         }
     }
+    const bool symmetric =
+        p.front->is_rotationally_symmetric() && p.back->is_rotationally_symmetric();
+    const std::vector<DiscPoint> points = disc_sample_points(a, symmetric);
+    // Typed formulas can be undefined (sqrt of a negative) or infinite somewhere: refuse
+    // that here rather than render holes.
+    for (const auto& [name, s] : {std::pair{"front", p.front}, std::pair{"back", p.back}}) {
+        for (const DiscPoint& q : points) {
+            if (std::isfinite(s->sag_xy(q.x, q.y))) continue;
+            const std::string why = s->why_undefined(q.x, q.y);
+            msg << "sag undefined at " << where(q, symmetric) << " inside the diameter"
+                << (why.empty() ? "" : " (" + why + ")");
+            return Problem{name, msg.str()};
+        }
+    }
     // The gap may close to exactly zero at the rim (a knife edge) but must not go negative.
     const double tolerance = 1e-12 * std::max(1.0, p.thickness);
-    double worst_gap = 0.0, worst_r = 0.0;
-    for (int i = 0; i <= kGapSamples; ++i) {
-        const double r = a * i / kGapSamples;
-        const double gap = gap_at(p, r);
+    double worst_gap = 0.0;
+    DiscPoint worst{0, 0};
+    for (const DiscPoint& q : points) {
+        const double gap = p.thickness + p.back->sag_xy(q.x, q.y) - p.front->sag_xy(q.x, q.y);
         if (gap < worst_gap) {
             worst_gap = gap;
-            worst_r = r;
+            worst = q;
         }
     }
     if (worst_gap < -tolerance) {
-        msg << "the lens surfaces cross inside the diameter: at " << worst_r
-            << " from the axis the back surface lies " << -worst_gap
+        msg << "the lens surfaces cross inside the diameter: at ";
+        if (symmetric) {
+            msg << std::hypot(worst.x, worst.y) << " from the axis";
+        } else {
+            msg << where(worst, false);
+        }
+        msg << " the back surface lies " << -worst_gap
             << " in front of the front surface; the centre thickness must be at least "
             << p.thickness - worst_gap << " for diameter " << p.diameter
             << " (or reduce the diameter)";
@@ -76,13 +121,19 @@ LensPrescription LensSolid::symmetric_biconvex(const Vec3& centre, const Vec3& a
 
 double LensSolid::edge_thickness() const {
     const double a = 0.5 * m_p.diameter;
-    return back_z(a) - front_z(a);
+    if (symmetric()) return back_z(a) - front_z(a);
+    double thinnest = INFINITY;
+    for (const DiscPoint& q : disc_sample_points(a, false)) {
+        if (std::abs(std::hypot(q.x, q.y) - a) > 1e-9 * a) continue;  // rim points only
+        thinnest = std::min(thinnest, back_z(q.x, q.y) - front_z(q.x, q.y));
+    }
+    return thinnest;
 }
 
 bool LensSolid::contains(const Vec3& world) const {
     const Vec3 p = m_frame.to_local(world - m_p.centre);
-    const double r = std::hypot(p.x, p.y);
-    return r <= 0.5 * m_p.diameter && p.z >= front_z(r) && p.z <= back_z(r);
+    return std::hypot(p.x, p.y) <= 0.5 * m_p.diameter && p.z >= front_z(p.x, p.y) &&
+           p.z <= back_z(p.x, p.y);
 }
 
 bool LensSolid::intersect(const Ray& world_ray, double t_min, double t_max,
@@ -100,23 +151,24 @@ bool LensSolid::intersect(const Ray& world_ray, double t_min, double t_max,
     // the nearest crossing of any patch is where the ray enters or leaves the solid.
     double t;
     const Ray front_ray{{ray.origin.x, ray.origin.y, ray.origin.z + half_t}, ray.direction};
-    if (m_p.front->intersect(front_ray, a, t_min, best_t, t)) {
+    if (m_p.front->intersect(front_ray, m_front_span, t_min, best_t, t)) {
         best_t = t;
         best_normal = -m_p.front->normal(front_ray.at(t));
         found = true;
     }
     const Ray back_ray{{ray.origin.x, ray.origin.y, ray.origin.z - half_t}, ray.direction};
-    if (m_p.back->intersect(back_ray, a, t_min, best_t, t)) {
+    if (m_p.back->intersect(back_ray, m_back_span, t_min, best_t, t)) {
         best_t = t;
         best_normal = m_p.back->normal(back_ray.at(t));
         found = true;
     }
 
-    // Rim: the cylinder x^2 + y^2 = a^2 between the faces' edges.
-    const double z_lo = front_z(a), z_hi = back_z(a);
+    // Rim: the cylinder x^2 + y^2 = a^2 between the faces' edges. For surfaces of revolution
+    // the edges are circles at fixed z; otherwise the z-range is taken where the ray meets it.
+    const bool sym = symmetric();
     const double pad = kSeamTolerance * std::max(1.0, a);
     double roots[2];
-    if (z_hi - z_lo > 0 &&
+    if ((!sym || m_rim_hi - m_rim_lo > 0) &&
         solve_half_quadratic(ray.direction.x * ray.direction.x + ray.direction.y * ray.direction.y,
                              ray.origin.x * ray.direction.x + ray.origin.y * ray.direction.y,
                              ray.origin.x * ray.origin.x + ray.origin.y * ray.origin.y - a * a,
@@ -124,7 +176,9 @@ bool LensSolid::intersect(const Ray& world_ray, double t_min, double t_max,
         for (double tc : roots) {
             if (!in_range(tc, t_min, best_t)) continue;
             const Vec3 p = ray.at(tc);
-            if (p.z < z_lo - pad || p.z > z_hi + pad) continue;
+            const double z_lo = sym ? m_rim_lo : front_z(p.x, p.y);
+            const double z_hi = sym ? m_rim_hi : back_z(p.x, p.y);
+            if (!(z_hi - z_lo > 0) || p.z < z_lo - pad || p.z > z_hi + pad) continue;
             best_t = tc;
             best_normal = Vec3{p.x, p.y, 0.0} / a;
             found = true;
@@ -141,12 +195,9 @@ bool LensSolid::intersect(const Ray& world_ray, double t_min, double t_max,
 
 Aabb LensSolid::bounds() const {
     const double a = 0.5 * m_p.diameter;
-    double z_lo = front_z(0), z_hi = back_z(0);
-    for (int i = 1; i <= kGapSamples; ++i) {
-        const double r = a * i / kGapSamples;
-        z_lo = std::min(z_lo, front_z(r));
-        z_hi = std::max(z_hi, back_z(r));
-    }
+    // The spans' slabs hold every point of the faces (they are padded for the sampling).
+    const double z_lo = -0.5 * m_p.thickness + m_front_span.z_min;
+    const double z_hi = 0.5 * m_p.thickness + m_back_span.z_max;
     const double pad = 1e-6 * std::max(1.0, a);
     Aabb box;
     for (int corner = 0; corner < 8; ++corner) {

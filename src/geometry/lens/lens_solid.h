@@ -1,7 +1,8 @@
 #pragma once
 // A lens element as a closed solid: front surface, back surface and the cylindrical rim
 // (edge) between them. Local frame: +z is the optical axis from the front vertex to the back
-// vertex, and the origin is the midpoint of the two vertices.
+// vertex, the origin is the midpoint of the two vertices, and +x is `x_axis` (which matters
+// only for faces that are not surfaces of revolution).
 
 #include <memory>
 #include <optional>
@@ -20,6 +21,8 @@ struct LensPrescription {
     double diameter = 0;
     std::shared_ptr<const LensSurface> front;
     std::shared_ptr<const LensSurface> back;
+    // The local +x direction (projected perpendicular to the axis); zero: any fixed one.
+    Vec3 x_axis{};
 };
 
 class LensSolid final : public Shape {
@@ -28,10 +31,12 @@ public:
     explicit LensSolid(LensPrescription p);
 
     struct Problem {
-        std::string field;   // thickness, diameter, front or back
+        std::string field;   // thickness, diameter, front, back or x_axis
         std::string reason;
     };
-    // Why a prescription cannot make a closed solid, or nothing if it can.
+    // Why a prescription cannot make a closed solid, or nothing if it can: a face narrower
+    // than the lens, a sag that is not a finite number somewhere on the disc, faces that
+    // cross inside the diameter.
     static std::optional<Problem> check_prescription(const LensPrescription& p);
 
     // The report's lens: two equal spheres of radius R intersecting in a circle of radius h;
@@ -47,14 +52,27 @@ public:
     bool contains(const Vec3& p) const;
 
     const LensPrescription& prescription() const { return m_p; }
-    // Axial positions, in the local frame, of the front and back surfaces at radius r.
+    const Frame& frame() const { return m_frame; }
+    // Axial positions, in the local frame, of the front and back surfaces at radius r
+    // (along +x for faces that are not surfaces of revolution) and at (x, y).
     double front_z(double r) const { return -0.5 * m_p.thickness + m_p.front->sag(r); }
     double back_z(double r) const { return 0.5 * m_p.thickness + m_p.back->sag(r); }
+    double front_z(double x, double y) const {
+        return -0.5 * m_p.thickness + m_p.front->sag_xy(x, y);
+    }
+    double back_z(double x, double y) const {
+        return 0.5 * m_p.thickness + m_p.back->sag_xy(x, y);
+    }
+    // Smallest axial gap between the faces at the rim.
     double edge_thickness() const;
 
 private:
+    bool symmetric() const;
+
     LensPrescription m_p;
     Frame m_frame;
+    SurfaceSpan m_front_span, m_back_span;
+    double m_rim_lo = 0, m_rim_hi = 0;  // the rim's z-range when both faces are symmetric
 };
 
 }  // namespace lenslab

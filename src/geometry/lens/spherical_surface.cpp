@@ -16,7 +16,7 @@ double SphericalSurface::sag(double r) const {
 
 double SphericalSurface::max_semi_diameter() const { return std::abs(m_radius); }
 
-bool SphericalSurface::intersect(const Ray& ray, double semi_diameter, double t_min,
+bool SphericalSurface::intersect(const Ray& ray, const SurfaceSpan& span, double t_min,
                                  double t_max, double& t) const {
     // In curvature form, c |p|^2 - 2 p_z = 0 with c = 1/R: no R^2 term to overflow or to
     // swamp the sag of a weakly curved surface, and it tends to the plane z = 0 as c -> 0.
@@ -28,7 +28,7 @@ bool SphericalSurface::intersect(const Ray& ray, double semi_diameter, double t_
                               roots[0], roots[1])) {
         return false;
     }
-    const double limit = semi_diameter * (1.0 + kSeamTolerance);
+    const double limit = span.semi_diameter * (1.0 + kSeamTolerance);
     for (double tc : roots) {
         if (!in_range(tc, t_min, t_max)) continue;
         const Vec3 p = ray.at(tc);

@@ -13,7 +13,7 @@ public:
 
     double sag(double r) const override;
     double max_semi_diameter() const override;
-    bool intersect(const Ray& ray, double semi_diameter, double t_min, double t_max,
+    bool intersect(const Ray& ray, const SurfaceSpan& span, double t_min, double t_max,
                    double& t) const override;
     Vec3 normal(const Vec3& p) const override;
     std::string describe() const override;

@@ -1,0 +1,200 @@
+#include "math/formula.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <regex>
+
+#include <muParser.h>
+#include <oneapi/tbb/enumerable_thread_specific.h>
+
+namespace lenslab {
+
+namespace {
+
+std::string describe(int position, const std::string& message) {
+    if (position <= 0) return "cannot parse: " + message;
+    return "cannot parse at position " + std::to_string(position) + ": " + message;
+}
+
+// muparser appends " found at position 4" (counting from 0) to its messages; the position
+// is reported separately, counting from 1 as editors do.
+std::string strip_position(std::string msg) {
+    static const std::regex tail(R"((\s+found)?\s+at position \d+\.?$)");
+    msg = std::regex_replace(msg, tail, "");
+    while (!msg.empty() && (msg.back() == '.' || msg.back() == ' ')) msg.pop_back();
+    return msg;
+}
+
+// muparser counts from 0 and places end-of-text errors one or two past the end; users count
+// from 1, and "just after the last character" is the end.
+FormulaError syntax_error(const mu::Parser::exception_type& e, const std::string& text) {
+    const int position = e.GetPos() >= 0 ? std::min(e.GetPos() + 1, int(text.size()) + 1) : 0;
+    return FormulaError(position, describe(position, strip_position(e.GetMsg())));
+}
+
+// Built-in constants users expect to type by name (muparser spells them _pi and _e).
+void define_constants(mu::Parser& p) {
+    p.DefineConst("pi", std::numbers::pi);
+    p.DefineConst("e", std::numbers::e);
+}
+
+// The first function that received an argument outside its domain during a checked
+// evaluation; thread-local because the callbacks below are plain functions.
+thread_local const char* t_domain_error = nullptr;
+
+void note(bool bad, const char* what) {
+    if (bad && !t_domain_error) t_domain_error = what;
+}
+double checked_sqrt(double v) {
+    note(v < 0, "sqrt of a negative number");
+    return std::sqrt(v);
+}
+double checked_log(double v) {
+    note(v <= 0, "log of a number <= 0");
+    return std::log(v);
+}
+double checked_log2(double v) {
+    note(v <= 0, "log2 of a number <= 0");
+    return std::log2(v);
+}
+double checked_log10(double v) {
+    note(v <= 0, "log10 of a number <= 0");
+    return std::log10(v);
+}
+double checked_asin(double v) {
+    note(std::abs(v) > 1, "asin of a number outside [-1, 1]");
+    return std::asin(v);
+}
+double checked_acos(double v) {
+    note(std::abs(v) > 1, "acos of a number outside [-1, 1]");
+    return std::acos(v);
+}
+double checked_acosh(double v) {
+    note(v < 1, "acosh of a number < 1");
+    return std::acosh(v);
+}
+double checked_atanh(double v) {
+    note(std::abs(v) >= 1, "atanh of a number outside (-1, 1)");
+    return std::atanh(v);
+}
+
+}  // namespace
+
+FormulaError::FormulaError(int position, const std::string& message)
+    : std::runtime_error(message), m_position(position), m_message(message) {}
+
+// One thread's parser, with its own variable storage bound by address.
+class ParserEvaluator final : public Formula::Evaluator {
+public:
+    ParserEvaluator(const std::string& text, const std::vector<std::string>& names, bool checked) {
+        define_constants(m_parser);
+        if (checked) {
+            m_parser.DefineFun("sqrt", checked_sqrt);
+            m_parser.DefineFun("log", checked_log);
+            m_parser.DefineFun("ln", checked_log);
+            m_parser.DefineFun("log2", checked_log2);
+            m_parser.DefineFun("log10", checked_log10);
+            m_parser.DefineFun("asin", checked_asin);
+            m_parser.DefineFun("acos", checked_acos);
+            m_parser.DefineFun("acosh", checked_acosh);
+            m_parser.DefineFun("atanh", checked_atanh);
+        }
+        for (size_t i = 0; i < names.size(); ++i) m_parser.DefineVar(names[i], &m_values[i]);
+        m_parser.SetExpr(text);
+    }
+    double operator()(const Formula::Values& values) override {
+        m_values = values;
+        try {
+            return m_parser.Eval();
+        } catch (const mu::Parser::exception_type&) {
+            // Validated at construction; a run-time refusal (none known) reads as undefined.
+            return std::numeric_limits<double>::quiet_NaN();
+        }
+    }
+
+private:
+    mu::Parser m_parser;
+    Formula::Values m_values{};
+};
+
+struct Formula::Impl {
+    tbb::enumerable_thread_specific<std::unique_ptr<ParserEvaluator>> local;
+};
+
+Formula::Formula(std::string text, std::vector<std::string> names, const std::string& variable_hint)
+    : m_text(std::move(text)), m_names(std::move(names)) {
+    if (m_names.size() > kMaxVariables) throw std::logic_error("Formula: too many variables");
+    if (m_text.find_first_not_of(" \t\r\n") == std::string::npos) {
+        throw FormulaError(0, "must not be empty");
+    }
+    // muparser's `=` assigns to a variable, which would change the inputs it was given.
+    for (size_t i = 0; i < m_text.size(); ++i) {
+        if (m_text[i] != '=') continue;
+        const char before = i > 0 ? m_text[i - 1] : ' ';
+        const char after = i + 1 < m_text.size() ? m_text[i + 1] : ' ';
+        if (std::string("<>!=").find(before) == std::string::npos && after != '=') {
+            throw FormulaError(
+                int(i) + 1,
+                describe(int(i) + 1,
+                         "'=' assigns; a formula cannot (for a comparison write '==')"));
+        }
+    }
+    mu::Parser parser;
+    define_constants(parser);
+    try {
+        parser.SetExpr(m_text);
+        // Lists the variables, defined or not, without evaluating.
+        for (const auto& [name, address] : parser.GetUsedVar()) m_used.push_back(name);
+    } catch (const mu::Parser::exception_type& e) {
+        throw syntax_error(e, m_text);
+    }
+    for (const std::string& name : m_used) {
+        if (std::find(m_names.begin(), m_names.end(), name) == m_names.end()) {
+            throw FormulaError(0, "unknown variable '" + name + "' " + variable_hint);
+        }
+    }
+    // Compile and run once here, so that every error surfaces now and not on a render thread.
+    try {
+        Values storage{};
+        mu::Parser check;
+        define_constants(check);
+        for (size_t i = 0; i < m_names.size(); ++i) check.DefineVar(m_names[i], &storage[i]);
+        check.SetExpr(m_text);
+        (void)check.Eval();
+        if (check.GetNumResults() != 1) {
+            throw FormulaError(0, "must be one expression, not a list separated by ','");
+        }
+    } catch (const mu::Parser::exception_type& e) {
+        throw syntax_error(e, m_text);
+    }
+    m_impl = std::make_unique<Impl>();
+}
+
+Formula::~Formula() = default;
+
+bool Formula::uses(const std::string& name) const {
+    return std::find(m_used.begin(), m_used.end(), name) != m_used.end();
+}
+
+Formula::Evaluator& Formula::local() const {
+    bool exists = false;
+    std::unique_ptr<ParserEvaluator>& e = m_impl->local.local(exists);
+    if (!e) e = std::make_unique<ParserEvaluator>(m_text, m_names, false);
+    return *e;
+}
+
+std::string Formula::why_not_finite(const Values& values) const {
+    ParserEvaluator checked(m_text, m_names, true);
+    t_domain_error = nullptr;
+    const double v = checked(values);
+    const char* why = t_domain_error;
+    t_domain_error = nullptr;
+    if (why) return why;
+    if (std::isinf(v)) return "the formula is infinite there (a division by zero?)";
+    if (std::isnan(v)) return "the formula gives NaN there";
+    return "";
+}
+
+}  // namespace lenslab

@@ -1,0 +1,26 @@
+#pragma once
+// Lens surfaces in scene files: `{"shape": "flat" | "sphere" | "conic" | "asphere" | "sag",
+// ...}` (docs/scene-format.md, "Surfaces"). Kept apart from scene_json.cpp because every
+// shape has its own keys and checks.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "geometry/lens/lens_surface.h"
+
+namespace lenslab {
+
+// The shapes a lens face can take, in the order the documentation and the editor list them.
+extern const std::vector<std::string> kSurfaceShapeNames;
+
+// Builds the surface described by `j` (at JSON path `path`) for a lens of the given
+// semi-diameter (which sets a typed formula's finite-difference step). Throws SceneError:
+// unknown shape, a key the shape does not take, a zero radius, bad coefficients, a formula
+// that does not parse. Whether the surface fits the lens is the lens's check.
+std::shared_ptr<const LensSurface> read_lens_surface(const nlohmann::json& j,
+                                                     const std::string& path, double semi_diameter);
+
+}  // namespace lenslab
