@@ -84,34 +84,11 @@ TEST(Prism, OneRayWorkedOutByHand) {
     EXPECT_NEAR(deviation / kDeg, 47.10, 0.01);  // t4 = 77.10 degrees
 }
 
-TEST(Prism, MinimumDeviationOfAnEquilateralPrism) {
-    const Scene scene = equilateral_prism();
-    const double n = 1.5, apex = 60 * kDeg;
-    const double expected = 2 * std::asin(n * std::sin(apex / 2)) - apex;  // 37.18 degrees
-    // Rays hit the middle of the left face at incidence i; the face's inward normal points
-    // 30 degrees below +x, so the ray points 30 - i below +x.
-    auto deviation = [&](double i) {
-        const Vec3 d{std::cos(30 * kDeg - i), 0, -std::sin(30 * kDeg - i)};
-        const auto out = through_both_faces(scene, {Vec3{-0.25, 0, 0} - d * 2.0, d});
-        EXPECT_TRUE(out.has_value()) << "incidence " << i / kDeg;
-        return out ? std::acos(std::clamp(dot(*out, d), -1.0, 1.0)) : INFINITY;
-    };
-    double best_i = 0, best = INFINITY;
-    for (double i = 30 * kDeg; i <= 70 * kDeg; i += 0.05 * kDeg) {
-        if (const double dev = deviation(i); dev < best) { best = dev; best_i = i; }
-    }
-    for (double i = best_i - 0.05 * kDeg; i <= best_i + 0.05 * kDeg; i += 0.0005 * kDeg) {
-        if (const double dev = deviation(i); dev < best) { best = dev; best_i = i; }
-    }
-    EXPECT_NEAR(best / kDeg, 37.18, 0.01);
-    EXPECT_NEAR(best / kDeg, expected / kDeg, 0.01);
-    // At minimum deviation the ray passes symmetrically: incidence asin(n sin(A/2)) = 48.59.
-    EXPECT_NEAR(best_i / kDeg, std::asin(n * std::sin(apex / 2)) / kDeg, 0.1);
-}
-
 // Minimum deviation found by scanning the incidence on the left face's middle, as with a
-// spectrometer: coarse 0.05 degree steps, then 0.0005 degree steps around the best.
-double scanned_minimum_deviation(const Scene& scene, double wavelength_nm) {
+// spectrometer: coarse 0.05 degree steps, then 0.0005 degree steps around the best. Rays hit
+// the middle of the left face at incidence i; the face's inward normal points 30 degrees
+// below +x, so the ray points 30 - i below +x. Returns {deviation, incidence} in degrees.
+std::pair<double, double> scanned_minimum_deviation(const Scene& scene, double wavelength_nm = kLineD) {
     auto deviation = [&](double i) {
         const Vec3 d{std::cos(30 * kDeg - i), 0, -std::sin(30 * kDeg - i)};
         const auto out = through_both_faces(scene, {Vec3{-0.25, 0, 0} - d * 2.0, d}, nullptr, nullptr, wavelength_nm);
@@ -124,7 +101,18 @@ double scanned_minimum_deviation(const Scene& scene, double wavelength_nm) {
     for (double i = best_i - 0.05 * kDeg; i <= best_i + 0.05 * kDeg; i += 0.0005 * kDeg) {
         if (const double dev = deviation(i); dev < best) { best = dev; best_i = i; }
     }
-    return best / kDeg;
+    return {best / kDeg, best_i / kDeg};
+}
+
+TEST(Prism, MinimumDeviationOfAnEquilateralPrism) {
+    const Scene scene = equilateral_prism();
+    const double n = 1.5, apex = 60 * kDeg;
+    const double expected = 2 * std::asin(n * std::sin(apex / 2)) - apex;  // 37.18 degrees
+    const auto [best, best_i] = scanned_minimum_deviation(scene);
+    EXPECT_NEAR(best, 37.18, 0.01);
+    EXPECT_NEAR(best, expected / kDeg, 0.01);
+    // At minimum deviation the ray passes symmetrically: incidence asin(n sin(A/2)) = 48.59.
+    EXPECT_NEAR(best_i, std::asin(n * std::sin(apex / 2)) / kDeg, 0.1);
 }
 
 TEST(Prism, NBk7MinimumDeviationAtTheFraunhoferLines) {
@@ -139,7 +127,7 @@ TEST(Prism, NBk7MinimumDeviationAtTheFraunhoferLines) {
     double previous = INFINITY;
     for (double nm : {486.1327, 587.5618, 656.2725}) {  // blue F, yellow d, red C
         const double expected = (2 * std::asin(bk7.n(nm) * 0.5) - 60 * kDeg) / kDeg;
-        const double measured = scanned_minimum_deviation(scene, nm);
+        const double measured = scanned_minimum_deviation(scene, nm).first;
         std::printf("N-BK7 prism at %.1f nm: minimum deviation %.4f deg (formula %.4f)\n", nm, measured, expected);
         EXPECT_NEAR(measured, expected, 0.01);
         EXPECT_LT(measured, previous);  // longer wavelengths deviate less: red least
