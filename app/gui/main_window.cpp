@@ -114,7 +114,13 @@ MainWindow::MainWindow(QWidget* parent)
     m_renderer->restart(m_document->scene(), 0);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // The document and its undo stack are children, destroyed after this object has become a
+    // plain QWidget; signals they send while going (the undo stack's cleanChanged) must not
+    // reach MainWindow's slots then (UBSan: downcast to a destroyed MainWindow).
+    m_document->undo_stack()->disconnect(this);
+    m_document->disconnect(this);
+}
 
 void MainWindow::build_menus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
