@@ -97,6 +97,25 @@ QLabel* make_problem_label(QWidget* parent, const std::string& name) {
     return label;
 }
 
+// A text field with a (hidden) problem label under it, as one form row's widget.
+struct CheckedLineEdit {
+    QWidget* box;
+    QLineEdit* edit;
+    QLabel* problem;
+};
+
+CheckedLineEdit make_checked_line_edit(QWidget* parent, const std::string& key, const std::string& problem_name) {
+    auto* box = new QWidget(parent);
+    auto* v = new QVBoxLayout(box);
+    v->setContentsMargins(0, 0, 0, 0);
+    auto* edit = new QLineEdit(box);
+    edit->setObjectName(QString::fromStdString("field:" + key));
+    QLabel* problem = make_problem_label(box, problem_name);
+    v->addWidget(edit);
+    v->addWidget(problem);
+    return {box, edit, problem};
+}
+
 }  // namespace
 
 PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
@@ -238,16 +257,9 @@ void PropertyPanel::add_text(const QString& label, const std::string& key, const
 
 void PropertyPanel::add_formula(const QString& label, const std::string& key, const std::string& fallback,
                                 const std::function<std::optional<std::string>(const std::string&)>& check) {
-    auto* box = new QWidget(m_form_widget);
-    auto* v = new QVBoxLayout(box);
-    v->setContentsMargins(0, 0, 0, 0);
-    auto* edit = new QLineEdit(box);
-    edit->setObjectName(QString::fromStdString("field:" + key));
+    const auto [box, edit, problem] = make_checked_line_edit(m_form_widget, key, "formula_error:" + key);
     const json* current = value_at(key);
     edit->setText(QString::fromStdString(current && current->is_string() ? current->get<std::string>() : fallback));
-    QLabel* problem = make_problem_label(box, "formula_error:" + key);
-    v->addWidget(edit);
-    v->addWidget(problem);
     // Checked on every keystroke (muparser parses a short formula in microseconds).
     auto validate = [edit, problem, check] {
         const auto reason = check(edit->text().toStdString());
@@ -264,20 +276,13 @@ void PropertyPanel::add_formula(const QString& label, const std::string& key, co
 
 void PropertyPanel::add_number_list(const QString& label, const std::string& key, const json& fallback,
                                     size_t max_count) {
-    auto* box = new QWidget(m_form_widget);
-    auto* v = new QVBoxLayout(box);
-    v->setContentsMargins(0, 0, 0, 0);
-    auto* edit = new QLineEdit(box);
-    edit->setObjectName(QString::fromStdString("field:" + key));
+    const auto [box, edit, problem] = make_checked_line_edit(m_form_widget, key, "list_error:" + key);
     const json* current = value_at(key);
     QStringList shown;
     for (const json& x : (current && current->is_array() ? *current : fallback)) {
         if (x.is_number()) shown << QString::fromStdString(format_number(x.get<double>()));
     }
     edit->setText(shown.join(", "));
-    QLabel* problem = make_problem_label(box, "list_error:" + key);
-    v->addWidget(edit);
-    v->addWidget(problem);
     // The numbers, or nothing (with the reason shown) when the text is not a list of them.
     auto parse = [edit, problem, max_count]() -> std::optional<json> {
         json values = json::array();

@@ -46,7 +46,7 @@ struct EmittedPhoton {
 };
 
 // The spectrum of light `light` (emitting spheres first, then point lights, then beams).
-const Spectrum& light_spectrum(const Scene& scene, int light) {
+const Spectrum& emitted_spectrum(const Scene& scene, int light) {
     const int spheres = static_cast<int>(scene.emitters().size());
     const int points = static_cast<int>(scene.point_lights.size());
     if (light < spheres) return *scene.emitters()[light].radiance;
@@ -56,7 +56,7 @@ const Spectrum& light_spectrum(const Scene& scene, int light) {
 
 // Samples one photon of light `light`, whose spectrum's colour is `colour`.
 EmittedPhoton emit(const Scene& scene, int light, const Rgb& colour, int64_t n, Rng& rng) {
-    const Spectrum& spectrum = light_spectrum(scene, light);
+    const Spectrum& spectrum = emitted_spectrum(scene, light);
     auto make_emitted = [&](Ray ray, double scale) { return EmittedPhoton{ray, colour * scale, &spectrum, scale}; };
     const double inv_n = 1.0 / static_cast<double>(n);
     const int spheres = static_cast<int>(scene.emitters().size());
@@ -173,7 +173,7 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
 
     std::vector<Photon> slots(static_cast<size_t>(n) * lights);
     std::vector<Rgb> colours;
-    for (int l = 0; l < lights; ++l) colours.push_back(spectrum_to_rgb(light_spectrum(scene, l)));
+    for (int l = 0; l < lights; ++l) colours.push_back(spectrum_to_rgb(emitted_spectrum(scene, l)));
     const int64_t chunks_per_light = (n + kChunk - 1) / kChunk;
     const int64_t chunks = chunks_per_light * lights;
     tbb::parallel_for(tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {

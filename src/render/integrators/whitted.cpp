@@ -23,7 +23,9 @@ SampledSpectrum WhittedIntegrator::trace(const Ray& ray, int depth, double weigh
     Interaction it;
     // Refraction follows the hero wavelength; the others ride along until a dispersive
     // refraction splits them off.
-    if (!next_interaction(scene, ray, w.nm[0], it)) return illuminant_from_rgb(scene.render.background, w);
+    if (!next_interaction(scene, ray, w.nm[0], it)) {
+        return scene.render.background.is_black() ? SampledSpectrum{} : illuminant_from_rgb(scene.render.background, w);
+    }
     const Material& m = *it.material;
     const Vec3& p = it.point();
     const Vec3& n = it.normal();
@@ -36,8 +38,10 @@ SampledSpectrum WhittedIntegrator::trace(const Ray& ray, int depth, double weigh
     if (s.diffuse > 0.0) {
         const Vec3 facing = front_side ? n : -n;
         const SampledSpectrum e = diffuse_irradiance(p, facing, w, rng);
-        l += m.albedo->sample(w) * s.diffuse *
-             (illuminant_from_rgb(scene.render.ambient, w) + e * (1.0 / std::numbers::pi));
+        // Most scenes have no ambient term: skip turning a black colour into a spectrum.
+        const SampledSpectrum ambient =
+            scene.render.ambient.is_black() ? SampledSpectrum{} : illuminant_from_rgb(scene.render.ambient, w);
+        l += m.albedo->sample(w) * s.diffuse * (ambient + e * (1.0 / std::numbers::pi));
     }
     if (depth >= scene.render.max_depth) return l;
     for (int i = 0; i < s.count; ++i) {
