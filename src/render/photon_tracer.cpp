@@ -107,8 +107,7 @@ Photon trace_one(const Scene& scene, EmittedPhoton e, int max_depth, Rng& rng) {
         if (!next_interaction(scene, ray, e.lambda_nm > 0 ? e.lambda_nm : kLineD, it)) break;
         if (e.lambda_nm == 0 && it.scattering.dispersive) {
             e.pick_wavelength(rng);
-            it.scattering = scatter(*it.material, it.object->shape->is_closed(), ray.direction, it.normal(),
-                                    e.lambda_nm);
+            it.scattering = scatter_at(it, ray.direction, e.lambda_nm);
         }
         const Scattering& s = it.scattering;
         double u = rng.uniform();

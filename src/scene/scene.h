@@ -52,13 +52,22 @@ public:
     bool occluded(const Ray& ray, double t_min, double t_max) const;
 
     const Material& material_of(int object) const { return materials[objects[object].material]; }
+    // The transparent solid on the other side of `object`'s surface at `point` (a cemented
+    // neighbour sharing that surface), or nullptr when the other side is air.
+    // `outward_normal` points out of `object`.
+    const Material* medium_beyond(int object, const Vec3& point, const Vec3& outward_normal) const;
     // Objects whose material emits light: spheres (the report's lights).
     const std::vector<SphereEmitter>& emitters() const { return m_emitters; }
     Aabb bounds() const { return m_bvh.bounds(); }
 
 private:
+    void find_touching_solids();
+
     Bvh m_bvh;
     std::vector<SphereEmitter> m_emitters;
+    // For each object, the transparent solids whose boxes touch its box: the only candidates
+    // for a shared surface. Empty for nearly every object, so medium_beyond costs nothing.
+    std::vector<std::vector<int>> m_touching;
 };
 
 }  // namespace lenslab

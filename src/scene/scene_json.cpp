@@ -13,6 +13,7 @@
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "scene/json_reader.h"
+#include "scene/lens_group_json.h"
 #include "scene/mesh_json.h"
 #include "scene/spectral_json.h"
 #include "scene/surface_json.h"
@@ -257,6 +258,13 @@ std::shared_ptr<const Shape> read_implicit(JsonObjectReader& r) {
     return solid;
 }
 
+void check_not_emitting(JsonObjectReader& r, const Material& m) {
+    if (m.is_emitter()) {
+        throw SceneError(r.child_path("material"),
+                         "only spheres can emit light (the material has an emission)");
+    }
+}
+
 SceneObject read_object(const json& j, const std::string& path,
                         const std::map<std::string, int>& materials, std::vector<Material>& all,
                         const std::string& base_dir) {
@@ -282,7 +290,7 @@ SceneObject read_object(const json& j, const std::string& path,
         keys.insert(keys.end(), {"center", "formula", "bounds", "steps"});
     } else {
         throw SceneError(path + ".type", "unknown object type '" + type +
-                                             "' (known: sphere, triangle, lens, mesh, prism, implicit)");
+                                             "' (known: sphere, triangle, lens, lens_group, mesh, prism, implicit)");
     }
     JsonObjectReader r(j, path, keys, (type == "implicit" ? "an " : "a ") + type);
     o.name = r.string("name", path);
@@ -299,10 +307,7 @@ SceneObject read_object(const json& j, const std::string& path,
     }
     o.material = read_material_ref(r, o.name, materials, all);
     if (o.type == ObjectType::Mesh) check_mesh_material(r, *o.shape, all[o.material]);
-    if (all[o.material].is_emitter() && o.type != ObjectType::Sphere) {
-        throw SceneError(r.child_path("material"),
-                         "only spheres can emit light (the material has an emission)");
-    }
+    if (o.type != ObjectType::Sphere) check_not_emitting(r, all[o.material]);
     return o;
 }
 
@@ -355,8 +360,19 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir) {
     if (const json* jo = r.find("objects")) {
         if (!jo->is_array()) throw SceneError("objects", "must be an array");
         for (size_t i = 0; i < jo->size(); ++i) {
-            scene.objects.push_back(
-                read_object((*jo)[i], index_path("objects", i), by_name, scene.materials, base_dir));
+            const std::string path = index_path("objects", i);
+            if (peek_type((*jo)[i], path) == "lens_group") {
+                const auto material = [&](JsonObjectReader& element, const std::string& owner) {
+                    const int m = read_material_ref(element, owner, by_name, scene.materials);
+                    check_not_emitting(element, scene.materials[m]);
+                    return m;
+                };
+                for (SceneObject& o : read_lens_group((*jo)[i], path, material)) {
+                    scene.objects.push_back(std::move(o));
+                }
+                continue;
+            }
+            scene.objects.push_back(read_object((*jo)[i], path, by_name, scene.materials, base_dir));
         }
     }
     if (const json* jl = r.find("lights")) {

@@ -69,7 +69,7 @@ const BadScene kBadScenes[] = {
     {"unknown_key_typo.json", "objects[0].radiu", "unknown key (did you mean 'radius'?)"},
     {"wrong_type_string.json", "objects[0].radius", "must be a number, got a string"},
     {"unknown_object_type.json", "objects[0].type",
-     "unknown object type 'cube' (known: sphere, triangle, lens, mesh, prism, implicit)"},
+     "unknown object type 'cube' (known: sphere, triangle, lens, lens_group, mesh, prism, implicit)"},
     {"sphere_with_lens_key.json", "objects[0].axis", "not a property of a sphere"},
     // Triangles.
     {"triangle_collinear.json", "objects[0].vertices",
@@ -165,6 +165,20 @@ const BadScene kBadScenes[] = {
     {"unknown_light_type.json", "lights[1].type", "unknown light type 'spot' (known: point, beam)"},
     {"beam_with_position.json", "lights[0].position", "not a property of a beam"},
     {"point_light_zero_power.json", "lights[0].power", "must be > 0, got 0"},
+    {"lens_group_cemented_with_back.json", "objects[0].elements[0].back",
+     "an element with no gap after it is cemented: its back is the next element's front "
+     "(give a gap, or leave out back)"},
+    {"lens_group_last_without_back.json", "objects[0].elements[1]",
+     "the last element needs a back surface"},
+    {"lens_group_negative_gap.json", "objects[0].elements[0].gap",
+     "must be >= 0 (the air space after the element)"},
+    {"lens_group_no_elements.json", "objects[0].elements",
+     "must be a non-empty array of elements, front to back"},
+    {"lens_group_shared_surface_crossing.json", "objects[0].elements[1].thickness",
+     "the lens surfaces cross inside the diameter: at 10 from the axis the back surface lies "
+     "3.366750419 in front of the front surface; the centre thickness must be at least "
+     "5.366750419 for diameter 20 (or reduce the diameter)"},
+    {"lens_group_material_on_group.json", "objects[0].material", "not a property of a lens group"},
 };
 // clang-format on
 
