@@ -394,18 +394,43 @@ void PropertyPanel::build_object() {
         build_lens();
     } else if (type == "implicit") {
         build_implicit();
+    } else if (type == "lens_group") {
+        build_lens_group();  // each element has its own material
+        return;
     }
-    // The material: a named one is chosen from the list; an inline one is edited here.
+    add_heading(tr("Material"));
+    build_material_ref(tr("Material"), "material");
+}
+
+// A named material is chosen from the list; an inline one is edited here.
+void PropertyPanel::build_material_ref(const QString& label, const std::string& key) {
     QStringList names;
     if (m_document->json().contains("materials")) {
         for (const auto& [name, v] : m_document->json()["materials"].items()) names << QString::fromStdString(name);
     }
-    add_heading(tr("Material"));
-    const json* m = value_at("material");
+    const json* m = value_at(key);
     if (m && m->is_string()) {
-        add_choice(tr("Material"), "material", m->get<std::string>(), names);
+        add_choice(label, key, m->get<std::string>(), names);
     } else {
-        build_material("material/");
+        build_material(key + "/");
+    }
+}
+
+void PropertyPanel::build_lens_group() {
+    add_vec3(tr("Front vertex"), "vertex", json::array({0, 0, 0}));
+    add_vec3(tr("Axis"), "axis", json::array({0, 0, 1}));
+    add_number(tr("Diameter"), "diameter", 1.0, 1e-6, 1e6);
+    const json* elements = value_at("elements");
+    if (!elements || !elements->is_array()) return;
+    for (size_t i = 0; i < elements->size(); ++i) {
+        const std::string e = "elements/" + std::to_string(i) + "/";
+        add_heading(tr("Element %1").arg(i + 1));
+        build_surface(tr("Front surface"), e + "front");
+        add_number(tr("Centre thickness"), e + "thickness", 1.0, 1e-6, 1e6);
+        // A cemented element's back is the next element's front.
+        if (value_at(e + "back")) build_surface(tr("Back surface"), e + "back");
+        if (i + 1 < elements->size()) add_number(tr("Air gap after"), e + "gap", 0.0, 0.0, 1e6);
+        build_material_ref(tr("Material"), e + "material");
     }
 }
 

@@ -70,6 +70,8 @@ private:
     void build_material(const std::string& prefix);
     void build_object();
     void build_lens();
+    void build_lens_group();
+    void build_material_ref(const QString& label, const std::string& key);
     void build_surface(const QString& label, const std::string& key);
     void build_implicit();
     void build_light();

@@ -22,6 +22,8 @@ struct SceneObject {
     ObjectType type = ObjectType::Sphere;
     std::shared_ptr<const Shape> shape;
     int material = 0;  // index into Scene::materials
+    int source = -1;   // index of the scene file's `objects` entry it came from (a lens group
+                       // makes several objects)
 };
 
 // An emitting sphere: the report's light source.

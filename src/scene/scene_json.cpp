@@ -368,11 +368,13 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir) {
                     return m;
                 };
                 for (SceneObject& o : read_lens_group((*jo)[i], path, material)) {
+                    o.source = static_cast<int>(i);
                     scene.objects.push_back(std::move(o));
                 }
                 continue;
             }
             scene.objects.push_back(read_object((*jo)[i], path, by_name, scene.materials, base_dir));
+            scene.objects.back().source = static_cast<int>(i);
         }
     }
     if (const json* jl = r.find("lights")) {

@@ -42,6 +42,8 @@ TEST(Cemented, LensGroupPlacesElementsFrontToBack) {
     ASSERT_EQ(scene.objects.size(), 2u);
     EXPECT_EQ(scene.objects[0].name, "doublet element 1");
     EXPECT_EQ(scene.objects[1].name, "doublet element 2");
+    EXPECT_EQ(scene.objects[0].source, 0);  // both from the file's objects[0]
+    EXPECT_EQ(scene.objects[1].source, 0);
     const RayTree tree = trace_ray_tree(scene, {{0, 0, -10}, {0, 0, 1}}, {});
     const RayTreeNode* in = child(tree.root, Event::Refract);
     ASSERT_NE(in, nullptr);
