@@ -83,8 +83,8 @@ int run(const AnalyzeArgs& a) {
                 char usable_text[32];
                 std::snprintf(usable_text, sizeof usable_text, "%.6g", 2.0 * usable);
                 return usage_error("--aperture: a beam of diameter " + format_number(a.aperture) +
-                                   " does not pass the lenses; the largest that does is " +
-                                   usable_text);
+                                   " does not pass the lenses (the largest that does is " +
+                                   usable_text + ")");
             }
             options.aperture_radius = 0.5 * a.aperture;
         }
