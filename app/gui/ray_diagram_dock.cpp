@@ -40,6 +40,8 @@ void RayDiagramView::paintEvent(QPaintEvent*) {
     const DiagramView v = fit_diagram(d, width(), height(), margin, top, bottom);
     const auto at = [&](const DiagramPoint& p) { return QPointF(v.x(p.z), v.y(p.y)); };
 
+    // Rays leaving a diverging lens run out of the frame: clip them to the diagram's box.
+    painter.setClipRect(QRectF(QPointF(v.x(d.z_min), v.y(d.y_max)), QPointF(v.x(d.z_max), v.y(d.y_min))));
     for (const DiagramPath& p : d.paths) {
         QPolygonF polygon;
         for (const DiagramPoint& q : p.points) polygon << at(q);
@@ -59,6 +61,7 @@ void RayDiagramView::paintEvent(QPaintEvent*) {
             painter.drawPolyline(polygon);
         }
     }
+    painter.setClipping(false);
     painter.setPen(Qt::NoPen);
     for (const DiagramDot& dot : d.dots) {
         painter.setBrush(qcolour(dot.colour));

@@ -149,7 +149,7 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
     std::vector<int> lenses;
     OpticalSystem system;
     for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
-        if (scene.objects[i].type == ObjectType::Lens) {
+        if (dynamic_cast<const LensSolid*>(scene.objects[i].shape.get())) {
             lenses.push_back(i);
         } else {
             system.ignored.push_back(describe_object(scene, i) + ": not a lens");
@@ -158,24 +158,23 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
     if (lenses.empty()) {
         throw SceneError("objects", "no lens in the scene (analyze measures lens objects)");
     }
-    if (lens && (*lens < 0 || *lens >= static_cast<int>(scene.objects.size()) ||
-                 scene.objects[*lens].type != ObjectType::Lens)) {
-        throw SceneError(lens && *lens >= 0 ? object_path(*lens) : "objects",
+    if (lens && std::find(lenses.begin(), lenses.end(), *lens) == lenses.end()) {
+        throw SceneError(*lens >= 0 ? object_path(*lens) : "objects",
                          "is not a lens");
     }
     const int seed = lens ? *lens : lenses.front();
-    const auto* seed_solid = static_cast<const LensSolid*>(scene.objects[seed].shape.get());
+    const auto* seed_solid = dynamic_cast<const LensSolid*>(scene.objects[seed].shape.get());
     const Vec3 axis = seed_solid->prescription().axis;
     const Vec3 centre = seed_solid->prescription().centre;
     double largest = 0.0;
     for (int i : lenses) {
-        const auto* solid = static_cast<const LensSolid*>(scene.objects[i].shape.get());
+        const auto* solid = dynamic_cast<const LensSolid*>(scene.objects[i].shape.get());
         largest = std::max(largest, solid->prescription().diameter);
     }
 
     std::vector<Placed> placed;
     for (int i : lenses) {
-        const auto* solid = static_cast<const LensSolid*>(scene.objects[i].shape.get());
+        const auto* solid = dynamic_cast<const LensSolid*>(scene.objects[i].shape.get());
         const LensPrescription& p = solid->prescription();
         const double sine = length(cross(axis, p.axis));
         const Vec3 offset = p.centre - centre;

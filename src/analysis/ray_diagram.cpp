@@ -63,6 +63,22 @@ DiagramPath lens_outline(const OpticalSystem& system, const SystemElement& e) {
     return p;
 }
 
+// Where to stop drawing a ray that misses `s`: at the lens edge (the cylinder r = the
+// semi-diameter) when it is inside the lens's radius and heads out through it, else where
+// it passes the surface's vertex plane.
+Vec3 clipped_end(const SystemSurface& s, const RealRay& r) {
+    const Vec3& p = r.exit_point();
+    const Vec3& d = r.direction;
+    double t = (s.z - p.z) / d.z;
+    const double a = d.x * d.x + d.y * d.y, b = p.x * d.x + p.y * d.y;
+    const double c = p.x * p.x + p.y * p.y - s.semi_diameter * s.semi_diameter;
+    if (c <= 0 && a > 0) {
+        // The larger root of a t^2 + 2 b t + c = 0: c <= 0 puts it at t >= 0.
+        t = std::min(t, (-b + std::sqrt(b * b - a * c)) / a);
+    }
+    return p + d * std::max(0.0, t);
+}
+
 }  // namespace
 
 RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& report,
@@ -81,8 +97,8 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     const double z_lo = std::max(std::min({z_start, p.z_front_focus, p.z_front_principal,
                                            p.z_rear_principal, p.z_rear_focus}),
                                  -reach);
-    const double z_hi = std::min(std::max({last, p.z_rear_focus, p.z_front_principal,
-                                           p.z_rear_principal}),
+    const double z_hi = std::min(std::max({last, p.z_rear_focus, p.z_front_focus,
+                                           p.z_front_principal, p.z_rear_principal}),
                                  last + reach);
     const double span = z_hi - z_lo;
     d.z_min = z_lo - 0.04 * span;
@@ -141,7 +157,7 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
                     d.paths.push_back(back);
                 }
             } else if (r.fate == RayFate::Missed) {
-                const Vec3 stop = at_plane(r.exit_point(), r.direction, system.surfaces[r.surface].z);
+                const Vec3 stop = clipped_end(system.surfaces[r.surface], r);
                 ray.points.push_back({stop.z, stop.y});
             }
             d.paths.push_back(ray);

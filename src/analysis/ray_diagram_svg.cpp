@@ -58,6 +58,10 @@ std::string ray_diagram_svg(const RayDiagram& d, double width, double min_height
       << num(height) << "\" viewBox=\"0 0 " << num(width) << " " << num(height)
       << "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n";
     s << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+    // Rays leaving a diverging lens run out of the frame: clip them to the diagram's box.
+    s << "<clipPath id=\"frame\"><rect x=\"" << num(v.x(d.z_min)) << "\" y=\"" << num(v.y(d.y_max))
+      << "\" width=\"" << num((d.z_max - d.z_min) * v.scale) << "\" height=\""
+      << num((d.y_max - d.y_min) * v.scale) << "\"/></clipPath>\n<g clip-path=\"url(#frame)\">\n";
     for (const DiagramPath& p : d.paths) {
         s << "<" << (p.closed ? "polygon" : "polyline") << " points=\"";
         for (const DiagramPoint& q : p.points) s << num(v.x(q.z)) << "," << num(v.y(q.y)) << " ";
@@ -67,6 +71,7 @@ std::string ray_diagram_svg(const RayDiagram& d, double width, double min_height
         if (p.dash > 0) s << " stroke-dasharray=\"" << num(p.dash) << " " << num(0.6 * p.dash) << "\"";
         s << " stroke-linejoin=\"round\"/>\n";
     }
+    s << "</g>\n";
     for (const DiagramDot& dot : d.dots) {
         s << "<circle cx=\"" << num(v.x(dot.at.z)) << "\" cy=\"" << num(v.y(dot.at.y)) << "\" r=\""
           << num(dot.radius) << "\" fill=\"" << colour(dot.colour) << "\"/>\n";
