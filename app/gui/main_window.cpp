@@ -15,6 +15,7 @@
 #include <QToolBar>
 
 #include "property_panel.h"
+#include "ray_diagram_dock.h"
 #include "render/image_io.h"
 #include "render_controller.h"
 #include "scene_document.h"
@@ -68,6 +69,7 @@ MainWindow::MainWindow(QWidget* parent)
       m_tree(new SceneTree(m_document, this)),
       m_panel(new PropertyPanel(m_document, this)),
       m_viewport(new Viewport(m_document, this)),
+      m_ray_diagram(new RayDiagramDock(m_document, this)),
       m_status(new QLabel(this)) {
     setObjectName("main_window");
     setCentralWidget(m_viewport);
@@ -84,9 +86,11 @@ MainWindow::MainWindow(QWidget* parent)
     panel_dock->setObjectName("properties_dock");
     panel_dock->setWidget(scroll);
     addDockWidget(Qt::RightDockWidgetArea, panel_dock);
+    addDockWidget(Qt::BottomDockWidgetArea, m_ray_diagram);
     statusBar()->addWidget(m_status, 1);
 
     connect(m_tree, &SceneTree::pointer_selected, m_panel, &PropertyPanel::show_pointer);
+    connect(m_tree, &SceneTree::pointer_selected, m_ray_diagram, &RayDiagramDock::show_pointer);
     connect(m_viewport, &Viewport::object_picked, this, [this](int object) {
         m_tree->select_pointer(object >= 0 ? QString("/objects/%1").arg(object) : QString());
     });

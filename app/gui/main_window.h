@@ -8,6 +8,7 @@
 namespace lenslab::gui {
 
 class PropertyPanel;
+class RayDiagramDock;
 class RenderController;
 class SceneDocument;
 class SceneTree;
@@ -30,6 +31,7 @@ public:
     SceneTree* tree() const { return m_tree; }
     PropertyPanel* panel() const { return m_panel; }
     Viewport* viewport() const { return m_viewport; }
+    RayDiagramDock* ray_diagram() const { return m_ray_diagram; }
     QString status_text() const { return m_status->text(); }
 
     // Adds an object or light of `kind` (sphere, triangle, lens, implicit, point, beam) and
@@ -57,6 +59,7 @@ private:
     SceneTree* m_tree;
     PropertyPanel* m_panel;
     Viewport* m_viewport;
+    RayDiagramDock* m_ray_diagram;
     QLabel* m_status;
     QMenu* m_recent_menu = nullptr;
 };

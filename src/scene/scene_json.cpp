@@ -338,13 +338,14 @@ void read_light(const json& j, const std::string& path, Scene& scene) {
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& source,
-                  const std::string& base_dir) {
+                  const std::string& base_dir, const SceneReadOptions& options) {
     const json root = parse_json_strict(text, source);
     if (!root.is_object()) throw SceneError(source, "the top level must be a JSON object { ... }");
-    return scene_from_json(root, base_dir);
+    return scene_from_json(root, base_dir, options);
 }
 
-Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir) {
+Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
+                      const SceneReadOptions& options) {
     JsonObjectReader r(root, "",
                        {"version", "description", "camera", "render", "materials", "objects",
                         "lights"});
@@ -353,7 +354,7 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir) {
     (void)r.string("description", "");
 
     Scene scene;
-    read_camera(r.require("camera"), scene.camera);
+    if (options.require_camera || r.has("camera")) read_camera(r.require("camera"), scene.camera);
     if (const json* jr = r.find("render")) read_render(*jr, scene.render);
     std::map<std::string, int> by_name;
     if (const json* jm = r.find("materials")) by_name = read_materials(*jm, scene.materials);
@@ -385,7 +386,7 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir) {
     return scene;
 }
 
-Scene load_scene_file(const std::string& path) {
+Scene load_scene_file(const std::string& path, const SceneReadOptions& options) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         throw SceneError(path, "is a directory, not a scene file");
@@ -397,7 +398,8 @@ Scene load_scene_file(const std::string& path) {
     if (in.bad()) throw SceneError(path, "cannot read scene file");
     try {
         // Files a scene names (OBJ meshes) are found next to it.
-        return parse_scene(text.str(), path, std::filesystem::path(path).parent_path().string());
+        return parse_scene(text.str(), path, std::filesystem::path(path).parent_path().string(),
+                           options);
     } catch (const SceneError& e) {
         // Prefix the file name so the message says where, whatever the JSON path.
         if (e.path() == path || e.path().empty()) throw SceneError(path, e.reason());

@@ -101,3 +101,57 @@ lenslab_cli_test(NAME render.default_scene_file
 lenslab_cli_test(NAME trace.default_scene
     ARGS trace scenes/default.json --origin 0,3,0 --direction 0,-1,0
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=\"event\"" -DSTDOUT_JSON=ON -DJSON_EVENT=start)
+
+# `analyze`: the optical bench reads lens-only files (no camera), prints a table, JSON with
+# the named figures, writes an SVG ray diagram, and refuses what is not one lens system.
+set(analyze_data tests/analysis/data)
+lenslab_cli_test(NAME analyze.table
+    ARGS analyze ${analyze_data}/lens_only.json
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=49.8258  ")
+lenslab_cli_test(NAME analyze.doublet_table
+    ARGS analyze scenes/achromat_doublet.json
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=objects[0].back = objects[1].front")
+lenslab_cli_test(NAME analyze.json
+    ARGS analyze ${analyze_data}/lens_only.json --json --wavelength 656.2725
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON
+           "-DJSON_KEYS=efl,bfl,ffl,rms_spot_paraxial,rms_spot_best,best_focus,chromatic_shift_FC,wavelength_nm,principal_planes,lsa"
+           "-DSTDOUT_CONTAINS=\"wavelength_nm\": 656.2725")
+set(analyze_svg ${LENSLAB_CLI_OUT}/doublet.svg)
+lenslab_cli_test(NAME analyze.svg
+    ARGS analyze scenes/achromat_doublet.json --svg ${analyze_svg} --aperture 20
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=ray diagram written to ${analyze_svg}"
+           -DOUTPUT=${analyze_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg")
+lenslab_cli_test(NAME analyze.chosen_lens
+    ARGS analyze scenes/hyperbolic_lens_beam.json --lens hyperbolic
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=ignored: objects[1] ('spherical'): not on the axis of objects[0] ('hyperbolic')")
+set(analyze_bad_svg ${LENSLAB_CLI_OUT}/not_coaxial.svg)
+lenslab_cli_test(NAME analyze.bad.not_coaxial
+    ARGS analyze ${analyze_data}/not_coaxial.json --svg ${analyze_bad_svg}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_PREFIX=lenslab: error: ${analyze_data}/not_coaxial.json: objects[1]: not on the axis of objects[0] ('left'): its centre lies 30 from that axis"
+           -DOUTPUT=${analyze_bad_svg} -DOUTPUT_CREATED=OFF)
+lenslab_cli_test(NAME analyze.bad.no_lens
+    ARGS analyze ${analyze_data}/no_lens.json
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: ${analyze_data}/no_lens.json: objects: no lens in the scene (analyze measures lens objects)")
+lenslab_cli_test(NAME analyze.bad.scene
+    ARGS analyze tests/scene/bad/sphere_negative_radius.json
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: tests/scene/bad/sphere_negative_radius.json: objects[2].radius: must be > 0, got -1")
+lenslab_cli_test(NAME analyze.bad.wavelength_outside_glass
+    ARGS analyze scenes/achromat_doublet.json --wavelength 350
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: scenes/achromat_doublet.json: objects[1].material: --wavelength 350 nm is outside the validity range 370-2500 nm of SF5")
+lenslab_cli_test(NAME analyze.bad.aperture
+    ARGS analyze ${analyze_data}/lens_only.json --aperture 30
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --aperture: a beam of diameter 30 does not pass the lenses (the largest that does is 25.4)")
+lenslab_cli_test(NAME analyze.bad.unknown_lens
+    ARGS analyze scenes/hyperbolic_lens_beam.json --lens hyperbolik
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --lens: no lens named 'hyperbolik' in scenes/hyperbolic_lens_beam.json (lenses: hyperbolic, spherical)")
+# The renderer still needs a camera: a lens-only file is refused there.
+lenslab_cli_test(NAME render.bad.lens_only_no_camera
+    ARGS render ${analyze_data}/lens_only.json -o ${LENSLAB_CLI_OUT}/lens_only.png
+    CHECKS -DEXPECT_EXIT=1 "-DSTDERR_LINE=lenslab: error: ${analyze_data}/lens_only.json: camera: missing (required)"
+           -DOUTPUT=${LENSLAB_CLI_OUT}/lens_only.png -DOUTPUT_CREATED=OFF)

@@ -36,6 +36,26 @@ TEST(SceneJson, MinimalSceneGetsTheDocumentedDefaults) {
     EXPECT_TRUE(s.objects.empty());
 }
 
+TEST(SceneJson, TheBenchReadsFilesWithoutACamera) {
+    // `lenslab analyze` reads a file of lenses alone; the renderer still needs its camera,
+    // and a camera that is given is checked either way.
+    const std::string lenses = R"({"objects": [{"type": "lens", "center": [0, 0, 0],
+        "axis": [0, 0, 1], "thickness": 5, "diameter": 25,
+        "front": {"shape": "sphere", "radius": 50}, "back": {"shape": "flat"},
+        "material": {"transparency": 1, "glass": "N-BK7"}}]})";
+    const Scene s = parse_scene(lenses, "lenses", "", {.require_camera = false});
+    EXPECT_EQ(s.objects.size(), 1u);
+    try {
+        parse_scene(lenses);
+        FAIL() << "a scene without a camera was accepted for rendering";
+    } catch (const SceneError& e) {
+        EXPECT_STREQ(e.what(), "camera: missing (required)");
+    }
+    EXPECT_THROW(parse_scene(R"({"camera": {"position": [0, 0, 5]}})", "s", "",
+                             {.require_camera = false}),
+                 SceneError);
+}
+
 TEST(SceneJson, NamedAndInlineMaterials) {
     const Scene s = parse_scene(R"({
       "camera": {"position": [0, 0, 5], "direction": [0, 0, -2]},
