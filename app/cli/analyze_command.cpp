@@ -38,8 +38,11 @@ std::optional<int> find_lens(const Scene& scene, const std::string& name, std::s
     for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
         const SceneObject& o = scene.objects[i];
         if (o.type != ObjectType::Lens) continue;
-        known += (known.empty() ? "" : ", ") + o.name;
-        if (o.name == name || "objects[" + std::to_string(i) + "]" == name) return i;
+        // A lens group's elements answer to the group's name too.
+        known += (known.empty() ? "" : ", ") + o.name + (o.group.empty() ? "" : " [" + o.group + "]");
+        if (o.name == name || o.group == name || "objects[" + std::to_string(o.source) + "]" == name) {
+            return i;
+        }
     }
     return std::nullopt;
 }

@@ -126,10 +126,13 @@ void RayDiagramDock::refresh() {
     static const QRegularExpression object_pointer("^/objects/(\\d+)$");
     const QRegularExpressionMatch match = object_pointer.match(m_pointer);
     const Scene& scene = m_document->scene();
-    const int index = match.hasMatch() ? match.captured(1).toInt() : -1;
-    // JSON objects and scene objects correspond one to one.
-    if (index < 0 || index >= int(scene.objects.size()) ||
-        scene.objects[index].type != ObjectType::Lens) {
+    const int entry = match.hasMatch() ? match.captured(1).toInt() : -1;
+    // The first scene object made from that entry of the file (a lens group makes several).
+    int index = -1;
+    for (int i = 0; i < int(scene.objects.size()) && index < 0 && entry >= 0; ++i) {
+        if (scene.objects[i].source == entry) index = i;
+    }
+    if (index < 0 || scene.objects[index].type != ObjectType::Lens) {
         m_view->set_diagram(std::nullopt);
         m_message->setText(tr("Select a lens to see the ray diagram of the lenses on its axis."));
         return;

@@ -25,10 +25,22 @@ constexpr double kAxisOffsetTolerance = 1e-9;
 // interface; the lead's shorthand and hand-written doublets place them exactly.
 constexpr double kCementTolerance = 1e-9;
 
-std::string object_path(int i) { return "objects[" + std::to_string(i) + "]"; }
+// The scene file's entry the object came from (a lens group's elements share one).
+std::string object_path(const Scene& scene, int i) {
+    const int entry = scene.objects[i].source >= 0 ? scene.objects[i].source : i;
+    std::string path = "objects[" + std::to_string(entry) + "]";
+    int element = 0, siblings = 0;
+    for (int j = 0; j < static_cast<int>(scene.objects.size()); ++j) {
+        if (j == i || scene.objects[j].source != entry) continue;
+        ++siblings;
+        if (j < i) ++element;
+    }
+    if (siblings > 0) path += ".elements[" + std::to_string(element) + "]";
+    return path;
+}
 
 std::string describe_object(const Scene& scene, int i) {
-    const std::string path = object_path(i);
+    const std::string path = object_path(scene, i);
     const std::string& name = scene.objects[i].name;
     return name == path || name.empty() ? path : path + " ('" + name + "')";
 }
@@ -51,7 +63,7 @@ struct Placed {
 void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
     const LensPrescription& pr = p.lens->prescription();
     const bool forward = p.orientation > 0;
-    const std::string path = object_path(p.object);
+    const std::string path = system.elements[element].path;
     const double a = 0.5 * pr.diameter;
     const auto make = [&](const std::shared_ptr<const LensSurface>& shape, double z,
                           const char* face) {
@@ -159,7 +171,7 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
         throw SceneError("objects", "no lens in the scene (analyze measures lens objects)");
     }
     if (lens && std::find(lenses.begin(), lenses.end(), *lens) == lenses.end()) {
-        throw SceneError(*lens >= 0 ? object_path(*lens) : "objects",
+        throw SceneError(*lens >= 0 ? object_path(scene, *lens) : "objects",
                          "is not a lens");
     }
     const int seed = lens ? *lens : lenses.front();
@@ -193,17 +205,17 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
                 continue;
             }
             why << " (all lenses must share one axis; pick one system with --lens NAME)";
-            throw SceneError(object_path(i), why.str());
+            throw SceneError(object_path(scene, i), why.str());
         }
         for (const auto& face : {p.front, p.back}) {
             if (!face->is_rotationally_symmetric()) {
-                throw SceneError(object_path(i) + (face == p.front ? ".front" : ".back"),
+                throw SceneError(object_path(scene, i) + (face == p.front ? ".front" : ".back"),
                                  "a sag formula in x and y is not a surface of revolution; "
                                  "the lens bench measures rotationally symmetric systems");
             }
         }
         if (!(scene.material_of(i).transparency > 0.0)) {
-            throw SceneError(object_path(i) + ".material",
+            throw SceneError(object_path(scene, i) + ".material",
                              "transparency is 0: light does not pass this lens");
         }
         const double orientation = dot(p.axis, axis) > 0 ? 1.0 : -1.0;
@@ -221,7 +233,7 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
         p.z_last -= z0;
         SystemElement e;
         e.object = p.object;
-        e.path = object_path(p.object);
+        e.path = object_path(scene, p.object);
         e.name = scene.objects[p.object].name;
         const Material& m = scene.material_of(p.object);
         e.glass = m.glass.empty() ? m.index->describe() : m.glass;

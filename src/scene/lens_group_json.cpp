@@ -93,6 +93,7 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
         }
         SceneObject o;
         o.name = e.name;
+        o.group = name;
         o.type = ObjectType::Lens;
         o.shape = std::make_shared<LensSolid>(std::move(p));
         o.material = e.material;

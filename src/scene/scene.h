@@ -24,6 +24,7 @@ struct SceneObject {
     int material = 0;  // index into Scene::materials
     int source = -1;   // index of the scene file's `objects` entry it came from (a lens group
                        // makes several objects)
+    std::string group;  // the lens group's name, for its elements
 };
 
 // An emitting sphere: the report's light source.
