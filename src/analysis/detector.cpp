@@ -8,6 +8,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "optics/spectrum.h"
 #include "render/photon_tracer.h"
@@ -137,12 +138,13 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
     tracing.seed = settings.seed;
     tracing.max_depth = settings.max_depth;
 
+    tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
     std::vector<double> sum_u(result.detectors.size()), sum_v(sum_u.size()), sum_r2(sum_u.size());
     for (int64_t first = 0; first < total && !control.cancelled(); first += kBatch) {
         const int64_t last = std::min(total, first + kBatch);
         const int64_t chunks = (last - first + kChunk - 1) / kChunk;
         std::vector<std::vector<Arrival>> found(static_cast<size_t>(chunks));
-        tbb::parallel_for(tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
+        arena.execute([&] { tbb::parallel_for(tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
             for (int64_t chunk = r.begin(); chunk != r.end(); ++chunk) {
                 std::vector<Arrival>& out = found[static_cast<size_t>(chunk)];
                 const PhotonArrivalFn on_arrival = [&](const PhotonArrival& a) {
@@ -174,7 +176,7 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
                     trace_photon_path(scene, tracing, static_cast<int>(g / n), g % n, on_arrival);
                 }
             }
-        });
+        }); });
         // Summed in photon order, so the result does not depend on the threads.
         for (const std::vector<Arrival>& chunk : found) {
             for (const Arrival& a : chunk) {

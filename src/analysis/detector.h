@@ -22,6 +22,7 @@ struct DetectionSettings {
     int64_t photons_per_light = 200000;
     uint64_t seed = 1;
     int max_depth = 8;  // specular bounces followed (render.max_depth)
+    int threads = 0;    // 0: all cores
 };
 
 struct DetectorMeasurement {
