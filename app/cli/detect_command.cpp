@@ -25,7 +25,7 @@ struct DetectArgs {
     int64_t photons = 0;
     int64_t seed = -1;
     int threads = 0, max_depth = -1;
-    bool json = false, quiet = false;
+    bool json = false, quiet = false, log = false;
 };
 
 RenderControl* g_control = nullptr;
@@ -81,7 +81,7 @@ int run(const DetectArgs& a) {
                        {"detectors", nlohmann::json::array()}};
     for (size_t i = 0; i < result.detectors.size(); ++i) {
         const DetectorMeasurement& m = result.detectors[i];
-        write_detector_files(m, settings, a.output, stems[i]);
+        write_detector_files(m, settings, a.output, stems[i], a.log ? ColourScale::Log : ColourScale::Linear);
         nlohmann::json d = detector_summary_json(m);
         const std::string base = (std::filesystem::path(a.output) / stems[i]).string();
         d["files"] = {{"csv", base + ".csv"}, {"exr", base + ".exr"}, {"png", base + ".png"}};
@@ -116,6 +116,7 @@ Action add_detect_command(CLI::App& app) {
         ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
     cmd->add_option("--max-depth", args->max_depth, "Longest specular chain followed (default: render.max_depth)")
         ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, 1000));
+    cmd->add_flag("--log", args->log, "Colour the PNG on a log scale (4 decades below the peak)");
     cmd->add_flag("--json", args->json, "Print the summary as JSON");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
     return [args] { return run(*args); };

@@ -7,6 +7,7 @@
 
 namespace lenslab::gui {
 
+class DetectorDock;
 class PropertyPanel;
 class RenderController;
 class SceneDocument;
@@ -30,10 +31,11 @@ public:
     SceneTree* tree() const { return m_tree; }
     PropertyPanel* panel() const { return m_panel; }
     Viewport* viewport() const { return m_viewport; }
+    DetectorDock* detector_dock() const { return m_detector_dock; }
     QString status_text() const { return m_status->text(); }
 
-    // Adds an object or light of `kind` (sphere, triangle, lens, implicit, point, beam) and
-    // selects it.
+    // Adds an object or light of `kind` (sphere, triangle, disc, rectangle, lens, implicit,
+    // point, beam) and selects it.
     void add_element(const QString& kind);
     void duplicate_selected();
     void delete_selected();
@@ -57,6 +59,7 @@ private:
     SceneTree* m_tree;
     PropertyPanel* m_panel;
     Viewport* m_viewport;
+    DetectorDock* m_detector_dock;
     QLabel* m_status;
     QMenu* m_recent_menu = nullptr;
 };

@@ -96,7 +96,7 @@ std::string detector_csv(const DetectorMeasurement& m, const DetectionSettings& 
 }
 
 void write_detector_files(const DetectorMeasurement& m, const DetectionSettings& settings, const std::string& dir,
-                          const std::string& stem) {
+                          const std::string& stem, ColourScale scale) {
     const std::filesystem::path base = std::filesystem::path(dir) / stem;
     write_text_file(detector_csv(m, settings), base.string() + ".csv");
     // EXR rows run top to bottom: row 0 is the highest v, as in the picture.
@@ -112,7 +112,7 @@ void write_detector_files(const DetectorMeasurement& m, const DetectionSettings&
         for (int b = 0; b < m.bands(); ++b) channels[static_cast<size_t>(b) + 1].values[at] = static_cast<float>(m.band_irradiance(b, c));
     }
     write_exr_channels(nu, nv, channels, base.string() + ".exr");
-    write_png_image(detector_image(m), base.string() + ".png");
+    write_png_image(detector_image(m, scale), base.string() + ".png");
 }
 
 nlohmann::json detector_summary_json(const DetectorMeasurement& m) {

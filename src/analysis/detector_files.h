@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/detector.h"
+#include "analysis/detector_image.h"
 
 namespace lenslab {
 
@@ -21,9 +22,10 @@ std::string detector_csv(const DetectorMeasurement& m, const DetectionSettings& 
 // Name of the EXR channel of band `band` ("E_360_490nm"); the total is "E_total".
 std::string band_channel_name(const DetectorMeasurement& m, int band);
 
-// Writes the three files of `m` into `dir` (which must exist) as <stem>.{csv,exr,png}.
+// Writes the three files of `m` into `dir` (which must exist) as <stem>.{csv,exr,png};
+// `scale` is the PNG's colour scale.
 void write_detector_files(const DetectorMeasurement& m, const DetectionSettings& settings, const std::string& dir,
-                          const std::string& stem);
+                          const std::string& stem, ColourScale scale = ColourScale::Linear);
 
 // {"name", "object", "units": {...}, "total_power", "band_powers": [...], "peak_irradiance",
 //  "centroid": [x, y, z], "centroid_uv": [u, v], "rms_radius", "resolution", "arrivals"}

@@ -44,7 +44,7 @@ void colour_of(double t, unsigned char (&out)[3]) {
 
 std::string irradiance_unit(const DetectorMeasurement& m) { return "W/" + m.settings.unit + "^2"; }
 
-Image8 detector_image(const DetectorMeasurement& m, int map_size) {
+Image8 detector_image(const DetectorMeasurement& m, ColourScale scale, int map_size) {
     const DetectorGrid& g = m.grid;
     const double width = g.u_max() - g.u_min(), height = g.v_max() - g.v_min();
     const double px_per_unit = map_size / std::max(width, height);
@@ -59,12 +59,25 @@ Image8 detector_image(const DetectorMeasurement& m, int map_size) {
             " to " + number(g.v_max()) + " " + unit + " (up); all wavelengths " +
             number(m.settings.band_edges.front()) + "-" + number(m.settings.band_edges.back()) + " nm",
     };
-    const std::string title = m.name + ": irradiance (" + irradiance_unit(m) + ")";
+    const bool log = scale == ColourScale::Log;
+    const std::string title = m.name + ": irradiance (" + irradiance_unit(m) + (log ? ", log scale)" : ")");
     // The colour bar's scale: the peak over cells at least half on the surface, so a
     // sliver of a rim cell cannot set it.
     const double top = m.peak_irradiance > 0 ? m.peak_irradiance : 1.0;
+    // Where on the bar (0 bottom, 1 top) an irradiance lies.
+    auto position = [&](double e) {
+        if (!log) return e / top;
+        return e > 0 ? 1.0 + std::log10(e / top) / kLogDecades : 0.0;
+    };
+    // Ticks: quarters of the peak, or one per decade.
+    const int tick_count = log ? kLogDecades + 1 : 5;
     std::vector<std::string> ticks;
-    for (int i = 0; i <= 4; ++i) ticks.push_back(number(top * i / 4));
+    std::vector<double> tick_at;
+    for (int i = 0; i < tick_count; ++i) {
+        const double f = static_cast<double>(i) / (tick_count - 1);
+        ticks.push_back(number(log ? top * std::pow(10.0, -kLogDecades * (1 - f)) : top * f));
+        tick_at.push_back(f);
+    }
     int tick_w = 0;
     for (const std::string& t : ticks) tick_w = std::max(tick_w, text_width(t));
 
@@ -89,7 +102,7 @@ Image8 detector_image(const DetectorMeasurement& m, int map_size) {
                 fill(img, map_x + x, map_y + y, map_x + x + 1, map_y + y + 1, kOffSurface);
                 continue;
             }
-            colour_of(m.irradiance(cell) / top, c);
+            colour_of(position(m.irradiance(cell)), c);
             fill(img, map_x + x, map_y + y, map_x + x + 1, map_y + y + 1, c);
         }
     }
@@ -107,8 +120,8 @@ Image8 detector_image(const DetectorMeasurement& m, int map_size) {
         colour_of(1.0 - (y + 0.5) / map_h, c);
         fill(img, bar_x, map_y + y, bar_x + kBarWidth, map_y + y + 1, c);
     }
-    for (int i = 0; i <= 4; ++i) {
-        const int y = map_y + static_cast<int>(std::lround((map_h - 1) * (1.0 - i / 4.0)));
+    for (int i = 0; i < tick_count; ++i) {
+        const int y = map_y + static_cast<int>(std::lround((map_h - 1) * (1.0 - tick_at[static_cast<size_t>(i)])));
         fill(img, bar_x + kBarWidth, y, bar_x + kBarWidth + 4, y + 1, kInk);
         draw_text(img, bar_x + kBarWidth + 6, std::clamp(y - 3, map_y - 3, map_y + map_h - 4), ticks[static_cast<size_t>(i)], kInk);
     }

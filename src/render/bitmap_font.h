@@ -1,5 +1,5 @@
 #pragma once
-// A small built-in 5x7 pixel font (printable ASCII) for labelling images the program draws
+// A small built-in 5x7 pixel font (8 rows with descenders) (printable ASCII) for labelling images the program draws
 // itself (detector maps and their colour bars), so no font files or libraries are needed.
 
 #include <string>
@@ -8,7 +8,7 @@
 
 namespace lenslab {
 
-inline constexpr int kGlyphWidth = 5, kGlyphHeight = 7;
+inline constexpr int kGlyphWidth = 5, kGlyphHeight = 8;  // row 7: descenders
 // Pixels from one character's left edge to the next's, at scale 1.
 inline constexpr int kGlyphAdvance = kGlyphWidth + 1;
 
