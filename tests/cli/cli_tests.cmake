@@ -110,7 +110,7 @@ lenslab_cli_test(NAME detect.focus_scene
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=peak irradiance" -DOUTPUT=${detect_dir}/focal_plane.png
            -DOUTPUT_CREATED=ON)
 lenslab_cli_test(NAME detect.json
-    ARGS detect scenes/detector_focus.json -o ${LENSLAB_CLI_OUT}/detect_json --photons 5000 --json -q
+    ARGS detect scenes/detector_focus.json -o ${LENSLAB_CLI_OUT}/detect_json --photons 5000 --log --json -q
     CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DSTDOUT_CONTAINS=\"total_power\"")
 # A scene without a detector, or with a bad one: one line, exit 1, nothing written.
 set(no_detector_dir ${LENSLAB_CLI_OUT}/detect_none)
