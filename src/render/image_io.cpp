@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 
 namespace lenslab {
@@ -64,7 +65,60 @@ void write_exr(const Film& film, const std::string& path, double scale) {
     }
 }
 
+// Writes through `write` to a temporary file beside `path`, then renames it over `path`, so
+// an interrupted write never leaves a half file.
+template <class Write>
+void write_atomically(const std::string& path, Write write) {
+    const std::string ext = std::filesystem::path(path).extension().string();
+    const std::string tmp = path + ".tmp" + ext;
+    try {
+        write(tmp);
+    } catch (...) {
+        std::error_code ec;
+        std::filesystem::remove(tmp, ec);
+        throw;
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ec);
+        throw ImageError("cannot write '" + path + "': " + ec.message());
+    }
+}
+
 }  // namespace
+
+void write_png_image(const Image8& image, const std::string& path) {
+    write_atomically(path, [&](const std::string& tmp) { write_png(image, tmp); });
+}
+
+void write_exr_channels(int width, int height, const std::vector<ExrChannel>& channels, const std::string& path) {
+    write_atomically(path, [&](const std::string& tmp) {
+        try {
+            Imf::Header header(width, height);
+            for (const ExrChannel& c : channels) header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+            Imf::OutputFile file(tmp.c_str(), header);
+            Imf::FrameBuffer fb;
+            const size_t xs = sizeof(float), ys = sizeof(float) * static_cast<size_t>(width);
+            for (const ExrChannel& c : channels) {
+                fb.insert(c.name, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(c.values.data())), xs, ys));
+            }
+            file.setFrameBuffer(fb);
+            file.writePixels(height);
+        } catch (const std::exception& e) {
+            throw ImageError("cannot write EXR '" + path + "': " + e.what());
+        }
+    });
+}
+
+void write_text_file(const std::string& text, const std::string& path) {
+    write_atomically(path, [&](const std::string& tmp) {
+        std::ofstream out(tmp, std::ios::binary);
+        out << text;
+        out.close();
+        if (!out) throw ImageError("cannot write '" + path + "'");
+    });
+}
 
 double linear_to_srgb(double v) {
     if (!(v > 0.0)) return 0.0;

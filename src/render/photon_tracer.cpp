@@ -36,12 +36,14 @@ struct EmittedPhoton {
     const Spectrum* spectrum;  // spectral flux shape of its light
     double scale;              // this photon's share of it
     double lambda_nm = 0;      // 0 until a dispersive refraction picks one
+    double lambda_pdf = 0;     // density (per nm) it was picked with
 
     void pick_wavelength(Rng& rng) {
         double nm;
         const double pdf = spectrum->sample_wavelength(rng.uniform(), nm);
         power = sample_to_rgb(spectrum->eval(nm) * scale, nm, pdf);
         lambda_nm = nm;
+        lambda_pdf = pdf;
     }
 };
 
@@ -100,11 +102,16 @@ Photon make_photon(const Vec3& p, const Rgb& power, const Vec3& towards, PhotonK
 // material's weights: diffuse (store; power / p_diffuse keeps the estimate unbiased),
 // one of the specular branches (power unchanged: its weight equals its probability), or
 // absorption.
-Photon trace_one(const Scene& scene, EmittedPhoton e, int max_depth, Rng& rng) {
+// `on_arrival`, if given, sees the photon at every surface before the material acts.
+Photon trace_one(const Scene& scene, EmittedPhoton e, int max_depth, Rng& rng,
+                 const PhotonArrivalFn* on_arrival = nullptr, int light = 0) {
     Ray ray = e.ray;
     for (int depth = 0; depth <= max_depth; ++depth) {
         Interaction it;
         if (!next_interaction(scene, ray, e.lambda_nm > 0 ? e.lambda_nm : kLineD, it)) break;
+        if (on_arrival) {
+            (*on_arrival)(PhotonArrival{&it, ray.direction, light, depth, e.spectrum, e.scale, e.lambda_nm, e.lambda_pdf});
+        }
         if (e.lambda_nm == 0 && it.scattering.dispersive) {
             e.pick_wavelength(rng);
             it.scattering = scatter_at(it, ray.direction, e.lambda_nm);
@@ -200,6 +207,16 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
         stats->memory_bytes = map.memory_bytes();
     }
     return map;
+}
+
+void trace_photon_path(const Scene& scene, const PhotonTracingSettings& settings, int light, int64_t index,
+                       const PhotonArrivalFn& on_arrival) {
+    // The stream and the draws of trace_photons' slot for this photon; the colour only
+    // feeds the stored RGB power, which nothing reads here.
+    const int64_t slot = light * settings.photons_per_light + index;
+    Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(slot));
+    const EmittedPhoton e = emit(scene, light, Rgb{}, settings.photons_per_light, rng);
+    (void)trace_one(scene, e, settings.max_depth, rng, &on_arrival, light);
 }
 
 }  // namespace lenslab

@@ -3,19 +3,21 @@
 // from it. Immutable once built; renders and traces only read it.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "accel/bvh.h"
 #include "geometry/sphere.h"
 #include "scene/camera_settings.h"
+#include "scene/detector_settings.h"
 #include "scene/light.h"
 #include "scene/material.h"
 #include "scene/render_settings.h"
 
 namespace lenslab {
 
-enum class ObjectType { Sphere, Triangle, Lens, Mesh, Implicit };  // Mesh: a mesh or a prism
+enum class ObjectType { Sphere, Triangle, Lens, Mesh, Implicit, Disc, Rectangle };  // Mesh: a mesh or a prism
 
 struct SceneObject {
     std::string name;  // the user's `name`, or the JSON path "objects[i]"
@@ -25,6 +27,8 @@ struct SceneObject {
     int source = -1;   // index of the scene file's `objects` entry it came from (a lens group
                        // makes several objects)
     std::string group;  // the lens group's name, for its elements
+    // Set when the object is a detector (triangles, discs and rectangles only).
+    std::optional<DetectorSettings> detector;
 };
 
 // An emitting sphere: the report's light source.

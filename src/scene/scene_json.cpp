@@ -15,6 +15,7 @@
 #include "scene/json_reader.h"
 #include "scene/lens_group_json.h"
 #include "scene/mesh_json.h"
+#include "scene/planar_json.h"
 #include "scene/spectral_json.h"
 #include "scene/surface_json.h"
 
@@ -276,7 +277,13 @@ SceneObject read_object(const json& j, const std::string& path,
         keys.insert(keys.end(), {"center", "radius"});
     } else if (type == "triangle") {
         o.type = ObjectType::Triangle;
-        keys.insert(keys.end(), {"vertices"});
+        keys.insert(keys.end(), {"vertices", "detector"});
+    } else if (type == "disc") {
+        o.type = ObjectType::Disc;
+        keys.insert(keys.end(), disc_keys().begin(), disc_keys().end());
+    } else if (type == "rectangle") {
+        o.type = ObjectType::Rectangle;
+        keys.insert(keys.end(), rectangle_keys().begin(), rectangle_keys().end());
     } else if (type == "lens") {
         o.type = ObjectType::Lens;
         keys.insert(keys.end(), {"center", "axis", "curvature_radius", "aperture_radius",
@@ -290,7 +297,10 @@ SceneObject read_object(const json& j, const std::string& path,
         keys.insert(keys.end(), {"center", "formula", "bounds", "steps"});
     } else {
         throw SceneError(path + ".type", "unknown object type '" + type +
-                                             "' (known: sphere, triangle, lens, lens_group, mesh, prism, implicit)");
+                                             "' (known: sphere, triangle, disc, rectangle, lens, lens_group, mesh, prism, implicit)");
+    }
+    if (o.type != ObjectType::Triangle && o.type != ObjectType::Disc && o.type != ObjectType::Rectangle) {
+        check_detector_allowed(j, path, type);
     }
     JsonObjectReader r(j, path, keys, (type == "implicit" ? "an " : "a ") + type);
     o.name = r.string("name", path);
@@ -304,6 +314,11 @@ SceneObject read_object(const json& j, const std::string& path,
             o.shape = type == "mesh" ? read_mesh(r, base_dir) : read_prism(r);
             break;
         case ObjectType::Implicit: o.shape = read_implicit(r); break;
+        case ObjectType::Disc: o.shape = read_disc(r); break;
+        case ObjectType::Rectangle: o.shape = read_rectangle(r); break;
+    }
+    if (o.type == ObjectType::Triangle || o.type == ObjectType::Disc || o.type == ObjectType::Rectangle) {
+        o.detector = read_detector(r);
     }
     o.material = read_material_ref(r, o.name, materials, all);
     if (o.type == ObjectType::Mesh) check_mesh_material(r, *o.shape, all[o.material]);

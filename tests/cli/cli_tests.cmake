@@ -155,3 +155,30 @@ lenslab_cli_test(NAME render.bad.lens_only_no_camera
     ARGS render ${analyze_data}/lens_only.json -o ${LENSLAB_CLI_OUT}/lens_only.png
     CHECKS -DEXPECT_EXIT=1 "-DSTDERR_LINE=lenslab: error: ${analyze_data}/lens_only.json: camera: missing (required)"
            -DOUTPUT=${LENSLAB_CLI_OUT}/lens_only.png -DOUTPUT_CREATED=OFF)
+# `detect` measures the scene's detectors: a summary with units on stdout, and per detector
+# a CSV, an EXR and a false-colour PNG in the output folder.
+set(detect_dir ${LENSLAB_CLI_OUT}/detect_focus)
+lenslab_cli_test(NAME detect.focus_scene
+    ARGS detect scenes/detector_focus.json -o ${detect_dir} --photons 20000 --threads 2 -q
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=peak irradiance" -DOUTPUT=${detect_dir}/focal_plane.png
+           -DOUTPUT_CREATED=ON)
+lenslab_cli_test(NAME detect.json
+    ARGS detect scenes/detector_focus.json -o ${LENSLAB_CLI_OUT}/detect_json --photons 5000 --log --json -q
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DSTDOUT_CONTAINS=\"total_power\"")
+# A scene without a detector, or with a bad one: one line, exit 1, nothing written.
+set(no_detector_dir ${LENSLAB_CLI_OUT}/detect_none)
+lenslab_cli_test(NAME detect.no_detector
+    ARGS detect scenes/thick_lens_beam.json -o ${no_detector_dir}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_PREFIX=lenslab: error: scenes/thick_lens_beam.json: no detector in the scene"
+           -DOUTPUT=${no_detector_dir}/screen.png -DOUTPUT_CREATED=OFF)
+lenslab_cli_test(NAME detect.bad.detector_on_sphere
+    ARGS detect tests/scene/bad/detector_on_sphere.json -o ${LENSLAB_CLI_OUT}/detect_bad
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: tests/scene/bad/detector_on_sphere.json: objects[0].detector: only a triangle, disc or rectangle can be a detector (this is a sphere)")
+lenslab_cli_bad_scene(disc_up_parallel "objects[0].up: must not be parallel to normal")
+# Discs render like any other surface.
+set(disc_render_out ${LENSLAB_CLI_OUT}/detector_focus_render.png)
+lenslab_cli_test(NAME render.detector_focus
+    ARGS render scenes/detector_focus.json -o ${disc_render_out} --width 32 --height 20 --spp 1 --photons 2000 -q
+    CHECKS -DEXPECT_EXIT=zero -DOUTPUT=${disc_render_out} -DOUTPUT_CREATED=ON)
