@@ -59,6 +59,10 @@ PassWavelength::PassWavelength(const Scene& scene) : m_mixture(std::make_shared<
 double PassWavelength::sample(int pass, double rotation, double& pdf) const {
     double u = radical_inverse_base2(static_cast<uint32_t>(pass)) + rotation;
     if (u >= 1.0) u -= 1.0;
+    return draw(u, pdf);
+}
+
+double PassWavelength::draw(double u, double& pdf) const {
     double nm;
     pdf = m_mixture->sample_wavelength(u, nm);
     return nm;

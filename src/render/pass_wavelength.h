@@ -24,6 +24,8 @@ public:
     // Pass `pass`'s wavelength (nm) and the density it was drawn with (per nm). `rotation`
     // in [0, 1) shifts the van der Corput sequence (Cranley-Patterson rotation).
     double sample(int pass, double rotation, double& pdf) const;
+    // A wavelength from the same density for uniform `u` in [0, 1).
+    double draw(double u, double& pdf) const;
 
 private:
     std::shared_ptr<const Spectrum> m_mixture;

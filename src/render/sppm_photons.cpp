@@ -10,6 +10,7 @@
 #include "math/rng.h"
 #include "math/sampling.h"
 #include "optics/glass.h"
+#include "render/pass_wavelength.h"
 #include "render/photon_emission.h"
 #include "scene/interaction.h"
 
@@ -30,19 +31,30 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, int light, Rng& 
     Ray ray = start.ray;
     double power = start.scale;
     bool dispersed = false;
+    PhotonWavelength kind = PhotonWavelength::All;
+    double lambda = kLineD;
     const uint32_t chain = static_cast<uint32_t>(out.chains.size());
     uint16_t chain_length = 0;
     for (int depth = 0; depth <= s.max_depth; ++depth) {
         Interaction it;
-        if (!next_interaction(scene, ray, dispersed ? s.lambda_nm : kLineD, it)) return;
+        if (!next_interaction(scene, ray, lambda, it)) return;
         if (!dispersed && it.scattering.dispersive) {
-            // From here the path depends on wavelength: follow the pass's one.
+            // From here the path depends on wavelength: take one.
             dispersed = true;
-            double f = start.spectrum->eval(s.lambda_nm);
-            for (uint16_t k = 0; k < chain_length; ++k) f *= scene.materials[out.chains[chain + k]].albedo->eval(s.lambda_nm);
+            double pdf = s.lambda_pdf * s.pass_share;
+            if (rng.uniform() < s.pass_share) {
+                kind = PhotonWavelength::Pass;
+                lambda = s.lambda_nm;
+            } else {
+                kind = PhotonWavelength::Own;
+                lambda = s.wavelengths->draw(rng.uniform(), pdf);
+                pdf *= 1.0 - s.pass_share;
+            }
+            double f = start.spectrum->eval(lambda) / pdf;
+            for (uint16_t k = 0; k < chain_length; ++k) f *= scene.materials[out.chains[chain + k]].albedo->eval(lambda);
             power *= f;
             chain_length = 0;
-            it.scattering = scatter(*it.material, it.object->shape->is_closed(), ray.direction, it.normal(), s.lambda_nm);
+            it.scattering = scatter(*it.material, it.object->shape->is_closed(), ray.direction, it.normal(), lambda);
         }
         const Scattering& sc = it.scattering;
         const Material& m = *it.material;
@@ -57,10 +69,14 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, int light, Rng& 
             h.position[2] = static_cast<float>(p.z);
             encode_octahedral(facing, h.normal);
             h.power = static_cast<float>(power);
-            h.chain = chain;
-            h.chain_length = chain_length;
+            if (dispersed) {
+                h.lambda_nm = static_cast<float>(lambda);
+            } else {
+                h.chain = chain;
+                h.chain_length = chain_length;
+            }
             h.light = static_cast<uint16_t>(light);
-            h.dispersed = dispersed;
+            h.wavelength = kind;
             out.hits.push_back(h);
         }
         // One event with the material's weights as probabilities (Russian roulette); the
@@ -70,7 +86,7 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, int light, Rng& 
         if (u < survive) {
             power *= sc.diffuse / survive;
             if (dispersed) {
-                power *= m.albedo->eval(s.lambda_nm);
+                power *= m.albedo->eval(lambda);
             } else {
                 out.chains.push_back(static_cast<uint32_t>(it.object->material));
                 ++chain_length;
@@ -132,7 +148,7 @@ PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s, Re
         const uint32_t offset = static_cast<uint32_t>(chain_at[c]);
         for (size_t i = 0; i < outs[c].hits.size(); ++i) {
             PhotonHit h = outs[c].hits[i];
-            h.chain += offset;
+            if (h.wavelength == PhotonWavelength::All) h.chain += offset;
             pass.hits[hit_at[c] + i] = h;
         }
         std::copy(outs[c].chains.begin(), outs[c].chains.end(), pass.chains.begin() + static_cast<ptrdiff_t>(chain_at[c]));

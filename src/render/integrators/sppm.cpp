@@ -59,7 +59,9 @@ struct SppmIntegrator::Pixel {
 struct SppmIntegrator::VisiblePoint {
     Vec3 p, n;                   // n: the normal on the side the camera sees
     SampledWavelengths w;        // the pixel's wavelengths this pass
-    SampledSpectrum weight;      // path throughput * albedo / pi at w
+    double beta = 0;             // path throughput to the point
+    const Spectrum* albedo = nullptr;
+    SampledSpectrum weight;      // beta * albedo / pi at w
     double weight_pass = 0;      // the same at the pass wavelength
     double path_length = 0;      // camera to point, through mirrors and glass
     bool valid = false;          // the path reached a diffuse surface
@@ -146,6 +148,8 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, Visi
             vp.valid = true;
             vp.p = p;
             vp.n = facing;
+            vp.beta = beta;
+            vp.albedo = m.albedo.get();
             const int samples = scene.render.light_samples;
             vp.weight_pass = beta * m.albedo->eval(pass.lambda_nm) / kPi;
             if (vp.dispersed) {
@@ -204,10 +208,20 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     if (control.cancelled()) return false;
     const double camera_seconds = seconds_since(t0);
 
-    // 2. Photons.
+    // 2. Photons. Dispersed photons take the pass wavelength in proportion to the camera
+    // paths that went through dispersive glass (at least 10%, at most half, none if none).
+    size_t dispersed_points = 0, valid_points = 0;
+    for (const VisiblePoint& vp : points) {
+        valid_points += vp.valid;
+        dispersed_points += vp.valid && vp.dispersed;
+    }
+    const double pass_share =
+        dispersed_points == 0 ? 0.0 : std::clamp(double(dispersed_points) / double(valid_points), 0.1, 0.5);
     t0 = std::chrono::steady_clock::now();
-    const PhotonPass photons =
-        trace_photon_pass(scene, {r.pass_photons, r.max_depth, pass.seed, pass.lambda_nm}, control);
+    const PhotonPass photons = trace_photon_pass(scene,
+                                                 {r.pass_photons, r.max_depth, pass.seed, pass.lambda_nm,
+                                                  pass.lambda_pdf, pass_share, &m_pass_wavelength},
+                                                 control);
     if (control.cancelled()) return false;
     const double photon_seconds = seconds_since(t0);
 
@@ -247,16 +261,24 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
             if (!vp.valid) continue;
             for (int l = 0; l < lights && !vp.dispersed; ++l) light_at_w[l] = emitted_spectrum(scene, l).sample(vp.w);
             const double radius2 = px.radius * px.radius;
-            SampledSpectrum flux;    // at vp.w
+            SampledSpectrum flux;    // at vp.w, photons not dispersed
             double flux_pass = 0.0;  // at the pass wavelength
+            Rgb dispersed;           // photons at wavelengths of their own
             int64_t found = 0;
             grid.for_each_near(vp.p, px.radius, [&](size_t h) {
                 const PhotonHit& ph = hits[h];
                 if (length_squared(ph.pos() - vp.p) > radius2) return;
                 if (dot(decode_octahedral(ph.normal), vp.n) < kSameSurfaceCos) return;
                 ++found;
-                if (ph.dispersed) {
-                    flux_pass += ph.power;
+                if (ph.wavelength == PhotonWavelength::Pass) {
+                    // Dispersed photons at the pass wavelength light only camera paths
+                    // dispersed at it; the others only the rest (sppm_photons.h).
+                    if (vp.dispersed) flux_pass += ph.power * pass.lambda_pdf;
+                } else if (ph.wavelength == PhotonWavelength::Own) {
+                    if (!vp.dispersed) {
+                        const double nm = ph.lambda_nm;
+                        dispersed += sample_to_rgb(vp.beta * vp.albedo->eval(nm) / kPi * ph.power, nm, 1.0);
+                    }
                 } else if (vp.dispersed) {
                     double f = ph.power * light_at_pass[ph.light];
                     for (uint32_t k = 0; k < ph.chain_length; ++k) f *= albedo_at_pass[photons.chains[ph.chain + k]];
@@ -270,7 +292,7 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
                 }
             });
             if (found == 0) continue;
-            Rgb phi;
+            Rgb phi = dispersed;
             if (!vp.dispersed) phi += to_rgb(vp.weight * flux, vp.w);
             if (flux_pass != 0.0) phi += sample_to_rgb(vp.weight_pass * flux_pass, pass.lambda_nm, pass.lambda_pdf);
             // Hachisuka & Jensen 2009, eqs. 6 and 7 (and tau scaled with the disc's area).
