@@ -58,11 +58,9 @@ struct SppmIntegrator::Pixel {
 
 struct SppmIntegrator::VisiblePoint {
     Vec3 p, n;                   // n: the normal on the side the camera sees
-    SampledWavelengths w;        // the pixel's wavelengths this pass
+    double hero_u = 0;           // the pixel's wavelengths this pass: SampledWavelengths::sample(hero_u)
     double beta = 0;             // path throughput to the point
     const Spectrum* albedo = nullptr;
-    SampledSpectrum weight;      // beta * albedo / pi at w
-    double weight_pass = 0;      // the same at the pass wavelength
     double path_length = 0;      // camera to point, through mirrors and glass
     bool valid = false;          // the path reached a diffuse surface
     bool dispersed = false;      // it went through dispersive glass: pass wavelength only
@@ -103,18 +101,19 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, Visi
                Rng(scene.render.seed, kRotationStreamBase + pixel).uniform();
     if (u >= 1.0) u -= 1.0;
     vp = VisiblePoint{};
-    vp.w = SampledWavelengths::sample(u);
+    vp.hero_u = u;
+    const SampledWavelengths w = SampledWavelengths::sample(u);
     const double jx = rng.uniform(), jy = rng.uniform();
     Ray ray = pass.camera.generate_ray(x + jx, y + jy);
 
     double beta = 1.0;
-    SampledSpectrum found;  // at vp.w
+    SampledSpectrum found;  // at w
     double found_pass = 0;  // at the pass wavelength
     auto add = [&](const Spectrum& s) {
         if (vp.dispersed) {
             found_pass += beta * s.eval(pass.lambda_nm);
         } else {
-            found += s.sample(vp.w) * beta;
+            found += s.sample(w) * beta;
         }
     };
     for (int depth = 0; depth <= scene.render.max_depth; ++depth) {
@@ -151,17 +150,15 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, Visi
             vp.beta = beta;
             vp.albedo = m.albedo.get();
             const int samples = scene.render.light_samples;
-            vp.weight_pass = beta * m.albedo->eval(pass.lambda_nm) / kPi;
             if (vp.dispersed) {
                 const SampledWavelengths at_pass = SampledWavelengths::single(pass.lambda_nm);
                 double e = direct_irradiance(scene, p, facing, samples, at_pass, rng).v[0];
                 if (m_ambient) e += kPi * m_ambient->eval(pass.lambda_nm);
-                found_pass += vp.weight_pass * e;
+                found_pass += beta * m.albedo->eval(pass.lambda_nm) / kPi * e;
             } else {
-                vp.weight = m.albedo->sample(vp.w) * (beta / kPi);
-                SampledSpectrum e = direct_irradiance(scene, p, facing, samples, vp.w, rng);
-                if (m_ambient) e += m_ambient->sample(vp.w) * kPi;
-                found += vp.weight * e;
+                SampledSpectrum e = direct_irradiance(scene, p, facing, samples, w, rng);
+                if (m_ambient) e += m_ambient->sample(w) * kPi;
+                found += m.albedo->sample(w) * e * (beta / kPi);
             }
             break;
         }
@@ -176,7 +173,7 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, Visi
         }
         ray = {p, chosen->direction};
     }
-    vp.direct = to_rgb(found, vp.w);
+    vp.direct = to_rgb(found, w);
     if (found_pass != 0.0) vp.direct += sample_to_rgb(found_pass, pass.lambda_nm, pass.lambda_pdf);
 }
 
@@ -198,7 +195,8 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
 
     // 1. Camera paths to this pass's visible points.
     auto t0 = std::chrono::steady_clock::now();
-    std::vector<VisiblePoint> points(m_pixels.size());
+    std::vector<VisiblePoint>& points = m_points;
+    points.resize(m_pixels.size());
     tbb::parallel_for(tbb::blocked_range<int>(0, m_height, 1), [&](const tbb::blocked_range<int>& rows) {
         for (int y = rows.begin(); y != rows.end(); ++y) {
             if (control.cancelled()) return;
@@ -259,9 +257,10 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
             Pixel& px = m_pixels[i];
             px.direct += vp.direct;
             if (!vp.valid) continue;
-            for (int l = 0; l < lights && !vp.dispersed; ++l) light_at_w[l] = emitted_spectrum(scene, l).sample(vp.w);
+            const SampledWavelengths w = SampledWavelengths::sample(vp.hero_u);
+            for (int l = 0; l < lights && !vp.dispersed; ++l) light_at_w[l] = emitted_spectrum(scene, l).sample(w);
             const double radius2 = px.radius * px.radius;
-            SampledSpectrum flux;    // at vp.w, photons not dispersed
+            SampledSpectrum flux;    // at w, photons not dispersed
             double flux_pass = 0.0;  // at the pass wavelength
             Rgb dispersed;           // photons at wavelengths of their own
             int64_t found = 0;
@@ -286,15 +285,18 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
                 } else {
                     SampledSpectrum f = light_at_w[ph.light] * static_cast<double>(ph.power);
                     for (uint32_t k = 0; k < ph.chain_length; ++k) {
-                        f *= scene.materials[photons.chains[ph.chain + k]].albedo->sample(vp.w);
+                        f *= scene.materials[photons.chains[ph.chain + k]].albedo->sample(w);
                     }
                     flux += f;
                 }
             });
             if (found == 0) continue;
             Rgb phi = dispersed;
-            if (!vp.dispersed) phi += to_rgb(vp.weight * flux, vp.w);
-            if (flux_pass != 0.0) phi += sample_to_rgb(vp.weight_pass * flux_pass, pass.lambda_nm, pass.lambda_pdf);
+            if (!vp.dispersed) phi += to_rgb(vp.albedo->sample(w) * flux * (vp.beta / kPi), w);
+            if (flux_pass != 0.0) {
+                const double weight_pass = vp.beta * vp.albedo->eval(pass.lambda_nm) / kPi;
+                phi += sample_to_rgb(weight_pass * flux_pass, pass.lambda_nm, pass.lambda_pdf);
+            }
             // Hachisuka & Jensen 2009, eqs. 6 and 7 (and tau scaled with the disc's area).
             const double n_new = px.n + alpha * static_cast<double>(found);
             const double ratio = n_new / (px.n + static_cast<double>(found));

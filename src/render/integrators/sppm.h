@@ -63,6 +63,7 @@ private:
     PassWavelength m_pass_wavelength;
     SpectrumPtr m_ambient, m_background;  // null when black
     std::vector<Pixel> m_pixels;
+    std::vector<VisiblePoint> m_points;  // this pass's, kept to reuse the memory
     SppmStats m_stats;
 };
 
