@@ -26,6 +26,7 @@ struct ConvergenceArgs {
     std::string scene;
     std::string out_dir = "bench-sppm";
     ConvergenceSettings settings;
+    int64_t pass_photons = 0;  // 0: the scene's
 };
 
 bool have_gnuplot() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
@@ -64,7 +65,8 @@ bool plot_convergence(const std::filesystem::path& dir, const ConvergenceResult&
 }
 
 int run_convergence_bench(const ConvergenceArgs& a) {
-    const Scene scene = a.scene.empty() ? default_scene() : load_scene_file(a.scene);
+    Scene scene = a.scene.empty() ? default_scene() : load_scene_file(a.scene);
+    if (a.pass_photons > 0) scene.render.pass_photons = a.pass_photons;
     const std::filesystem::path dir(a.out_dir);
     std::filesystem::create_directories(dir);
     const ConvergenceResult r =
@@ -175,6 +177,8 @@ Action add_bench_command(CLI::App& app) {
         ->delimiter(',')->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 20));
     sppm->add_option("--path-spp", c.path_spp, "Path-tracing sample counts to compare with")
         ->delimiter(',')->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 20));
+    sppm->add_option("--pass-photons", conv->pass_photons, "Photons per light in each sppm pass (default: the scene's)")
+        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 30));
     sppm->add_option("--threads", c.threads, "Worker threads (default: all cores)")->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
 
     // Both subcommands share the one action; CLI11 says which was chosen.

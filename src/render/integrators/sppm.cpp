@@ -96,8 +96,10 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, Visi
     const uint64_t pixel = uint64_t(y) * uint64_t(m_width) + uint64_t(x);
     Rng rng(pass.seed, pixel);
     // The pixel's hero wavelength runs through the van der Corput sequence over the passes,
-    // rotated per pixel: stratified in each pixel, uncorrelated between pixels.
-    double u = radical_inverse_base2(static_cast<uint32_t>(pass.index)) +
+    // rotated per pixel: stratified in each pixel, uncorrelated between pixels. The four
+    // wavelengths are a quarter of the range apart, so the sequence is squeezed into one
+    // quarter: 4 passes then give 16 evenly spread wavelengths, not the same 4 four times.
+    double u = radical_inverse_base2(static_cast<uint32_t>(pass.index)) / kWavelengthSamples +
                Rng(scene.render.seed, kRotationStreamBase + pixel).uniform();
     if (u >= 1.0) u -= 1.0;
     vp = VisiblePoint{};
