@@ -42,7 +42,7 @@ struct RenderSettings {
     // `passes` passes or `time` seconds, whichever comes first (0: no limit of that kind).
     int passes = 64;
     double time = 0;                  // seconds
-    int64_t pass_photons = 100000;    // photons emitted per light in each pass
+    int64_t pass_photons = 0;         // photons emitted per light in each pass; 0 = auto (pixels / lights)
     double initial_radius = 0;        // 0 = auto, from the pixel footprint and the scene's size
     double alpha = 2.0 / 3.0;         // share of each pass's photons kept as the radius shrinks
 };

@@ -95,7 +95,7 @@ void read_render(const json& j, RenderSettings& s) {
     if (s.passes == 0 && s.time == 0.0) {
         throw SceneError("render.passes", "0 means no pass limit, which needs a time budget: give render.time > 0");
     }
-    s.pass_photons = r.integer("pass_photons", s.pass_photons, 1, int64_t{1} << 30);
+    s.pass_photons = r.integer("pass_photons", s.pass_photons, 0, int64_t{1} << 30);
     s.initial_radius = r.positive("initial_radius", s.initial_radius);
     s.alpha = r.number("alpha", s.alpha);
     if (!(s.alpha > 0.0 && s.alpha < 1.0)) {

@@ -53,7 +53,7 @@ const BadScene kBadScenes[] = {
      "0 means no pass limit, which needs a time budget: give render.time > 0"},
     {"render_alpha_one.json", "render.alpha", "must be between 0 and 1 (exclusive), got 1"},
     {"render_time_negative.json", "render.time", "must be >= 0 seconds (0: no time limit), got -5"},
-    {"render_pass_photons_zero.json", "render.pass_photons", "must be between 1 and 1073741824, got 0"},
+    {"render_pass_photons_negative.json", "render.pass_photons", "must be between 0 and 1073741824, got -5"},
     {"render_initial_radius_negative.json", "render.initial_radius", "must be > 0, got -0.01"},
     // Materials.
     {"unknown_material_name.json", "objects[0].material",

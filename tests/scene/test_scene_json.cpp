@@ -40,7 +40,7 @@ TEST(SceneJson, SppmSettings) {
     const Scene defaults = parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}})");
     EXPECT_EQ(defaults.render.passes, 64);
     EXPECT_EQ(defaults.render.time, 0.0);
-    EXPECT_EQ(defaults.render.pass_photons, 100000);
+    EXPECT_EQ(defaults.render.pass_photons, 0);  // auto
     EXPECT_EQ(defaults.render.initial_radius, 0.0);
     EXPECT_DOUBLE_EQ(defaults.render.alpha, 2.0 / 3.0);
     const Scene s = parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},

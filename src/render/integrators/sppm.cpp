@@ -86,6 +86,14 @@ SppmIntegrator::SppmIntegrator(const Scene& scene)
 
 SppmIntegrator::~SppmIntegrator() = default;
 
+int64_t SppmIntegrator::pass_photons() const {
+    if (m_scene.render.pass_photons > 0) return m_scene.render.pass_photons;
+    // As many photons as pixels (pbrt-v4's default): a pass then spends about as long on
+    // photons as on camera paths.
+    const int lights = std::max(1, photon_light_count(m_scene));
+    return std::max<int64_t>(1, int64_t(m_width) * m_height / lights);
+}
+
 double SppmIntegrator::auto_radius(double path_length) const {
     const double r = std::min(kFootprints * path_length * m_pixel_angle, m_radius_cap);
     return std::max(r, 1e-6 * m_radius_cap);
@@ -183,10 +191,10 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     const Scene& scene = m_scene;
     const RenderSettings& r = scene.render;
     if (m_stats.passes == 0) {
-        const uint64_t need = photon_pass_bytes(scene, r.pass_photons);
+        const uint64_t need = photon_pass_bytes(scene, pass_photons());
         const uint64_t have = available_memory_bytes();
         if (need > have / 10 * 8) {
-            throw ResourceError("pass_photons: " + std::to_string(r.pass_photons) + " photons per light need up to " +
+            throw ResourceError("pass_photons: " + std::to_string(pass_photons()) + " photons per light need up to " +
                                 std::to_string(need / (1024 * 1024)) + " MiB per pass, but only " +
                                 std::to_string(have / (1024 * 1024)) + " MiB of memory is available; use fewer");
         }
@@ -219,7 +227,7 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
         dispersed_points == 0 ? 0.0 : std::clamp(double(dispersed_points) / double(valid_points), 0.1, 0.5);
     t0 = std::chrono::steady_clock::now();
     const PhotonPass photons = trace_photon_pass(scene,
-                                                 {r.pass_photons, r.max_depth, pass.seed, pass.lambda_nm,
+                                                 {pass_photons(), r.max_depth, pass.seed, pass.lambda_nm,
                                                   pass.lambda_pdf, pass_share, &m_pass_wavelength},
                                                  control);
     if (control.cancelled()) return false;

@@ -55,6 +55,7 @@ private:
 
     void trace_camera_path(int x, int y, const PassState& pass, VisiblePoint& vp) const;
     double auto_radius(double path_length) const;
+    int64_t pass_photons() const;
 
     const Scene& m_scene;
     int m_width, m_height;
