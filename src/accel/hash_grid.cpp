@@ -26,7 +26,8 @@ HashGrid::HashGrid(size_t count, const std::function<Vec3(size_t)>& position, do
     std::vector<uint64_t> key_of(count);
     m_starts.assign(buckets + 1, 0);
     for (size_t i = 0; i < count; ++i) {
-        const int x = coordinate(points[i].x, 0), y = coordinate(points[i].y, 1), z = coordinate(points[i].z, 2);
+        const int x = coordinate(points[i].x, 0), y = coordinate(points[i].y, 1),
+                  z = coordinate(points[i].z, 2);
         key_of[i] = pack(x, y, z);
         bucket_of[i] = bucket(x, y, z);
         ++m_starts[bucket_of[i] + 1];

@@ -74,8 +74,8 @@ private:
     }
     uint32_t bucket(int x, int y, int z) const {
         // Teschner et al.'s primes.
-        return static_cast<uint32_t>((uint64_t(x) * 73856093u ^ uint64_t(y) * 19349663u ^ uint64_t(z) * 83492791u) &
-                                     m_mask);
+        return static_cast<uint32_t>(
+            (uint64_t(x) * 73856093u ^ uint64_t(y) * 19349663u ^ uint64_t(z) * 83492791u) & m_mask);
     }
 
     Vec3 m_origin;

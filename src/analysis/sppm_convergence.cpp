@@ -81,8 +81,8 @@ ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings&
         ConvergencePoint p{integrator, amount, seconds, block_relative_error(film, r.reference),
                            rms_relative_error(film, r.reference)};
         r.points.push_back(p);
-        log(format("%s %d: %.3f s, block error %.4f, rms error %.4f", integrator.c_str(), amount, seconds,
-                   p.block_error, p.rms_error));
+        log(format("%s %d: %.3f s, block error %.4f, rms error %.4f", integrator.c_str(), amount,
+                   seconds, p.block_error, p.rms_error));
     };
 
     Scene sppm = base;
@@ -115,8 +115,8 @@ std::string convergence_csv(const ConvergenceResult& r) {
     std::ostringstream out;
     out << "integrator,passes_or_spp,seconds,block_error,rms_error\n";
     for (const ConvergencePoint& p : r.points) {
-        out << p.integrator << "," << p.amount << "," << p.seconds << "," << p.block_error << "," << p.rms_error
-            << "\n";
+        out << p.integrator << "," << p.amount << "," << p.seconds << "," << p.block_error << ","
+            << p.rms_error << "\n";
     }
     return out.str();
 }

@@ -20,12 +20,14 @@ public:
         for (int l = 0; l < lights; ++l) {
             const Spectrum& s = emitted_spectrum(scene, l);
             double power = 0.0;
-            for (double nm = kLambdaMinNm + 0.125; nm < kLambdaMaxNm; nm += 0.25) power += s.eval(nm) * 0.25;
+            for (double nm = kLambdaMinNm + 0.125; nm < kLambdaMaxNm; nm += 0.25)
+                power += s.eval(nm) * 0.25;
             if (power > 0.0) m_parts.push_back({&s, 1.0 / power});
         }
         const double range = kLambdaMaxNm - kLambdaMinNm;
         m_uniform = m_parts.empty() ? 1.0 / range : kUniformShare / range;
-        for (Part& p : m_parts) p.scale *= (1.0 - kUniformShare) / static_cast<double>(m_parts.size());
+        for (Part& p : m_parts)
+            p.scale *= (1.0 - kUniformShare) / static_cast<double>(m_parts.size());
     }
     double eval(double nm) const override {
         if (nm < kLambdaMinNm || nm > kLambdaMaxNm) return 0.0;
@@ -54,7 +56,8 @@ double radical_inverse_base2(uint32_t i) {
     return static_cast<double>(i) * 0x1p-32;
 }
 
-PassWavelength::PassWavelength(const Scene& scene) : m_mixture(std::make_shared<LightMixture>(scene)) {}
+PassWavelength::PassWavelength(const Scene& scene)
+    : m_mixture(std::make_shared<LightMixture>(scene)) {}
 
 double PassWavelength::sample(int pass, double rotation, double& pdf) const {
     double u = radical_inverse_base2(static_cast<uint32_t>(pass)) + rotation;

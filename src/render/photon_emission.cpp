@@ -8,7 +8,8 @@
 namespace lenslab {
 
 int photon_light_count(const Scene& scene) {
-    return static_cast<int>(scene.emitters().size() + scene.point_lights.size() + scene.beams.size());
+    return static_cast<int>(scene.emitters().size() + scene.point_lights.size() +
+                            scene.beams.size());
 }
 
 const Spectrum& emitted_spectrum(const Scene& scene, int light) {
@@ -27,9 +28,12 @@ PhotonStart emit_photon(const Scene& scene, int light, int64_t n, Rng& rng) {
     if (light < spheres) {
         const Sphere& sphere = *scene.emitters()[light].sphere;
         const Vec3 normal = sample_uniform_sphere(rng.uniform(), rng.uniform());
-        const Vec3 dir = Frame::from_axis(normal).to_world(sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
+        const Vec3 dir = Frame::from_axis(normal).to_world(
+            sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
         const double area = 4.0 * std::numbers::pi * sphere.radius() * sphere.radius();
-        return {{sphere.centre() + normal * sphere.radius(), dir}, spectrum, std::numbers::pi * area * inv_n};
+        return {{sphere.centre() + normal * sphere.radius(), dir},
+                spectrum,
+                std::numbers::pi * area * inv_n};
     }
     if (light < spheres + points) {
         const PointLight& l = scene.point_lights[light - spheres];

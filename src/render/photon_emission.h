@@ -14,7 +14,7 @@ namespace lenslab {
 struct PhotonStart {
     Ray ray;
     const Spectrum* spectrum = nullptr;  // spectral flux of its light (W per nm, before `scale`)
-    double scale = 0;                    // this photon's share: the flux it carries is spectrum * scale
+    double scale = 0;  // this photon's share: the flux it carries is spectrum * scale
 };
 
 // Number of light sources that emit photons: emitting spheres, point lights, beams.

@@ -5,10 +5,13 @@
 
 namespace lenslab {
 
-bool ProgressiveIntegrator::render(const Scene& scene, const Camera&, Film& film, RenderControl& control) {
+bool ProgressiveIntegrator::render(const Scene& scene, const Camera&, Film& film,
+                                   RenderControl& control) {
     const RenderSettings& r = scene.render;
     const auto start = std::chrono::steady_clock::now();
-    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
     // passes == 0 means no pass limit (the scene reader then requires a time budget).
     while (r.passes == 0 || passes() < r.passes) {
         // A pass that has begun is finished; the budget is checked between passes, and the

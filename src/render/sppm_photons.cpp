@@ -26,7 +26,8 @@ struct ChunkOut {
     std::vector<uint32_t> chains;
 };
 
-void trace_one(const Scene& scene, const PhotonPassSettings& s, int light, Rng& rng, ChunkOut& out) {
+void trace_one(const Scene& scene, const PhotonPassSettings& s, int light, Rng& rng,
+               ChunkOut& out) {
     const PhotonStart start = emit_photon(scene, light, s.photons_per_light, rng);
     Ray ray = start.ray;
     double power = start.scale;
@@ -51,10 +52,12 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, int light, Rng& 
                 pdf *= 1.0 - s.pass_share;
             }
             double f = start.spectrum->eval(lambda) / pdf;
-            for (uint16_t k = 0; k < chain_length; ++k) f *= scene.materials[out.chains[chain + k]].albedo->eval(lambda);
+            for (uint16_t k = 0; k < chain_length; ++k)
+                f *= scene.materials[out.chains[chain + k]].albedo->eval(lambda);
             power *= f;
             chain_length = 0;
-            it.scattering = scatter(*it.material, it.object->shape->is_closed(), ray.direction, it.normal(), lambda);
+            it.scattering = scatter(*it.material, it.object->shape->is_closed(), ray.direction,
+                                    it.normal(), lambda);
         }
         const Scattering& sc = it.scattering;
         const Material& m = *it.material;
@@ -91,7 +94,8 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, int light, Rng& 
                 out.chains.push_back(static_cast<uint32_t>(it.object->material));
                 ++chain_length;
             }
-            ray = {it.point(), Frame::from_axis(facing).to_world(sample_cosine_hemisphere(rng.uniform(), rng.uniform()))};
+            ray = {it.point(), Frame::from_axis(facing).to_world(
+                                   sample_cosine_hemisphere(rng.uniform(), rng.uniform()))};
             continue;
         }
         u -= survive;
@@ -110,30 +114,33 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, int light, Rng& 
 uint64_t photon_pass_bytes(const Scene& scene, int64_t photons_per_light) {
     // A photon leaves on average a few hits (one per diffuse bounce after the first); four
     // per photon bounds what the scenes here need with room to spare.
-    const long double bytes = static_cast<long double>(photons_per_light) * photon_light_count(scene) *
+    const long double bytes = static_cast<long double>(photons_per_light) *
+                              photon_light_count(scene) *
                               (4 * sizeof(PhotonHit) + 4 * sizeof(uint32_t));
     return bytes > 1.8e19L ? UINT64_MAX : static_cast<uint64_t>(bytes);
 }
 
-PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s, RenderControl& control) {
+PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s,
+                             RenderControl& control) {
     const int lights = photon_light_count(scene);
     const int64_t n = s.photons_per_light;
     const int64_t chunks_per_light = (n + kChunk - 1) / kChunk;
     const int64_t chunks = chunks_per_light * lights;
     std::vector<ChunkOut> outs(static_cast<size_t>(chunks));
-    tbb::parallel_for(tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
-        for (int64_t c = r.begin(); c != r.end(); ++c) {
-            if (control.cancelled()) return;
-            const int light = static_cast<int>(c / chunks_per_light);
-            const int64_t first = (c % chunks_per_light) * kChunk;
-            const int64_t last = std::min(n, first + kChunk);
-            ChunkOut& out = outs[static_cast<size_t>(c)];
-            for (int64_t i = first; i < last; ++i) {
-                Rng rng(s.seed, kPhotonStreamBase + static_cast<uint64_t>(light * n + i));
-                trace_one(scene, s, light, rng, out);
+    tbb::parallel_for(
+        tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
+            for (int64_t c = r.begin(); c != r.end(); ++c) {
+                if (control.cancelled()) return;
+                const int light = static_cast<int>(c / chunks_per_light);
+                const int64_t first = (c % chunks_per_light) * kChunk;
+                const int64_t last = std::min(n, first + kChunk);
+                ChunkOut& out = outs[static_cast<size_t>(c)];
+                for (int64_t i = first; i < last; ++i) {
+                    Rng rng(s.seed, kPhotonStreamBase + static_cast<uint64_t>(light * n + i));
+                    trace_one(scene, s, light, rng, out);
+                }
             }
-        }
-    });
+        });
     PhotonPass pass;
     if (control.cancelled()) return pass;
     // Concatenate in chunk order: the same hits in the same order for any thread count.
@@ -151,7 +158,8 @@ PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s, Re
             if (h.wavelength == PhotonWavelength::All) h.chain += offset;
             pass.hits[hit_at[c] + i] = h;
         }
-        std::copy(outs[c].chains.begin(), outs[c].chains.end(), pass.chains.begin() + static_cast<ptrdiff_t>(chain_at[c]));
+        std::copy(outs[c].chains.begin(), outs[c].chains.end(),
+                  pass.chains.begin() + static_cast<ptrdiff_t>(chain_at[c]));
     });
     pass.emitted = n * lights;
     return pass;

@@ -33,11 +33,11 @@ enum class PhotonWavelength : uint8_t {
 
 struct PhotonHit {
     float position[3];
-    uint16_t normal[2];     // octahedral: the surface normal on the side the photon arrived on
-    float power;            // flux factor; dispersed: flux at its wavelength / that one's density
+    uint16_t normal[2];  // octahedral: the surface normal on the side the photon arrived on
+    float power;         // flux factor; dispersed: flux at its wavelength / that one's density
     union {
-        uint32_t chain;     // not dispersed: first of its diffuse bounces in PhotonPass::chains
-        float lambda_nm;    // dispersed: its wavelength
+        uint32_t chain;   // not dispersed: first of its diffuse bounces in PhotonPass::chains
+        float lambda_nm;  // dispersed: its wavelength
     };
     uint16_t chain_length;  // 0 when dispersed (the bounces are folded into `power`)
     uint16_t light;         // index as in emitted_spectrum()
@@ -59,17 +59,18 @@ struct PhotonPass {
 
 struct PhotonPassSettings {
     int64_t photons_per_light = 100000;
-    int max_depth = 8;        // surfaces a photon meets before it is dropped
-    uint64_t seed = 1;        // this pass's seed
-    double lambda_nm = 550;   // the pass wavelength
-    double lambda_pdf = 1;    // its density
-    double pass_share = 0;    // probability that a dispersed photon takes the pass wavelength
+    int max_depth = 8;       // surfaces a photon meets before it is dropped
+    uint64_t seed = 1;       // this pass's seed
+    double lambda_nm = 550;  // the pass wavelength
+    double lambda_pdf = 1;   // its density
+    double pass_share = 0;   // probability that a dispersed photon takes the pass wavelength
     const class PassWavelength* wavelengths = nullptr;  // where dispersed photons draw their own
 };
 
 // Deterministic for a given seed at any thread count (one random stream per photon, hits
 // gathered in photon order). Returns an empty pass when `control` was cancelled.
-PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& settings, RenderControl& control);
+PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& settings,
+                             RenderControl& control);
 
 // Bytes one pass may need at most for its hits, to refuse a count that cannot fit.
 uint64_t photon_pass_bytes(const Scene& scene, int64_t photons_per_light);

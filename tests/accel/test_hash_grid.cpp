@@ -14,13 +14,15 @@ namespace {
 std::vector<Vec3> random_points(size_t n, double spread, uint64_t seed) {
     Rng rng(seed, 0);
     std::vector<Vec3> p(n);
-    for (Vec3& v : p) v = {rng.uniform() * spread, rng.uniform() * spread, rng.uniform() * spread * 0.1};
+    for (Vec3& v : p)
+        v = {rng.uniform() * spread, rng.uniform() * spread, rng.uniform() * spread * 0.1};
     return p;
 }
 
 TEST(HashGrid, FindsEveryPointWithinTheRadiusOnce) {
     const std::vector<Vec3> points = random_points(20000, 10.0, 1);
-    const HashGrid grid(points.size(), [&](size_t i) { return points[i]; }, 0.3);
+    const HashGrid grid(
+        points.size(), [&](size_t i) { return points[i]; }, 0.3);
     ASSERT_EQ(grid.size(), points.size());
     Rng rng(2, 0);
     for (int q = 0; q < 300; ++q) {
@@ -41,7 +43,8 @@ TEST(HashGrid, FindsEveryPointWithinTheRadiusOnce) {
 
 TEST(HashGrid, ReorderPutsDataInSlotOrder) {
     const std::vector<Vec3> points = random_points(1000, 1.0, 3);
-    const HashGrid grid(points.size(), [&](size_t i) { return points[i]; }, 0.1);
+    const HashGrid grid(
+        points.size(), [&](size_t i) { return points[i]; }, 0.1);
     std::vector<size_t> index(points.size());
     for (size_t i = 0; i < index.size(); ++i) index[i] = i;
     const std::vector<size_t> ordered = grid.reorder(index);
@@ -53,7 +56,8 @@ TEST(HashGrid, ReorderPutsDataInSlotOrder) {
 TEST(HashGrid, HugeSpreadEnlargesTheCells) {
     // 2^21 cells per axis at most: points 1e7 apart with 1e-3 cells would need 1e10.
     const std::vector<Vec3> points{{0, 0, 0}, {1e7, 0, 0}, {1e7, 1e7, 1e7}, {0.5, 0, 0}};
-    const HashGrid grid(points.size(), [&](size_t i) { return points[i]; }, 1e-3);
+    const HashGrid grid(
+        points.size(), [&](size_t i) { return points[i]; }, 1e-3);
     EXPECT_GE(grid.cell_size(), 1e7 / (1 << 21));
     std::set<size_t> found;
     grid.for_each_near({1e7, 1e7, 1e7}, 1.0, [&](size_t slot) { found.insert(grid.item(slot)); });
@@ -61,7 +65,8 @@ TEST(HashGrid, HugeSpreadEnlargesTheCells) {
 }
 
 TEST(HashGrid, EmptyGridVisitsNothing) {
-    const HashGrid grid(0, [](size_t) { return Vec3{}; }, 1.0);
+    const HashGrid grid(
+        0, [](size_t) { return Vec3{}; }, 1.0);
     int visits = 0;
     grid.for_each_near({0, 0, 0}, 10.0, [&](size_t) { ++visits; });
     EXPECT_EQ(visits, 0);

@@ -159,8 +159,12 @@ TEST_F(SppmAgainstPath, AgreesWithThePathTracer) {
     // images agree within 3%: over the whole image, in the caustic, and block by block.
     const Film& sppm = s_sppm->back();
     const Film& path = *s_path;
-    EXPECT_LT(relative_difference(mean_luminance(sppm, whole(sppm)), mean_luminance(path, whole(path))), 0.03);
-    EXPECT_LT(relative_difference(mean_luminance(sppm, caustic_box()), mean_luminance(path, caustic_box())), 0.03);
+    EXPECT_LT(
+        relative_difference(mean_luminance(sppm, whole(sppm)), mean_luminance(path, whole(path))),
+        0.03);
+    EXPECT_LT(relative_difference(mean_luminance(sppm, caustic_box()),
+                                  mean_luminance(path, caustic_box())),
+              0.03);
     EXPECT_LT(block_difference(sppm, path), 0.03);
 }
 
@@ -200,7 +204,8 @@ TEST(Path, SameImageForAnyThreadCount) {
 // looking at its wall, with a point light of power P at the centre.
 std::string integrating_sphere(int spp) {
     return R"({"camera": {"position": [0, 0, 0.5], "look_at": [0, 0, -1], "fov": 1},
-      "render": {"width": 3, "height": 3, "spp": )" + std::to_string(spp) + R"(, "max_depth": 64,
+      "render": {"width": 3, "height": 3, "spp": )" +
+           std::to_string(spp) + R"(, "max_depth": 64,
                  "pass_photons": 50000, "passes": 16, "initial_radius": 0.08},
       "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": {"color": 0.5}}],
       "lights": [{"type": "point", "position": [0, 0, 0], "power": 100}]})";
@@ -218,24 +223,29 @@ double integrating_sphere_radiance() {
 
 TEST(Path, IntegratingSphereRadiance) {
     const Film f = render(parse_scene(integrating_sphere(1024)), "path").film;
-    EXPECT_NEAR(mean_luminance(f, whole(f)), integrating_sphere_radiance(), 0.02 * integrating_sphere_radiance());
+    EXPECT_NEAR(mean_luminance(f, whole(f)), integrating_sphere_radiance(),
+                0.02 * integrating_sphere_radiance());
 }
 
 TEST(Sppm, IntegratingSphereRadiance) {
     const Film f = render(parse_scene(integrating_sphere(1)), "sppm").film;
-    EXPECT_NEAR(mean_luminance(f, whole(f)), integrating_sphere_radiance(), 0.03 * integrating_sphere_radiance());
+    EXPECT_NEAR(mean_luminance(f, whole(f)), integrating_sphere_radiance(),
+                0.03 * integrating_sphere_radiance());
 }
 
 // A beam of power 2 and radius 0.5 straight down onto a floor of albedo 0.5 through
 // `obstacle` above it; the camera looks down at the middle of the spot from `camera_y`.
 std::string beam_through(const std::string& obstacle, double camera_y, int passes) {
-    return R"({"camera": {"position": [0, )" + std::to_string(camera_y) + R"(, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 2},
+    return R"({"camera": {"position": [0, )" + std::to_string(camera_y) +
+           R"(, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 2},
       "render": {"width": 3, "height": 3, "max_depth": 32, "pass_photons": 40000, "initial_radius": 0.2,
-                 "passes": )" + std::to_string(passes) + R"(, "integrator": "sppm"},
+                 "passes": )" +
+           std::to_string(passes) + R"(, "integrator": "sppm"},
       "objects": [
         {"type": "triangle", "vertices": [[-5, 0, -5], [-5, 0, 5], [5, 0, 5]], "material": {"color": 0.5}},
         {"type": "triangle", "vertices": [[-5, 0, -5], [5, 0, 5], [5, 0, -5]], "material": {"color": 0.5}},
-        )" + obstacle + R"(],
+        )" +
+           obstacle + R"(],
       "lights": [{"type": "beam", "origin": [0, 3, 0], "direction": [0, -1, 0], "radius": 0.5, "power": 2}]})";
 }
 
@@ -322,7 +332,8 @@ TEST(Sppm, NoLightThroughAThinSheet) {
 // field: every photon lands on the floor straight from the light (counted by shadow rays,
 // not stored), so nothing shrinks the radii.
 Scene point_lit_floor() {
-    return parse_scene(R"({"camera": {"position": [0, 2, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 1},
+    return parse_scene(
+        R"({"camera": {"position": [0, 2, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 1},
       "render": {"width": 3, "height": 3, "integrator": "sppm", "passes": 2, "pass_photons": 1000},
       "objects": [
         {"type": "triangle", "vertices": [[-50, 0, -50], [-50, 0, 50], [50, 0, 50]], "material": {"color": 0.5}},

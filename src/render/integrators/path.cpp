@@ -12,10 +12,12 @@ namespace lenslab {
 
 PathIntegrator::PathIntegrator(const Scene& scene) : PixelIntegrator(scene) {
     if (!scene.render.ambient.is_black()) m_ambient = illuminant_from_rgb(scene.render.ambient);
-    if (!scene.render.background.is_black()) m_background = illuminant_from_rgb(scene.render.background);
+    if (!scene.render.background.is_black())
+        m_background = illuminant_from_rgb(scene.render.background);
 }
 
-SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w, Rng& rng) const {
+SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
+                                         Rng& rng) const {
     const Scene& scene = m_scene;
     SampledSpectrum l;
     SampledSpectrum beta = SampledSpectrum::constant(1.0);
@@ -45,8 +47,9 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const SampledWav
         const Scattering& s = it.scattering;
         const bool diffuse = s.diffuse > 0.0 && !m.color.is_black();
         if (diffuse) {
-            SampledSpectrum e = direct_irradiance(scene, p, facing, scene.render.light_samples, w, rng) *
-                                (1.0 / std::numbers::pi);
+            SampledSpectrum e =
+                direct_irradiance(scene, p, facing, scene.render.light_samples, w, rng) *
+                (1.0 / std::numbers::pi);
             if (seen_from_camera && m_ambient) e += m_ambient->sample(w);
             l += beta * m.albedo->sample(w) * e * s.diffuse;
         }
@@ -57,7 +60,8 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const SampledWav
         double u = rng.uniform();
         if (u < survive) {
             beta *= m.albedo->sample(w) * (s.diffuse / survive);
-            const Vec3 dir = Frame::from_axis(facing).to_world(sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
+            const Vec3 dir = Frame::from_axis(facing).to_world(
+                sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
             ray = {p, dir};
             seen_from_camera = false;
             count_emission = false;

@@ -57,13 +57,13 @@ struct SppmIntegrator::Pixel {
 };
 
 struct SppmIntegrator::VisiblePoint {
-    Vec3 p, n;                   // n: the normal on the side the camera sees
-    double hero_u = 0;           // the pixel's wavelengths this pass: SampledWavelengths::sample(hero_u)
-    double beta = 0;             // path throughput to the point
+    Vec3 p, n;          // n: the normal on the side the camera sees
+    double hero_u = 0;  // the pixel's wavelengths this pass: SampledWavelengths::sample(hero_u)
+    double beta = 0;    // path throughput to the point
     const Spectrum* albedo = nullptr;
-    double path_length = 0;      // camera to point, through mirrors and glass
-    bool valid = false;          // the path reached a diffuse surface
-    bool dispersed = false;      // it went through dispersive glass: pass wavelength only
+    double path_length = 0;  // camera to point, through mirrors and glass
+    bool valid = false;      // the path reached a diffuse surface
+    bool dispersed = false;  // it went through dispersive glass: pass wavelength only
     Rgb direct;
 };
 
@@ -75,13 +75,17 @@ struct SppmIntegrator::PassState {
 };
 
 SppmIntegrator::SppmIntegrator(const Scene& scene)
-    : m_scene(scene), m_width(scene.render.width), m_height(scene.render.height),
-      m_pass_wavelength(scene), m_pixels(size_t(scene.render.width) * scene.render.height) {
+    : m_scene(scene),
+      m_width(scene.render.width),
+      m_height(scene.render.height),
+      m_pass_wavelength(scene),
+      m_pixels(size_t(scene.render.width) * scene.render.height) {
     m_pixel_angle = 2.0 * std::tan(0.5 * scene.camera.fov_deg * kPi / 180.0) / m_height;
     const Aabb b = scene.bounds();
     m_radius_cap = b.empty() ? 0.05 : kSceneShare * length(b.extent());
     if (!scene.render.ambient.is_black()) m_ambient = illuminant_from_rgb(scene.render.ambient);
-    if (!scene.render.background.is_black()) m_background = illuminant_from_rgb(scene.render.background);
+    if (!scene.render.background.is_black())
+        m_background = illuminant_from_rgb(scene.render.background);
 }
 
 SppmIntegrator::~SppmIntegrator() = default;
@@ -99,7 +103,8 @@ double SppmIntegrator::auto_radius(double path_length) const {
     return std::max(r, 1e-6 * m_radius_cap);
 }
 
-void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, VisiblePoint& vp) const {
+void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
+                                       VisiblePoint& vp) const {
     const Scene& scene = m_scene;
     const uint64_t pixel = uint64_t(y) * uint64_t(m_width) + uint64_t(x);
     Rng rng(pass.seed, pixel);
@@ -134,8 +139,8 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, Visi
         }
         if (!vp.dispersed && it.scattering.dispersive) {
             vp.dispersed = true;
-            it.scattering = scatter(*it.material, it.object->shape->is_closed(), ray.direction, it.normal(),
-                                    pass.lambda_nm);
+            it.scattering = scatter(*it.material, it.object->shape->is_closed(), ray.direction,
+                                    it.normal(), pass.lambda_nm);
         }
         vp.path_length += it.hit.surface.t;
         const Material& m = *it.material;
@@ -194,25 +199,31 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
         const uint64_t need = photon_pass_bytes(scene, pass_photons());
         const uint64_t have = available_memory_bytes();
         if (need > have / 10 * 8) {
-            throw ResourceError("pass_photons: " + std::to_string(pass_photons()) + " photons per light need up to " +
+            throw ResourceError("pass_photons: " + std::to_string(pass_photons()) +
+                                " photons per light need up to " +
                                 std::to_string(need / (1024 * 1024)) + " MiB per pass, but only " +
-                                std::to_string(have / (1024 * 1024)) + " MiB of memory is available; use fewer");
+                                std::to_string(have / (1024 * 1024)) +
+                                " MiB of memory is available; use fewer");
         }
     }
-    PassState pass{m_stats.passes, splitmix64(r.seed ^ splitmix64(static_cast<uint64_t>(m_stats.passes))), 550, 1,
+    PassState pass{m_stats.passes,
+                   splitmix64(r.seed ^ splitmix64(static_cast<uint64_t>(m_stats.passes))), 550, 1,
                    Camera(scene.camera, m_width, m_height)};
-    pass.lambda_nm = m_pass_wavelength.sample(pass.index, Rng(r.seed, kRotationStreamBase - 1).uniform(), pass.lambda_pdf);
+    pass.lambda_nm = m_pass_wavelength.sample(
+        pass.index, Rng(r.seed, kRotationStreamBase - 1).uniform(), pass.lambda_pdf);
 
     // 1. Camera paths to this pass's visible points.
     auto t0 = std::chrono::steady_clock::now();
     std::vector<VisiblePoint>& points = m_points;
     points.resize(m_pixels.size());
-    tbb::parallel_for(tbb::blocked_range<int>(0, m_height, 1), [&](const tbb::blocked_range<int>& rows) {
-        for (int y = rows.begin(); y != rows.end(); ++y) {
-            if (control.cancelled()) return;
-            for (int x = 0; x < m_width; ++x) trace_camera_path(x, y, pass, points[size_t(y) * m_width + x]);
-        }
-    });
+    tbb::parallel_for(tbb::blocked_range<int>(0, m_height, 1),
+                      [&](const tbb::blocked_range<int>& rows) {
+                          for (int y = rows.begin(); y != rows.end(); ++y) {
+                              if (control.cancelled()) return;
+                              for (int x = 0; x < m_width; ++x)
+                                  trace_camera_path(x, y, pass, points[size_t(y) * m_width + x]);
+                          }
+                      });
     if (control.cancelled()) return false;
     const double camera_seconds = seconds_since(t0);
 
@@ -224,12 +235,15 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
         dispersed_points += vp.valid && vp.dispersed;
     }
     const double pass_share =
-        dispersed_points == 0 ? 0.0 : std::clamp(double(dispersed_points) / double(valid_points), 0.1, 0.5);
+        dispersed_points == 0
+            ? 0.0
+            : std::clamp(double(dispersed_points) / double(valid_points), 0.1, 0.5);
     t0 = std::chrono::steady_clock::now();
-    const PhotonPass photons = trace_photon_pass(scene,
-                                                 {pass_photons(), r.max_depth, pass.seed, pass.lambda_nm,
-                                                  pass.lambda_pdf, pass_share, &m_pass_wavelength},
-                                                 control);
+    const PhotonPass photons =
+        trace_photon_pass(scene,
+                          {pass_photons(), r.max_depth, pass.seed, pass.lambda_nm, pass.lambda_pdf,
+                           pass_share, &m_pass_wavelength},
+                          control);
     if (control.cancelled()) return false;
     const double photon_seconds = seconds_since(t0);
 
@@ -240,7 +254,8 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     for (size_t i = 0; i < points.size(); ++i) {
         if (!points[i].valid) continue;
         if (m_pixels[i].radius == 0.0) {
-            m_pixels[i].radius = r.initial_radius > 0 ? r.initial_radius : auto_radius(points[i].path_length);
+            m_pixels[i].radius =
+                r.initial_radius > 0 ? r.initial_radius : auto_radius(points[i].path_length);
         }
         radii.push_back(m_pixels[i].radius);
     }
@@ -251,70 +266,78 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
         std::nth_element(radii.begin(), mid, radii.end());
         cell = 2.0 * *mid;
     }
-    const HashGrid grid(photons.hits.size(), [&](size_t i) { return photons.hits[i].pos(); }, cell);
+    const HashGrid grid(
+        photons.hits.size(), [&](size_t i) { return photons.hits[i].pos(); }, cell);
     const std::vector<PhotonHit> hits = grid.reorder(photons.hits);
     const int lights = photon_light_count(scene);
     std::vector<double> light_at_pass(lights), albedo_at_pass(scene.materials.size());
-    for (int l = 0; l < lights; ++l) light_at_pass[l] = emitted_spectrum(scene, l).eval(pass.lambda_nm);
+    for (int l = 0; l < lights; ++l)
+        light_at_pass[l] = emitted_spectrum(scene, l).eval(pass.lambda_nm);
     for (size_t m = 0; m < scene.materials.size(); ++m) {
-        albedo_at_pass[m] = scene.materials[m].albedo ? scene.materials[m].albedo->eval(pass.lambda_nm) : 0.0;
+        albedo_at_pass[m] =
+            scene.materials[m].albedo ? scene.materials[m].albedo->eval(pass.lambda_nm) : 0.0;
     }
     const double alpha = r.alpha;
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, m_pixels.size(), 256), [&](const tbb::blocked_range<size_t>& range) {
-        std::vector<SampledSpectrum> light_at_w(lights);
-        for (size_t i = range.begin(); i != range.end(); ++i) {
-            const VisiblePoint& vp = points[i];
-            Pixel& px = m_pixels[i];
-            px.direct += vp.direct;
-            if (!vp.valid) continue;
-            const SampledWavelengths w = SampledWavelengths::sample(vp.hero_u);
-            for (int l = 0; l < lights && !vp.dispersed; ++l) light_at_w[l] = emitted_spectrum(scene, l).sample(w);
-            const double radius2 = px.radius * px.radius;
-            SampledSpectrum flux;    // at w, photons not dispersed
-            double flux_pass = 0.0;  // at the pass wavelength
-            Rgb dispersed;           // photons at wavelengths of their own
-            int64_t found = 0;
-            grid.for_each_near(vp.p, px.radius, [&](size_t h) {
-                const PhotonHit& ph = hits[h];
-                if (length_squared(ph.pos() - vp.p) > radius2) return;
-                if (dot(decode_octahedral(ph.normal), vp.n) < kSameSurfaceCos) return;
-                ++found;
-                if (ph.wavelength == PhotonWavelength::Pass) {
-                    // Dispersed photons at the pass wavelength light only camera paths
-                    // dispersed at it; the others only the rest (sppm_photons.h).
-                    if (vp.dispersed) flux_pass += ph.power * pass.lambda_pdf;
-                } else if (ph.wavelength == PhotonWavelength::Own) {
-                    if (!vp.dispersed) {
-                        const double nm = ph.lambda_nm;
-                        dispersed += sample_to_rgb(vp.beta * vp.albedo->eval(nm) / kPi * ph.power, nm, 1.0);
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, m_pixels.size(), 256),
+        [&](const tbb::blocked_range<size_t>& range) {
+            std::vector<SampledSpectrum> light_at_w(lights);
+            for (size_t i = range.begin(); i != range.end(); ++i) {
+                const VisiblePoint& vp = points[i];
+                Pixel& px = m_pixels[i];
+                px.direct += vp.direct;
+                if (!vp.valid) continue;
+                const SampledWavelengths w = SampledWavelengths::sample(vp.hero_u);
+                for (int l = 0; l < lights && !vp.dispersed; ++l)
+                    light_at_w[l] = emitted_spectrum(scene, l).sample(w);
+                const double radius2 = px.radius * px.radius;
+                SampledSpectrum flux;    // at w, photons not dispersed
+                double flux_pass = 0.0;  // at the pass wavelength
+                Rgb dispersed;           // photons at wavelengths of their own
+                int64_t found = 0;
+                grid.for_each_near(vp.p, px.radius, [&](size_t h) {
+                    const PhotonHit& ph = hits[h];
+                    if (length_squared(ph.pos() - vp.p) > radius2) return;
+                    if (dot(decode_octahedral(ph.normal), vp.n) < kSameSurfaceCos) return;
+                    ++found;
+                    if (ph.wavelength == PhotonWavelength::Pass) {
+                        // Dispersed photons at the pass wavelength light only camera paths
+                        // dispersed at it; the others only the rest (sppm_photons.h).
+                        if (vp.dispersed) flux_pass += ph.power * pass.lambda_pdf;
+                    } else if (ph.wavelength == PhotonWavelength::Own) {
+                        if (!vp.dispersed) {
+                            const double nm = ph.lambda_nm;
+                            dispersed += sample_to_rgb(
+                                vp.beta * vp.albedo->eval(nm) / kPi * ph.power, nm, 1.0);
+                        }
+                    } else if (vp.dispersed) {
+                        double f = ph.power * light_at_pass[ph.light];
+                        for (uint32_t k = 0; k < ph.chain_length; ++k)
+                            f *= albedo_at_pass[photons.chains[ph.chain + k]];
+                        flux_pass += f;
+                    } else {
+                        SampledSpectrum f = light_at_w[ph.light] * static_cast<double>(ph.power);
+                        for (uint32_t k = 0; k < ph.chain_length; ++k) {
+                            f *= scene.materials[photons.chains[ph.chain + k]].albedo->sample(w);
+                        }
+                        flux += f;
                     }
-                } else if (vp.dispersed) {
-                    double f = ph.power * light_at_pass[ph.light];
-                    for (uint32_t k = 0; k < ph.chain_length; ++k) f *= albedo_at_pass[photons.chains[ph.chain + k]];
-                    flux_pass += f;
-                } else {
-                    SampledSpectrum f = light_at_w[ph.light] * static_cast<double>(ph.power);
-                    for (uint32_t k = 0; k < ph.chain_length; ++k) {
-                        f *= scene.materials[photons.chains[ph.chain + k]].albedo->sample(w);
-                    }
-                    flux += f;
+                });
+                if (found == 0) continue;
+                Rgb phi = dispersed;
+                if (!vp.dispersed) phi += to_rgb(vp.albedo->sample(w) * flux * (vp.beta / kPi), w);
+                if (flux_pass != 0.0) {
+                    const double weight_pass = vp.beta * vp.albedo->eval(pass.lambda_nm) / kPi;
+                    phi += sample_to_rgb(weight_pass * flux_pass, pass.lambda_nm, pass.lambda_pdf);
                 }
-            });
-            if (found == 0) continue;
-            Rgb phi = dispersed;
-            if (!vp.dispersed) phi += to_rgb(vp.albedo->sample(w) * flux * (vp.beta / kPi), w);
-            if (flux_pass != 0.0) {
-                const double weight_pass = vp.beta * vp.albedo->eval(pass.lambda_nm) / kPi;
-                phi += sample_to_rgb(weight_pass * flux_pass, pass.lambda_nm, pass.lambda_pdf);
+                // Hachisuka & Jensen 2009, eqs. 6 and 7 (and tau scaled with the disc's area).
+                const double n_new = px.n + alpha * static_cast<double>(found);
+                const double ratio = n_new / (px.n + static_cast<double>(found));
+                px.tau = (px.tau + phi) * ratio;
+                px.radius *= std::sqrt(ratio);
+                px.n = n_new;
             }
-            // Hachisuka & Jensen 2009, eqs. 6 and 7 (and tau scaled with the disc's area).
-            const double n_new = px.n + alpha * static_cast<double>(found);
-            const double ratio = n_new / (px.n + static_cast<double>(found));
-            px.tau = (px.tau + phi) * ratio;
-            px.radius *= std::sqrt(ratio);
-            px.n = n_new;
-        }
-    });
+        });
 
     ++m_stats.passes;
     m_stats.photons_emitted += photons.emitted;
