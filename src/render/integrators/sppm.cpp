@@ -261,10 +261,12 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     }
     double cell = m_radius_cap;
     if (!radii.empty()) {
-        // Cells twice the median radius: most queries look at 8 cells or fewer.
+        // Cells twice the median radius: most queries look at 8 cells or fewer. At least an
+        // eighth of the largest radius, so that no query looks at more than 17^3 cells (a
+        // camera close to one surface and far from another gives radii far apart).
         auto mid = radii.begin() + static_cast<ptrdiff_t>(radii.size() / 2);
         std::nth_element(radii.begin(), mid, radii.end());
-        cell = 2.0 * *mid;
+        cell = std::max(2.0 * *mid, *std::max_element(mid, radii.end()) / 8.0);
     }
     const HashGrid grid(
         photons.hits.size(), [&](size_t i) { return photons.hits[i].pos(); }, cell);
