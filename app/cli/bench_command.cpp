@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "analysis/report_benchmark.h"
+#include "analysis/sppm_convergence.h"
 #include "commands.h"
 #include "render/image_io.h"
 #include "scene/scene_json.h"
@@ -20,6 +21,65 @@ struct BenchArgs {
     std::string out_dir = "bench-report";
     ReportBenchmarkSettings settings;
 };
+
+struct ConvergenceArgs {
+    std::string scene;
+    std::string out_dir = "bench-sppm";
+    ConvergenceSettings settings;
+    int64_t pass_photons = 0;  // 0: the scene's
+};
+
+bool have_gnuplot() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+
+// Error against time (sppm and path) and sppm's error against passes, log-log.
+bool plot_convergence(const std::filesystem::path& dir, const ConvergenceResult& r) {
+    const auto data = dir / "convergence.dat";
+    std::ofstream dat(data);
+    for (const char* integrator : {"sppm", "path"}) {
+        dat << "# " << integrator << ": amount seconds block_error rms_error\n";
+        for (const ConvergencePoint& p : r.points) {
+            if (p.integrator == integrator) dat << p.amount << " " << p.seconds << " " << p.block_error << " " << p.rms_error << "\n";
+        }
+        dat << "\n\n";
+    }
+    dat.close();
+    const std::string d = "'" + data.string() + "'";
+    const auto script = dir / "convergence.gp";
+    std::ofstream gp(script);
+    gp << "set terminal pngcairo size 900,600\nset key top right\nset grid\nset logscale xy\n"
+          "set ylabel 'error against the path-traced reference'\n"
+          "set output '" << (dir / "convergence_time.png").string() << "'\n"
+          "set title 'Error against rendering time (mean over 8x8-pixel blocks of the relative error)'\n"
+          "set xlabel 'seconds'\n"
+          "plot " << d << " index 0 using 2:3 with linespoints lw 2 title 'sppm (passes)', " << d
+       << " index 1 using 2:3 with linespoints lw 2 title 'path (samples per pixel)', " << d
+       << " index 0 using 2:4 with linespoints dt 2 lc 1 title 'sppm, RMS per pixel', " << d
+       << " index 1 using 2:4 with linespoints dt 2 lc 2 title 'path, RMS per pixel'\n"
+          "set output '" << (dir / "convergence_passes.png").string() << "'\n"
+          "set title 'sppm: error against passes'\nset xlabel 'passes'\n"
+          "plot " << d << " index 0 using 1:3 with linespoints lw 2 title 'mean block error', " << d
+       << " index 0 using 1:4 with linespoints lw 2 title 'RMS per pixel'\n";
+    gp.close();
+    if (!have_gnuplot()) return false;
+    return std::system(("gnuplot '" + script.string() + "'").c_str()) == 0;
+}
+
+int run_convergence_bench(const ConvergenceArgs& a) {
+    Scene scene = a.scene.empty() ? default_scene() : load_scene_file(a.scene);
+    if (a.pass_photons > 0) scene.render.pass_photons = a.pass_photons;
+    const std::filesystem::path dir(a.out_dir);
+    std::filesystem::create_directories(dir);
+    const ConvergenceResult r =
+        run_convergence(scene, a.settings, [](const std::string& line) { std::cerr << line << "\n"; });
+    std::ofstream(dir / "convergence.csv") << convergence_csv(r);
+    write_image(r.reference, (dir / "reference.png").string());
+    write_image(r.sppm_last, (dir / "sppm.png").string());
+    const bool plotted = plot_convergence(dir, r);
+    std::printf("wrote %s/convergence.csv, reference.png, sppm.png%s\n", dir.c_str(),
+                plotted ? ", convergence_time.png, convergence_passes.png"
+                        : " (install gnuplot for the plots: convergence.gp is written)");
+    return 0;
+}
 
 // Draws the report's Figures 4.2 (build time) and 4.3 (render time) with gnuplot; returns
 // false when gnuplot is not installed (its data and script are written all the same).
@@ -101,7 +161,31 @@ Action add_bench_command(CLI::App& app) {
     report->add_option("--repeats", s.repeats, "Runs per timing (the median is kept)")
         ->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 100));
     report->add_option("--threads", s.threads, "Worker threads (default: all cores)")->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
-    return [args] { return run(*args); };
+
+    auto conv = std::make_shared<ConvergenceArgs>();
+    CLI::App* sppm = bench->add_subcommand(
+        "sppm", "How sppm converges: its error against a long path-traced reference, against passes and time");
+    sppm->add_option("scene", conv->scene, "Scene file (default: the built-in default scene)");
+    sppm->add_option("-o,--output", conv->out_dir, "Folder for convergence.csv, the plots and images")
+        ->capture_default_str();
+    ConvergenceSettings& c = conv->settings;
+    sppm->add_option("--width", c.width, "Image width")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(8, 16384));
+    sppm->add_option("--height", c.height, "Image height")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(8, 16384));
+    sppm->add_option("--reference-spp", c.reference_spp, "Samples per pixel of the path-traced reference")
+        ->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 24));
+    sppm->add_option("--passes", c.passes, "sppm pass counts to measure at")
+        ->delimiter(',')->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 20));
+    sppm->add_option("--path-spp", c.path_spp, "Path-tracing sample counts to compare with")
+        ->delimiter(',')->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 20));
+    sppm->add_option("--pass-photons", conv->pass_photons, "Photons per light in each sppm pass (default: the scene's)")
+        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 30));
+    sppm->add_option("--threads", c.threads, "Worker threads (default: all cores)")->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
+
+    // Both subcommands share the one action; CLI11 says which was chosen.
+    return [args, conv, sppm] {
+        if (sppm->parsed()) return run_convergence_bench(*conv);
+        return run(*args);
+    };
 }
 
 }  // namespace lenslab::cli

@@ -27,11 +27,21 @@ struct RenderArgs {
     int64_t photons = 0;
     double radius = 0, filter_k = 0;
     int max_photons_per_estimate = 0;
+    int passes = -1;
+    double time = -1;
+    int64_t pass_photons = 0;
+    double initial_radius = 0;
     double exposure = 0.0;
     bool quiet = false;
 };
 
 RenderControl* g_control = nullptr;
+
+std::string format_seconds(double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g s", s);
+    return text;
+}
 
 extern "C" void on_interrupt(int) {
     if (g_control) g_control->cancel();  // an atomic store: safe in a signal handler
@@ -80,11 +90,28 @@ int run(const RenderArgs& a) {
     if (!a.direct.empty()) s.direct = a.direct;
     if (a.filter_k > 0) s.filter_k = a.filter_k;
     if (a.max_photons_per_estimate > 0) s.max_photons_per_estimate = a.max_photons_per_estimate;
+    if (a.time >= 0) {
+        s.time = a.time;
+        if (a.passes < 0) s.passes = 0;  // a time budget alone: as many passes as fit
+    }
+    if (a.passes >= 0) s.passes = a.passes;
+    if (a.pass_photons > 0) s.pass_photons = a.pass_photons;
+    if (a.initial_radius > 0) s.initial_radius = a.initial_radius;
+    if (s.passes == 0 && s.time == 0) {
+        std::cerr << "lenslab: error: --passes 0 means no pass limit, which needs a time budget (--time)\n";
+        return 2;
+    }
 
     const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
-    const std::string label = "rendering " + std::to_string(s.width) + "x" +
-                              std::to_string(s.height) + ", " + std::to_string(s.spp) + " spp, " +
-                              std::to_string(threads) + " thread" + (threads > 1 ? "s" : "") + ":";
+    const bool sppm = s.integrator == "sppm";
+    std::string amount = std::to_string(s.spp) + " spp";
+    if (sppm) {
+        amount = s.passes > 0 ? std::to_string(s.passes) + " passes" : "";
+        if (s.time > 0) amount += (amount.empty() ? "" : " or ") + format_seconds(s.time);
+    }
+    const std::string label = "rendering " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", " +
+                              s.integrator + ", " + amount + ", " + std::to_string(threads) + " thread" +
+                              (threads > 1 ? "s" : "") + ":";
     ProgressPrinter printer(label);
     RenderControl control(a.quiet ? RenderControl::ProgressFn{} : RenderControl::ProgressFn{std::ref(printer)});
     g_control = &control;
@@ -109,9 +136,23 @@ int run(const RenderArgs& a) {
                      static_cast<long long>(p.emitted), p.direct, p.caustic,
                      p.memory_bytes / (1024.0 * 1024.0), p.trace_seconds, p.build_seconds);
     }
+    if (result.sppm && !a.quiet) {
+        const SppmStats& p = *result.sppm;
+        std::fprintf(stderr,
+                     "sppm: %d passes, %lld photons (%.3g passes/s, %.3g photons/s); camera %.2f s, photons "
+                     "%.2f s, gather %.2f s; mean radius %.4g\n",
+                     p.passes, static_cast<long long>(p.photons_emitted), p.passes / result.seconds,
+                     p.photons_emitted / result.seconds, p.camera_seconds, p.photon_seconds, p.gather_seconds,
+                     p.mean_radius);
+    }
     write_image(result.film, a.output, a.exposure);
-    std::printf("wrote %s (%dx%d, %d spp, %.2f s)\n", a.output.c_str(), s.width, s.height, s.spp,
-                result.seconds);
+    if (result.sppm) {
+        std::printf("wrote %s (%dx%d, %d passes, %.2f s)\n", a.output.c_str(), s.width, s.height, result.sppm->passes,
+                    result.seconds);
+    } else {
+        std::printf("wrote %s (%dx%d, %d spp, %.2f s)\n", a.output.c_str(), s.width, s.height, s.spp,
+                    result.seconds);
+    }
     return 0;
 }
 
@@ -138,7 +179,7 @@ Action add_render_command(CLI::App& app) {
     cmd->add_option("--exposure", args->exposure, "Exposure in stops applied before writing")
         ->capture_default_str()->check(CLI::Range(-64.0, 64.0));
     cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
-    cmd->add_option("--integrator", args->integrator, "whitted or photon_map (overrides the scene)")
+    cmd->add_option("--integrator", args->integrator, "whitted, photon_map, sppm or path (overrides the scene)")
         ->check(CLI::IsMember(kIntegratorNames));
     cmd->add_option("--photons", args->photons, "Photons emitted per light (photon_map)")
         ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
@@ -153,6 +194,14 @@ Action add_render_command(CLI::App& app) {
     cmd->add_option("--max-photons-per-estimate", args->max_photons_per_estimate,
                     "Cap on the photons one radiance estimate gathers")
         ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1000000));
+    cmd->add_option("--passes", args->passes, "sppm: passes to run (0: no limit, needs --time)")
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, 1 << 24));
+    cmd->add_option("--time", args->time, "sppm: time budget in seconds (passes run until it is spent)")
+        ->check(CLI::Range(0.0, 1e9));
+    cmd->add_option("--pass-photons", args->pass_photons, "sppm: photons emitted per light in each pass")
+        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 30));
+    cmd->add_option("--initial-radius", args->initial_radius, "sppm: initial gather radius (default: auto)")
+        ->check(CLI::PositiveNumber);
     return [args] { return run(*args); };
 }
 

@@ -118,10 +118,10 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document->undo_stack(), &QUndoStack::cleanChanged, this, &MainWindow::update_title);
     connect(m_document, &SceneDocument::path_changed, this, &MainWindow::update_title);
     connect(m_renderer, &RenderController::frame_ready, this,
-            [this](const QImage& image, int passes, qint64 photons, double seconds) {
+            [this](const QImage& image, int passes, qint64 photons, double seconds, const QString& integrator) {
                 m_viewport->set_image(image);
-                m_status->setText(tr("passes %1 · photons %2 · %3 s")
-                                      .arg(passes).arg(photons).arg(seconds, 0, 'f', 1));
+                m_status->setText(tr("%1 · passes %2 · photons %3 · %4 s")
+                                      .arg(integrator).arg(passes).arg(photons).arg(seconds, 0, 'f', 1));
             });
     connect(m_renderer, &RenderController::render_failed, this, &MainWindow::show_message);
 
@@ -192,6 +192,17 @@ void MainWindow::build_menus() {
     QMenu* render = menuBar()->addMenu(tr("&Render"));
     QAction* start = render->addAction(tr("&Start"), this, [this] { m_renderer->restart(m_document->scene(), 0); });
     QAction* stop = render->addAction(tr("S&top"), this, [this] { m_renderer->stop_rendering(); });
+    render->addSeparator();
+    // The view renders with sppm, which converges to the full light transport; the scene's
+    // own integrator (what `lenslab render` uses) is one click away.
+    QAction* own = render->addAction(tr("View with the scene's &integrator"));
+    own->setObjectName("view_with_scene_integrator");
+    own->setCheckable(true);
+    own->setChecked(m_renderer->uses_scene_integrator());
+    connect(own, &QAction::toggled, this, [this](bool on) {
+        m_renderer->set_use_scene_integrator(on);
+        m_renderer->restart(m_document->scene(), 0);
+    });
     tools->addSeparator();
     tools->addAction(start);
     tools->addAction(stop);

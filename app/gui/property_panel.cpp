@@ -349,6 +349,10 @@ void PropertyPanel::build_render() {
     add_number(tr("Filter constant k"), "filter_k", d.filter_k, 1.0, 1e6, 3);
     add_integer(tr("Max photons per estimate"), "max_photons_per_estimate", d.max_photons_per_estimate, 1, 1000000);
     add_choice(tr("Direct light"), "direct", d.direct, to_qt(kDirectLightNames));
+    add_heading(tr("Progressive photon map (sppm, the view)"));
+    add_integer(tr("Photons per light per pass (0 = auto)"), "pass_photons", d.pass_photons, 0, 1LL << 30);
+    add_integer(tr("Passes (lenslab render)"), "passes", d.passes, 0, 1 << 24);
+    add_number(tr("Time budget (s, 0 = none)"), "time", d.time, 0, 1e9, 1);
 }
 
 void PropertyPanel::build_material(const std::string& prefix) {

@@ -36,6 +36,7 @@ RenderController::~RenderController() {
 
 void RenderController::restart(const Scene& scene, int delay_ms) {
     Scene preview = scene;
+    if (!m_use_scene_integrator) preview.render.integrator = "sppm";
     const int largest = std::max(preview.render.width, preview.render.height);
     if (largest > m_preview_size) {
         const double s = double(m_preview_size) / largest;
@@ -114,10 +115,14 @@ void RenderController::run() {
                     QMutexLocker lock(&m_mutex);
                     m_last = film;
                 }
-                const auto& stats = render.photon_stats();
-                emit frame_ready(to_qimage(film), render.passes(),
-                                 stats ? qint64(stats->direct + stats->caustic) : 0,
-                                 clock.elapsed() / 1000.0);
+                qint64 photons = 0;
+                if (const SppmStats* sppm = render.sppm_stats()) {
+                    photons = sppm->photons_emitted;
+                } else if (const auto& stats = render.photon_stats()) {
+                    photons = qint64(stats->direct + stats->caustic);
+                }
+                emit frame_ready(to_qimage(film), render.passes(), photons, clock.elapsed() / 1000.0,
+                                 QString::fromStdString(scene.render.integrator));
             }
         } catch (const std::exception& e) {
             emit render_failed(QString::fromStdString(e.what()));

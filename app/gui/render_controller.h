@@ -1,6 +1,7 @@
 #pragma once
 // Renders the scene progressively on a worker thread: pass after pass, each frame sent back
-// through a queued signal. A new scene (after an edit) cancels the pass in flight and starts
+// through a queued signal. The view uses sppm, whose passes converge to the full solution
+// (caustics, interreflection), unless told to use the scene's own integrator. A new scene (after an edit) cancels the pass in flight and starts
 // again; restarts are debounced so a burst of edits costs one restart. The worker renders an
 // immutable copy of the scene; it never touches the document.
 
@@ -34,12 +35,17 @@ public:
     bool is_rendering() const;
     int max_passes() const { return m_max_passes; }
     void set_max_passes(int n) { m_max_passes = n; }
+    // false (the default): render with sppm; true: with the scene's `render.integrator`.
+    // Takes effect at the next restart.
+    bool uses_scene_integrator() const { return m_use_scene_integrator; }
+    void set_use_scene_integrator(bool on) { m_use_scene_integrator = on; }
     // The latest averaged frame in linear RGB, for export.
     Film last_film() const;
 
 signals:
-    // `passes`: passes averaged so far; `photons`: stored photons (0 without photon maps).
-    void frame_ready(const QImage& image, int passes, qint64 photons, double seconds);
+    // `passes`: passes done; `photons`: photons emitted so far (sppm) or stored in the photon
+    // maps (photon_map), else 0; `integrator`: the one rendering.
+    void frame_ready(const QImage& image, int passes, qint64 photons, double seconds, const QString& integrator);
     void render_failed(const QString& message);
     void rendering_changed(bool rendering);
 
@@ -53,6 +59,7 @@ private:
     std::optional<Scene> m_next;  // GUI thread only: the scene waiting for the debounce
     int m_preview_size;
     int m_max_passes = 256;
+    bool m_use_scene_integrator = false;
 
     mutable QMutex m_mutex;
     QWaitCondition m_wake;

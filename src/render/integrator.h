@@ -36,4 +36,21 @@ protected:
     const Scene& m_scene;
 };
 
+// An integrator whose image improves pass by pass and keeps what it learnt between passes
+// (sppm's shrinking radii), so it cannot be run as independent passes and averaged. The
+// render session runs passes until render.passes or render.time; the editor's viewport
+// runs them one at a time and shows the image after each.
+class ProgressiveIntegrator : public Integrator {
+public:
+    // Runs `scene.render.passes` passes, or as many as fit in `scene.render.time` seconds,
+    // then develops the image into `film`.
+    bool render(const Scene& scene, const Camera& camera, Film& film, RenderControl& control) override;
+
+    // One more pass. Returns false, having changed nothing, when `control` was cancelled.
+    virtual bool add_pass(RenderControl& control) = 0;
+    virtual int passes() const = 0;
+    // The estimate after the passes so far, into `film` (already sized; black before any).
+    virtual void develop(Film& film) const = 0;
+};
+
 }  // namespace lenslab

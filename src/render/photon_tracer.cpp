@@ -4,7 +4,6 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
-#include <numbers>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -12,10 +11,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "geometry/sphere.h"
-#include "math/frame.h"
 #include "math/rng.h"
-#include "math/sampling.h"
+#include "render/photon_emission.h"
 #include "scene/interaction.h"
 
 namespace lenslab {
@@ -47,41 +44,10 @@ struct EmittedPhoton {
     }
 };
 
-// The spectrum of light `light` (emitting spheres first, then point lights, then beams).
-const Spectrum& emitted_spectrum(const Scene& scene, int light) {
-    const int spheres = static_cast<int>(scene.emitters().size());
-    const int points = static_cast<int>(scene.point_lights.size());
-    if (light < spheres) return *scene.emitters()[light].radiance;
-    if (light < spheres + points) return *scene.point_lights[light - spheres].spectrum;
-    return *scene.beams[light - spheres - points].spectrum;
-}
-
-// Samples one photon of light `light`, whose spectrum's colour is `colour`.
+// The photon-map tracer's photon: the emitted start with its colour as RGB.
 EmittedPhoton emit(const Scene& scene, int light, const Rgb& colour, int64_t n, Rng& rng) {
-    const Spectrum& spectrum = emitted_spectrum(scene, light);
-    auto make_emitted = [&](Ray ray, double scale) { return EmittedPhoton{ray, colour * scale, &spectrum, scale}; };
-    const double inv_n = 1.0 / static_cast<double>(n);
-    const int spheres = static_cast<int>(scene.emitters().size());
-    const int points = static_cast<int>(scene.point_lights.size());
-    if (light < spheres) {
-        // A Lambertian sphere of radiance L and radius R emits pi L 4 pi R^2: uniform points
-        // on the surface, cosine-distributed directions about the normal.
-        const SphereEmitter& emitter = scene.emitters()[light];
-        const Sphere& sphere = *emitter.sphere;
-        const Vec3 normal = sample_uniform_sphere(rng.uniform(), rng.uniform());
-        const Vec3 dir = Frame::from_axis(normal).to_world(sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
-        const double area = 4.0 * std::numbers::pi * sphere.radius() * sphere.radius();
-        return make_emitted({sphere.centre() + normal * sphere.radius(), dir}, std::numbers::pi * area * inv_n);
-    }
-    if (light < spheres + points) {
-        const PointLight& l = scene.point_lights[light - spheres];
-        return make_emitted({l.position, sample_uniform_sphere(rng.uniform(), rng.uniform())}, inv_n);
-    }
-    const BeamLight& b = scene.beams[light - spheres - points];
-    double x, y;
-    sample_disc_concentric(rng.uniform(), rng.uniform(), x, y);
-    const Frame f = Frame::from_axis(b.direction);
-    return make_emitted({b.origin + (f.u * x + f.v * y) * b.radius, b.direction}, inv_n);
+    const PhotonStart start = emit_photon(scene, light, n, rng);
+    return EmittedPhoton{start.ray, colour * start.scale, start.spectrum, start.scale};
 }
 
 Photon make_photon(const Vec3& p, const Rgb& power, const Vec3& towards, PhotonKind kind) {
@@ -136,10 +102,6 @@ Photon trace_one(const Scene& scene, EmittedPhoton e, int max_depth, Rng& rng,
 }
 
 }  // namespace
-
-int photon_light_count(const Scene& scene) {
-    return static_cast<int>(scene.emitters().size() + scene.point_lights.size() + scene.beams.size());
-}
 
 uint64_t photon_storage_bytes(const Scene& scene, int64_t photons_per_light) {
     // One slot per emitted photon: a photon is stored at most once (at its first diffuse

@@ -8,6 +8,7 @@
 #include <functional>
 #include <stdexcept>
 
+#include "render/photon_emission.h"
 #include "render/photon_map.h"
 #include "render/render_control.h"
 #include "scene/interaction.h"
@@ -33,9 +34,6 @@ class ResourceError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
-
-// Number of light sources that emit photons: emitting spheres, point lights, beams.
-int photon_light_count(const Scene& scene);
 
 // Bytes of photon storage the settings need at most, and the memory available for it.
 uint64_t photon_storage_bytes(const Scene& scene, int64_t photons_per_light);

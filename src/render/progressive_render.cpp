@@ -12,11 +12,22 @@ ProgressiveRender::ProgressiveRender(const Scene& scene, int threads)
     : m_scene(scene), m_threads(threads),
       m_sum(size_t(scene.render.width) * scene.render.height * 3, 0.0) {
     m_scene.render.spp = 1;
+    if (m_scene.render.integrator == "sppm") {
+        m_sppm = std::make_unique<SppmIntegrator>(m_scene);
+        m_sum = {};
+    }
 }
 
 ProgressiveRender::~ProgressiveRender() = default;
 
 bool ProgressiveRender::add_pass(RenderControl& control) {
+    if (m_sppm) {
+        bool finished = false;
+        tbb::task_arena arena(m_threads > 0 ? m_threads : tbb::task_arena::automatic);
+        arena.execute([&] { finished = m_sppm->add_pass(control); });
+        if (finished) ++m_passes;
+        return finished;
+    }
     Scene pass = m_scene;
     // A different seed per pass gives independent samples; pass 0 keeps the scene's seed.
     pass.render.seed = m_scene.render.seed + static_cast<uint64_t>(m_passes) * 0x9E3779B9u;
@@ -46,6 +57,10 @@ bool ProgressiveRender::add_pass(RenderControl& control) {
 
 Film ProgressiveRender::image() const {
     Film film(m_scene.render.width, m_scene.render.height);
+    if (m_sppm) {
+        m_sppm->develop(film);
+        return film;
+    }
     const double inv = m_passes > 0 ? 1.0 / m_passes : 0.0;
     for (int y = 0; y < film.height(); ++y) {
         for (int x = 0; x < film.width(); ++x) {

@@ -7,7 +7,9 @@
 #include <tbb/task_arena.h>
 
 #include "render/camera.h"
+#include "render/integrators/path.h"
 #include "render/integrators/photon_map.h"
+#include "render/integrators/sppm.h"
 #include "render/integrators/whitted.h"
 
 namespace lenslab {
@@ -15,6 +17,8 @@ namespace lenslab {
 std::unique_ptr<Integrator> make_integrator(const Scene& scene) {
     if (scene.render.integrator == "whitted") return std::make_unique<WhittedIntegrator>(scene);
     if (scene.render.integrator == "photon_map") return std::make_unique<PhotonMapIntegrator>(scene);
+    if (scene.render.integrator == "sppm") return std::make_unique<SppmIntegrator>(scene);
+    if (scene.render.integrator == "path") return std::make_unique<PathIntegrator>(scene);
     throw std::invalid_argument("unknown integrator '" + scene.render.integrator + "'");
 }
 
@@ -30,6 +34,7 @@ RenderResult render_scene(const Scene& scene, RenderControl& control, int thread
     if (const auto* pm = dynamic_cast<const PhotonMapIntegrator*>(integrator.get())) {
         result.photons = pm->photon_stats();
     }
+    if (const auto* sppm = dynamic_cast<const SppmIntegrator*>(integrator.get())) result.sppm = sppm->stats();
     result.cancelled = !finished;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -13,7 +13,7 @@ namespace lenslab {
 inline constexpr double kMinBranchWeight = 1e-6;
 
 // The names the scene file and the command line accept, declared once for both.
-inline const std::vector<std::string> kIntegratorNames{"whitted", "photon_map"};
+inline const std::vector<std::string> kIntegratorNames{"whitted", "photon_map", "sppm", "path"};
 inline const std::vector<std::string> kPhotonFilterNames{"cone", "gaussian", "box"};
 inline const std::vector<std::string> kDirectLightNames{"shadow_rays", "photon_map"};
 
@@ -28,7 +28,7 @@ struct RenderSettings {
     Rgb background{0, 0, 0};  // radiance of rays that leave the scene
     int light_samples = 1;  // shadow rays per area light per camera sample
     double min_weight = 1e-4;  // specular branches carrying less are not followed
-    std::string integrator = "whitted";  // whitted | photon_map
+    std::string integrator = "whitted";  // whitted | photon_map | sppm | path
 
     // Photon mapping (integrator photon_map).
     int64_t photons = 200000;            // photons emitted per light
@@ -37,6 +37,14 @@ struct RenderSettings {
     double filter_k = 1.1;               // cone filter constant k >= 1
     int max_photons_per_estimate = 500;  // cap on the photons one estimate gathers
     std::string direct = "shadow_rays";  // shadow_rays | photon_map
+
+    // Stochastic progressive photon mapping (integrator sppm). The render stops after
+    // `passes` passes or `time` seconds, whichever comes first (0: no limit of that kind).
+    int passes = 64;
+    double time = 0;                  // seconds
+    int64_t pass_photons = 0;         // photons emitted per light in each pass; 0 = auto (pixels / lights)
+    double initial_radius = 0;        // 0 = auto, from the pixel footprint and the scene's size
+    double alpha = 2.0 / 3.0;         // share of each pass's photons kept as the radius shrinks
 };
 
 }  // namespace lenslab

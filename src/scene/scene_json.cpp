@@ -63,7 +63,8 @@ void read_render(const json& j, RenderSettings& s) {
     JsonObjectReader r(j, "render",
                        {"width", "height", "spp", "max_depth", "seed", "ambient", "background",
                         "light_samples", "min_weight", "integrator", "photons", "radius",
-                        "filter", "filter_k", "max_photons_per_estimate", "direct"});
+                        "filter", "filter_k", "max_photons_per_estimate", "direct", "passes", "time",
+                        "pass_photons", "initial_radius", "alpha"});
     s.width = static_cast<int>(r.integer("width", s.width, 1, 16384));
     s.height = static_cast<int>(r.integer("height", s.height, 1, 16384));
     s.spp = static_cast<int>(r.integer("spp", s.spp, 1, 1 << 20));
@@ -90,6 +91,18 @@ void read_render(const json& j, RenderSettings& s) {
     s.max_photons_per_estimate = static_cast<int>(
         r.integer("max_photons_per_estimate", s.max_photons_per_estimate, 1, 1000000));
     s.direct = r.choice("direct", s.direct, kDirectLightNames);
+    s.passes = static_cast<int>(r.integer("passes", s.passes, 0, 1 << 24));
+    s.time = r.number("time", s.time);
+    if (!(s.time >= 0.0)) throw SceneError("render.time", "must be >= 0 seconds (0: no time limit), got " + format_number(s.time));
+    if (s.passes == 0 && s.time == 0.0) {
+        throw SceneError("render.passes", "0 means no pass limit, which needs a time budget: give render.time > 0");
+    }
+    s.pass_photons = r.integer("pass_photons", s.pass_photons, 0, int64_t{1} << 30);
+    s.initial_radius = r.positive("initial_radius", s.initial_radius);
+    s.alpha = r.number("alpha", s.alpha);
+    if (!(s.alpha > 0.0 && s.alpha < 1.0)) {
+        throw SceneError("render.alpha", "must be between 0 and 1 (exclusive), got " + format_number(s.alpha));
+    }
 }
 
 Material read_material(const json& j, const std::string& path, const std::string& name) {

@@ -182,3 +182,27 @@ set(disc_render_out ${LENSLAB_CLI_OUT}/detector_focus_render.png)
 lenslab_cli_test(NAME render.detector_focus
     ARGS render scenes/detector_focus.json -o ${disc_render_out} --width 32 --height 20 --spp 1 --photons 2000 -q
     CHECKS -DEXPECT_EXIT=zero -DOUTPUT=${disc_render_out} -DOUTPUT_CREATED=ON)
+# sppm: a pass count, or a time budget alone (which lifts the pass limit); --passes 0 alone
+# is refused before any work; path renders too.
+set(sppm_out ${LENSLAB_CLI_OUT}/sppm.png)
+lenslab_cli_test(NAME render.sppm_passes
+    ARGS render scenes/caustic_room.json -o ${sppm_out} --width 24 --height 24 --passes 3 --pass-photons 2000
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=wrote ${sppm_out} (24x24, 3 passes"
+           "-DSTDERR_CONTAINS=sppm: 3 passes, 6000 photons" -DOUTPUT=${sppm_out} -DOUTPUT_CREATED=ON)
+set(sppm_time_out ${LENSLAB_CLI_OUT}/sppm_time.png)
+lenslab_cli_test(NAME render.sppm_time
+    ARGS render --integrator sppm -o ${sppm_time_out} --width 16 --height 12 --time 0.2 --pass-photons 1000 -q
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=passes" -DOUTPUT=${sppm_time_out} -DOUTPUT_CREATED=ON)
+set(sppm_bad_out ${LENSLAB_CLI_OUT}/sppm_bad.png)
+lenslab_cli_test(NAME render.sppm_unbounded
+    ARGS render --integrator sppm -o ${sppm_bad_out} --passes 0
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --passes 0 means no pass limit, which needs a time budget (--time)"
+           -DOUTPUT=${sppm_bad_out} -DOUTPUT_CREATED=OFF)
+set(path_out ${LENSLAB_CLI_OUT}/path.png)
+lenslab_cli_test(NAME render.path
+    ARGS render scenes/caustic_room.json --integrator path -o ${path_out} --width 16 --height 16 --spp 2 -q
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=wrote ${path_out} (16x16, 2 spp"
+           -DOUTPUT=${path_out} -DOUTPUT_CREATED=ON)
+lenslab_cli_bad_scene(render_passes_zero_without_time
+    "render.passes: 0 means no pass limit, which needs a time budget: give render.time > 0")

@@ -1,6 +1,7 @@
 // The editor driven as a user would, on the offscreen platform: open, edit in a panel, see a
 // new frame, undo, save and reopen, refuse a broken file and an invalid value.
 
+#include <QAction>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -63,6 +64,20 @@ private slots:
         QVERIFY(wait_for_fresh_frame(w));
         QVERIFY(!w.viewport()->image().isNull());
         QVERIFY(w.status_text().contains("passes"));
+    }
+
+    void the_view_renders_with_sppm_unless_asked_otherwise() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));  // its render block asks for whitted
+        QVERIFY(wait_for_fresh_frame(w));
+        QVERIFY2(w.status_text().startsWith("sppm · passes"), qPrintable(w.status_text()));
+        QAction* own = w.findChild<QAction*>("view_with_scene_integrator");
+        QVERIFY(own);
+        QVERIFY(!own->isChecked());
+        own->trigger();
+        QVERIFY(w.renderer()->uses_scene_integrator());
+        QVERIFY(wait_for_fresh_frame(w));
+        QVERIFY2(w.status_text().startsWith("whitted · passes"), qPrintable(w.status_text()));
     }
 
     void panel_edit_changes_the_scene_renders_and_undoes() {
@@ -302,8 +317,8 @@ private slots:
         latency.start();
         type_value(field(w, "radius"), 0.6);
         QVERIFY(wait_for_fresh_frame(w, 60000));
-        qInfo("edit while rendering -> first frame of the edited scene: %lld ms (includes tracing "
-              "the photon maps again)", static_cast<long long>(latency.elapsed()));
+        qInfo("edit while rendering -> first frame of the edited scene: %lld ms (one sppm pass: "
+              "camera paths and photons)", static_cast<long long>(latency.elapsed()));
     }
 };
 

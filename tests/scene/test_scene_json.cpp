@@ -58,6 +58,26 @@ TEST(SceneJson, TheBenchReadsFilesWithoutACamera) {
                  SceneError);
 }
 
+TEST(SceneJson, SppmSettings) {
+    const Scene defaults = parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}})");
+    EXPECT_EQ(defaults.render.passes, 64);
+    EXPECT_EQ(defaults.render.time, 0.0);
+    EXPECT_EQ(defaults.render.pass_photons, 0);  // auto
+    EXPECT_EQ(defaults.render.initial_radius, 0.0);
+    EXPECT_DOUBLE_EQ(defaults.render.alpha, 2.0 / 3.0);
+    const Scene s = parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+      "render": {"integrator": "sppm", "passes": 0, "time": 30, "pass_photons": 5000,
+                 "initial_radius": 0.02, "alpha": 0.7}})");
+    EXPECT_EQ(s.render.integrator, "sppm");
+    EXPECT_EQ(s.render.passes, 0);
+    EXPECT_EQ(s.render.time, 30.0);
+    EXPECT_EQ(s.render.pass_photons, 5000);
+    EXPECT_EQ(s.render.initial_radius, 0.02);
+    EXPECT_EQ(s.render.alpha, 0.7);
+    EXPECT_EQ(parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+                              "render": {"integrator": "path"}})").render.integrator, "path");
+}
+
 TEST(SceneJson, NamedAndInlineMaterials) {
     const Scene s = parse_scene(R"({
       "camera": {"position": [0, 0, 5], "direction": [0, 0, -2]},

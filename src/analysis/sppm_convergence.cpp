@@ -1,0 +1,124 @@
+#include "analysis/sppm_convergence.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "render/progressive_render.h"
+#include "render/render_session.h"
+
+namespace lenslab {
+
+namespace {
+
+double luminance(const PixelRgb& p) { return 0.2126 * p.r + 0.7152 * p.g + 0.0722 * p.b; }
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+std::string format(const char* fmt, auto... args) {
+    char line[256];
+    std::snprintf(line, sizeof line, fmt, args...);
+    return line;
+}
+
+}  // namespace
+
+double block_relative_error(const Film& a, const Film& reference, int block) {
+    double sum = 0;
+    int n = 0;
+    for (int y0 = 0; y0 + block <= reference.height(); y0 += block) {
+        for (int x0 = 0; x0 + block <= reference.width(); x0 += block) {
+            double ma = 0, mr = 0;
+            for (int y = y0; y < y0 + block; ++y) {
+                for (int x = x0; x < x0 + block; ++x) {
+                    ma += luminance(a.at(x, y));
+                    mr += luminance(reference.at(x, y));
+                }
+            }
+            if (mr <= 0) continue;
+            sum += std::abs(ma - mr) / mr;
+            ++n;
+        }
+    }
+    return n ? sum / n : 0.0;
+}
+
+double rms_relative_error(const Film& a, const Film& reference) {
+    double sum2 = 0, mean = 0;
+    const size_t n = reference.pixels().size();
+    for (size_t i = 0; i < n; ++i) {
+        const double d = luminance(a.pixels()[i]) - luminance(reference.pixels()[i]);
+        sum2 += d * d;
+        mean += luminance(reference.pixels()[i]);
+    }
+    mean /= static_cast<double>(n);
+    return mean > 0 ? std::sqrt(sum2 / static_cast<double>(n)) / mean : 0.0;
+}
+
+ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings& s,
+                                  const std::function<void(const std::string&)>& log) {
+    ConvergenceResult r;
+    Scene base = scene;
+    base.render.width = s.width;
+    base.render.height = s.height;
+
+    // The reference takes a seed of its own, so the images measured share no samples with it.
+    Scene ref = base;
+    ref.render.integrator = "path";
+    ref.render.spp = s.reference_spp;
+    ref.render.seed = base.render.seed + 1000003;
+    RenderControl control;
+    RenderResult reference = render_scene(ref, control, s.threads);
+    r.reference = std::move(reference.film);
+    r.reference_seconds = reference.seconds;
+    log(format("reference: path, %d spp, %.2f s", s.reference_spp, r.reference_seconds));
+
+    auto add = [&](const std::string& integrator, int amount, double seconds, const Film& film) {
+        ConvergencePoint p{integrator, amount, seconds, block_relative_error(film, r.reference),
+                           rms_relative_error(film, r.reference)};
+        r.points.push_back(p);
+        log(format("%s %d: %.3f s, block error %.4f, rms error %.4f", integrator.c_str(), amount,
+                   seconds, p.block_error, p.rms_error));
+    };
+
+    Scene sppm = base;
+    sppm.render.integrator = "sppm";
+    ProgressiveRender progressive(sppm, s.threads);
+    double seconds = 0;
+    std::vector<int> passes = s.passes;
+    std::sort(passes.begin(), passes.end());
+    for (int target : passes) {
+        while (progressive.passes() < target) {
+            const auto t0 = std::chrono::steady_clock::now();
+            progressive.add_pass(control);
+            seconds += seconds_since(t0);
+        }
+        r.sppm_last = progressive.image();
+        add("sppm", target, seconds, r.sppm_last);
+    }
+
+    Scene path = base;
+    path.render.integrator = "path";
+    for (int spp : s.path_spp) {
+        path.render.spp = spp;
+        const RenderResult result = render_scene(path, control, s.threads);
+        add("path", spp, result.seconds, result.film);
+    }
+    return r;
+}
+
+std::string convergence_csv(const ConvergenceResult& r) {
+    std::ostringstream out;
+    out << "integrator,passes_or_spp,seconds,block_error,rms_error\n";
+    for (const ConvergencePoint& p : r.points) {
+        out << p.integrator << "," << p.amount << "," << p.seconds << "," << p.block_error << ","
+            << p.rms_error << "\n";
+    }
+    return out.str();
+}
+
+}  // namespace lenslab

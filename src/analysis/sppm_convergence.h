@@ -1,0 +1,52 @@
+#pragma once
+// How fast sppm converges, measured against a long path-traced reference: the error of the
+// sppm image after 1, 2, 4, ... passes, and of path-traced images of growing sample counts,
+// each with the time it took, so the two can be compared at equal time.
+// `lenslab bench sppm` runs it and writes the numbers and plots (docs/performance.md).
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "render/film.h"
+#include "scene/scene.h"
+
+namespace lenslab {
+
+struct ConvergenceSettings {
+    int width = 128, height = 128;
+    int reference_spp = 4096;
+    std::vector<int> passes{1, 2, 4, 8, 16, 32, 64, 128, 256};  // sppm snapshots (cumulative)
+    std::vector<int> path_spp{1, 4, 16, 64, 256, 1024};
+    int threads = 0;  // 0: all cores
+};
+
+struct ConvergencePoint {
+    std::string integrator;  // "sppm" or "path"
+    int amount = 0;          // passes or samples per pixel
+    double seconds = 0;      // rendering time to this point
+    double block_error = 0;  // mean over 8x8-pixel blocks of |block - reference| / reference
+    double rms_error = 0;    // RMS over pixels of the luminance error, over the reference's mean
+};
+
+struct ConvergenceResult {
+    Film reference;
+    double reference_seconds = 0;
+    std::vector<ConvergencePoint> points;
+    Film sppm_last;  // the sppm image after the most passes
+};
+
+// Mean over blocks of `block` x `block` pixels of |mean(a) - mean(reference)| / mean(reference),
+// in luminance; blocks the reference leaves black are skipped.
+double block_relative_error(const Film& a, const Film& reference, int block = 8);
+// Root mean square over pixels of the luminance difference, divided by the reference's mean.
+double rms_relative_error(const Film& a, const Film& reference);
+
+// Renders the reference (path, `reference_spp`, a seed of its own), then sppm pass by pass
+// and path at each sample count. `log` receives one line per measurement.
+ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings& s,
+                                  const std::function<void(const std::string&)>& log);
+
+std::string convergence_csv(const ConvergenceResult& r);
+
+}  // namespace lenslab

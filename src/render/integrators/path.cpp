@@ -1,0 +1,83 @@
+#include "render/integrators/path.h"
+
+#include <numbers>
+
+#include "math/frame.h"
+#include "math/rng.h"
+#include "math/sampling.h"
+#include "render/direct_light.h"
+#include "scene/interaction.h"
+
+namespace lenslab {
+
+PathIntegrator::PathIntegrator(const Scene& scene) : PixelIntegrator(scene) {
+    if (!scene.render.ambient.is_black()) m_ambient = illuminant_from_rgb(scene.render.ambient);
+    if (!scene.render.background.is_black())
+        m_background = illuminant_from_rgb(scene.render.background);
+}
+
+SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
+                                         Rng& rng) const {
+    const Scene& scene = m_scene;
+    SampledSpectrum l;
+    SampledSpectrum beta = SampledSpectrum::constant(1.0);
+    Ray ray = camera_ray;
+    bool seen_from_camera = true;  // no diffuse bounce yet: the camera sees this chain
+    bool count_emission = true;    // the last event was the camera or a specular one
+    bool hero_only = false;
+    for (int bounce = 0;; ++bounce) {
+        Interaction it;
+        // Refraction follows the hero wavelength (the others are dropped at a dispersive one).
+        if (!next_interaction(scene, ray, w.nm[0], it)) {
+            if (seen_from_camera && m_background) l += beta * m_background->sample(w);
+            break;
+        }
+        if (it.scattering.dispersive && !hero_only) {
+            hero_only = true;
+            beta = beta.hero_only();
+        }
+        const Material& m = *it.material;
+        const Vec3& p = it.point();
+        const Vec3& n = it.normal();
+        const bool front_side = dot(ray.direction, n) < 0.0;
+        const Vec3 facing = front_side ? n : -n;
+        if (count_emission && front_side && m.is_emitter()) l += beta * m.emission->sample(w);
+        if (bounce >= scene.render.max_depth) break;
+
+        const Scattering& s = it.scattering;
+        const bool diffuse = s.diffuse > 0.0 && !m.color.is_black();
+        if (diffuse) {
+            SampledSpectrum e =
+                direct_irradiance(scene, p, facing, scene.render.light_samples, w, rng) *
+                (1.0 / std::numbers::pi);
+            if (seen_from_camera && m_ambient) e += m_ambient->sample(w);
+            l += beta * m.albedo->sample(w) * e * s.diffuse;
+        }
+
+        // One event, with the material's weights as probabilities. The diffuse bounce
+        // survives with the albedo's largest component and carries albedo / that.
+        const double survive = diffuse ? s.diffuse * std::min(1.0, m.color.max_component()) : 0.0;
+        double u = rng.uniform();
+        if (u < survive) {
+            beta *= m.albedo->sample(w) * (s.diffuse / survive);
+            const Vec3 dir = Frame::from_axis(facing).to_world(
+                sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
+            ray = {p, dir};
+            seen_from_camera = false;
+            count_emission = false;
+            continue;
+        }
+        u -= survive;
+        const Branch* chosen = nullptr;
+        for (int i = 0; i < s.count && !chosen; ++i) {
+            if (u < s.branches[i].weight) chosen = &s.branches[i];
+            u -= s.branches[i].weight;
+        }
+        if (!chosen) break;  // absorbed
+        ray = {p, chosen->direction};
+        count_emission = true;
+    }
+    return l;
+}
+
+}  // namespace lenslab

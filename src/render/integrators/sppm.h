@@ -1,0 +1,71 @@
+#pragma once
+// Stochastic progressive photon mapping (Hachisuka & Jensen 2009, "Stochastic Progressive
+// Photon Mapping"). Each pass:
+//   1. traces one camera path per pixel through mirrors and glass to a diffuse surface, its
+//      visible point; the light found on the way (emission, direct light through shadow
+//      rays, ambient, background) is added at once;
+//   2. traces render.pass_photons photons per light (sppm_photons.h): caustics and indirect
+//      light, stored where they meet diffuse surfaces;
+//   3. gathers, for every pixel, the photons within its radius r on the same side of the
+//      same surface (a hash grid), and updates the pixel's statistics:
+//        N' = N + alpha M,  r'^2 = r^2 N' / (N + M),  tau' = (tau + Phi) r'^2 / r^2
+//      (M photons found, Phi their flux weighted by the visible point's reflectance).
+// After k passes of n photons the pixel's radiance is direct / k + tau / (k pi r^2): the
+// radius shrinks, the photon count grows without bound, and the estimate converges to the
+// right answer (no trade-off between the radius and the photon count, unlike photon_map).
+//
+// The initial radius (render.initial_radius, 0 = auto) is per pixel: 2 pixel footprints at
+// the distance of its first visible point, at most 0.5% of the scene's diagonal.
+//
+// Spectra: a visible point keeps its pixel's four wavelengths (stratified over the passes)
+// and evaluates each photon's flux, a function of wavelength, at them; paths through
+// dispersive glass take the pass's wavelength (pass_wavelength.h) and count through the
+// density it was drawn with. Output is the same for any thread count: per-pixel and
+// per-photon random streams, and each pixel sums its photons in photon order.
+
+#include <vector>
+
+#include "render/integrator.h"
+#include "render/pass_wavelength.h"
+
+namespace lenslab {
+
+struct SppmStats {
+    int passes = 0;
+    int64_t photons_emitted = 0;                                        // over all passes
+    size_t photon_hits = 0;                                             // stored in the last pass
+    double camera_seconds = 0, photon_seconds = 0, gather_seconds = 0;  // summed over passes
+    double mean_radius = 0;  // over pixels with a visible point, after the last pass
+};
+
+class SppmIntegrator final : public ProgressiveIntegrator {
+public:
+    explicit SppmIntegrator(const Scene& scene);
+    ~SppmIntegrator() override;
+
+    bool add_pass(RenderControl& control) override;
+    int passes() const override { return m_stats.passes; }
+    void develop(Film& film) const override;
+    const SppmStats& stats() const { return m_stats; }
+
+private:
+    struct Pixel;
+    struct VisiblePoint;
+    struct PassState;
+
+    void trace_camera_path(int x, int y, const PassState& pass, VisiblePoint& vp) const;
+    double auto_radius(double path_length) const;
+    int64_t pass_photons() const;
+
+    const Scene& m_scene;
+    int m_width, m_height;
+    double m_pixel_angle;  // angle one pixel subtends, radians (small-angle)
+    double m_radius_cap;   // largest automatic initial radius
+    PassWavelength m_pass_wavelength;
+    SpectrumPtr m_ambient, m_background;  // null when black
+    std::vector<Pixel> m_pixels;
+    std::vector<VisiblePoint> m_points;  // this pass's, kept to reuse the memory
+    SppmStats m_stats;
+};
+
+}  // namespace lenslab
