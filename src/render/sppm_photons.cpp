@@ -56,8 +56,7 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, int light, Rng& 
                 f *= scene.materials[out.chains[chain + k]].albedo->eval(lambda);
             power *= f;
             chain_length = 0;
-            it.scattering = scatter(*it.material, it.object->shape->is_closed(), ray.direction,
-                                    it.normal(), lambda);
+            it.scattering = scatter_at(it, ray.direction, lambda);
         }
         const Scattering& sc = it.scattering;
         const Material& m = *it.material;

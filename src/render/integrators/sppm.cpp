@@ -139,8 +139,7 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
         }
         if (!vp.dispersed && it.scattering.dispersive) {
             vp.dispersed = true;
-            it.scattering = scatter(*it.material, it.object->shape->is_closed(), ray.direction,
-                                    it.normal(), pass.lambda_nm);
+            it.scattering = scatter_at(it, ray.direction, pass.lambda_nm);
         }
         vp.path_length += it.hit.surface.t;
         const Material& m = *it.material;
