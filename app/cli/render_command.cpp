@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "render/image_io.h"
 #include "render/render_session.h"
+#include "scene/limits.h"
 #include "scene/scene_json.h"
 
 namespace lenslab::cli {
@@ -124,13 +125,13 @@ Action add_render_command(CLI::App& app) {
     cmd->add_option("-o,--output", args->output, "Output image: .png (sRGB) or .exr (linear)")
         ->capture_default_str();
     cmd->add_option("--width", args->width, "Image width in pixels (overrides the scene)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 16384));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxImageSide));
     cmd->add_option("--height", args->height, "Image height in pixels (overrides the scene)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 16384));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxImageSide));
     cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 20));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxSpp));
     cmd->add_option("--max-depth", args->max_depth, "Longest specular chain (overrides the scene)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, 1000));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, kMaxDepth));
     cmd->add_option("--seed", args->seed, "Random seed (overrides the scene)")
         ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{0}, int64_t{2147483647}));
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
@@ -141,7 +142,7 @@ Action add_render_command(CLI::App& app) {
     cmd->add_option("--integrator", args->integrator, "whitted or photon_map (overrides the scene)")
         ->check(CLI::IsMember(kIntegratorNames));
     cmd->add_option("--photons", args->photons, "Photons emitted per light (photon_map)")
-        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
+        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, kMaxPhotonsPerLight));
     cmd->add_option("--radius", args->radius, "Photon gather radius (photon_map)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--filter", args->filter, "Photon filter: cone, gaussian or box")

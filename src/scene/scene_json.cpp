@@ -13,6 +13,7 @@
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "scene/json_reader.h"
+#include "scene/limits.h"
 #include "scene/mesh_json.h"
 #include "scene/spectral_json.h"
 #include "scene/surface_json.h"
@@ -62,10 +63,11 @@ void read_render(const json& j, RenderSettings& s) {
                        {"width", "height", "spp", "max_depth", "seed", "ambient", "background",
                         "light_samples", "min_weight", "integrator", "photons", "radius",
                         "filter", "filter_k", "max_photons_per_estimate", "direct"});
-    s.width = static_cast<int>(r.integer("width", s.width, 1, 16384));
-    s.height = static_cast<int>(r.integer("height", s.height, 1, 16384));
-    s.spp = static_cast<int>(r.integer("spp", s.spp, 1, 1 << 20));
-    s.max_depth = static_cast<int>(r.integer("max_depth", s.max_depth, 0, 1000));
+    s.width = static_cast<int>(r.integer("width", s.width, 1, kMaxImageSide));
+    s.height = static_cast<int>(r.integer("height", s.height, 1, kMaxImageSide));
+    if (auto problem = image_size_problem(s.width, s.height)) throw SceneError("render", *problem);
+    s.spp = static_cast<int>(r.integer("spp", s.spp, 1, kMaxSpp));
+    s.max_depth = static_cast<int>(r.integer("max_depth", s.max_depth, 0, kMaxDepth));
     s.seed = static_cast<uint64_t>(r.integer("seed", static_cast<int64_t>(s.seed), 0, 2147483647));
     s.ambient = r.color("ambient", s.ambient);
     s.background = r.color("background", s.background);
@@ -77,7 +79,7 @@ void read_render(const json& j, RenderSettings& s) {
                          "a million rays), got " + format_number(s.min_weight));
     }
     s.integrator = r.choice("integrator", s.integrator, kIntegratorNames);
-    s.photons = r.integer("photons", s.photons, 1, int64_t{1} << 40);
+    s.photons = r.integer("photons", s.photons, 1, kMaxPhotonsPerLight);
     s.radius = r.positive("radius", s.radius);
     s.filter = r.choice("filter", s.filter, kPhotonFilterNames);
     s.filter_k = r.number("filter_k", s.filter_k);
@@ -354,6 +356,7 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir) {
     if (const json* jm = r.find("materials")) by_name = read_materials(*jm, scene.materials);
     if (const json* jo = r.find("objects")) {
         if (!jo->is_array()) throw SceneError("objects", "must be an array");
+        check_count(jo->size(), kMaxObjects, "objects", "objects");
         for (size_t i = 0; i < jo->size(); ++i) {
             scene.objects.push_back(
                 read_object((*jo)[i], index_path("objects", i), by_name, scene.materials, base_dir));
@@ -361,6 +364,7 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir) {
     }
     if (const json* jl = r.find("lights")) {
         if (!jl->is_array()) throw SceneError("lights", "must be an array");
+        check_count(jl->size(), kMaxLights, "lights", "lights");
         for (size_t i = 0; i < jl->size(); ++i) read_light((*jl)[i], index_path("lights", i), scene);
     }
     scene.build();
@@ -371,6 +375,10 @@ Scene load_scene_file(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         throw SceneError(path, "is a directory, not a scene file");
+    }
+    // Before opening: a device (/dev/zero) would never end, a huge file would fill memory.
+    if (auto problem = file_read_problem(path, kMaxSceneFileBytes)) {
+        throw SceneError(path, "cannot read scene file: it " + *problem);
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(path, std::string("cannot open scene file: ") + std::strerror(errno));

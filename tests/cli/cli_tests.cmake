@@ -101,3 +101,20 @@ lenslab_cli_test(NAME render.default_scene_file
 lenslab_cli_test(NAME trace.default_scene
     ARGS trace scenes/default.json --origin 0,3,0 --direction 0,-1,0
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=\"event\"" -DSTDOUT_JSON=ON -DJSON_EVENT=start)
+
+# Limits (docs/reliability.md): refused before any work, one line, nothing written.
+lenslab_cli_bad_scene(render_too_many_pixels
+    "render: 16384 x 16384 is 268435456 pixels, more than the 67108864 (8192 x 8192) allowed")
+set(pixels_out ${LENSLAB_CLI_OUT}/too_many_pixels.png)
+lenslab_cli_test(NAME render.limit.pixels_from_options
+    ARGS render -o ${pixels_out} --width 16384 --height 16384 --spp 1
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: image: 16384 x 16384 is 268435456 pixels, more than the 67108864 (8192 x 8192) allowed"
+           -DOUTPUT=${pixels_out} -DOUTPUT_CREATED=OFF)
+# Reading a device as a scene would never end.
+set(device_out ${LENSLAB_CLI_OUT}/dev_zero.png)
+lenslab_cli_test(NAME render.limit.scene_is_a_device
+    ARGS render /dev/zero -o ${device_out}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: /dev/zero: cannot read scene file: it is not a regular file (a device or a pipe)"
+           -DOUTPUT=${device_out} -DOUTPUT_CREATED=OFF)
