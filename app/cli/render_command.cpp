@@ -110,6 +110,12 @@ int run(const RenderArgs& a) {
                      static_cast<long long>(p.emitted), p.direct, p.caustic,
                      p.memory_bytes / (1024.0 * 1024.0), p.trace_seconds, p.build_seconds);
     }
+    if (control.non_finite_samples() > 0) {
+        std::fprintf(stderr,
+                     "lenslab: warning: %lld samples came out NaN or infinite and were left out of "
+                     "their pixels (a bug in lenslab; please report it with the scene)\n",
+                     static_cast<long long>(control.non_finite_samples()));
+    }
     write_image(result.film, a.output, a.exposure);
     std::printf("wrote %s (%dx%d, %d spp, %.2f s)\n", a.output.c_str(), s.width, s.height, s.spp,
                 result.seconds);

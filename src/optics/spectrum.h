@@ -69,6 +69,10 @@ Rgb to_rgb(const SampledSpectrum& s, const SampledWavelengths& w);
 Rgb spectrum_to_rgb(const class Spectrum& s);
 // Linear sRGB of a single wavelength sample of value `value` drawn with density `pdf`.
 Rgb sample_to_rgb(double value, double nm, double pdf);
+// Radiant power of a spectrum over the visible range (W for a light's flux spectrum): the
+// same integral spectrum_to_rgb takes, so one wavelength carrying it (sample_to_rgb with
+// pdf 1) has, on average, the spectrum's colour.
+double radiant_power(const class Spectrum& s);
 
 // A spectral distribution: reflectances, illuminants, blackbodies, laser lines.
 class Spectrum {

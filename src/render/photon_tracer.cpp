@@ -34,13 +34,17 @@ struct EmittedPhoton {
     Ray ray;
     Rgb power;
     const Spectrum* spectrum;  // spectral flux shape of its light
-    double scale;              // this photon's share of it
+    double radiant_power;      // W this photon carries: its share of the light's power
     double lambda_nm = 0;      // 0 until a dispersive refraction picks one
 
+    // The wavelength follows the spectrum's 1 nm histogram; the photon keeps its whole radiant
+    // power, so on average it has the spectrum's colour and it never gains power. (Weighting
+    // by the spectrum's value at the drawn wavelength over the histogram's density instead
+    // made photons of a line narrower than a bin up to 15 times brighter than their light.)
     void pick_wavelength(Rng& rng) {
         double nm;
-        const double pdf = spectrum->sample_wavelength(rng.uniform(), nm);
-        power = sample_to_rgb(spectrum->eval(nm) * scale, nm, pdf);
+        (void)spectrum->sample_wavelength(rng.uniform(), nm);
+        power = sample_to_rgb(radiant_power, nm, 1.0);
         lambda_nm = nm;
     }
 };
@@ -54,10 +58,18 @@ const Spectrum& emitted_spectrum(const Scene& scene, int light) {
     return *scene.beams[light - spheres - points].spectrum;
 }
 
-// Samples one photon of light `light`, whose spectrum's colour is `colour`.
-EmittedPhoton emit(const Scene& scene, int light, const Rgb& colour, int64_t n, Rng& rng) {
+// The colour and the radiant power of a light's spectrum, computed once per light.
+struct LightSpectrum {
+    Rgb colour;
+    double radiant_power;
+};
+
+// Samples one photon of light `light`.
+EmittedPhoton emit(const Scene& scene, int light, const LightSpectrum& ls, int64_t n, Rng& rng) {
     const Spectrum& spectrum = emitted_spectrum(scene, light);
-    auto make_emitted = [&](Ray ray, double scale) { return EmittedPhoton{ray, colour * scale, &spectrum, scale}; };
+    auto make_emitted = [&](Ray ray, double scale) {
+        return EmittedPhoton{ray, ls.colour * scale, &spectrum, ls.radiant_power * scale};
+    };
     const double inv_n = 1.0 / static_cast<double>(n);
     const int spheres = static_cast<int>(scene.emitters().size());
     const int points = static_cast<int>(scene.point_lights.size());
@@ -172,8 +184,11 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
     }
 
     std::vector<Photon> slots(static_cast<size_t>(n) * lights);
-    std::vector<Rgb> colours;
-    for (int l = 0; l < lights; ++l) colours.push_back(spectrum_to_rgb(emitted_spectrum(scene, l)));
+    std::vector<LightSpectrum> spectra;
+    for (int l = 0; l < lights; ++l) {
+        const Spectrum& s = emitted_spectrum(scene, l);
+        spectra.push_back({spectrum_to_rgb(s), radiant_power(s)});
+    }
     const int64_t chunks_per_light = (n + kChunk - 1) / kChunk;
     const int64_t chunks = chunks_per_light * lights;
     tbb::parallel_for(tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
@@ -185,7 +200,7 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
             for (int64_t i = first; i < last; ++i) {
                 const int64_t slot = light * n + i;
                 Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(slot));
-                slots[static_cast<size_t>(slot)] = trace_one(scene, emit(scene, light, colours[light], n, rng), settings.max_depth, rng);
+                slots[static_cast<size_t>(slot)] = trace_one(scene, emit(scene, light, spectra[light], n, rng), settings.max_depth, rng);
             }
         }
     });
