@@ -96,9 +96,9 @@ int run(const RenderArgs& a) {
     action.sa_flags = SA_RESETHAND;
     sigaction(SIGINT, &action, nullptr);
     const RenderResult result = render_scene(scene, control, threads);
-    signal(SIGINT, SIG_DFL);
-    g_control = nullptr;
     if (result.cancelled) {
+        signal(SIGINT, SIG_DFL);
+        g_control = nullptr;
         std::cerr << "\nlenslab: render cancelled; nothing written\n";
         return 130;
     }
@@ -116,7 +116,23 @@ int run(const RenderArgs& a) {
                      "their pixels (a bug in lenslab; please report it with the scene)\n",
                      static_cast<long long>(control.non_finite_samples()));
     }
-    write_image(result.film, a.output, a.exposure);
+    // The file is written atomically; holding Ctrl-C (and kill's SIGTERM) back until it is
+    // in place also leaves no temporary file behind. One that came meanwhile ends the
+    // process right after.
+    sigset_t interrupts, previous;
+    sigemptyset(&interrupts);
+    sigaddset(&interrupts, SIGINT);
+    sigaddset(&interrupts, SIGTERM);
+    sigprocmask(SIG_BLOCK, &interrupts, &previous);
+    signal(SIGINT, SIG_DFL);
+    g_control = nullptr;
+    try {
+        write_image(result.film, a.output, a.exposure);
+    } catch (...) {
+        sigprocmask(SIG_SETMASK, &previous, nullptr);
+        throw;
+    }
+    sigprocmask(SIG_SETMASK, &previous, nullptr);
     std::printf("wrote %s (%dx%d, %d spp, %.2f s)\n", a.output.c_str(), s.width, s.height, s.spp,
                 result.seconds);
     return 0;

@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <limits>
 
+#include "render/atomic_file.h"
+
 namespace lenslab {
 
 namespace {
@@ -99,18 +101,16 @@ void write_image(const Film& film, const std::string& path, double exposure_stop
         throw ImageError("cannot write '" + path + "': unknown image type '" + ext +
                          "' (use .png or .exr)");
     }
-    // Same directory, so the rename is atomic and never crosses file systems.
-    const std::string tmp = path + ".tmp" + ext;
-    if (ext == ".png") {
-        write_png(to_srgb8(film, exposure_stops), tmp);
-    } else {
-        write_exr(film, tmp, std::exp2(exposure_stops));
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw ImageError("cannot write '" + path + "': " + ec.message());
+    try {
+        write_atomically(path, [&](const std::string& tmp) {
+            if (ext == ".png") {
+                write_png(to_srgb8(film, exposure_stops), tmp);
+            } else {
+                write_exr(film, tmp, std::exp2(exposure_stops));
+            }
+        });
+    } catch (const FileWriteError& e) {
+        throw ImageError(e.what());
     }
 }
 

@@ -118,3 +118,10 @@ lenslab_cli_test(NAME render.limit.scene_is_a_device
     CHECKS -DEXPECT_EXIT=1
            "-DSTDERR_LINE=lenslab: error: /dev/zero: cannot read scene file: it is not a regular file (a device or a pipe)"
            -DOUTPUT=${device_out} -DOUTPUT_CREATED=OFF)
+
+# Ctrl-C stops a render at once and leaves no image and no temporary file
+# (interrupt_render.sh; its 3 s bound is a responsiveness check, see there).
+add_test(NAME cli.render.interrupt
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/interrupt_render.sh $<TARGET_FILE:lenslab> ${LENSLAB_CLI_OUT}/interrupt
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.render.interrupt PROPERTIES TIMEOUT 120 LABELS cli)
