@@ -14,6 +14,8 @@ Action add_render_command(CLI::App& app);
 Action add_trace_command(CLI::App& app);
 Action add_bench_command(CLI::App& app);
 Action add_glass_command(CLI::App& app);
+Action add_analyze_command(CLI::App& app);
+Action add_detect_command(CLI::App& app);
 
 
 }  // namespace lenslab::cli

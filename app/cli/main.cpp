@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
     const auto trace = lenslab::cli::add_trace_command(app);
     const auto bench = lenslab::cli::add_bench_command(app);
     const auto glass = lenslab::cli::add_glass_command(app);
+    const auto analyze = lenslab::cli::add_analyze_command(app);
+    const auto detect = lenslab::cli::add_detect_command(app);
 
     try {
         app.parse(argc, argv);
@@ -29,6 +31,8 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("trace")) return trace();
         if (app.got_subcommand("bench")) return bench();
         if (app.got_subcommand("glass")) return glass();
+        if (app.got_subcommand("analyze")) return analyze();
+        if (app.got_subcommand("detect")) return detect();
     } catch (const lenslab::SceneError& e) {
         std::cerr << "lenslab: error: " << e.what() << "\n";
         return 1;

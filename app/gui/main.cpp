@@ -1,6 +1,7 @@
 // lenslab-gui [SCENE]: the desktop editor.
 // lenslab-gui --screenshot FILE [--passes N] [SCENE]: render N passes, save a grab of the
-// whole window to FILE and exit (for documentation and checks).
+// whole window to FILE and exit (for documentation and checks). --measure first measures
+// the detectors and shows the selected one's map.
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -10,6 +11,7 @@
 
 #include <cstdio>
 
+#include "detector_dock.h"
 #include "main_window.h"
 #include "render_controller.h"
 #include "scene_tree.h"
@@ -27,7 +29,9 @@ int main(int argc, char** argv) {
     QCommandLineOption select("select", "Select an element first, by JSON pointer (e.g. /objects/1).", "POINTER");
     parser.addOption(screenshot);
     parser.addOption(passes);
+    QCommandLineOption measure("measure", "Measure the detectors and show the detector dock (with --screenshot: before the grab).");
     parser.addOption(select);
+    parser.addOption(measure);
     parser.process(app);
 
     lenslab::gui::MainWindow window;
@@ -41,6 +45,13 @@ int main(int argc, char** argv) {
     }
     if (parser.isSet(select)) window.tree()->select_pointer(parser.value(select));
     window.show();
+    bool measuring = parser.isSet(measure);
+    if (measuring) {
+        window.detector_dock()->raise();
+        QObject::connect(window.detector_dock(), &lenslab::gui::DetectorDock::measured, &window, [&] { measuring = false; });
+        window.detector_dock()->measure();
+        if (!window.detector_dock()->is_measuring()) measuring = false;  // no detector
+    }
 
     if (parser.isSet(screenshot)) {
         bool ok = false;
@@ -52,7 +63,7 @@ int main(int argc, char** argv) {
         const QString file = parser.value(screenshot);
         QObject::connect(window.renderer(), &lenslab::gui::RenderController::frame_ready, &window,
                          [&](const QImage&, int done) {
-                             if (done < wanted) return;
+                             if (done < wanted || measuring) return;
                              // Let the frame reach the viewport and the status bar first.
                              QTimer::singleShot(50, &window, [&] {
                                  // Atomic, like every file lenslab writes.

@@ -14,7 +14,9 @@
 #include <QStatusBar>
 #include <QToolBar>
 
+#include "detector_dock.h"
 #include "property_panel.h"
+#include "ray_diagram_dock.h"
 #include "render/image_io.h"
 #include "render_controller.h"
 #include "scene_document.h"
@@ -40,6 +42,15 @@ json new_element(const QString& kind, const json& at) {
         return {{"type", "triangle"}, {"name", "triangle"},
                 {"vertices", {{x - 0.5, y - 0.5, z}, {x + 0.5, y - 0.5, z}, {x, y + 0.5, z}}},
                 {"material", {{"color", {0.7, 0.7, 0.7}}}}};
+    }
+    if (kind == "disc" || kind == "rectangle") {
+        // A screen facing +z, marked as a detector.
+        json screen{{"type", kind.toStdString()}, {"name", kind == "disc" ? "detector disc" : "detector screen"},
+                    {"center", at}, {"normal", {0, 0, 1}}, {"material", {{"color", {0.7, 0.7, 0.7}}}},
+                    {"detector", {{"resolution", 64}}}};
+        if (kind == "disc") screen["radius"] = 0.5;
+        else screen["size"] = {1.0, 1.0};
+        return screen;
     }
     if (kind == "lens") {
         return {{"type", "lens"}, {"name", "lens"}, {"center", at}, {"axis", {0, 0, 1}},
@@ -68,6 +79,8 @@ MainWindow::MainWindow(QWidget* parent)
       m_tree(new SceneTree(m_document, this)),
       m_panel(new PropertyPanel(m_document, this)),
       m_viewport(new Viewport(m_document, this)),
+      m_ray_diagram(new RayDiagramDock(m_document, this)),
+      m_detector_dock(new DetectorDock(m_document, this)),
       m_status(new QLabel(this)) {
     setObjectName("main_window");
     setCentralWidget(m_viewport);
@@ -84,9 +97,15 @@ MainWindow::MainWindow(QWidget* parent)
     panel_dock->setObjectName("properties_dock");
     panel_dock->setWidget(scroll);
     addDockWidget(Qt::RightDockWidgetArea, panel_dock);
+    addDockWidget(Qt::BottomDockWidgetArea, m_ray_diagram);
+    addDockWidget(Qt::RightDockWidgetArea, m_detector_dock);
+    tabifyDockWidget(panel_dock, m_detector_dock);
+    panel_dock->raise();
     statusBar()->addWidget(m_status, 1);
 
     connect(m_tree, &SceneTree::pointer_selected, m_panel, &PropertyPanel::show_pointer);
+    connect(m_tree, &SceneTree::pointer_selected, m_ray_diagram, &RayDiagramDock::show_pointer);
+    connect(m_tree, &SceneTree::pointer_selected, m_detector_dock, &DetectorDock::show_pointer);
     connect(m_viewport, &Viewport::object_picked, this, [this](int object) {
         m_tree->select_pointer(object >= 0 ? QString("/objects/%1").arg(object) : QString());
     });
@@ -158,6 +177,8 @@ void MainWindow::build_menus() {
     QToolBar* tools = addToolBar(tr("Edit"));
     tools->setObjectName("edit_toolbar");
     for (const auto& [kind, label] : {std::pair{"sphere", tr("Add sphere")}, std::pair{"triangle", tr("Add triangle")},
+                                      std::pair{"disc", tr("Add detector disc")},
+                                      std::pair{"rectangle", tr("Add detector rectangle")},
                                       std::pair{"lens", tr("Add lens")},
                                       std::pair{"implicit", tr("Add implicit solid")},
                                       std::pair{"point", tr("Add point light")},

@@ -7,7 +7,9 @@
 
 namespace lenslab::gui {
 
+class DetectorDock;
 class PropertyPanel;
+class RayDiagramDock;
 class RenderController;
 class SceneDocument;
 class SceneTree;
@@ -33,10 +35,12 @@ public:
     SceneTree* tree() const { return m_tree; }
     PropertyPanel* panel() const { return m_panel; }
     Viewport* viewport() const { return m_viewport; }
+    RayDiagramDock* ray_diagram() const { return m_ray_diagram; }
+    DetectorDock* detector_dock() const { return m_detector_dock; }
     QString status_text() const { return m_status->text(); }
 
-    // Adds an object or light of `kind` (sphere, triangle, lens, implicit, point, beam) and
-    // selects it.
+    // Adds an object or light of `kind` (sphere, triangle, disc, rectangle, lens, implicit,
+    // point, beam) and selects it.
     void add_element(const QString& kind);
     void duplicate_selected();
     void delete_selected();
@@ -60,6 +64,8 @@ private:
     SceneTree* m_tree;
     PropertyPanel* m_panel;
     Viewport* m_viewport;
+    RayDiagramDock* m_ray_diagram;
+    DetectorDock* m_detector_dock;
     QLabel* m_status;
     QMenu* m_recent_menu = nullptr;
 };

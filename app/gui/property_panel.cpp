@@ -10,6 +10,7 @@
 
 #include "geometry/implicit_solid.h"
 #include "geometry/lens/sag_formula_surface.h"
+#include "optics/spectrum.h"
 #include "scene/json_reader.h"
 #include "scene/material.h"
 #include "scene/render_settings.h"
@@ -142,6 +143,14 @@ const json* PropertyPanel::value_at(const std::string& key) const {
 }
 
 void PropertyPanel::commit(const std::string& key, const json& value, const QString& label) {
+    // A field of a flag written as `true` ("detector": true) turns the flag into an object.
+    if (const size_t slash = key.rfind('/'); slash != std::string::npos) {
+        const json* parent = value_at(key.substr(0, slash));
+        if (parent && parent->is_boolean()) {
+            commit(key.substr(0, slash), json{{key.substr(slash + 1), value}}, label);
+            return;
+        }
+    }
     const json* current = value_at(key);
     if (current && *current == value) return;
     QString error;
@@ -390,22 +399,50 @@ void PropertyPanel::build_object() {
         for (int i = 0; i < 3; ++i) {
             add_vec3(tr("Vertex %1").arg(i + 1), "vertices/" + std::to_string(i), json::array({0, 0, 0}));
         }
+    } else if (type == "disc" || type == "rectangle") {
+        build_flat(type);
     } else if (type == "lens") {
         build_lens();
     } else if (type == "implicit") {
         build_implicit();
+    } else if (type == "lens_group") {
+        build_lens_group();  // each element has its own material
+        return;
     }
-    // The material: a named one is chosen from the list; an inline one is edited here.
+    if (type == "triangle" || type == "disc" || type == "rectangle") build_detector();
+    add_heading(tr("Material"));
+    build_material_ref(tr("Material"), "material");
+}
+
+// A named material is chosen from the list; an inline one is edited here.
+void PropertyPanel::build_material_ref(const QString& label, const std::string& key) {
     QStringList names;
     if (m_document->json().contains("materials")) {
         for (const auto& [name, v] : m_document->json()["materials"].items()) names << QString::fromStdString(name);
     }
-    add_heading(tr("Material"));
-    const json* m = value_at("material");
+    const json* m = value_at(key);
     if (m && m->is_string()) {
-        add_choice(tr("Material"), "material", m->get<std::string>(), names);
+        add_choice(label, key, m->get<std::string>(), names);
     } else {
-        build_material("material/");
+        build_material(key + "/");
+    }
+}
+
+void PropertyPanel::build_lens_group() {
+    add_vec3(tr("Front vertex"), "vertex", json::array({0, 0, 0}));
+    add_vec3(tr("Axis"), "axis", json::array({0, 0, 1}));
+    add_number(tr("Diameter"), "diameter", 1.0, 1e-6, 1e6);
+    const json* elements = value_at("elements");
+    if (!elements || !elements->is_array()) return;
+    for (size_t i = 0; i < elements->size(); ++i) {
+        const std::string e = "elements/" + std::to_string(i) + "/";
+        add_heading(tr("Element %1").arg(i + 1));
+        build_surface(tr("Front surface"), e + "front");
+        add_number(tr("Centre thickness"), e + "thickness", 1.0, 1e-6, 1e6);
+        // A cemented element's back is the next element's front.
+        if (value_at(e + "back")) build_surface(tr("Back surface"), e + "back");
+        if (i + 1 < elements->size()) add_number(tr("Air gap after"), e + "gap", 0.0, 0.0, 1e6);
+        build_material_ref(tr("Material"), e + "material");
     }
 }
 
@@ -448,6 +485,49 @@ void PropertyPanel::build_surface(const QString& label, const std::string& key) 
     if (shape == "sag") {
         add_formula(label + tr(" z(r) or z(x, y)"), key + "/formula", "r^2/100", SagFormulaSurface::check);
     }
+}
+
+void PropertyPanel::build_flat(const std::string& type) {
+    add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
+    add_vec3(tr("Normal (front)"), "normal", json::array({0, 0, 1}));
+    if (type == "disc") {
+        add_number(tr("Radius"), "radius", 1.0, 1e-9, 1e6);
+    } else {
+        add_number(tr("Width (along u)"), "size/0", 1.0, 1e-9, 1e6);
+        add_number(tr("Height (along v)"), "size/1", 1.0, 1e-9, 1e6);
+    }
+    // Left out, up is [0, 1, 0] (or [0, 0, -1] for a vertical normal); shown as given.
+    add_vec3(tr("Up (orients u, v)"), "up", json::array({0, 1, 0}));
+}
+
+void PropertyPanel::build_detector() {
+    add_heading(tr("Detector"));
+    const json* d = value_at("detector");
+    const bool on = d && !(d->is_boolean() && !d->get<bool>());
+    add_choice(tr("Measures irradiance"), "detector", on ? "yes" : "no", {"no", "yes"}, [this](const std::string& chosen) {
+        json element = *value_at("");
+        if (chosen == "yes") element["detector"] = {{"resolution", 64}};
+        else element.erase("detector");
+        commit("", element, tr("detector"));
+    });
+    if (!on) return;
+    const json* resolution = value_at("detector/resolution");
+    if (resolution && resolution->is_array()) {
+        add_integer(tr("Cells along u"), "detector/resolution/0", 64, 1, 1024);
+        add_integer(tr("Cells along v"), "detector/resolution/1", 64, 1, 1024);
+    } else {
+        add_integer(tr("Cells (longer side)"), "detector/resolution", 64, 1, 1024);
+    }
+    add_choice(tr("Face counted"), "detector/side", "front", {"front", "back", "both"});
+    // A number of bands shows as the edges it stands for (equal bands over 360-830 nm).
+    json edges = json::array({360, 490, 585, 830});
+    if (const json* bands = value_at("detector/bands"); bands && bands->is_number_integer() && bands->get<int>() > 0) {
+        edges = json::array();
+        const int n = bands->get<int>();
+        for (int i = 0; i <= n; ++i) edges.push_back(kLambdaMinNm + (kLambdaMaxNm - kLambdaMinNm) * i / n);
+    }
+    add_number_list(tr("Band edges (nm)"), "detector/bands", edges, 17);
+    add_text(tr("Length unit"), "detector/unit", "unit");
 }
 
 void PropertyPanel::build_implicit() {

@@ -1,7 +1,7 @@
 #pragma once
 // Edits what is selected in the scene tree: a form of typed fields (numbers with their valid
 // ranges, vectors, colours, choices) built for the kind of element selected: camera, render
-// settings, material, sphere, triangle, lens (both forms, every surface shape: flat, sphere,
+// settings, material, sphere, triangle, disc, rectangle (and the detector flag of these three), lens (both forms, every surface shape: flat, sphere,
 // conic, asphere, typed sag formula), implicit solid, light. Formulas are checked as they
 // are typed: the reason one would be refused shows next to the field at once, and the
 // field commits only a formula that parses.
@@ -70,8 +70,12 @@ private:
     void build_material(const std::string& prefix);
     void build_object();
     void build_lens();
+    void build_lens_group();
+    void build_material_ref(const QString& label, const std::string& key);
     void build_surface(const QString& label, const std::string& key);
     void build_implicit();
+    void build_flat(const std::string& type);  // disc, rectangle
+    void build_detector();
     void build_light();
     void build_spectrum(const std::string& prefix);
 

@@ -75,7 +75,7 @@ int Viewport::pick(const QPoint& pos) const {
     const double py = (pos.y() - r.top() + 0.5) * scene.render.height / double(r.height());
     SceneHit hit;
     if (!scene.intersect(camera.generate_ray(px, py), 0, std::numeric_limits<double>::infinity(), hit)) return -1;
-    return hit.object;
+    return scene.objects[hit.object].source;  // the scene file's entry (a lens group's, for its elements)
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {

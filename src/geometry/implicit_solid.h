@@ -42,7 +42,7 @@ public:
     bool is_closed() const override { return true; }
 
     // True for points (in world coordinates) inside or on the solid.
-    bool contains(const Vec3& p) const;
+    bool contains(const Vec3& p) const override;
     // f at a point given relative to the centre.
     double f(const Vec3& local) const { return (*m_formula)({local.x, local.y, local.z, 0.0}); }
     const std::string& formula() const { return m_formula->text(); }

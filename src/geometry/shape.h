@@ -20,6 +20,10 @@ public:
     virtual Aabb bounds() const = 0;
     // True when the shape encloses a volume, so refraction can enter and leave it.
     virtual bool is_closed() const = 0;
+    // True for points inside (or on) a closed shape; always false for an open one. The
+    // default asks which way the nearest surface along a fixed direction faces: a closed
+    // shape's normals point out, so a ray from inside meets its surface leaving it.
+    virtual bool contains(const Vec3& p) const;
 };
 
 }  // namespace lenslab

@@ -11,6 +11,9 @@ public:
     bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const override;
     Aabb bounds() const override;
     bool is_closed() const override { return true; }
+    bool contains(const Vec3& p) const override {
+        return length_squared(p - m_centre) <= m_radius * m_radius;
+    }
 
     const Vec3& centre() const { return m_centre; }
     double radius() const { return m_radius; }

@@ -104,6 +104,11 @@ const std::vector<Glass>& glass_catalogue() {
                      with_range(sellmeier_index({1.77931763, 0.338149866, 2.08734474},
                                                 {0.0133714182, 0.0617533621, 174.01759}), 370, 2500),
                      1.80518, 25.36});
+        // The flint of Thorlabs' visible achromats (AC254-100-A: N-BK7 + SF5).
+        g.push_back({"SF5", "flint, achromat partner of N-BK7", "SCHOTT data sheet SF5 (673322.407)",
+                     with_range(sellmeier_index({1.46141885, 0.247713019, 0.949995832},
+                                                {0.0111826126, 0.0508594669, 112.041888}), 370, 2500),
+                     1.67270, 32.21});
         g.push_back({"N-FK51A", "fluor crown, low dispersion (apochromats)", "SCHOTT data sheet N-FK51A (487845.368)",
                      with_range(sellmeier_index({0.971247817, 0.216901417, 0.904651666},
                                                 {0.00472301995, 0.0153575612, 168.68133}), 290, 2500),

@@ -223,6 +223,20 @@ double Spectrum::sample_wavelength(double u, double& nm) const {
     return in_bin / total;  // density per nm, constant over this 1 nm bin
 }
 
+double radiant_watts(const Spectrum& s, double lo_nm, double hi_nm) {
+    // The midpoint rule on the grid `integrate` uses (0.1 nm), clipped to [lo, hi], so the
+    // bands of a partition sum to the whole and a white light of power P gives P watts.
+    constexpr double step = 0.1;
+    lo_nm = std::max(lo_nm, kLambdaMinNm);
+    hi_nm = std::min(hi_nm, kLambdaMaxNm);
+    double sum = 0.0;
+    for (double nm = kLambdaMinNm + 0.5 * step; nm < kLambdaMaxNm; nm += step) {
+        const double a = std::max(lo_nm, nm - 0.5 * step), b = std::min(hi_nm, nm + 0.5 * step);
+        if (b > a) sum += s.eval(nm) * (b - a);
+    }
+    return sum / calibration().d65_power;
+}
+
 SpectrumPtr reflectance_from_rgb(const Rgb& rgb) {
     return std::make_shared<BandSpectrum>(calibration().weights(rgb, 1.0), false);
 }

@@ -100,6 +100,12 @@ SpectrumPtr reflectance_from_rgb(const Rgb& rgb);
 // An illuminant: D65 times the bands; renders to `rgb` (so [1, 1, 1] is D65 white, Y = 1).
 SpectrumPtr illuminant_from_rgb(const Rgb& rgb);
 SampledSpectrum illuminant_from_rgb(const Rgb& rgb, const SampledWavelengths& w);
+// Light spectra are `power` times a shape whose integral over the visible range is that of
+// D65 white (scaled to Y = 1); this converts such spectral power back to watts: the watts
+// between lo_nm and hi_nm of spectral power `s` (radiant_power(s) / D65's, over the whole
+// visible range).
+double radiant_watts(const Spectrum& s, double lo_nm = kLambdaMinNm, double hi_nm = kLambdaMaxNm);
+
 // Light spectra normalised to the radiant power of D65 white over the visible range, so a
 // light's `power` means the same energy whatever its spectrum.
 SpectrumPtr d65_spectrum();

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 
 #include "render/atomic_file.h"
@@ -66,7 +67,50 @@ void write_exr(const Film& film, const std::string& path, double scale) {
     }
 }
 
+// write_atomically (render/atomic_file.h), with a failed rename reported as an ImageError
+// like every other failure here.
+template <class Write>
+void write_via_temporary(const std::string& path, Write write) {
+    try {
+        write_atomically(path, write);
+    } catch (const FileWriteError& e) {
+        throw ImageError(e.what());
+    }
+}
+
 }  // namespace
+
+void write_png_image(const Image8& image, const std::string& path) {
+    write_via_temporary(path, [&](const std::string& tmp) { write_png(image, tmp); });
+}
+
+void write_exr_channels(int width, int height, const std::vector<ExrChannel>& channels, const std::string& path) {
+    write_via_temporary(path, [&](const std::string& tmp) {
+        try {
+            Imf::Header header(width, height);
+            for (const ExrChannel& c : channels) header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+            Imf::OutputFile file(tmp.c_str(), header);
+            Imf::FrameBuffer fb;
+            const size_t xs = sizeof(float), ys = sizeof(float) * static_cast<size_t>(width);
+            for (const ExrChannel& c : channels) {
+                fb.insert(c.name, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(c.values.data())), xs, ys));
+            }
+            file.setFrameBuffer(fb);
+            file.writePixels(height);
+        } catch (const std::exception& e) {
+            throw ImageError("cannot write EXR '" + path + "': " + e.what());
+        }
+    });
+}
+
+void write_text_file(const std::string& text, const std::string& path) {
+    write_via_temporary(path, [&](const std::string& tmp) {
+        std::ofstream out(tmp, std::ios::binary);
+        out << text;
+        out.close();
+        if (!out) throw ImageError("cannot write '" + path + "'");
+    });
+}
 
 double linear_to_srgb(double v) {
     if (!(v > 0.0)) return 0.0;
@@ -101,17 +145,13 @@ void write_image(const Film& film, const std::string& path, double exposure_stop
         throw ImageError("cannot write '" + path + "': unknown image type '" + ext +
                          "' (use .png or .exr)");
     }
-    try {
-        write_atomically(path, [&](const std::string& tmp) {
-            if (ext == ".png") {
-                write_png(to_srgb8(film, exposure_stops), tmp);
-            } else {
-                write_exr(film, tmp, std::exp2(exposure_stops));
-            }
-        });
-    } catch (const FileWriteError& e) {
-        throw ImageError(e.what());
-    }
+    write_via_temporary(path, [&](const std::string& tmp) {
+        if (ext == ".png") {
+            write_png(to_srgb8(film, exposure_stops), tmp);
+        } else {
+            write_exr(film, tmp, std::exp2(exposure_stops));
+        }
+    });
 }
 
 Image8 read_png(const std::string& path) {

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "render/film.h"
 
@@ -32,5 +33,19 @@ struct Image8 {
 };
 Image8 read_png(const std::string& path);
 Image8 to_srgb8(const Film& film, double exposure_stops = 0.0);
+
+// Writes an 8-bit image as a PNG, atomically (temporary file, then rename). Throws ImageError.
+void write_png_image(const Image8& image, const std::string& path);
+
+// One named float channel of an EXR image, `width * height` values, row 0 at the top.
+struct ExrChannel {
+    std::string name;
+    std::vector<float> values;
+};
+// Writes linear float channels as an OpenEXR file, atomically. Throws ImageError.
+void write_exr_channels(int width, int height, const std::vector<ExrChannel>& channels, const std::string& path);
+
+// Writes `text` to `path` atomically (temporary file, then rename). Throws ImageError.
+void write_text_file(const std::string& text, const std::string& path);
 
 }  // namespace lenslab

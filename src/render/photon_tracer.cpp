@@ -34,7 +34,8 @@ struct EmittedPhoton {
     Ray ray;
     Rgb power;
     const Spectrum* spectrum;  // spectral flux shape of its light
-    double radiant_power;      // W this photon carries: its share of the light's power
+    double scale;              // this photon's share of it
+    double radiant_power;      // what it carries: scale x the spectrum's radiant power
     double lambda_nm = 0;      // 0 until a dispersive refraction picks one
 
     // The wavelength follows the spectrum's 1 nm histogram; the photon keeps its whole radiant
@@ -68,7 +69,7 @@ struct LightSpectrum {
 EmittedPhoton emit(const Scene& scene, int light, const LightSpectrum& ls, int64_t n, Rng& rng) {
     const Spectrum& spectrum = emitted_spectrum(scene, light);
     auto make_emitted = [&](Ray ray, double scale) {
-        return EmittedPhoton{ray, ls.colour * scale, &spectrum, ls.radiant_power * scale};
+        return EmittedPhoton{ray, ls.colour * scale, &spectrum, scale, ls.radiant_power * scale};
     };
     const double inv_n = 1.0 / static_cast<double>(n);
     const int spheres = static_cast<int>(scene.emitters().size());
@@ -112,15 +113,19 @@ Photon make_photon(const Vec3& p, const Rgb& power, const Vec3& towards, PhotonK
 // material's weights: diffuse (store; power / p_diffuse keeps the estimate unbiased),
 // one of the specular branches (power unchanged: its weight equals its probability), or
 // absorption.
-Photon trace_one(const Scene& scene, EmittedPhoton e, int max_depth, Rng& rng) {
+// `on_arrival`, if given, sees the photon at every surface before the material acts.
+Photon trace_one(const Scene& scene, EmittedPhoton e, int max_depth, Rng& rng,
+                 const PhotonArrivalFn* on_arrival = nullptr, int light = 0) {
     Ray ray = e.ray;
     for (int depth = 0; depth <= max_depth; ++depth) {
         Interaction it;
         if (!next_interaction(scene, ray, e.lambda_nm > 0 ? e.lambda_nm : kLineD, it)) break;
+        if (on_arrival) {
+            (*on_arrival)(PhotonArrival{&it, ray.direction, light, depth, e.spectrum, e.scale, e.lambda_nm});
+        }
         if (e.lambda_nm == 0 && it.scattering.dispersive) {
             e.pick_wavelength(rng);
-            it.scattering = scatter(*it.material, it.object->shape->is_closed(), ray.direction, it.normal(),
-                                    e.lambda_nm);
+            it.scattering = scatter_at(it, ray.direction, e.lambda_nm);
         }
         const Scattering& s = it.scattering;
         double u = rng.uniform();
@@ -216,6 +221,16 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
         stats->memory_bytes = map.memory_bytes();
     }
     return map;
+}
+
+void trace_photon_path(const Scene& scene, const PhotonTracingSettings& settings, int light, int64_t index,
+                       const PhotonArrivalFn& on_arrival) {
+    // The stream and the draws of trace_photons' slot for this photon; the colour only
+    // feeds the stored RGB power, which nothing reads here.
+    const int64_t slot = light * settings.photons_per_light + index;
+    Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(slot));
+    const EmittedPhoton e = emit(scene, light, LightSpectrum{}, settings.photons_per_light, rng);
+    (void)trace_one(scene, e, settings.max_depth, rng, &on_arrival, light);
 }
 
 }  // namespace lenslab

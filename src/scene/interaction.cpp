@@ -10,9 +10,13 @@ bool next_interaction(const Scene& scene, const Ray& ray, double lambda_nm, Inte
     }
     out.object = &scene.objects[out.hit.object];
     out.material = &scene.materials[out.object->material];
-    out.scattering =
-        scatter(*out.material, out.object->shape->is_closed(), ray.direction, out.normal(), lambda_nm);
+    out.beyond = scene.medium_beyond(out.hit.object, out.point(), out.normal());
+    out.scattering = scatter_at(out, ray.direction, lambda_nm);
     return true;
+}
+
+Scattering scatter_at(const Interaction& it, const Vec3& d, double lambda_nm) {
+    return scatter(*it.material, it.object->shape->is_closed(), d, it.normal(), lambda_nm, it.beyond);
 }
 
 }  // namespace lenslab

@@ -12,11 +12,15 @@ struct Interaction {
     SceneHit hit;
     const SceneObject* object = nullptr;
     const Material* material = nullptr;
+    const Material* beyond = nullptr;  // the cemented glass on the other side, or nullptr: air
     Scattering scattering;
 
     const Vec3& point() const { return hit.surface.point; }
     const Vec3& normal() const { return hit.surface.normal; }  // outward
 };
+
+// How the interaction's surface splits light arriving along `d` at `lambda_nm`.
+Scattering scatter_at(const Interaction& it, const Vec3& d, double lambda_nm);
 
 // False when the ray leaves the scene. The ray's origin is taken to lie on the surface it
 // left, so hits closer than surface_epsilon(origin) are ignored. Refraction is computed for

@@ -19,7 +19,7 @@ const char* event_name(Event e) {
 }
 
 Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& outward_normal,
-                   double lambda_nm) {
+                   double lambda_nm, const Material* beyond) {
     Scattering s;
     s.diffuse = m.diffuse_weight();
     const bool entering = dot(d, outward_normal) < 0.0;
@@ -32,8 +32,9 @@ Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& ou
     if (m.transparency > 0.0) {
         if (closed) {
             const double n = m.ior(lambda_nm);
-            const double eta_i = entering ? kOutsideIor : n;
-            const double eta_t = entering ? n : kOutsideIor;
+            const double n_beyond = beyond ? beyond->ior(lambda_nm) : kOutsideIor;
+            const double eta_i = entering ? n_beyond : n;
+            const double eta_t = entering ? n : n_beyond;
             const FresnelTerms f = fresnel_dielectric(cos_i, eta_i, eta_t);
             if (f.total_internal_reflection) {
                 reflected += m.transparency;
@@ -43,7 +44,7 @@ Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& ou
                 reflected += m.transparency * r;
                 if (auto t = refract(d, facing, eta_i / eta_t)) {
                     s.branches[s.count++] = {Event::Refract, *t, m.transparency * (1.0 - r)};
-                    s.dispersive = m.index->dispersive();
+                    s.dispersive = m.index->dispersive() || (beyond && beyond->index->dispersive());
                 }
             }
         } else {

@@ -1,5 +1,7 @@
 #include "scene/scene.h"
 
+#include <algorithm>
+
 namespace lenslab {
 
 void Scene::build() {
@@ -16,6 +18,65 @@ void Scene::build() {
         }
     }
     m_bvh = Bvh(std::move(shapes));
+    find_touching_solids();
+}
+
+namespace {
+
+bool is_dielectric_solid(const SceneObject& o, const Material& m) {
+    return o.shape->is_closed() && m.transparency > 0.0;
+}
+
+Aabb padded(Aabb b) {
+    const double pad = surface_epsilon(b.hi) + surface_epsilon(b.lo);
+    for (int a = 0; a < 3; ++a) {
+        b.lo[a] -= pad;
+        b.hi[a] += pad;
+    }
+    return b;
+}
+
+bool overlap(const Aabb& a, const Aabb& b) {
+    for (int k = 0; k < 3; ++k) {
+        if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+// Pairs of transparent solids whose (padded) boxes overlap. Quadratic in the number of
+// transparent solids, which scenes have few of; opaque objects and open surfaces never count.
+void Scene::find_touching_solids() {
+    m_touching.assign(objects.size(), {});
+    std::vector<int> solids;
+    for (size_t i = 0; i < objects.size(); ++i) {
+        if (is_dielectric_solid(objects[i], material_of(static_cast<int>(i)))) {
+            solids.push_back(static_cast<int>(i));
+        }
+    }
+    for (size_t a = 0; a < solids.size(); ++a) {
+        const Aabb box = padded(objects[solids[a]].shape->bounds());
+        for (size_t b = a + 1; b < solids.size(); ++b) {
+            if (overlap(box, padded(objects[solids[b]].shape->bounds()))) {
+                m_touching[solids[a]].push_back(solids[b]);
+                m_touching[solids[b]].push_back(solids[a]);
+            }
+        }
+    }
+}
+
+const Material* Scene::medium_beyond(int object, const Vec3& point, const Vec3& outward_normal) const {
+    const std::vector<int>& candidates = m_touching[object];
+    if (candidates.empty()) return nullptr;
+    // Step just off the surface, to the side away from `object`: ten times the offset rays
+    // use to leave a surface, far above the rounding of two solids' shared surface and far
+    // below any air gap a scene means.
+    const Vec3 probe = point + outward_normal * (10.0 * surface_epsilon(point));
+    for (int other : candidates) {
+        if (objects[other].shape->contains(probe)) return &material_of(other);
+    }
+    return nullptr;
 }
 
 bool Scene::intersect(const Ray& ray, double t_min, double t_max, SceneHit& hit) const {

@@ -3,25 +3,32 @@
 // from it. Immutable once built; renders and traces only read it.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "accel/bvh.h"
 #include "geometry/sphere.h"
 #include "scene/camera_settings.h"
+#include "scene/detector_settings.h"
 #include "scene/light.h"
 #include "scene/material.h"
 #include "scene/render_settings.h"
 
 namespace lenslab {
 
-enum class ObjectType { Sphere, Triangle, Lens, Mesh, Implicit };  // Mesh: a mesh or a prism
+enum class ObjectType { Sphere, Triangle, Lens, Mesh, Implicit, Disc, Rectangle };  // Mesh: a mesh or a prism
 
 struct SceneObject {
     std::string name;  // the user's `name`, or the JSON path "objects[i]"
     ObjectType type = ObjectType::Sphere;
     std::shared_ptr<const Shape> shape;
     int material = 0;  // index into Scene::materials
+    int source = -1;   // index of the scene file's `objects` entry it came from (a lens group
+                       // makes several objects)
+    std::string group;  // the lens group's name, for its elements
+    // Set when the object is a detector (triangles, discs and rectangles only).
+    std::optional<DetectorSettings> detector;
 };
 
 // An emitting sphere: the report's light source.
@@ -52,13 +59,22 @@ public:
     bool occluded(const Ray& ray, double t_min, double t_max) const;
 
     const Material& material_of(int object) const { return materials[objects[object].material]; }
+    // The transparent solid on the other side of `object`'s surface at `point` (a cemented
+    // neighbour sharing that surface), or nullptr when the other side is air.
+    // `outward_normal` points out of `object`.
+    const Material* medium_beyond(int object, const Vec3& point, const Vec3& outward_normal) const;
     // Objects whose material emits light: spheres (the report's lights).
     const std::vector<SphereEmitter>& emitters() const { return m_emitters; }
     Aabb bounds() const { return m_bvh.bounds(); }
 
 private:
+    void find_touching_solids();
+
     Bvh m_bvh;
     std::vector<SphereEmitter> m_emitters;
+    // For each object, the transparent solids whose boxes touch its box: the only candidates
+    // for a shared surface. Empty for nearly every object, so medium_beyond costs nothing.
+    std::vector<std::vector<int>> m_touching;
 };
 
 }  // namespace lenslab

@@ -13,8 +13,10 @@
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "scene/json_reader.h"
+#include "scene/lens_group_json.h"
 #include "scene/limits.h"
 #include "scene/mesh_json.h"
+#include "scene/planar_json.h"
 #include "scene/spectral_json.h"
 #include "scene/surface_json.h"
 
@@ -259,6 +261,13 @@ std::shared_ptr<const Shape> read_implicit(JsonObjectReader& r) {
     return solid;
 }
 
+void check_not_emitting(JsonObjectReader& r, const Material& m) {
+    if (m.is_emitter()) {
+        throw SceneError(r.child_path("material"),
+                         "only spheres can emit light (the material has an emission)");
+    }
+}
+
 SceneObject read_object(const json& j, const std::string& path,
                         const std::map<std::string, int>& materials, std::vector<Material>& all,
                         const std::string& base_dir) {
@@ -270,7 +279,13 @@ SceneObject read_object(const json& j, const std::string& path,
         keys.insert(keys.end(), {"center", "radius"});
     } else if (type == "triangle") {
         o.type = ObjectType::Triangle;
-        keys.insert(keys.end(), {"vertices"});
+        keys.insert(keys.end(), {"vertices", "detector"});
+    } else if (type == "disc") {
+        o.type = ObjectType::Disc;
+        keys.insert(keys.end(), disc_keys().begin(), disc_keys().end());
+    } else if (type == "rectangle") {
+        o.type = ObjectType::Rectangle;
+        keys.insert(keys.end(), rectangle_keys().begin(), rectangle_keys().end());
     } else if (type == "lens") {
         o.type = ObjectType::Lens;
         keys.insert(keys.end(), {"center", "axis", "curvature_radius", "aperture_radius",
@@ -284,7 +299,10 @@ SceneObject read_object(const json& j, const std::string& path,
         keys.insert(keys.end(), {"center", "formula", "bounds", "steps"});
     } else {
         throw SceneError(path + ".type", "unknown object type '" + type +
-                                             "' (known: sphere, triangle, lens, mesh, prism, implicit)");
+                                             "' (known: sphere, triangle, disc, rectangle, lens, lens_group, mesh, prism, implicit)");
+    }
+    if (o.type != ObjectType::Triangle && o.type != ObjectType::Disc && o.type != ObjectType::Rectangle) {
+        check_detector_allowed(j, path, type);
     }
     JsonObjectReader r(j, path, keys, (type == "implicit" ? "an " : "a ") + type);
     o.name = r.string("name", path);
@@ -298,13 +316,15 @@ SceneObject read_object(const json& j, const std::string& path,
             o.shape = type == "mesh" ? read_mesh(r, base_dir) : read_prism(r);
             break;
         case ObjectType::Implicit: o.shape = read_implicit(r); break;
+        case ObjectType::Disc: o.shape = read_disc(r); break;
+        case ObjectType::Rectangle: o.shape = read_rectangle(r); break;
+    }
+    if (o.type == ObjectType::Triangle || o.type == ObjectType::Disc || o.type == ObjectType::Rectangle) {
+        o.detector = read_detector(r);
     }
     o.material = read_material_ref(r, o.name, materials, all);
     if (o.type == ObjectType::Mesh) check_mesh_material(r, *o.shape, all[o.material]);
-    if (all[o.material].is_emitter() && o.type != ObjectType::Sphere) {
-        throw SceneError(r.child_path("material"),
-                         "only spheres can emit light (the material has an emission)");
-    }
+    if (o.type != ObjectType::Sphere) check_not_emitting(r, all[o.material]);
     return o;
 }
 
@@ -335,13 +355,14 @@ void read_light(const json& j, const std::string& path, Scene& scene) {
 }  // namespace
 
 Scene parse_scene(const std::string& text, const std::string& source,
-                  const std::string& base_dir) {
+                  const std::string& base_dir, const SceneReadOptions& options) {
     const json root = parse_json_strict(text, source);
     if (!root.is_object()) throw SceneError(source, "the top level must be a JSON object { ... }");
-    return scene_from_json(root, base_dir);
+    return scene_from_json(root, base_dir, options);
 }
 
-Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir) {
+Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
+                      const SceneReadOptions& options) {
     JsonObjectReader r(root, "",
                        {"version", "description", "camera", "render", "materials", "objects",
                         "lights"});
@@ -350,7 +371,7 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir) {
     (void)r.string("description", "");
 
     Scene scene;
-    read_camera(r.require("camera"), scene.camera);
+    if (options.require_camera || r.has("camera")) read_camera(r.require("camera"), scene.camera);
     if (const json* jr = r.find("render")) read_render(*jr, scene.render);
     std::map<std::string, int> by_name;
     if (const json* jm = r.find("materials")) by_name = read_materials(*jm, scene.materials);
@@ -358,8 +379,21 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir) {
         if (!jo->is_array()) throw SceneError("objects", "must be an array");
         check_count(jo->size(), kMaxObjects, "objects", "objects");
         for (size_t i = 0; i < jo->size(); ++i) {
-            scene.objects.push_back(
-                read_object((*jo)[i], index_path("objects", i), by_name, scene.materials, base_dir));
+            const std::string path = index_path("objects", i);
+            if (peek_type((*jo)[i], path) == "lens_group") {
+                const auto material = [&](JsonObjectReader& element, const std::string& owner) {
+                    const int m = read_material_ref(element, owner, by_name, scene.materials);
+                    check_not_emitting(element, scene.materials[m]);
+                    return m;
+                };
+                for (SceneObject& o : read_lens_group((*jo)[i], path, material)) {
+                    o.source = static_cast<int>(i);
+                    scene.objects.push_back(std::move(o));
+                }
+                continue;
+            }
+            scene.objects.push_back(read_object((*jo)[i], path, by_name, scene.materials, base_dir));
+            scene.objects.back().source = static_cast<int>(i);
         }
     }
     if (const json* jl = r.find("lights")) {
@@ -371,7 +405,7 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir) {
     return scene;
 }
 
-Scene load_scene_file(const std::string& path) {
+Scene load_scene_file(const std::string& path, const SceneReadOptions& options) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         throw SceneError(path, "is a directory, not a scene file");
@@ -387,7 +421,8 @@ Scene load_scene_file(const std::string& path) {
     if (in.bad()) throw SceneError(path, "cannot read scene file");
     try {
         // Files a scene names (OBJ meshes) are found next to it.
-        return parse_scene(text.str(), path, std::filesystem::path(path).parent_path().string());
+        return parse_scene(text.str(), path, std::filesystem::path(path).parent_path().string(),
+                           options);
     } catch (const SceneError& e) {
         // Prefix the file name so the message says where, whatever the JSON path.
         if (e.path() == path || e.path().empty()) throw SceneError(path, e.reason());

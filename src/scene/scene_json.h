@@ -10,19 +10,26 @@
 
 namespace lenslab {
 
+// What a reader demands beyond the format itself. The renderer needs a camera; the optical
+// bench (`lenslab analyze`) reads files that hold only lenses and their materials.
+struct SceneReadOptions {
+    bool require_camera = true;
+};
+
 // Parses scene JSON text. `source` names the text in syntax-error messages (a file name).
 // Relative paths in the scene (a mesh's OBJ `file`) are looked up in `base_dir` ("" = the
 // current directory). Throws SceneError; the returned scene is built and ready to render.
 Scene parse_scene(const std::string& text, const std::string& source = "scene",
-                  const std::string& base_dir = "");
+                  const std::string& base_dir = "", const SceneReadOptions& options = {});
 
 // Builds a scene from an already parsed JSON document (an editor's model), resolving
 // relative paths against `base_dir` as parse_scene does. Throws SceneError.
-Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir = "");
+Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir = "",
+                      const SceneReadOptions& options = {});
 
 // Reads and parses a scene file; relative paths in it are relative to the file's folder.
 // Throws SceneError (unreadable file, syntax, content).
-Scene load_scene_file(const std::string& path);
+Scene load_scene_file(const std::string& path, const SceneReadOptions& options = {});
 
 // The built-in default scene (scenes/default.json, compiled in).
 const std::string& default_scene_text();

@@ -102,6 +102,87 @@ lenslab_cli_test(NAME trace.default_scene
     ARGS trace scenes/default.json --origin 0,3,0 --direction 0,-1,0
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=\"event\"" -DSTDOUT_JSON=ON -DJSON_EVENT=start)
 
+# `analyze`: the optical bench reads lens-only files (no camera), prints a table, JSON with
+# the named figures, writes an SVG ray diagram, and refuses what is not one lens system.
+set(analyze_data tests/analysis/data)
+lenslab_cli_test(NAME analyze.table
+    ARGS analyze ${analyze_data}/lens_only.json
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=49.8258  ")
+lenslab_cli_test(NAME analyze.doublet_table
+    ARGS analyze scenes/achromat_doublet.json
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=objects[0].back = objects[1].front")
+lenslab_cli_test(NAME analyze.json
+    ARGS analyze ${analyze_data}/lens_only.json --json --wavelength 656.2725
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON
+           "-DJSON_KEYS=efl,bfl,ffl,rms_spot_paraxial,rms_spot_best,best_focus,chromatic_shift_FC,wavelength_nm,principal_planes,lsa"
+           "-DSTDOUT_CONTAINS=\"wavelength_nm\": 656.2725")
+set(analyze_svg ${LENSLAB_CLI_OUT}/doublet.svg)
+lenslab_cli_test(NAME analyze.svg
+    ARGS analyze scenes/achromat_doublet.json --svg ${analyze_svg} --aperture 20
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=ray diagram written to ${analyze_svg}"
+           -DOUTPUT=${analyze_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg")
+lenslab_cli_test(NAME analyze.chosen_lens
+    ARGS analyze scenes/hyperbolic_lens_beam.json --lens hyperbolic
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=ignored: objects[1] ('spherical'): not on the axis of objects[0] ('hyperbolic')")
+set(analyze_bad_svg ${LENSLAB_CLI_OUT}/not_coaxial.svg)
+lenslab_cli_test(NAME analyze.bad.not_coaxial
+    ARGS analyze ${analyze_data}/not_coaxial.json --svg ${analyze_bad_svg}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_PREFIX=lenslab: error: ${analyze_data}/not_coaxial.json: objects[1]: not on the axis of objects[0] ('left'): its centre lies 30 from that axis"
+           -DOUTPUT=${analyze_bad_svg} -DOUTPUT_CREATED=OFF)
+lenslab_cli_test(NAME analyze.bad.no_lens
+    ARGS analyze ${analyze_data}/no_lens.json
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: ${analyze_data}/no_lens.json: objects: no lens in the scene (analyze measures lens objects)")
+lenslab_cli_test(NAME analyze.bad.scene
+    ARGS analyze tests/scene/bad/sphere_negative_radius.json
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: tests/scene/bad/sphere_negative_radius.json: objects[2].radius: must be > 0, got -1")
+lenslab_cli_test(NAME analyze.bad.wavelength_outside_glass
+    ARGS analyze scenes/achromat_doublet.json --wavelength 350
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: scenes/achromat_doublet.json: objects[1].material: --wavelength 350 nm is outside the validity range 370-2500 nm of SF5")
+lenslab_cli_test(NAME analyze.bad.aperture
+    ARGS analyze ${analyze_data}/lens_only.json --aperture 30
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --aperture: a beam of diameter 30 does not pass the lenses (the largest that does is 25.4)")
+lenslab_cli_test(NAME analyze.bad.unknown_lens
+    ARGS analyze scenes/hyperbolic_lens_beam.json --lens hyperbolik
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --lens: no lens named 'hyperbolik' in scenes/hyperbolic_lens_beam.json (lenses: hyperbolic, spherical)")
+# The renderer still needs a camera: a lens-only file is refused there.
+lenslab_cli_test(NAME render.bad.lens_only_no_camera
+    ARGS render ${analyze_data}/lens_only.json -o ${LENSLAB_CLI_OUT}/lens_only.png
+    CHECKS -DEXPECT_EXIT=1 "-DSTDERR_LINE=lenslab: error: ${analyze_data}/lens_only.json: camera: missing (required)"
+           -DOUTPUT=${LENSLAB_CLI_OUT}/lens_only.png -DOUTPUT_CREATED=OFF)
+# `detect` measures the scene's detectors: a summary with units on stdout, and per detector
+# a CSV, an EXR and a false-colour PNG in the output folder.
+set(detect_dir ${LENSLAB_CLI_OUT}/detect_focus)
+lenslab_cli_test(NAME detect.focus_scene
+    ARGS detect scenes/detector_focus.json -o ${detect_dir} --photons 20000 --threads 2 -q
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=peak irradiance" -DOUTPUT=${detect_dir}/focal_plane.png
+           -DOUTPUT_CREATED=ON)
+lenslab_cli_test(NAME detect.json
+    ARGS detect scenes/detector_focus.json -o ${LENSLAB_CLI_OUT}/detect_json --photons 5000 --log --json -q
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DSTDOUT_CONTAINS=\"total_power\"")
+# A scene without a detector, or with a bad one: one line, exit 1, nothing written.
+set(no_detector_dir ${LENSLAB_CLI_OUT}/detect_none)
+lenslab_cli_test(NAME detect.no_detector
+    ARGS detect scenes/thick_lens_beam.json -o ${no_detector_dir}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_PREFIX=lenslab: error: scenes/thick_lens_beam.json: no detector in the scene"
+           -DOUTPUT=${no_detector_dir}/screen.png -DOUTPUT_CREATED=OFF)
+lenslab_cli_test(NAME detect.bad.detector_on_sphere
+    ARGS detect tests/scene/bad/detector_on_sphere.json -o ${LENSLAB_CLI_OUT}/detect_bad
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: tests/scene/bad/detector_on_sphere.json: objects[0].detector: only a triangle, disc or rectangle can be a detector (this is a sphere)")
+lenslab_cli_bad_scene(disc_up_parallel "objects[0].up: must not be parallel to normal")
+# Discs render like any other surface.
+set(disc_render_out ${LENSLAB_CLI_OUT}/detector_focus_render.png)
+lenslab_cli_test(NAME render.detector_focus
+    ARGS render scenes/detector_focus.json -o ${disc_render_out} --width 32 --height 20 --spp 1 --photons 2000 -q
+    CHECKS -DEXPECT_EXIT=zero -DOUTPUT=${disc_render_out} -DOUTPUT_CREATED=ON)
+
 # Limits (docs/reliability.md): refused before any work, one line, nothing written.
 lenslab_cli_bad_scene(render_too_many_pixels
     "render: 16384 x 16384 is 268435456 pixels, more than the 67108864 (8192 x 8192) allowed")

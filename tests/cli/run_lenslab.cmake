@@ -12,8 +12,10 @@
 #   STDOUT_CONTAINS=<text>         stdout contains this text
 #   STDOUT_JSON=ON                 stdout is one valid JSON document
 #   JSON_EVENT=<text>              ...whose tree.event is this and tree.children[0].event exists
+#   JSON_KEYS=<key,key,...>        ...which has these top-level keys
 #   OUTPUT=<path>                  removed before the run, then checked:
 #   OUTPUT_CREATED=ON|OFF          the run must (ON, and it must be a PNG) or must not create it
+#   OUTPUT_STARTS=<text>           ...a created output starts with this text instead (e.g. <svg)
 
 cmake_minimum_required(VERSION 3.25)
 
@@ -104,12 +106,27 @@ if(STDOUT_JSON)
             fail("tree.children[0].event missing: ${json_error}")
         endif()
     endif()
+    if(DEFINED JSON_KEYS AND NOT json_error)
+        string(REPLACE "," ";" keys "${JSON_KEYS}")
+        foreach(key IN LISTS keys)
+            string(JSON value ERROR_VARIABLE key_error GET "${out}" "${key}")
+            if(key_error)
+                fail("JSON key '${key}' missing")
+            endif()
+        endforeach()
+    endif()
 endif()
 
 if(DEFINED OUTPUT AND DEFINED OUTPUT_CREATED)
     if(OUTPUT_CREATED)
         if(NOT EXISTS "${OUTPUT}")
             fail("${OUTPUT} was not created")
+        elseif(DEFINED OUTPUT_STARTS)
+            file(READ "${OUTPUT}" head)
+            string(FIND "${head}" "${OUTPUT_STARTS}" at)
+            if(NOT at EQUAL 0)
+                fail("${OUTPUT} does not start with ${OUTPUT_STARTS}")
+            endif()
         else()
             file(READ "${OUTPUT}" magic LIMIT 8 HEX)
             if(NOT magic STREQUAL "89504e470d0a1a0a")

@@ -177,6 +177,21 @@ private slots:
         QCOMPARE(w.tree()->selected_pointer(), QString("/objects/0"));
     }
 
+    void lens_group_elements_are_edited_in_the_panel() {
+        MainWindow w;
+        QVERIFY(w.open_file(QStringLiteral(LENSLAB_SOURCE_DIR "/scenes/achromat_vs_singlet.json")));
+        w.tree()->select_pointer("/objects/1");
+        QDoubleSpinBox* flint = field(w, "elements/1/thickness");
+        QVERIFY(flint);
+        QCOMPARE(flint->value(), 2.5);
+        QVERIFY(field(w, "elements/0/gap"));       // the crown may be moved off the flint
+        QVERIFY(!field(w, "elements/0/back/radius"));  // cemented: no back of its own
+        type_value(flint, 3.0);
+        QCOMPARE(w.document()->json()["objects"][1]["elements"][1]["thickness"].get<double>(), 3.0);
+        QCOMPARE(w.document()->scene().objects.size(), size_t(5));  // singlet, 2 elements, screen
+        QCOMPARE(w.document()->scene().objects[2].source, 1);
+    }
+
     void camera_drag_is_one_undo_step() {
         MainWindow w;
         QVERIFY(w.open_file(kSmallScene));

@@ -148,6 +148,8 @@ TEST(RenderSession, DefaultSceneIsTheReportsExperiment) {
             case ObjectType::Triangle: ++triangles; break;
             case ObjectType::Mesh: break;
             case ObjectType::Implicit: ADD_FAILURE() << "the report had no implicit solids"; break;
+            case ObjectType::Disc:
+            case ObjectType::Rectangle: ADD_FAILURE() << "the report had no discs or rectangles"; break;
         }
     }
     EXPECT_EQ(glass_spheres, 1);

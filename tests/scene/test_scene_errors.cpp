@@ -69,7 +69,7 @@ const BadScene kBadScenes[] = {
     {"unknown_key_typo.json", "objects[0].radiu", "unknown key (did you mean 'radius'?)"},
     {"wrong_type_string.json", "objects[0].radius", "must be a number, got a string"},
     {"unknown_object_type.json", "objects[0].type",
-     "unknown object type 'cube' (known: sphere, triangle, lens, mesh, prism, implicit)"},
+     "unknown object type 'cube' (known: sphere, triangle, disc, rectangle, lens, lens_group, mesh, prism, implicit)"},
     {"sphere_with_lens_key.json", "objects[0].axis", "not a property of a sphere"},
     // Triangles.
     {"triangle_collinear.json", "objects[0].vertices",
@@ -77,6 +77,31 @@ const BadScene kBadScenes[] = {
     {"triangle_two_vertices.json", "objects[0].vertices", "must be an array of 3 points"},
     {"triangle_emission.json", "objects[0].material",
      "only spheres can emit light (the material has an emission)"},
+    // Discs, rectangles and detectors.
+    {"disc_zero_radius.json", "objects[0].radius", "must be > 0, got 0"},
+    {"disc_missing_normal.json", "objects[0].normal", "missing (required)"},
+    {"disc_up_parallel.json", "objects[0].up", "must not be parallel to normal"},
+    {"rectangle_size_one_number.json", "objects[0].size", "must be [width, height]"},
+    {"rectangle_negative_height.json", "objects[0].size[1]", "must be > 0, got -2"},
+    {"rectangle_with_radius.json", "objects[0].radius", "not a property of a rectangle"},
+    {"detector_on_sphere.json", "objects[0].detector",
+     "only a triangle, disc or rectangle can be a detector (this is a sphere)"},
+    {"detector_not_object.json", "objects[0].detector",
+     "must be true, false or an object {\"resolution\": ..., \"bands\": ...}"},
+    {"detector_resolution_zero.json", "objects[0].detector.resolution",
+     "must be a whole number of cells from 1 to 1024, got 0"},
+    {"detector_resolution_three.json", "objects[0].detector.resolution",
+     "must be a number of cells or [cells along u, cells along v]"},
+    {"detector_bands_not_increasing.json", "objects[0].detector.bands[2]",
+     "band edges must increase, got 500 after 600"},
+    {"detector_bands_out_of_range.json", "objects[0].detector.bands[0]",
+     "must be a wavelength from 360 to 830 nm (the range transported), got 300"},
+    {"detector_bands_too_many.json", "objects[0].detector.bands",
+     "must be a whole number of bands from 1 to 16 (or an array of band edges in nm), got 17"},
+    {"detector_unknown_key.json", "objects[0].detector.resolutoin", "unknown key (did you mean 'resolution'?)"},
+    {"detector_side_unknown.json", "objects[0].detector.side", "unknown side 'top' (known: front, back, both)"},
+    {"detector_unit_not_letters.json", "objects[0].detector.unit",
+     "must be the name of a length unit in 1 to 16 letters (e.g. \"mm\"), got 'm m'"},
     // Lenses.
     {"lens_zero_axis.json", "objects[0].axis", "must be a non-zero vector"},
     {"lens_surfaces_cross.json", "objects[0].thickness",
@@ -179,6 +204,20 @@ const BadScene kBadScenes[] = {
     {"unknown_light_type.json", "lights[1].type", "unknown light type 'spot' (known: point, beam)"},
     {"beam_with_position.json", "lights[0].position", "not a property of a beam"},
     {"point_light_zero_power.json", "lights[0].power", "must be > 0, got 0"},
+    {"lens_group_cemented_with_back.json", "objects[0].elements[0].back",
+     "an element with no gap after it is cemented: its back is the next element's front "
+     "(give a gap, or leave out back)"},
+    {"lens_group_last_without_back.json", "objects[0].elements[1]",
+     "the last element needs a back surface"},
+    {"lens_group_negative_gap.json", "objects[0].elements[0].gap",
+     "must be >= 0 (the air space after the element)"},
+    {"lens_group_no_elements.json", "objects[0].elements",
+     "must be a non-empty array of elements, front to back"},
+    {"lens_group_shared_surface_crossing.json", "objects[0].elements[1].thickness",
+     "the lens surfaces cross inside the diameter: at 10 from the axis the back surface lies "
+     "3.366750419 in front of the front surface; the centre thickness must be at least "
+     "5.366750419 for diameter 20 (or reduce the diameter)"},
+    {"lens_group_material_on_group.json", "objects[0].material", "not a property of a lens group"},
 };
 // clang-format on
 

@@ -8,7 +8,9 @@
 #include <regex>
 #include <sstream>
 
+#include "geometry/disc.h"
 #include "geometry/lens/lens_solid.h"
+#include "geometry/rectangle.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
 
@@ -34,6 +36,26 @@ TEST(SceneJson, MinimalSceneGetsTheDocumentedDefaults) {
     EXPECT_DOUBLE_EQ(s.camera.fov_deg, 40.0);
     EXPECT_NEAR(s.camera.direction.z, -1.0, 1e-15);
     EXPECT_TRUE(s.objects.empty());
+}
+
+TEST(SceneJson, TheBenchReadsFilesWithoutACamera) {
+    // `lenslab analyze` reads a file of lenses alone; the renderer still needs its camera,
+    // and a camera that is given is checked either way.
+    const std::string lenses = R"({"objects": [{"type": "lens", "center": [0, 0, 0],
+        "axis": [0, 0, 1], "thickness": 5, "diameter": 25,
+        "front": {"shape": "sphere", "radius": 50}, "back": {"shape": "flat"},
+        "material": {"transparency": 1, "glass": "N-BK7"}}]})";
+    const Scene s = parse_scene(lenses, "lenses", "", {.require_camera = false});
+    EXPECT_EQ(s.objects.size(), 1u);
+    try {
+        parse_scene(lenses);
+        FAIL() << "a scene without a camera was accepted for rendering";
+    } catch (const SceneError& e) {
+        EXPECT_STREQ(e.what(), "camera: missing (required)");
+    }
+    EXPECT_THROW(parse_scene(R"({"camera": {"position": [0, 0, 5]}})", "s", "",
+                             {.require_camera = false}),
+                 SceneError);
 }
 
 TEST(SceneJson, NamedAndInlineMaterials) {
@@ -70,6 +92,46 @@ TEST(SceneJson, ReportLensEqualsItsPrescription) {
     EXPECT_NEAR(a.prescription().thickness, b.prescription().thickness, 1e-12);
     EXPECT_NEAR(a.prescription().diameter, b.prescription().diameter, 1e-15);
     for (double r = 0; r <= 0.6; r += 0.05) EXPECT_NEAR(a.front_z(r), b.front_z(r), 1e-12);
+}
+
+TEST(SceneJson, DiscsRectanglesAndDetectors) {
+    const Scene s = parse_scene(R"({
+      "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+      "objects": [
+        {"type": "disc", "center": [1, 2, 3], "normal": [0, 0, -2], "radius": 0.5, "material": {"color": 0.5}},
+        {"type": "rectangle", "center": [0, 0, 0], "normal": [0, 1, 0], "size": [4, 2], "material": {"color": 0.5},
+         "detector": true},
+        {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "material": {"color": 0.5},
+         "detector": {"resolution": [10, 20], "bands": 2, "side": "both", "unit": "mm"}},
+        {"type": "disc", "center": [0, 0, 0], "normal": [1, 0, 0], "radius": 1, "up": [0, 0, 1],
+         "material": {"color": 0.5}, "detector": false}
+      ]})");
+    ASSERT_EQ(s.objects.size(), 4u);
+    const auto& disc = dynamic_cast<const Disc&>(*s.objects[0].shape);
+    EXPECT_DOUBLE_EQ(disc.radius(), 0.5);
+    EXPECT_DOUBLE_EQ(disc.normal().z, -1.0);  // normalised
+    EXPECT_FALSE(s.objects[0].detector);
+    // A floor (normal +y) gets the default up -z: u along +x.
+    const auto& rect = dynamic_cast<const Rectangle&>(*s.objects[1].shape);
+    EXPECT_DOUBLE_EQ(rect.width(), 4.0);
+    EXPECT_NEAR(rect.frame().u.x, 1.0, 1e-15);
+    EXPECT_NEAR(rect.frame().v.z, -1.0, 1e-15);
+    ASSERT_TRUE(s.objects[1].detector);
+    const DetectorSettings& d = *s.objects[1].detector;
+    EXPECT_EQ(d.resolution_long, 64);
+    EXPECT_EQ(d.band_edges, (std::vector<double>{360, 490, 585, 830}));
+    EXPECT_EQ(d.side, DetectorSide::Front);
+    EXPECT_EQ(d.unit, "unit");
+    ASSERT_TRUE(s.objects[2].detector);
+    const DetectorSettings& t = *s.objects[2].detector;
+    EXPECT_EQ(t.cells_u, 10);
+    EXPECT_EQ(t.cells_v, 20);
+    EXPECT_EQ(t.band_edges, (std::vector<double>{360, 595, 830}));
+    EXPECT_EQ(t.side, DetectorSide::Both);
+    EXPECT_EQ(t.unit, "mm");
+    EXPECT_FALSE(s.objects[3].detector);
+    const auto& turned = dynamic_cast<const Disc&>(*s.objects[3].shape);
+    EXPECT_NEAR(turned.frame().v.z, 1.0, 1e-15);
 }
 
 TEST(SceneJson, CompiledInDefaultSceneIsScenesDefaultJson) {

@@ -31,6 +31,10 @@ public:
     double slope(double r) const;
     double polynomial_slope(double r) const;
 
+    double radius() const { return m_radius; }
+    double k() const { return m_k; }
+    const std::vector<double>& coefficients() const { return m_coefficients; }
+
 private:
     double m_radius;
     double m_k;

@@ -49,7 +49,7 @@ public:
     bool is_closed() const override { return true; }
 
     // True for points inside or on the solid.
-    bool contains(const Vec3& p) const;
+    bool contains(const Vec3& p) const override;
 
     const LensPrescription& prescription() const { return m_p; }
     const Frame& frame() const { return m_frame; }

@@ -1,0 +1,125 @@
+// `lenslab detect SCENE -o DIR`: measure the irradiance on every detector in a scene.
+
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/detector.h"
+#include "analysis/detector_files.h"
+#include "commands.h"
+#include "render/photon_tracer.h"
+#include "scene/scene_json.h"
+
+namespace lenslab::cli {
+
+namespace {
+
+struct DetectArgs {
+    std::string scene;
+    std::string output = "detectors";
+    int64_t photons = 0;
+    int64_t seed = -1;
+    int threads = 0, max_depth = -1;
+    bool json = false, quiet = false, log = false;
+};
+
+RenderControl* g_control = nullptr;
+
+extern "C" void on_detect_interrupt(int) {
+    if (g_control) g_control->cancel();  // an atomic store: safe in a signal handler
+}
+
+int run(const DetectArgs& a) {
+    const Scene scene = load_scene_file(a.scene);
+    if (detector_objects(scene).empty()) {
+        std::cerr << "lenslab: error: " << a.scene
+                  << ": no detector in the scene (mark a triangle, disc or rectangle with \"detector\": true)\n";
+        return 1;
+    }
+    if (photon_light_count(scene) == 0) {
+        std::cerr << "lenslab: error: " << a.scene
+                  << ": no light to measure (add a point light, a beam or an emitting sphere)\n";
+        return 1;
+    }
+    DetectionSettings settings;
+    settings.photons_per_light = a.photons > 0 ? a.photons : scene.render.photons;
+    settings.seed = a.seed >= 0 ? static_cast<uint64_t>(a.seed) : scene.render.seed;
+    settings.max_depth = a.max_depth >= 0 ? a.max_depth : scene.render.max_depth;
+    settings.threads = a.threads;
+
+    int last = -1;
+    RenderControl control(a.quiet ? RenderControl::ProgressFn{} : RenderControl::ProgressFn{[&last](double f) {
+        const int percent = static_cast<int>(f * 100.0);
+        if (percent / 10 == last / 10) return;
+        last = percent;
+        std::fprintf(stderr, "detecting %3d%%\n", percent);
+    }});
+    g_control = &control;
+    struct sigaction action {};
+    action.sa_handler = on_detect_interrupt;
+    action.sa_flags = SA_RESETHAND;  // a second Ctrl-C ends the process at once
+    sigaction(SIGINT, &action, nullptr);
+    const DetectionResult result = measure_detectors(scene, settings, control);
+    signal(SIGINT, SIG_DFL);
+    g_control = nullptr;
+    if (result.cancelled) {
+        std::cerr << "lenslab: detection cancelled; nothing written\n";
+        return 130;
+    }
+
+    std::filesystem::create_directories(a.output);
+    const std::vector<std::string> stems = detector_file_stems(result);
+    nlohmann::json doc{{"scene", a.scene},
+                       {"photons_per_light", settings.photons_per_light},
+                       {"seed", settings.seed},
+                       {"seconds", result.seconds},
+                       {"detectors", nlohmann::json::array()}};
+    for (size_t i = 0; i < result.detectors.size(); ++i) {
+        const DetectorMeasurement& m = result.detectors[i];
+        write_detector_files(m, settings, a.output, stems[i], a.log ? ColourScale::Log : ColourScale::Linear);
+        nlohmann::json d = detector_summary_json(m);
+        const std::string base = (std::filesystem::path(a.output) / stems[i]).string();
+        d["files"] = {{"csv", base + ".csv"}, {"exr", base + ".exr"}, {"png", base + ".png"}};
+        doc["detectors"].push_back(d);
+        if (!a.json) {
+            std::cout << detector_summary_text(m) << "  wrote " << base << ".csv, " << base << ".exr, " << base
+                      << ".png\n";
+        }
+    }
+    if (a.json) {
+        std::cout << doc.dump(2) << "\n";
+    } else {
+        std::printf("%lld photons per light, %.2f s\n", static_cast<long long>(settings.photons_per_light),
+                    result.seconds);
+    }
+    return 0;
+}
+
+}  // namespace
+
+Action add_detect_command(CLI::App& app) {
+    auto args = std::make_shared<DetectArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "detect", "Measure the irradiance on the scene's detectors (CSV, EXR and false-colour PNG per detector)");
+    cmd->add_option("scene", args->scene, "Scene file (JSON) with at least one detector")->required();
+    cmd->add_option("-o,--output", args->output, "Folder for <detector>.csv, .exr and .png")->capture_default_str();
+    cmd->add_option("--photons", args->photons, "Photons emitted per light (default: the scene's render.photons)")
+        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
+    cmd->add_option("--seed", args->seed, "Random seed (default: the scene's render.seed)")
+        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{0}, int64_t{2147483647}));
+    cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
+    cmd->add_option("--max-depth", args->max_depth, "Longest specular chain followed (default: render.max_depth)")
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, 1000));
+    cmd->add_flag("--log", args->log, "Colour the PNG on a log scale (4 decades below the peak)");
+    cmd->add_flag("--json", args->json, "Print the summary as JSON");
+    cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
+    return [args] { return run(*args); };
+}
+
+}  // namespace lenslab::cli

@@ -1,0 +1,194 @@
+#include "analysis/lens_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "scene/json_reader.h"
+
+namespace lenslab {
+
+namespace {
+
+std::string fmt(const char* format, double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, format, v);
+    return buffer;
+}
+
+// A wavelength with its line name: "587.56 nm (d)".
+std::string wavelength_text(double nm) {
+    const std::string name = fraunhofer_name(nm);
+    return fmt("%.2f nm", nm) + (name.empty() ? "" : " (" + name + ")");
+}
+
+std::string medium_name(const OpticalSystem& system, int element) {
+    return element < 0 ? "air" : system.elements[element].glass;
+}
+
+std::string shape_kind(const SystemSurface& s) {
+    const std::string d = s.shape->describe();
+    return d.substr(0, d.find(' '));
+}
+
+// A length to 4 significant figures or so, in a fixed-width column.
+std::string length(double v) {
+    if (std::abs(v) >= 1e4 || (v != 0 && std::abs(v) < 1e-3)) return fmt("%.4g", v);
+    return fmt("%.4f", v);
+}
+
+}  // namespace
+
+std::string fraunhofer_name(double nm) {
+    if (std::abs(nm - kLineD) < 0.01) return "d line";
+    if (std::abs(nm - kLineF) < 0.01) return "F line";
+    if (std::abs(nm - kLineC) < 0.01) return "C line";
+    return "";
+}
+
+LensReport analyze_lens_system(const OpticalSystem& system, const LensReportOptions& options) {
+    check_wavelength(system, options.wavelength_nm, "--wavelength");
+    check_wavelength(system, kLineF, "the F line");
+    check_wavelength(system, kLineC, "the C line");
+    LensReport r;
+    r.wavelength_nm = options.wavelength_nm;
+    r.paraxial = paraxial_trace(system, options.wavelength_nm);
+    r.paraxial_F = paraxial_trace(system, kLineF);
+    r.paraxial_C = paraxial_trace(system, kLineC);
+    r.chromatic_shift_FC = r.paraxial_F.bfl - r.paraxial_C.bfl;
+
+    r.aperture_radius = options.aperture_radius > 0
+                            ? options.aperture_radius
+                            : usable_aperture_radius(system, options.wavelength_nm);
+    const std::vector<ExitRay> rays = trace_collimated_beam(
+        system, options.wavelength_nm, r.aperture_radius, options.spot_rings, &r.rays_lost);
+    r.rays = static_cast<int>(rays.size()) + r.rays_lost;
+    r.lsa = longitudinal_spherical_aberration(system, r.paraxial, r.aperture_radius,
+                                              options.lsa_samples);
+    r.spot_paraxial = spot_at(rays, r.paraxial.z_rear_focus);
+    r.spot_best = spot_at(rays, best_focus_z(rays, r.paraxial.z_rear_focus));
+    r.best_focus = r.spot_best.z - system.last_vertex();
+    return r;
+}
+
+nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport& r) {
+    using nlohmann::ordered_json;
+    const double last = system.last_vertex();
+    ordered_json lsa = ordered_json::array();
+    for (const LsaPoint& p : r.lsa) {
+        lsa.push_back({{"height", p.height}, {"lsa", p.lsa}, {"transverse", p.transverse}});
+    }
+    ordered_json surfaces = ordered_json::array();
+    for (size_t i = 0; i < system.surfaces.size(); ++i) {
+        const SystemSurface& s = system.surfaces[i];
+        surfaces.push_back({{"surface", s.label},
+                            {"shape", s.shape->describe()},
+                            {"z", s.z},
+                            {"radius", s.curvature == 0 ? ordered_json() : ordered_json(1.0 / s.curvature)},
+                            {"semi_diameter", s.semi_diameter},
+                            {"medium_after", medium_name(system, s.element_after)},
+                            {"n_after", system.n_after(i, r.wavelength_nm)}});
+    }
+    ordered_json lenses = ordered_json::array();
+    for (const SystemElement& e : system.elements) {
+        lenses.push_back({{"object", e.path}, {"name", e.name}, {"glass", e.glass}});
+    }
+    const ParaxialResult& p = r.paraxial;
+    return {
+        {"wavelength_nm", r.wavelength_nm},
+        {"length_unit", "scene unit (mm for lens prescriptions)"},
+        {"efl", p.efl},
+        {"bfl", p.bfl},
+        {"ffl", p.ffl},
+        {"power", p.power},
+        {"principal_planes",
+         {{"front", p.z_front_principal}, {"back", p.z_rear_principal - last},
+          {"note", "front: from the first vertex; back: from the last vertex"}}},
+        {"aperture_diameter", 2.0 * r.aperture_radius},
+        {"rays", r.rays},
+        {"rays_lost", r.rays_lost},
+        {"rms_spot_paraxial", r.spot_paraxial.rms_radius},
+        {"geometric_spot_paraxial", r.spot_paraxial.geometric_radius},
+        {"best_focus", r.best_focus},
+        {"best_focus_shift", r.spot_best.z - p.z_rear_focus},
+        {"rms_spot_best", r.spot_best.rms_radius},
+        {"geometric_spot_best", r.spot_best.geometric_radius},
+        {"chromatic_shift_FC", r.chromatic_shift_FC},
+        {"chromatic",
+         {{"wavelengths_nm", {kLineF, kLineC}},
+          {"bfl_F", r.paraxial_F.bfl},
+          {"bfl_C", r.paraxial_C.bfl},
+          {"efl_F", r.paraxial_F.efl},
+          {"efl_C", r.paraxial_C.efl}}},
+        {"lsa", lsa},
+        {"surfaces", surfaces},
+        {"lenses", lenses},
+        {"ignored", system.ignored},
+    };
+}
+
+std::string report_table(const OpticalSystem& system, const LensReport& r) {
+    std::ostringstream out;
+    const ParaxialResult& p = r.paraxial;
+    const double last = system.last_vertex();
+    out << system.elements.size() << (system.elements.size() == 1 ? " lens, " : " lenses, ")
+        << system.surfaces.size() << " surfaces on one axis; lengths in the scene's unit "
+        << "(mm for lens prescriptions), light travelling along +z from the first vertex\n\n";
+    char line[256];
+    std::snprintf(line, sizeof line, "  %-36s %-8s %10s %11s %10s  %s\n", "surface", "shape",
+                  "z", "R (vertex)", "semi-diam", "medium after");
+    out << line;
+    for (const SystemSurface& s : system.surfaces) {
+        std::snprintf(line, sizeof line, "  %-36s %-8s %10s %11s %10s  %s\n", s.label.c_str(),
+                      shape_kind(s).c_str(), length(s.z).c_str(),
+                      s.curvature == 0 ? "flat" : length(1.0 / s.curvature).c_str(),
+                      length(s.semi_diameter).c_str(),
+                      medium_name(system, s.element_after).c_str());
+        out << line;
+    }
+    for (const std::string& ignored : system.ignored) out << "  ignored: " << ignored << "\n";
+
+    const auto row = [&](const std::string& what, double v, const std::string& note = "") {
+        std::snprintf(line, sizeof line, "  %-34s %12s", what.c_str(), length(v).c_str());
+        out << line << (note.empty() ? "" : "  " + note) << "\n";
+    };
+    out << "\nParaxial, at " << wavelength_text(r.wavelength_nm) << "\n";
+    row("effective focal length EFL", p.efl);
+    row("back focal length BFL", p.bfl, "last vertex to the rear focal point F'");
+    row("front focal length FFL", p.ffl, "front focal point F to the first vertex");
+    row("front principal plane H", p.z_front_principal, "from the first vertex");
+    row("rear principal plane H'", p.z_rear_principal - last, "from the last vertex");
+
+    out << "\nReal rays, at " << wavelength_text(r.wavelength_nm)
+        << ": collimated beam on the axis, diameter " << length(2.0 * r.aperture_radius)
+        << ", " << r.rays << " rays";
+    if (r.rays_lost > 0) out << " (" << r.rays_lost << " clipped or totally reflected)";
+    out << "\n";
+    row("RMS spot radius at the paraxial focus", r.spot_paraxial.rms_radius,
+        "geometric radius " + length(r.spot_paraxial.geometric_radius));
+    row("best focus (least RMS spot)", r.best_focus,
+        "from the last vertex; " + length(r.spot_best.z - p.z_rear_focus) +
+            " from the paraxial focus");
+    row("RMS spot radius at the best focus", r.spot_best.rms_radius,
+        "geometric radius " + length(r.spot_best.geometric_radius));
+    out << "  longitudinal spherical aberration (axis crossing minus paraxial focus; < 0: in front):\n";
+    std::snprintf(line, sizeof line, "    %12s %12s %14s\n", "ray height", "LSA", "transverse");
+    out << line;
+    const size_t step = std::max<size_t>(1, r.lsa.size() / 10);
+    for (size_t i = 0; i < r.lsa.size(); ++i) {
+        if ((i + 1) % step != 0 && i + 1 != r.lsa.size()) continue;
+        const LsaPoint& q = r.lsa[i];
+        std::snprintf(line, sizeof line, "    %12s %12s %14s\n", length(q.height).c_str(),
+                      length(q.lsa).c_str(), length(q.transverse).c_str());
+        out << line;
+    }
+
+    out << "\nChromatic (paraxial), F = " << wavelength_text(kLineF) << ", C = "
+        << wavelength_text(kLineC) << "\n";
+    row("BFL at the F line", r.paraxial_F.bfl);
+    row("BFL at the C line", r.paraxial_C.bfl);
+    row("focal shift BFL(F) - BFL(C)", r.chromatic_shift_FC);
+    return out.str();
+}
+
+}  // namespace lenslab

@@ -1,0 +1,259 @@
+#include "analysis/optical_system.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "geometry/lens/asphere_surface.h"
+#include "geometry/lens/conic_surface.h"
+#include "geometry/lens/flat_surface.h"
+#include "geometry/lens/lens_solid.h"
+#include "geometry/lens/spherical_surface.h"
+#include "scene/json_reader.h"
+#include "scene/scattering.h"
+
+namespace lenslab {
+
+namespace {
+
+// Axes this close to parallel (sine of the angle) and centres this close to the axis
+// (relative to the largest lens diameter) count as one axis: hand-typed and generated
+// scenes put coaxial lenses on exactly the same line, up to rounding.
+constexpr double kAxisAngleTolerance = 1e-9;
+constexpr double kAxisOffsetTolerance = 1e-9;
+// Facing surfaces closer than this (relative to the system's size) are one cemented
+// interface; the lead's shorthand and hand-written doublets place them exactly.
+constexpr double kCementTolerance = 1e-9;
+
+// The scene file's entry the object came from (a lens group's elements share one).
+std::string object_path(const Scene& scene, int i) {
+    const int entry = scene.objects[i].source >= 0 ? scene.objects[i].source : i;
+    std::string path = "objects[" + std::to_string(entry) + "]";
+    int element = 0, siblings = 0;
+    for (int j = 0; j < static_cast<int>(scene.objects.size()); ++j) {
+        if (j == i || scene.objects[j].source != entry) continue;
+        ++siblings;
+        if (j < i) ++element;
+    }
+    if (siblings > 0) path += ".elements[" + std::to_string(element) + "]";
+    return path;
+}
+
+std::string describe_object(const Scene& scene, int i) {
+    const std::string path = object_path(scene, i);
+    const std::string& name = scene.objects[i].name;
+    return name == path || name.empty() ? path : path + " ('" + name + "')";
+}
+
+std::string format(double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+}
+
+struct Placed {
+    int object;
+    const LensSolid* lens;
+    double orientation;  // +1: lens axis along the system axis
+    double z_first, z_last;
+};
+
+// The two surfaces of a lens in the order light meets them, as system surfaces.
+void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
+    const LensPrescription& pr = p.lens->prescription();
+    const bool forward = p.orientation > 0;
+    const std::string path = system.elements[element].path;
+    const double a = 0.5 * pr.diameter;
+    const auto make = [&](const std::shared_ptr<const LensSurface>& shape, double z,
+                          const char* face) {
+        SystemSurface s;
+        s.shape = shape;
+        s.orientation = p.orientation;
+        s.z = z;
+        s.semi_diameter = a;
+        s.span = measure_span(*shape, a);
+        s.curvature = p.orientation * paraxial_curvature(*shape, a);
+        s.label = path + "." + face;
+        return s;
+    };
+    SystemElement& e = system.elements[element];
+    SystemSurface in = make(forward ? pr.front : pr.back, p.z_first, forward ? "front" : "back");
+    SystemSurface out = make(forward ? pr.back : pr.front, p.z_last, forward ? "back" : "front");
+    out.element_before = element;
+    in.element_after = element;
+
+    // A cemented interface: the previous lens's exit surface has this lens's entry shape at
+    // the same place. Then the two become one glass-to-glass surface.
+    if (!system.surfaces.empty()) {
+        SystemSurface& prev = system.surfaces.back();
+        const double common = std::min(prev.semi_diameter, in.semi_diameter);
+        const double scale = std::max({p.z_last, 2.0 * system.max_semi_diameter(), 2.0 * a});
+        double worst = INFINITY, largest = 0.0, worst_r = 0.0;
+        for (int k = 0; k <= 64; ++k) {
+            const double r = common * k / 64.0;
+            const double gap = in.z_at(r) - prev.z_at(r);
+            if (gap < worst) {
+                worst = gap;
+                worst_r = r;
+            }
+            largest = std::max(largest, std::abs(gap));
+        }
+        const double tol = kCementTolerance * scale;
+        if (worst < -tol) {
+            const SystemElement& before = system.elements[prev.element_before];
+            throw SceneError(path, "overlaps " + before.path + " along the axis: at " +
+                                       format(worst_r) + " from the axis its " +
+                                       (forward ? "front" : "back") + " surface lies " +
+                                       format(-worst) + " before " + prev.label);
+        }
+        const double c_tol = kCementTolerance * std::max({std::abs(prev.curvature),
+                                                          std::abs(in.curvature), 1.0 / scale});
+        if (largest <= tol && std::abs(prev.curvature - in.curvature) <= c_tol) {
+            prev.element_after = element;
+            prev.semi_diameter = common;
+            prev.span = measure_span(*prev.shape, common);
+            prev.label += " = " + in.label;
+            e.first_surface = static_cast<int>(system.surfaces.size()) - 1;
+            system.surfaces.push_back(out);
+            e.last_surface = static_cast<int>(system.surfaces.size()) - 1;
+            return;
+        }
+    }
+    e.first_surface = static_cast<int>(system.surfaces.size());
+    system.surfaces.push_back(in);
+    system.surfaces.push_back(out);
+    e.last_surface = e.first_surface + 1;
+}
+
+}  // namespace
+
+double paraxial_curvature(const LensSurface& s, double semi_diameter) {
+    if (dynamic_cast<const FlatSurface*>(&s)) return 0.0;
+    if (const auto* sphere = dynamic_cast<const SphericalSurface*>(&s)) return 1.0 / sphere->radius();
+    if (const auto* conic = dynamic_cast<const ConicSurface*>(&s)) return 1.0 / conic->radius();
+    if (const auto* asphere = dynamic_cast<const AsphereSurface*>(&s)) return 1.0 / asphere->radius();
+    // sag(r) = c r^2 / 2 + O(r^4), so 2 sag(h) / h^2 = c + O(h^2); combining h and 2h cancels
+    // the h^2 term (Richardson). sag(0) = 0 is required of formulas, so no cancellation.
+    const double h = 0.01 * semi_diameter;
+    const double c1 = 2.0 * s.sag(h) / (h * h);
+    const double c2 = 2.0 * s.sag(2.0 * h) / (4.0 * h * h);
+    return (4.0 * c1 - c2) / 3.0;
+}
+
+double OpticalSystem::n_before(size_t i, double nm) const {
+    const int e = surfaces[i].element_before;
+    return e < 0 ? kOutsideIor : elements[e].index->n(nm);
+}
+
+double OpticalSystem::n_after(size_t i, double nm) const {
+    const int e = surfaces[i].element_after;
+    return e < 0 ? kOutsideIor : elements[e].index->n(nm);
+}
+
+double OpticalSystem::max_semi_diameter() const {
+    double a = 0.0;
+    for (const SystemElement& e : elements) a = std::max(a, e.semi_diameter);
+    return a;
+}
+
+OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) {
+    std::vector<int> lenses;
+    OpticalSystem system;
+    for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
+        if (dynamic_cast<const LensSolid*>(scene.objects[i].shape.get())) {
+            lenses.push_back(i);
+        } else {
+            system.ignored.push_back(describe_object(scene, i) + ": not a lens");
+        }
+    }
+    if (lenses.empty()) {
+        throw SceneError("objects", "no lens in the scene (analyze measures lens objects)");
+    }
+    if (lens && std::find(lenses.begin(), lenses.end(), *lens) == lenses.end()) {
+        throw SceneError(*lens >= 0 ? object_path(scene, *lens) : "objects",
+                         "is not a lens");
+    }
+    const int seed = lens ? *lens : lenses.front();
+    const auto* seed_solid = dynamic_cast<const LensSolid*>(scene.objects[seed].shape.get());
+    const Vec3 axis = seed_solid->prescription().axis;
+    const Vec3 centre = seed_solid->prescription().centre;
+    double largest = 0.0;
+    for (int i : lenses) {
+        const auto* solid = dynamic_cast<const LensSolid*>(scene.objects[i].shape.get());
+        largest = std::max(largest, solid->prescription().diameter);
+    }
+
+    std::vector<Placed> placed;
+    for (int i : lenses) {
+        const auto* solid = dynamic_cast<const LensSolid*>(scene.objects[i].shape.get());
+        const LensPrescription& p = solid->prescription();
+        const double sine = length(cross(axis, p.axis));
+        const Vec3 offset = p.centre - centre;
+        const double off_axis = length(offset - axis * dot(offset, axis));
+        if (sine > kAxisAngleTolerance || off_axis > kAxisOffsetTolerance * largest) {
+            std::ostringstream why;
+            why << "not on the axis of " << describe_object(scene, seed) << ": ";
+            if (sine > kAxisAngleTolerance) {
+                why << "its axis is tilted by " << format(std::asin(std::min(1.0, sine)) * 180 / M_PI)
+                    << " degrees";
+            } else {
+                why << "its centre lies " << format(off_axis) << " from that axis";
+            }
+            if (lens) {
+                system.ignored.push_back(describe_object(scene, i) + ": " + why.str());
+                continue;
+            }
+            why << " (all lenses must share one axis; pick one system with --lens NAME)";
+            throw SceneError(object_path(scene, i), why.str());
+        }
+        for (const auto& face : {p.front, p.back}) {
+            if (!face->is_rotationally_symmetric()) {
+                throw SceneError(object_path(scene, i) + (face == p.front ? ".front" : ".back"),
+                                 "a sag formula in x and y is not a surface of revolution; "
+                                 "the lens bench measures rotationally symmetric systems");
+            }
+        }
+        if (!(scene.material_of(i).transparency > 0.0)) {
+            throw SceneError(object_path(scene, i) + ".material",
+                             "transparency is 0: light does not pass this lens");
+        }
+        const double orientation = dot(p.axis, axis) > 0 ? 1.0 : -1.0;
+        const double zc = dot(offset, axis);
+        placed.push_back({i, solid, orientation, zc - 0.5 * p.thickness, zc + 0.5 * p.thickness});
+    }
+    std::stable_sort(placed.begin(), placed.end(),
+                     [](const Placed& a, const Placed& b) { return a.z_first < b.z_first; });
+
+    const double z0 = placed.front().z_first;
+    system.origin = centre + axis * z0;
+    system.frame = Frame::from_axis(axis);
+    for (Placed& p : placed) {
+        p.z_first -= z0;
+        p.z_last -= z0;
+        SystemElement e;
+        e.object = p.object;
+        e.path = object_path(scene, p.object);
+        e.name = scene.objects[p.object].name;
+        const Material& m = scene.material_of(p.object);
+        e.glass = m.glass.empty() ? m.index->describe() : m.glass;
+        e.index = m.index;
+        e.semi_diameter = 0.5 * p.lens->prescription().diameter;
+        system.elements.push_back(e);
+        add_surfaces(p, static_cast<int>(system.elements.size()) - 1, system);
+    }
+    return system;
+}
+
+void check_wavelength(const OpticalSystem& system, double nm, const std::string& what) {
+    for (const SystemElement& e : system.elements) {
+        if (nm < e.index->min_nm || nm > e.index->max_nm) {
+            throw SceneError(e.path + ".material",
+                             what + " " + format(nm) + " nm is outside the validity range " +
+                                 format(e.index->min_nm) + "-" + format(e.index->max_nm) +
+                                 " nm of " + e.glass);
+        }
+    }
+}
+
+}  // namespace lenslab

@@ -1,0 +1,89 @@
+#pragma once
+// A coaxial lens system read off a scene: the lens objects that share one optical axis,
+// ordered along it, as the sequence of refracting surfaces a beam meets, with the medium on
+// each side. Two lenses whose facing surfaces coincide (same shape at the same place: a
+// cemented doublet) meet at one glass-to-glass interface. Everything the optical bench
+// measures (paraxial.h, real_ray.h, aberrations.h) works on this model.
+//
+// System coordinates: z along the axis in the direction light travels, 0 at the first
+// vertex; (x, y) across it in the frame `frame` (y is the meridional direction of the
+// diagrams). Lengths are in the scene's unit (millimetres for lens prescriptions).
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/lens/lens_surface.h"
+#include "math/frame.h"
+#include "optics/glass.h"
+#include "scene/scene.h"
+
+namespace lenslab {
+
+// One refracting interface of the system.
+struct SystemSurface {
+    std::shared_ptr<const LensSurface> shape;
+    double orientation = 1.0;  // +1: the shape's local +z is the system's +z; -1: reversed
+    double z = 0.0;            // axial position of the vertex
+    double semi_diameter = 0.0;
+    SurfaceSpan span;          // measured over `semi_diameter`, for the numerical surfaces
+    double curvature = 0.0;    // paraxial vertex curvature in system z (> 0: centre at +z)
+    int element_before = -1;   // index into OpticalSystem::elements; -1: the outside (air)
+    int element_after = -1;
+    std::string label;         // "objects[0].front", "objects[0].back = objects[1].front"
+
+    bool cemented() const { return element_before >= 0 && element_after >= 0; }
+    // Axial position of the surface at distance r from the axis.
+    double z_at(double r) const { return z + orientation * shape->sag(r); }
+};
+
+// One lens object of the system.
+struct SystemElement {
+    int object = -1;        // index into Scene::objects
+    std::string path;       // "objects[3]"
+    std::string name;       // the object's name (its path when it has none)
+    std::string glass;      // catalogue name, else the index model ("constant n = 1.5")
+    IndexModelPtr index;
+    int first_surface = 0;  // the surfaces light meets entering and leaving it
+    int last_surface = 0;
+    double semi_diameter = 0.0;
+};
+
+struct OpticalSystem {
+    Vec3 origin;  // world position of the first vertex
+    Frame frame;  // w: the axis, the way light travels
+    std::vector<SystemSurface> surfaces;
+    std::vector<SystemElement> elements;
+    // Objects left out: not lenses, or lenses off the axis of the lens asked for.
+    std::vector<std::string> ignored;
+
+    double last_vertex() const { return surfaces.back().z; }
+    // Refractive index of the medium in front of / behind surface i at a vacuum wavelength.
+    double n_before(size_t i, double nm) const;
+    double n_after(size_t i, double nm) const;
+    // Largest semi-diameter of any element: the scale of the system across the axis.
+    double max_semi_diameter() const;
+
+    Vec3 to_world(const Vec3& p) const { return origin + frame.to_world(p); }
+    Vec3 direction_to_world(const Vec3& d) const { return frame.to_world(d); }
+};
+
+// Builds the system from every lens in `scene`; they must share one axis. When `lens` (an
+// index into scene.objects) is given, from that lens and the lenses on its axis, leaving
+// the others out. The axis points the way the chosen (or first) lens's `axis` does: light
+// enters through its front face. Throws SceneError whose path names the offending object
+// ("objects[3]"): no lens, lenses off the common axis, overlapping lenses, an opaque lens,
+// a face that is not a surface of revolution.
+OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens = {});
+
+// Curvature at the vertex of a surface of revolution: 1/R for spheres, conics and aspheres,
+// 0 for a plane, and for a typed sag formula the second derivative at r = 0 by central
+// differences over 1% of the semi-diameter (with Richardson extrapolation).
+double paraxial_curvature(const LensSurface& surface, double semi_diameter);
+
+// Refuses a wavelength outside a glass's published validity range; `what` names the
+// figure it is for ("--wavelength"). Throws SceneError naming the lens.
+void check_wavelength(const OpticalSystem& system, double nm, const std::string& what);
+
+}  // namespace lenslab

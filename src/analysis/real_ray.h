@@ -1,0 +1,32 @@
+#pragma once
+// Exact (real-ray) sequential trace through a coaxial system: the ray meets each surface in
+// turn, at its true shape (LensSurface::intersect), and refracts there by Snell's law.
+
+#include <vector>
+
+#include "analysis/optical_system.h"
+#include "geometry/ray.h"
+
+namespace lenslab {
+
+enum class RayFate {
+    Passed,     // left the last surface
+    Missed,     // passed outside a surface's semi-diameter (clipped by the lens edge)
+    Reflected,  // total internal reflection at a surface
+};
+
+struct RealRay {
+    RayFate fate = RayFate::Passed;
+    int surface = -1;          // where a ray that did not pass was stopped
+    std::vector<Vec3> points;  // start, then the point on each surface met (system coords)
+    Vec3 direction;            // unit direction after the last surface it refracted at
+    const Vec3& exit_point() const { return points.back(); }
+};
+
+// Traces `ray` (system coordinates, unit direction with d.z > 0) at a vacuum wavelength.
+RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double wavelength_nm);
+
+// Where a ray leaving along `direction` from `point` crosses the plane z = z_plane (x, y).
+Vec3 at_plane(const Vec3& point, const Vec3& direction, double z_plane);
+
+}  // namespace lenslab

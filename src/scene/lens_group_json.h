@@ -1,0 +1,31 @@
+#pragma once
+// A lens group in scene files: elements on one axis, listed front to back as a lens
+// designer's prescription table; an element with no air gap after it is cemented to the
+// next, sharing its back face with the next element's front (docs/scene-format.md,
+// "Lens group"). It becomes one lens object per element.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene.h"
+
+namespace lenslab {
+
+class JsonObjectReader;
+
+// Resolves an element's `material` (a name or an inline material) to an index into the
+// scene's materials; given by the scene reader.
+using MaterialResolver = std::function<int(JsonObjectReader& element, const std::string& owner)>;
+
+// The keys a lens group object takes, besides type, name and material (which it refuses:
+// each element names its own).
+const std::vector<std::string>& lens_group_keys();
+
+// Reads the lens group at JSON path `path`; throws SceneError.
+std::vector<SceneObject> read_lens_group(const nlohmann::json& j, const std::string& path,
+                                         const MaterialResolver& material);
+
+}  // namespace lenslab

@@ -1,0 +1,70 @@
+// The report `lenslab analyze` prints: its JSON carries the figures the issue names, equal
+// to the modules that compute them, with the wavelength of each; the table says the same.
+
+#include <gtest/gtest.h>
+
+#include "analysis/lens_report.h"
+#include "lens_scene_builder.h"
+
+namespace lenslab {
+namespace {
+
+using test::LensSpec;
+using test::lens_scene;
+using test::sphere;
+
+const LensSpec kLens{"LA1131", 0, 5.34, 25.4, sphere(25.75), sphere(0), test::glass("N-BK7")};
+
+TEST(LensReport, JsonHoldsTheNamedFigures) {
+    const std::string screen =
+        R"({"type": "triangle", "name": "screen", "vertices": [[0, 0, 60], [1, 0, 60], [0, 1, 60]],
+            "material": {"color": 0.5}})";
+    const OpticalSystem system = build_optical_system(lens_scene({kLens}, {screen}));
+    const LensReport r = analyze_lens_system(system, {});
+    const auto j = report_json(system, r);
+    for (const char* key : {"efl", "bfl", "ffl", "rms_spot_paraxial", "rms_spot_best", "best_focus",
+                            "chromatic_shift_FC", "wavelength_nm", "principal_planes", "lsa",
+                            "geometric_spot_best", "surfaces", "lenses", "ignored"}) {
+        EXPECT_TRUE(j.contains(key)) << key;
+    }
+    EXPECT_DOUBLE_EQ(j["wavelength_nm"].get<double>(), kLineD);
+    EXPECT_DOUBLE_EQ(j["efl"].get<double>(), paraxial_trace(system, kLineD).efl);
+    EXPECT_DOUBLE_EQ(j["bfl"].get<double>(), r.paraxial.bfl);
+    EXPECT_DOUBLE_EQ(j["chromatic_shift_FC"].get<double>(),
+                     paraxial_trace(system, kLineF).bfl - paraxial_trace(system, kLineC).bfl);
+    EXPECT_DOUBLE_EQ(j["best_focus"].get<double>(), r.spot_best.z - 5.34);
+    EXPECT_DOUBLE_EQ(j["aperture_diameter"].get<double>(), 25.4);
+    EXPECT_EQ(j["lsa"].size(), 20u);
+    EXPECT_EQ(j["ignored"][0], "objects[1] ('screen'): not a lens");
+    EXPECT_EQ(j["surfaces"][1]["radius"], nullptr);  // flat
+    EXPECT_LT(j["rms_spot_best"].get<double>(), j["rms_spot_paraxial"].get<double>());
+}
+
+TEST(LensReport, TheWavelengthChangesEveryFigure) {
+    // N-BK7's index falls with wavelength, so the focal length grows (SCHOTT data sheet).
+    const OpticalSystem system = build_optical_system(lens_scene({kLens}));
+    LensReportOptions red;
+    red.wavelength_nm = 656.2725;
+    const LensReport d = analyze_lens_system(system, {});
+    const LensReport c = analyze_lens_system(system, red);
+    EXPECT_GT(c.paraxial.efl, d.paraxial.efl);
+    EXPECT_DOUBLE_EQ(c.paraxial.bfl, d.paraxial_C.bfl);
+    const std::string table = report_table(system, c);
+    EXPECT_NE(table.find("Paraxial, at 656.27 nm (C line)"), std::string::npos) << table;
+    EXPECT_NE(table.find("Real rays, at 656.27 nm (C line)"), std::string::npos) << table;
+    EXPECT_NE(table.find("F = 486.13 nm (F line), C = 656.27 nm (C line)"), std::string::npos);
+}
+
+TEST(LensReport, AGivenApertureIsUsed) {
+    const OpticalSystem system = build_optical_system(lens_scene({kLens}));
+    LensReportOptions narrow;
+    narrow.aperture_radius = 2.0;
+    const LensReport r = analyze_lens_system(system, narrow);
+    EXPECT_DOUBLE_EQ(r.aperture_radius, 2.0);
+    EXPECT_EQ(r.rays_lost, 0);
+    // Spherical aberration grows as h^3 in the spot: a narrow beam is far sharper.
+    EXPECT_LT(r.spot_best.rms_radius, 0.01 * analyze_lens_system(system, {}).spot_best.rms_radius);
+}
+
+}  // namespace
+}  // namespace lenslab
