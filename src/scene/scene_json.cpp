@@ -395,6 +395,8 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
             scene.objects.push_back(read_object((*jo)[i], path, by_name, scene.materials, base_dir));
             scene.objects.back().source = static_cast<int>(i);
         }
+        // A lens group adds one object per element.
+        check_count(scene.objects.size(), kMaxObjects, "objects", "objects (lens group elements counted one by one)");
     }
     if (const json* jl = r.find("lights")) {
         if (!jl->is_array()) throw SceneError("lights", "must be an array");

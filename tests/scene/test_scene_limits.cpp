@@ -52,6 +52,15 @@ TEST(SceneLimits, ObjectCountIsCheckedBeforeAnyObjectIsRead) {
     EXPECT_EQ(refusal(root), "objects: holds 1000001 objects, more than the 1000000 allowed");
 }
 
+TEST(SceneLimits, LensGroupElementsCountAsObjects) {
+    nlohmann::json group = {{"type", "lens_group"}, {"vertex", {0, 0, 0}}, {"axis", {0, 0, 1}}, {"diameter", 10}};
+    group["elements"] = nlohmann::json::array();
+    group["elements"].get_ref<nlohmann::json::array_t&>().resize(kMaxObjects + 1);
+    nlohmann::json root = minimal_scene();
+    root["objects"] = {group};
+    EXPECT_EQ(refusal(root), "objects[0].elements: holds 1000001 elements, more than the 1000000 allowed");
+}
+
 TEST(SceneLimits, LightCountIsCheckedBeforeAnyLightIsRead) {
     nlohmann::json root = minimal_scene();
     root["lights"] = nlohmann::json::array();
