@@ -12,7 +12,10 @@ PACKAGES=(
     libgtest-dev libgmock-dev libbenchmark-dev
     gnuplot-nox colord-data
     qt6-base-dev
+    clang libclang-rt-14-dev llvm
 )
+# clang + libclang-rt-14-dev: libFuzzer and clang's sanitizers for the fuzz targets
+# (scripts/fuzz.sh); llvm: llvm-symbolizer, so sanitizer reports name files and lines.
 
 missing=()
 for p in "${PACKAGES[@]}"; do

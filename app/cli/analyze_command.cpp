@@ -3,8 +3,6 @@
 // ray diagram as SVG.
 
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -12,6 +10,7 @@
 #include "analysis/ray_diagram.h"
 #include "analysis/ray_diagram_svg.h"
 #include "commands.h"
+#include "render/atomic_file.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
 
@@ -47,21 +46,14 @@ std::optional<int> find_lens(const Scene& scene, const std::string& name, std::s
     return std::nullopt;
 }
 
-// Writes next to the target and renames, so a failed write leaves no half file.
+// Written atomically (render/atomic_file.h), so a failed write leaves no half file.
 bool write_file(const std::string& path, const std::string& text) {
-    const std::string tmp = path + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        if (!(out << text) || !out.flush()) {
-            std::error_code ec;
-            std::filesystem::remove(tmp, ec);
-            return false;
-        }
+    try {
+        write_text_atomically(path, text);
+        return true;
+    } catch (const FileWriteError&) {
+        return false;
     }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) std::filesystem::remove(tmp, ec);
-    return !ec;
 }
 
 int run(const AnalyzeArgs& a) {

@@ -2,14 +2,16 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <iostream>
 #include <memory>
 
 #include "analysis/report_benchmark.h"
 #include "analysis/sppm_convergence.h"
 #include "commands.h"
+#include "render/atomic_file.h"
 #include "render/image_io.h"
+#include "scene/limits.h"
 #include "scene/scene_json.h"
 
 namespace lenslab::cli {
@@ -87,7 +89,7 @@ bool plot(const std::filesystem::path& dir, const ReportBenchmarkSettings& s,
           const ReportBenchmarkResult& r) {
     // One gnuplot data block per radius: photons, ours (build, render), report's (build, render).
     const auto data = dir / "plot_data.dat";
-    std::ofstream dat(data);
+    std::ostringstream dat;
     for (double radius : s.radii) {
         dat << "# radius " << radius << "\n";
         for (const ReportBuildTiming& b : r.builds) {
@@ -100,17 +102,21 @@ bool plot(const std::filesystem::path& dir, const ReportBenchmarkSettings& s,
         }
         dat << "\n\n";
     }
-    dat.close();
+    write_text_atomically(data.string(), dat.str());
     const auto script = dir / "plots.gp";
     const std::string d = "'" + data.string() + "'";
-    std::ofstream gp(script);
+    // gnuplot draws into temporary files, renamed into place once it has succeeded.
+    const auto build_png = dir / "build_time.png", render_png = dir / "render_time.png";
+    const std::string build_tmp = temporary_path_for(build_png.string());
+    const std::string render_tmp = temporary_path_for(render_png.string());
+    std::ostringstream gp;
     gp << "set terminal pngcairo size 900,600\nset key top left\nset grid\nset logscale y\n"
           "set xlabel 'photons per light'\nset ylabel 'seconds'\n"
-          "set output '" << (dir / "build_time.png").string() << "'\n"
+          "set output '" << build_tmp << "'\n"
           "set title 'Photon tracing + map build time (report Table 4.1, Figure 4.2)'\n"
           "plot " << d << " index 0 using 1:2 with linespoints lw 2 title 'lenslab', " << d
        << " index 0 using 1:3 with linespoints dt 2 title 'report'\n"
-          "set output '" << (dir / "render_time.png").string() << "'\n"
+          "set output '" << render_tmp << "'\n"
           "set title 'Render time against photons per light, per gather radius (report Table 4.2, Figure 4.3)'\n"
           "plot ";
     for (size_t i = 0; i < s.radii.size(); ++i) {
@@ -118,10 +124,19 @@ bool plot(const std::filesystem::path& dir, const ReportBenchmarkSettings& s,
            << " title 'lenslab r=" << s.radii[i] << "', " << d << " index " << i
            << " using 1:5 with linespoints dt 2 lc " << i + 1 << " title 'report r=" << s.radii[i] << "'";
     }
-    gp << "\n";
-    gp.close();
+    gp << "\nunset output\n";
+    write_text_atomically(script.string(), gp.str());
     if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) return false;
-    return std::system(("gnuplot '" + script.string() + "'").c_str()) == 0;
+    const bool drawn = std::system(("gnuplot '" + script.string() + "'").c_str()) == 0;
+    std::error_code ec;
+    if (drawn) {
+        std::filesystem::rename(build_tmp, build_png, ec);
+        if (!ec) std::filesystem::rename(render_tmp, render_png, ec);
+    }
+    std::error_code ignored;
+    std::filesystem::remove(build_tmp, ignored);
+    std::filesystem::remove(render_tmp, ignored);
+    return drawn && !ec;
 }
 
 int run(const BenchArgs& a) {
@@ -130,7 +145,7 @@ int run(const BenchArgs& a) {
     std::filesystem::create_directories(dir);
     const ReportBenchmarkResult r =
         run_report_benchmark(scene, a.settings, [](const std::string& line) { std::cerr << line << "\n"; });
-    std::ofstream(dir / "report.csv") << report_benchmark_csv(r);
+    write_text_atomically((dir / "report.csv").string(), report_benchmark_csv(r));
     write_image(r.grid, (dir / "grid.png").string());
     const bool plotted = plot(dir, a.settings, r);
     std::printf("wrote %s/report.csv, %s/grid.png%s\n", dir.c_str(), dir.c_str(),
@@ -155,8 +170,8 @@ Action add_bench_command(CLI::App& app) {
         ->delimiter(',')->capture_default_str()->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 36));
     report->add_option("--radii", s.radii, "Gather radii to measure")
         ->delimiter(',')->capture_default_str()->check(CLI::PositiveNumber);
-    report->add_option("--width", s.width, "Image width")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 16384));
-    report->add_option("--height", s.height, "Image height")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 16384));
+    report->add_option("--width", s.width, "Image width")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxImageSide));
+    report->add_option("--height", s.height, "Image height")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxImageSide));
     report->add_option("--spp", s.spp, "Samples per pixel")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 16));
     report->add_option("--repeats", s.repeats, "Runs per timing (the median is kept)")
         ->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 100));

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "render/atomic_file.h"
 #include "render/image_io.h"
 #include "render/photon_tracer.h"
 #include "scene/json_reader.h"
@@ -39,6 +40,9 @@ int main(int argc, char** argv) {
         std::cerr << "lenslab: error: " << e.what() << "\n";
         return 1;
     } catch (const lenslab::ImageError& e) {
+        std::cerr << "lenslab: error: " << e.what() << "\n";
+        return 1;
+    } catch (const lenslab::FileWriteError& e) {
         std::cerr << "lenslab: error: " << e.what() << "\n";
         return 1;
     } catch (const std::exception& e) {

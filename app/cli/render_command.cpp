@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "render/image_io.h"
 #include "render/render_session.h"
+#include "scene/limits.h"
 #include "scene/scene_json.h"
 
 namespace lenslab::cli {
@@ -122,9 +123,9 @@ int run(const RenderArgs& a) {
     action.sa_flags = SA_RESETHAND;
     sigaction(SIGINT, &action, nullptr);
     const RenderResult result = render_scene(scene, control, threads);
-    signal(SIGINT, SIG_DFL);
-    g_control = nullptr;
     if (result.cancelled) {
+        signal(SIGINT, SIG_DFL);
+        g_control = nullptr;
         std::cerr << "\nlenslab: render cancelled; nothing written\n";
         return 130;
     }
@@ -145,7 +146,29 @@ int run(const RenderArgs& a) {
                      p.photons_emitted / result.seconds, p.camera_seconds, p.photon_seconds, p.gather_seconds,
                      p.mean_radius);
     }
-    write_image(result.film, a.output, a.exposure);
+    if (control.non_finite_samples() > 0) {
+        std::fprintf(stderr,
+                     "lenslab: warning: %lld samples came out NaN or infinite and were left out of "
+                     "their pixels (a bug in lenslab; please report it with the scene)\n",
+                     static_cast<long long>(control.non_finite_samples()));
+    }
+    // The file is written atomically; holding Ctrl-C (and kill's SIGTERM) back until it is
+    // in place also leaves no temporary file behind. One that came meanwhile ends the
+    // process right after.
+    sigset_t interrupts, previous;
+    sigemptyset(&interrupts);
+    sigaddset(&interrupts, SIGINT);
+    sigaddset(&interrupts, SIGTERM);
+    sigprocmask(SIG_BLOCK, &interrupts, &previous);
+    signal(SIGINT, SIG_DFL);
+    g_control = nullptr;
+    try {
+        write_image(result.film, a.output, a.exposure);
+    } catch (...) {
+        sigprocmask(SIG_SETMASK, &previous, nullptr);
+        throw;
+    }
+    sigprocmask(SIG_SETMASK, &previous, nullptr);
     if (result.sppm) {
         std::printf("wrote %s (%dx%d, %d passes, %.2f s)\n", a.output.c_str(), s.width, s.height, result.sppm->passes,
                     result.seconds);
@@ -165,13 +188,13 @@ Action add_render_command(CLI::App& app) {
     cmd->add_option("-o,--output", args->output, "Output image: .png (sRGB) or .exr (linear)")
         ->capture_default_str();
     cmd->add_option("--width", args->width, "Image width in pixels (overrides the scene)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 16384));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxImageSide));
     cmd->add_option("--height", args->height, "Image height in pixels (overrides the scene)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 16384));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxImageSide));
     cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 20));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxSpp));
     cmd->add_option("--max-depth", args->max_depth, "Longest specular chain (overrides the scene)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, 1000));
+        ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, kMaxDepth));
     cmd->add_option("--seed", args->seed, "Random seed (overrides the scene)")
         ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{0}, int64_t{2147483647}));
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
@@ -182,7 +205,7 @@ Action add_render_command(CLI::App& app) {
     cmd->add_option("--integrator", args->integrator, "whitted, photon_map, sppm or path (overrides the scene)")
         ->check(CLI::IsMember(kIntegratorNames));
     cmd->add_option("--photons", args->photons, "Photons emitted per light (photon_map)")
-        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
+        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, kMaxPhotonsPerLight));
     cmd->add_option("--radius", args->radius, "Photon gather radius (photon_map)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--filter", args->filter, "Photon filter: cone, gaussian or box")

@@ -5,6 +5,8 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QFileInfo>
+#include <QSaveFile>
 #include <QTimer>
 
 #include <cstdio>
@@ -64,7 +66,11 @@ int main(int argc, char** argv) {
                              if (done < wanted || measuring) return;
                              // Let the frame reach the viewport and the status bar first.
                              QTimer::singleShot(50, &window, [&] {
-                                 const bool saved = window.grab().save(file);
+                                 // Atomic, like every file lenslab writes.
+                                 QSaveFile out(file);
+                                 const bool saved = out.open(QIODevice::WriteOnly) &&
+                                                    window.grab().toImage().save(&out, QFileInfo(file).suffix().toLatin1().constData()) &&
+                                                    out.commit();
                                  std::fprintf(saved ? stdout : stderr, saved ? "wrote %s\n" : "lenslab-gui: error: cannot write %s\n",
                                               qPrintable(file));
                                  QApplication::exit(saved ? 0 : 1);

@@ -270,13 +270,19 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 
 void MainWindow::export_image() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export image"), "lenslab.png", tr("Images (*.png *.exr)"));
-    if (path.isEmpty()) return;
+    if (!path.isEmpty()) export_image_to(path);
+}
+
+bool MainWindow::export_image_to(const QString& path, QString* error) {
     try {
         write_image(m_renderer->last_film(), path.toStdString());
-        show_message(tr("wrote %1").arg(path));
     } catch (const std::exception& e) {
-        QMessageBox::warning(this, tr("Cannot export"), QString::fromStdString(e.what()));
+        if (error) *error = QString::fromStdString(e.what());
+        else QMessageBox::warning(this, tr("Cannot export"), QString::fromStdString(e.what()));
+        return false;
     }
+    show_message(tr("wrote %1").arg(path));
+    return true;
 }
 
 void MainWindow::remember_recent(const QString& path) {

@@ -26,6 +26,9 @@ public:
     // returned in `error` if given, else shown in a message box.
     bool open_file(const QString& path, QString* error = nullptr);
     bool save_file(const QString& path, QString* error = nullptr);
+    // Writes the current image to `path` (.png or .exr), atomically: a failure leaves no
+    // file and no temporary behind. The error is returned in `error` if given, else shown.
+    bool export_image_to(const QString& path, QString* error = nullptr);
 
     SceneDocument* document() const { return m_document; }
     RenderController* renderer() const { return m_renderer; }

@@ -157,13 +157,14 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
                     rec.u = m.grid.frame().u_of(a.interaction->point());
                     rec.v = m.grid.frame().v_of(a.interaction->point());
                     rec.cell = m.grid.cell_at(rec.u, rec.v);
+                    const auto& table = watts[static_cast<size_t>(d)];
+                    const auto it = table.find(a.spectrum);
+                    if (it == table.end()) throw std::logic_error("detector: a photon from an unknown light");
                     if (a.lambda_nm > 0) {
+                        // Dispersed: its whole share of the light's power, at one wavelength.
                         rec.band = band_of(m.settings.band_edges, a.lambda_nm);
-                        rec.watts = radiant_watts_of_sample(a.spectrum->eval(a.lambda_nm) * a.scale, a.lambda_pdf);
+                        rec.watts = a.scale * it->second.total;
                     } else {
-                        const auto& table = watts[static_cast<size_t>(d)];
-                        const auto it = table.find(a.spectrum);
-                        if (it == table.end()) throw std::logic_error("detector: a photon from an unknown light");
                         rec.band = -1;
                         rec.spectrum = &it->second;
                         rec.scale = a.scale;

@@ -129,6 +129,10 @@ Formula::Formula(std::string text, std::vector<std::string> names, const std::st
     if (m_text.find_first_not_of(" \t\r\n") == std::string::npos) {
         throw FormulaError(0, "must not be empty");
     }
+    if (m_text.size() > kMaxLength) {
+        throw FormulaError(0, "is " + std::to_string(m_text.size()) + " characters long, more than the " +
+                                  std::to_string(kMaxLength) + " allowed");
+    }
     // muparser's `=` assigns to a variable, which would change the inputs it was given.
     for (size_t i = 0; i < m_text.size(); ++i) {
         if (m_text[i] != '=') continue;

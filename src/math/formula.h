@@ -35,13 +35,16 @@ class Formula {
 public:
     // At most this many variables; their values are passed in the order they were declared.
     static constexpr int kMaxVariables = 4;
+    // Longest formula text accepted: far beyond any lens or solid, and it keeps a runaway
+    // paste from costing every intersection thousands of operations.
+    static constexpr size_t kMaxLength = 4096;
     using Values = std::array<double, kMaxVariables>;
 
     // Parses `text` over the variables `names` (e.g. {"x", "y", "z"}). Besides muparser's
     // functions and operators, the constants `pi` and `e` are known. Throws FormulaError:
     // a syntax error (with muparser's message and position), a variable not in `names`
-    // ("unknown variable 'q' " + `variable_hint`), an assignment, a list of expressions, or
-    // an empty text.
+    // ("unknown variable 'q' " + `variable_hint`), an assignment, a list of expressions, an
+    // empty text, or one longer than kMaxLength characters.
     Formula(std::string text, std::vector<std::string> names, const std::string& variable_hint);
     ~Formula();
     Formula(const Formula&) = delete;

@@ -69,6 +69,10 @@ Rgb to_rgb(const SampledSpectrum& s, const SampledWavelengths& w);
 Rgb spectrum_to_rgb(const class Spectrum& s);
 // Linear sRGB of a single wavelength sample of value `value` drawn with density `pdf`.
 Rgb sample_to_rgb(double value, double nm, double pdf);
+// Radiant power of a spectrum over the visible range (W for a light's flux spectrum): the
+// same integral spectrum_to_rgb takes, so one wavelength carrying it (sample_to_rgb with
+// pdf 1) has, on average, the spectrum's colour.
+double radiant_power(const class Spectrum& s);
 
 // A spectral distribution: reflectances, illuminants, blackbodies, laser lines.
 class Spectrum {
@@ -97,11 +101,10 @@ SpectrumPtr reflectance_from_rgb(const Rgb& rgb);
 SpectrumPtr illuminant_from_rgb(const Rgb& rgb);
 SampledSpectrum illuminant_from_rgb(const Rgb& rgb, const SampledWavelengths& w);
 // Light spectra are `power` times a shape whose integral over the visible range is that of
-// D65 white (scaled to Y = 1); these convert such spectral power back to watts: the watts
-// between lo_nm and hi_nm of spectral power `s`, and of one Monte Carlo sample of it
-// (value / pdf at a single wavelength).
+// D65 white (scaled to Y = 1); this converts such spectral power back to watts: the watts
+// between lo_nm and hi_nm of spectral power `s` (radiant_power(s) / D65's, over the whole
+// visible range).
 double radiant_watts(const Spectrum& s, double lo_nm = kLambdaMinNm, double hi_nm = kLambdaMaxNm);
-double radiant_watts_of_sample(double value, double pdf);
 
 // Light spectra normalised to the radiant power of D65 white over the visible range, so a
 // light's `power` means the same energy whatever its spectrum.

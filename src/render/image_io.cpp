@@ -14,6 +14,8 @@
 #include <fstream>
 #include <limits>
 
+#include "render/atomic_file.h"
+
 namespace lenslab {
 
 namespace {
@@ -65,35 +67,25 @@ void write_exr(const Film& film, const std::string& path, double scale) {
     }
 }
 
-// Writes through `write` to a temporary file beside `path`, then renames it over `path`, so
-// an interrupted write never leaves a half file.
+// write_atomically (render/atomic_file.h), with a failed rename reported as an ImageError
+// like every other failure here.
 template <class Write>
-void write_atomically(const std::string& path, Write write) {
-    const std::string ext = std::filesystem::path(path).extension().string();
-    const std::string tmp = path + ".tmp" + ext;
+void write_via_temporary(const std::string& path, Write write) {
     try {
-        write(tmp);
-    } catch (...) {
-        std::error_code ec;
-        std::filesystem::remove(tmp, ec);
-        throw;
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw ImageError("cannot write '" + path + "': " + ec.message());
+        write_atomically(path, write);
+    } catch (const FileWriteError& e) {
+        throw ImageError(e.what());
     }
 }
 
 }  // namespace
 
 void write_png_image(const Image8& image, const std::string& path) {
-    write_atomically(path, [&](const std::string& tmp) { write_png(image, tmp); });
+    write_via_temporary(path, [&](const std::string& tmp) { write_png(image, tmp); });
 }
 
 void write_exr_channels(int width, int height, const std::vector<ExrChannel>& channels, const std::string& path) {
-    write_atomically(path, [&](const std::string& tmp) {
+    write_via_temporary(path, [&](const std::string& tmp) {
         try {
             Imf::Header header(width, height);
             for (const ExrChannel& c : channels) header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
@@ -112,7 +104,7 @@ void write_exr_channels(int width, int height, const std::vector<ExrChannel>& ch
 }
 
 void write_text_file(const std::string& text, const std::string& path) {
-    write_atomically(path, [&](const std::string& tmp) {
+    write_via_temporary(path, [&](const std::string& tmp) {
         std::ofstream out(tmp, std::ios::binary);
         out << text;
         out.close();
@@ -153,19 +145,13 @@ void write_image(const Film& film, const std::string& path, double exposure_stop
         throw ImageError("cannot write '" + path + "': unknown image type '" + ext +
                          "' (use .png or .exr)");
     }
-    // Same directory, so the rename is atomic and never crosses file systems.
-    const std::string tmp = path + ".tmp" + ext;
-    if (ext == ".png") {
-        write_png(to_srgb8(film, exposure_stops), tmp);
-    } else {
-        write_exr(film, tmp, std::exp2(exposure_stops));
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ec);
-        throw ImageError("cannot write '" + path + "': " + ec.message());
-    }
+    write_via_temporary(path, [&](const std::string& tmp) {
+        if (ext == ".png") {
+            write_png(to_srgb8(film, exposure_stops), tmp);
+        } else {
+            write_exr(film, tmp, std::exp2(exposure_stops));
+        }
+    });
 }
 
 Image8 read_png(const std::string& path) {

@@ -19,8 +19,8 @@ public:
 double linear_to_srgb(double v);
 
 // Writes `film` to `path`: .png (sRGB, scaled by 2^exposure_stops and clipped) or .exr
-// (linear, exposure also applied). Writes to a temporary file and renames it, so an
-// interrupted write never leaves a half image. Throws ImageError.
+// (linear, exposure also applied). Written atomically (render/atomic_file.h): an interrupted
+// or failed write never leaves a half image, nor its temporary file. Throws ImageError.
 void write_image(const Film& film, const std::string& path, double exposure_stops = 0.0);
 
 // True if the extension is one write_image understands.

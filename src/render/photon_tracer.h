@@ -53,12 +53,11 @@ struct PhotonArrival {
     int depth;                       // surfaces met before this one
     // What it carries: `scale` times its light's spectral power `*spectrum` at every
     // wavelength while `lambda_nm` is 0; once a dispersive refraction picked one wavelength,
-    // `lambda_nm` > 0 and the photon is the Monte Carlo sample
-    // spectrum->eval(lambda_nm) * scale / lambda_pdf of that spectrum (lambda_pdf per nm).
+    // `lambda_nm` > 0 and the photon carries the same radiant power, `scale` times that of
+    // `*spectrum`, all at that wavelength (a photon never gains power when it disperses).
     const Spectrum* spectrum;
     double scale;
     double lambda_nm;
-    double lambda_pdf;
 };
 using PhotonArrivalFn = std::function<void(const PhotonArrival&)>;
 

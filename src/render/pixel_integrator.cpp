@@ -55,8 +55,13 @@ bool PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& fil
                         const SampledWavelengths lambdas = SampledWavelengths::sample(u_lambda);
                         const Rgb l = to_rgb(radiance(camera.generate_ray(x + jx, y + jy), lambdas, rng), lambdas);
                         // A non-finite sample would poison the pixel; it is a bug, but the
-                        // picture must stay usable (DESIGN.md: no NaN reaches a pixel).
-                        if (l.is_finite()) sum += l;
+                        // picture must stay usable (DESIGN.md: no NaN reaches a pixel), and
+                        // the count tells the user.
+                        if (l.is_finite()) {
+                            sum += l;
+                        } else {
+                            control.count_non_finite_sample();
+                        }
                     }
                     film.set(x, y, sum * (1.0 / spp));
                 }

@@ -2,6 +2,7 @@
 // Progress reporting and cancellation shared between a render and whoever started it.
 
 #include <atomic>
+#include <cstdint>
 #include <functional>
 #include <mutex>
 
@@ -18,6 +19,11 @@ public:
     void cancel() { m_cancelled.store(true, std::memory_order_relaxed); }
     bool cancelled() const { return m_cancelled.load(std::memory_order_relaxed); }
 
+    // A sample that came out NaN or infinite was left out of its pixel. It is a bug, but
+    // the picture stays usable; the count lets the caller say so instead of staying silent.
+    void count_non_finite_sample() { m_non_finite.fetch_add(1, std::memory_order_relaxed); }
+    int64_t non_finite_samples() const { return m_non_finite.load(std::memory_order_relaxed); }
+
     void report(double fraction) {
         if (!m_progress) return;
         std::lock_guard lock(m_mutex);
@@ -27,6 +33,7 @@ public:
 private:
     ProgressFn m_progress;
     std::atomic<bool> m_cancelled{false};
+    std::atomic<int64_t> m_non_finite{0};
     std::mutex m_mutex;
 };
 

@@ -11,8 +11,11 @@
 #include "render/integrators/photon_map.h"
 #include "render/integrators/sppm.h"
 #include "render/integrators/whitted.h"
+#include "scene/limits.h"
 
 namespace lenslab {
+
+const std::vector<std::string>& integrator_names() { return kIntegratorNames; }
 
 std::unique_ptr<Integrator> make_integrator(const Scene& scene) {
     if (scene.render.integrator == "whitted") return std::make_unique<WhittedIntegrator>(scene);
@@ -22,7 +25,20 @@ std::unique_ptr<Integrator> make_integrator(const Scene& scene) {
     throw std::invalid_argument("unknown integrator '" + scene.render.integrator + "'");
 }
 
+void check_image_resources(const RenderSettings& s) {
+    if (auto problem = image_size_problem(s.width, s.height)) throw ResourceError("image: " + *problem);
+    // The film (3 floats a pixel) and, while it is written, one more copy of it (EXR).
+    const uint64_t need = static_cast<uint64_t>(s.width) * static_cast<uint64_t>(s.height) * 2 * sizeof(PixelRgb);
+    const uint64_t have = available_memory_bytes();
+    if (need > have / 10 * 8) {
+        throw ResourceError("image: " + std::to_string(s.width) + " x " + std::to_string(s.height) +
+                            " needs " + std::to_string(need >> 20) + " MiB, but only " +
+                            std::to_string(have >> 20) + " MiB of memory is available; render a smaller image");
+    }
+}
+
 RenderResult render_scene(const Scene& scene, RenderControl& control, int threads) {
+    check_image_resources(scene.render);
     const auto start = std::chrono::steady_clock::now();
     RenderResult result;
     result.film = Film(scene.render.width, scene.render.height);

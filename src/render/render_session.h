@@ -3,6 +3,8 @@
 
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "render/film.h"
 #include "render/integrators/sppm.h"
@@ -20,8 +22,16 @@ struct RenderResult {
     std::optional<SppmStats> sppm;              // set by sppm
 };
 
-// The integrator the scene's render block asks for; every name in kIntegratorNames.
+// Every integrator make_integrator knows, by the name the scene file and --integrator use
+// (kIntegratorNames): tests iterate over it, so a new integrator is covered once listed.
+const std::vector<std::string>& integrator_names();
+
+// The integrator the scene's render block asks for.
 std::unique_ptr<class Integrator> make_integrator(const Scene& scene);
+
+// Refuses, before the film is allocated, an image beyond the pixel limit (src/scene/limits.h)
+// or too large for the memory available. Throws ResourceError. render_scene calls it.
+void check_image_resources(const RenderSettings& s);
 
 // threads <= 0 means all hardware threads. The result is identical for any thread count.
 RenderResult render_scene(const Scene& scene, RenderControl& control, int threads = 0);

@@ -4,6 +4,7 @@
 
 #include "geometry/lens/lens_solid.h"
 #include "scene/json_reader.h"
+#include "scene/limits.h"
 #include "scene/surface_json.h"
 
 namespace lenslab {
@@ -43,6 +44,7 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
     if (!list.is_array() || list.empty()) {
         throw SceneError(list_path, "must be a non-empty array of elements, front to back");
     }
+    check_count(list.size(), kMaxObjects, list_path, "elements");
     std::vector<ElementSpec> specs(list.size());
     for (size_t i = 0; i < list.size(); ++i) {
         ElementSpec& e = specs[i];

@@ -18,15 +18,13 @@ static_assert(sizeof(tinyobj::real_t) == sizeof(double), "link tinyobjloader_dou
 #include "geometry/mesh_shapes.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/triangle_mesh.h"
+#include "scene/limits.h"
 
 namespace lenslab {
 
 namespace {
 
 using nlohmann::json;
-
-// Far more than a scene file or an OBJ should hold, and within the 32-bit indices.
-constexpr size_t kMaxMeshElements = size_t{1} << 30;
 
 // Faces as the user numbered them, fan-triangulated, before placement.
 struct Polygons {
@@ -91,7 +89,7 @@ Polygons read_inline(JsonObjectReader& r) {
     if (!vertices.is_array() || vertices.size() < 3) {
         throw SceneError(vpath, "must be an array of at least 3 points [[x,y,z], ...]");
     }
-    if (vertices.size() > kMaxMeshElements) throw SceneError(vpath, "too many vertices");
+    check_count(vertices.size(), kMaxMeshTriangles, vpath, "vertices");
     p.geometry.vertices.reserve(vertices.size());
     for (size_t i = 0; i < vertices.size(); ++i) {
         p.geometry.vertices.push_back(read_vertex(vertices[i], vpath, i));
@@ -101,7 +99,7 @@ Polygons read_inline(JsonObjectReader& r) {
     if (!faces.is_array() || faces.empty()) {
         throw SceneError(fpath, "must be an array of faces [[i, j, k], ...] (vertex indices)");
     }
-    if (faces.size() > kMaxMeshElements) throw SceneError(fpath, "too many faces");
+    check_count(faces.size(), kMaxMeshTriangles, fpath, "faces");
     std::vector<int32_t> corners;
     for (size_t f = 0; f < faces.size(); ++f) {
         const json& face = faces[f];
@@ -123,6 +121,7 @@ Polygons read_inline(JsonObjectReader& r) {
             corners.push_back(index);
         }
         add_fan(corners, static_cast<int32_t>(f), p);
+        check_count(p.geometry.triangles.size(), kMaxMeshTriangles, fpath, "triangles (faces fan-split)");
     }
     return p;
 }
@@ -147,8 +146,10 @@ Polygons read_obj(JsonObjectReader& r, const std::string& base_dir) {
     const std::string cannot = "cannot read '" + file + "': ";
     const std::string where =
         resolved.string() == file ? "" : " (looked for " + resolved.string() + ")";
-    std::error_code ec;
-    if (fs::is_directory(resolved, ec)) throw SceneError(path, cannot + "is a directory" + where);
+    // Before opening: a device (/dev/zero) would never end, a huge file would fill memory.
+    if (auto problem = file_read_problem(resolved.string(), kMaxObjFileBytes)) {
+        throw SceneError(path, cannot + *problem + where);
+    }
     std::ifstream in(resolved, std::ios::binary);
     if (!in) throw SceneError(path, cannot + std::strerror(errno) + where);
     std::ostringstream text;
@@ -165,7 +166,10 @@ Polygons read_obj(JsonObjectReader& r, const std::string& base_dir) {
     }
     const std::vector<double>& xyz = reader.GetAttrib().vertices;
     const size_t vertex_count = xyz.size() / 3;
-    if (vertex_count > kMaxMeshElements) throw SceneError(path, cannot + "too many vertices");
+    if (vertex_count > kMaxMeshTriangles) {
+        throw SceneError(path, cannot + "holds " + std::to_string(vertex_count) + " vertices, more than the " +
+                                   std::to_string(kMaxMeshTriangles) + " allowed");
+    }
     p.geometry.vertices.reserve(vertex_count);
     for (size_t i = 0; i < vertex_count; ++i) {
         const Vec3 v{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
@@ -213,8 +217,10 @@ Polygons read_obj(JsonObjectReader& r, const std::string& base_dir) {
                                            " has fewer than 3 vertices");
             }
             add_fan(corners, face, p);
-            if (++face < 0 || static_cast<size_t>(face) > kMaxMeshElements) {
-                throw SceneError(path, cannot + "too many faces");
+            ++face;
+            if (p.geometry.triangles.size() > kMaxMeshTriangles) {
+                throw SceneError(path, cannot + "holds more than " + std::to_string(kMaxMeshTriangles) +
+                                           " triangles (faces fan-split), more than allowed");
             }
         }
     }

@@ -14,6 +14,7 @@
 #include "geometry/triangle.h"
 #include "scene/json_reader.h"
 #include "scene/lens_group_json.h"
+#include "scene/limits.h"
 #include "scene/mesh_json.h"
 #include "scene/planar_json.h"
 #include "scene/spectral_json.h"
@@ -65,10 +66,11 @@ void read_render(const json& j, RenderSettings& s) {
                         "light_samples", "min_weight", "integrator", "photons", "radius",
                         "filter", "filter_k", "max_photons_per_estimate", "direct", "passes", "time",
                         "pass_photons", "initial_radius", "alpha"});
-    s.width = static_cast<int>(r.integer("width", s.width, 1, 16384));
-    s.height = static_cast<int>(r.integer("height", s.height, 1, 16384));
-    s.spp = static_cast<int>(r.integer("spp", s.spp, 1, 1 << 20));
-    s.max_depth = static_cast<int>(r.integer("max_depth", s.max_depth, 0, 1000));
+    s.width = static_cast<int>(r.integer("width", s.width, 1, kMaxImageSide));
+    s.height = static_cast<int>(r.integer("height", s.height, 1, kMaxImageSide));
+    if (auto problem = image_size_problem(s.width, s.height)) throw SceneError("render", *problem);
+    s.spp = static_cast<int>(r.integer("spp", s.spp, 1, kMaxSpp));
+    s.max_depth = static_cast<int>(r.integer("max_depth", s.max_depth, 0, kMaxDepth));
     s.seed = static_cast<uint64_t>(r.integer("seed", static_cast<int64_t>(s.seed), 0, 2147483647));
     s.ambient = r.color("ambient", s.ambient);
     s.background = r.color("background", s.background);
@@ -80,7 +82,7 @@ void read_render(const json& j, RenderSettings& s) {
                          "a million rays), got " + format_number(s.min_weight));
     }
     s.integrator = r.choice("integrator", s.integrator, kIntegratorNames);
-    s.photons = r.integer("photons", s.photons, 1, int64_t{1} << 40);
+    s.photons = r.integer("photons", s.photons, 1, kMaxPhotonsPerLight);
     s.radius = r.positive("radius", s.radius);
     s.filter = r.choice("filter", s.filter, kPhotonFilterNames);
     s.filter_k = r.number("filter_k", s.filter_k);
@@ -388,6 +390,7 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
     if (const json* jm = r.find("materials")) by_name = read_materials(*jm, scene.materials);
     if (const json* jo = r.find("objects")) {
         if (!jo->is_array()) throw SceneError("objects", "must be an array");
+        check_count(jo->size(), kMaxObjects, "objects", "objects");
         for (size_t i = 0; i < jo->size(); ++i) {
             const std::string path = index_path("objects", i);
             if (peek_type((*jo)[i], path) == "lens_group") {
@@ -405,9 +408,12 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
             scene.objects.push_back(read_object((*jo)[i], path, by_name, scene.materials, base_dir));
             scene.objects.back().source = static_cast<int>(i);
         }
+        // A lens group adds one object per element.
+        check_count(scene.objects.size(), kMaxObjects, "objects", "objects (lens group elements counted one by one)");
     }
     if (const json* jl = r.find("lights")) {
         if (!jl->is_array()) throw SceneError("lights", "must be an array");
+        check_count(jl->size(), kMaxLights, "lights", "lights");
         for (size_t i = 0; i < jl->size(); ++i) read_light((*jl)[i], index_path("lights", i), scene);
     }
     scene.build();
@@ -418,6 +424,10 @@ Scene load_scene_file(const std::string& path, const SceneReadOptions& options) 
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         throw SceneError(path, "is a directory, not a scene file");
+    }
+    // Before opening: a device (/dev/zero) would never end, a huge file would fill memory.
+    if (auto problem = file_read_problem(path, kMaxSceneFileBytes)) {
+        throw SceneError(path, "cannot read scene file: it " + *problem);
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(path, std::string("cannot open scene file: ") + std::strerror(errno));

@@ -206,3 +206,27 @@ lenslab_cli_test(NAME render.path
            -DOUTPUT=${path_out} -DOUTPUT_CREATED=ON)
 lenslab_cli_bad_scene(render_passes_zero_without_time
     "render.passes: 0 means no pass limit, which needs a time budget: give render.time > 0")
+
+# Limits (docs/reliability.md): refused before any work, one line, nothing written.
+lenslab_cli_bad_scene(render_too_many_pixels
+    "render: 16384 x 16384 is 268435456 pixels, more than the 67108864 (8192 x 8192) allowed")
+set(pixels_out ${LENSLAB_CLI_OUT}/too_many_pixels.png)
+lenslab_cli_test(NAME render.limit.pixels_from_options
+    ARGS render -o ${pixels_out} --width 16384 --height 16384 --spp 1
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: image: 16384 x 16384 is 268435456 pixels, more than the 67108864 (8192 x 8192) allowed"
+           -DOUTPUT=${pixels_out} -DOUTPUT_CREATED=OFF)
+# Reading a device as a scene would never end.
+set(device_out ${LENSLAB_CLI_OUT}/dev_zero.png)
+lenslab_cli_test(NAME render.limit.scene_is_a_device
+    ARGS render /dev/zero -o ${device_out}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: /dev/zero: cannot read scene file: it is not a regular file (a device or a pipe)"
+           -DOUTPUT=${device_out} -DOUTPUT_CREATED=OFF)
+
+# Ctrl-C stops a render at once and leaves no image and no temporary file
+# (interrupt_render.sh; its 3 s bound is a responsiveness check, see there).
+add_test(NAME cli.render.interrupt
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/interrupt_render.sh $<TARGET_FILE:lenslab> ${LENSLAB_CLI_OUT}/interrupt
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.render.interrupt PROPERTIES TIMEOUT 120 LABELS cli)

@@ -124,6 +124,24 @@ private slots:
         QCOMPARE(other.document()->json()["objects"][0]["center"][1].get<double>(), 0.75);
     }
 
+    void export_writes_a_whole_image_and_nothing_else() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        QVERIFY(wait_for_fresh_frame(w));
+        QTemporaryDir dir;
+        QString error;
+        QVERIFY2(w.export_image_to(dir.filePath("view.png"), &error), qPrintable(error));
+        QVERIFY2(w.export_image_to(dir.filePath("view.exr"), &error), qPrintable(error));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files, QDir::Name), QStringList({"view.exr", "view.png"}));
+        QFile png(dir.filePath("view.png"));
+        QVERIFY(png.open(QIODevice::ReadOnly));
+        QCOMPARE(png.read(8), QByteArray("\x89PNG\r\n\x1a\n", 8));
+        // A folder that does not exist: refused, and nothing is left anywhere.
+        QVERIFY(!w.export_image_to(dir.filePath("missing/view.png"), &error));
+        QVERIFY2(error.contains("missing/view.png"), qPrintable(error));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Dirs | QDir::NoDotAndDotDot).size(), 2);
+    }
+
     void a_broken_file_leaves_the_scene_untouched() {
         MainWindow w;
         QVERIFY(w.open_file(kSmallScene));

@@ -1,0 +1,13 @@
+// libFuzzer target: the formula parser (muparser behind lenslab::Formula) on arbitrary text.
+// Build and run: scripts/fuzz.sh (docs/reliability.md).
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "fuzz_inputs.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    lenslab::fuzz::parse_formula_input(std::string_view(reinterpret_cast<const char*>(data), size));
+    return 0;
+}

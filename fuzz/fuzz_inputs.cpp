@@ -1,0 +1,58 @@
+#include "fuzz_inputs.h"
+
+#include <string>
+#include <vector>
+
+#include "math/formula.h"
+#include "render/camera.h"
+#include "scene/interaction.h"
+#include "scene/json_reader.h"
+#include "scene/scene_json.h"
+
+namespace lenslab::fuzz {
+
+namespace {
+
+// Follows a few camera rays through their first specular bounces: the intersection code of
+// every shape the scene holds runs on the user's numbers.
+void trace_some_rays(const Scene& scene) {
+    const Camera camera(scene.camera, 8, 8);
+    const double pixels[][2] = {{4, 4}, {0.5, 0.5}, {7.5, 0.5}, {0.5, 7.5}, {7.5, 7.5}};
+    for (const auto& px : pixels) {
+        Ray ray = camera.generate_ray(px[0], px[1]);
+        for (int bounce = 0; bounce < 8; ++bounce) {
+            Interaction it;
+            if (!next_interaction(scene, ray, 550.0, it) || it.scattering.count == 0) break;
+            ray = {it.point(), it.scattering.branches[bounce % it.scattering.count].direction};
+        }
+    }
+}
+
+}  // namespace
+
+void read_scene_input(std::string_view data, const std::string& base_dir) {
+    Scene scene;
+    try {
+        scene = parse_scene(std::string(data), "fuzz", base_dir);
+    } catch (const SceneError&) {
+        return;  // refused with a message: what bad input must get
+    }
+    trace_some_rays(scene);
+}
+
+void parse_formula_input(std::string_view data) {
+    if (data.empty()) return;
+    static const std::vector<std::string> kVariableSets[] = {{"r"}, {"x", "y", "r"}, {"x", "y", "z"}};
+    const std::vector<std::string>& names = kVariableSets[static_cast<unsigned char>(data[0]) % 3];
+    std::string text(data.substr(1));
+    try {
+        const Formula f(text, names, "(fuzz)");
+        const Formula::Values points[] = {{0, 0, 0, 0}, {1, -2, 0.5, 0}, {-1e300, 1e-300, 3, 0}};
+        for (const Formula::Values& p : points) (void)f(p);
+        (void)f.why_not_finite(points[1]);
+    } catch (const FormulaError&) {
+        return;
+    }
+}
+
+}  // namespace lenslab::fuzz

@@ -1,0 +1,24 @@
+#pragma once
+// One fuzz input fed to a reader of user text, shared by the libFuzzer targets (fuzz/) and
+// the replay test that keeps every corpus file and every past crash passing under gcc
+// (tests/fuzz/test_fuzz_replay.cpp).
+//
+// Each function returns normally when the input was accepted or refused the documented way
+// (SceneError, FormulaError). Anything else escapes: another exception, a crash, undefined
+// behaviour, a hang or a huge allocation is a finding.
+
+#include <string>
+#include <string_view>
+
+namespace lenslab::fuzz {
+
+// The scene reader: parse_scene() on the bytes as JSON text. Relative OBJ paths resolve in
+// `base_dir`. A scene that reads is also given one camera ray, so its shapes get hit.
+void read_scene_input(std::string_view data, const std::string& base_dir);
+
+// The formula parser: the first byte picks the variables (sag r; sag x, y, r; implicit
+// x, y, z), the rest is the formula. One that parses is evaluated at a few points, and
+// why_not_finite() asked where it is not finite.
+void parse_formula_input(std::string_view data);
+
+}  // namespace lenslab::fuzz

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The whole test suite, as CI runs it (README, second command; .ci/run):
+#   1. release build + every test;
+#   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: no editor, no
+#      benchmarks) + every test but the 20M-photon convergence test (too slow sanitized);
+#   3. the libFuzzer targets, 60 s each (scripts/fuzz.sh).
+# Each stage prints a banner and its time; the first failure stops the run.
+#
+#   scripts/test-all.sh [--fuzz-seconds N]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+fuzz_seconds=60
+if [ "${1:-}" = "--fuzz-seconds" ]; then fuzz_seconds="$2"; fi
+
+start_all=$SECONDS
+stage_start=$SECONDS
+banner() {
+    stage_start=$SECONDS
+    printf '\n==== %s ====\n' "$1"
+}
+finished() {
+    printf '==== %s: finished clean in %d s ====\n' "$1" $((SECONDS - stage_start))
+}
+
+# UBSan: stop at the first report and say where; ASan: also report leaks.
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0"
+
+banner "stage 1/3: release build and tests"
+cmake --preset release
+cmake --build --preset release
+ctest --preset release
+finished "stage 1/3: release build and tests"
+
+banner "stage 2/3: AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
+cmake --preset asan-ci
+cmake --build --preset asan-ci
+# PhotonMap.CausticErrorShrinksAsPhotonsGrow traces 20 million photons: minutes under ASan.
+ctest --preset asan-ci -E 'CausticErrorShrinksAsPhotonsGrow'
+finished "stage 2/3: AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
+
+banner "stage 3/3: libFuzzer runs, scene reader and formula parser, ${fuzz_seconds} s each"
+scripts/fuzz.sh "$fuzz_seconds"
+finished "stage 3/3: libFuzzer runs, scene reader and formula parser, ${fuzz_seconds} s each"
+
+printf '\n==== all stages finished clean in %d s ====\n' $((SECONDS - start_all))
