@@ -321,7 +321,14 @@ std::shared_ptr<const Shape> read_prism(JsonObjectReader& r) {
     p.key = "side";
     p.face_of = {0, 1, 2, 2, 3, 3, 4, 4};
     p.geometry = std::move(g);
-    return build_mesh(r, std::move(p));
+    auto shape = build_mesh(r, std::move(p));
+    // Built closed by construction; only sizes at the edge of what doubles resolve (a height
+    // of 1e-307, or a millimetre far from the origin) collapse faces and open it.
+    if (!static_cast<const TriangleMesh&>(*shape).is_closed()) {
+        throw SceneError(r.path(), "side " + format_number(spec.side) + " and height " + format_number(spec.height) +
+                                       " are too small to build a closed prism at this position (its faces collapse)");
+    }
+    return shape;
 }
 
 void check_mesh_material(JsonObjectReader& r, const Shape& shape, const Material& material) {

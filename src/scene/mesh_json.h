@@ -38,6 +38,7 @@ const std::vector<std::string>& prism_keys();
 std::shared_ptr<const Shape> read_mesh(JsonObjectReader& r, const std::string& base_dir);
 std::shared_ptr<const Shape> read_prism(JsonObjectReader& r);
 
+// For `mesh` objects (a prism is closed by construction, or refused by read_prism).
 // Refuses an open mesh with a transparent material: it would be a set of thin panes, not a
 // solid, which is almost never what was meant.
 void check_mesh_material(JsonObjectReader& r, const Shape& shape, const Material& material);

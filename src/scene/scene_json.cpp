@@ -336,7 +336,7 @@ SceneObject read_object(const json& j, const std::string& path,
         o.detector = read_detector(r);
     }
     o.material = read_material_ref(r, o.name, materials, all);
-    if (o.type == ObjectType::Mesh) check_mesh_material(r, *o.shape, all[o.material]);
+    if (type == "mesh") check_mesh_material(r, *o.shape, all[o.material]);  // a prism is closed
     if (o.type != ObjectType::Sphere) check_not_emitting(r, all[o.material]);
     return o;
 }

@@ -154,6 +154,10 @@ const BadScene kBadScenes[] = {
     {"prism_default_facing_along_axis.json", "objects[0].facing",
      "the default facing [0, 0, 1] is not perpendicular to axis; give facing"},
     {"prism_with_mesh_key.json", "objects[0].vertices", "not a property of a prism"},
+    // Found by fuzz_scene (tests/fuzz/regressions/scene/crash-546b...): the prism's faces
+    // collapsed, and the open-mesh check asked for a key a prism does not have.
+    {"prism_collapses.json", "objects[0]",
+     "side 1 and height 1.1e-307 are too small to build a closed prism at this position (its faces collapse)"},
     // Equation-defined surfaces (issue 6).
     {"surface_formula_syntax.json", "objects[0].front.formula",
      "cannot parse at position 5: Unexpected operator \"*\""},
