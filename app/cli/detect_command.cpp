@@ -22,7 +22,8 @@ namespace {
 struct DetectArgs {
     std::string scene;
     std::string output = "detectors";
-    int64_t photons = 0;
+    int64_t photons = 0, caustic_photons = 0;
+    std::string aim_photons;
     int64_t seed = -1;
     int threads = 0, max_depth = -1;
     bool json = false, quiet = false, log = false;
@@ -48,6 +49,8 @@ int run(const DetectArgs& a) {
     }
     DetectionSettings settings;
     settings.photons_per_light = a.photons > 0 ? a.photons : scene.render.photons;
+    settings.caustic_photons_per_light = a.caustic_photons > 0 ? a.caustic_photons : scene.render.caustic_photons;
+    settings.aim = a.aim_photons.empty() ? scene.render.aim_photons : a.aim_photons == "on";
     settings.seed = a.seed >= 0 ? static_cast<uint64_t>(a.seed) : scene.render.seed;
     settings.max_depth = a.max_depth >= 0 ? a.max_depth : scene.render.max_depth;
     settings.threads = a.threads;
@@ -76,6 +79,8 @@ int run(const DetectArgs& a) {
     const std::vector<std::string> stems = detector_file_stems(result);
     nlohmann::json doc{{"scene", a.scene},
                        {"photons_per_light", settings.photons_per_light},
+                       {"photons_emitted", result.photons_emitted},
+                       {"photons_aimed", result.photons_aimed},
                        {"seed", settings.seed},
                        {"seconds", result.seconds},
                        {"detectors", nlohmann::json::array()}};
@@ -94,8 +99,9 @@ int run(const DetectArgs& a) {
     if (a.json) {
         std::cout << doc.dump(2) << "\n";
     } else {
-        std::printf("%lld photons per light, %.2f s\n", static_cast<long long>(settings.photons_per_light),
-                    result.seconds);
+        std::printf("%lld photons per light, %lld in all (%lld aimed at the glass and mirrors), %.2f s\n",
+                    static_cast<long long>(settings.photons_per_light), static_cast<long long>(result.photons_emitted),
+                    static_cast<long long>(result.photons_aimed), result.seconds);
     }
     return 0;
 }
@@ -110,6 +116,11 @@ Action add_detect_command(CLI::App& app) {
     cmd->add_option("-o,--output", args->output, "Folder for <detector>.csv, .exr and .png")->capture_default_str();
     cmd->add_option("--photons", args->photons, "Photons emitted per light (default: the scene's render.photons)")
         ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
+    cmd->add_option("--caustic-photons", args->caustic_photons,
+                    "Photons aimed at the glass and mirrors, per light (default: render.caustic_photons)")
+        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
+    cmd->add_option("--aim-photons", args->aim_photons, "on: aim photons at the glass and mirrors; off: uniform")
+        ->check(CLI::IsMember({"on", "off"}));
     cmd->add_option("--seed", args->seed, "Random seed (default: the scene's render.seed)")
         ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{0}, int64_t{2147483647}));
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")

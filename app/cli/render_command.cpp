@@ -25,7 +25,8 @@ struct RenderArgs {
     int width = 0, height = 0, spp = 0, max_depth = -1, threads = 0;
     int64_t seed = -1;
     std::string integrator, filter, direct;
-    int64_t photons = 0;
+    int64_t photons = 0, caustic_photons = 0;
+    std::string aim_photons;
     double radius = 0, filter_k = 0;
     int max_photons_per_estimate = 0;
     int passes = -1;
@@ -86,6 +87,8 @@ int run(const RenderArgs& a) {
     if (a.seed >= 0) s.seed = static_cast<uint64_t>(a.seed);
     if (!a.integrator.empty()) s.integrator = a.integrator;
     if (a.photons > 0) s.photons = a.photons;
+    if (a.caustic_photons > 0) s.caustic_photons = a.caustic_photons;
+    if (!a.aim_photons.empty()) s.aim_photons = a.aim_photons == "on";
     if (a.radius > 0) s.radius = a.radius;
     if (!a.filter.empty()) s.filter = a.filter;
     if (!a.direct.empty()) s.direct = a.direct;
@@ -132,17 +135,18 @@ int run(const RenderArgs& a) {
     if (result.photons && !a.quiet) {
         const PhotonTracingStats& p = *result.photons;
         std::fprintf(stderr,
-                     "photons: %lld emitted, %zu direct + %zu caustic stored (%.1f MiB), traced in "
-                     "%.3f s, maps built in %.3f s\n",
-                     static_cast<long long>(p.emitted), p.direct, p.caustic,
+                     "photons: %lld emitted (%lld aimed at the glass and mirrors), %zu direct + %zu caustic "
+                     "stored (%.1f MiB), traced in %.3f s, maps built in %.3f s\n",
+                     static_cast<long long>(p.emitted), static_cast<long long>(p.aimed), p.direct, p.caustic,
                      p.memory_bytes / (1024.0 * 1024.0), p.trace_seconds, p.build_seconds);
     }
     if (result.sppm && !a.quiet) {
         const SppmStats& p = *result.sppm;
         std::fprintf(stderr,
-                     "sppm: %d passes, %lld photons (%.3g passes/s, %.3g photons/s); camera %.2f s, photons "
-                     "%.2f s, gather %.2f s; mean radius %.4g\n",
-                     p.passes, static_cast<long long>(p.photons_emitted), p.passes / result.seconds,
+                     "sppm: %d passes, %lld photons (%lld aimed; %.3g passes/s, %.3g photons/s); camera %.2f s, "
+                     "photons %.2f s, gather %.2f s; mean radius %.4g\n",
+                     p.passes, static_cast<long long>(p.photons_emitted), static_cast<long long>(p.photons_aimed),
+                     p.passes / result.seconds,
                      p.photons_emitted / result.seconds, p.camera_seconds, p.photon_seconds, p.gather_seconds,
                      p.mean_radius);
     }
@@ -206,6 +210,12 @@ Action add_render_command(CLI::App& app) {
         ->check(CLI::IsMember(kIntegratorNames));
     cmd->add_option("--photons", args->photons, "Photons emitted per light (photon_map)")
         ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, kMaxPhotonsPerLight));
+    cmd->add_option("--caustic-photons", args->caustic_photons,
+                    "Photons aimed at the glass and mirrors, per light (photon_map; sppm: per pass)")
+        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, kMaxPhotonsPerLight));
+    cmd->add_option("--aim-photons", args->aim_photons,
+                    "on: aim caustic photons at the glass and mirrors (default); off: emit all uniformly")
+        ->check(CLI::IsMember({"on", "off"}));
     cmd->add_option("--radius", args->radius, "Photon gather radius (photon_map)")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--filter", args->filter, "Photon filter: cone, gaussian or box")

@@ -253,6 +253,23 @@ void PropertyPanel::add_choice(const QString& label, const std::string& key, con
     m_form->addRow(label, box);
 }
 
+void PropertyPanel::add_flag(const QString& label, const std::string& key, const QString& when_absent) {
+    const json* v = value_at(key);
+    const QString current = v && v->is_boolean() ? (v->get<bool>() ? tr("yes") : tr("no")) : when_absent;
+    QStringList choices{tr("yes"), tr("no")};
+    if (when_absent == tr("auto")) choices.prepend(when_absent);
+    add_choice(label, key, current.toStdString(), choices, [this, key, label](const std::string& chosen) {
+        const json* here = value_at("");
+        json element = here ? *here : json::object();
+        if (chosen == tr("auto").toStdString()) {
+            element.erase(key);
+        } else {
+            element[key] = chosen == tr("yes").toStdString();
+        }
+        commit("", element, label);
+    });
+}
+
 void PropertyPanel::add_text(const QString& label, const std::string& key, const std::string& fallback) {
     auto* edit = new QLineEdit(m_form_widget);
     edit->setObjectName(QString::fromStdString("field:" + key));
@@ -349,6 +366,8 @@ void PropertyPanel::build_render() {
     add_number(tr("Filter constant k"), "filter_k", d.filter_k, 1.0, 1e6, 3);
     add_integer(tr("Max photons per estimate"), "max_photons_per_estimate", d.max_photons_per_estimate, 1, 1000000);
     add_choice(tr("Direct light"), "direct", d.direct, to_qt(kDirectLightNames));
+    add_integer(tr("Caustic photons per light (0 = as many)"), "caustic_photons", d.caustic_photons, 0, 1LL << 40);
+    add_flag(tr("Aim photons at glass and mirrors"), "aim_photons", d.aim_photons ? tr("yes") : tr("no"));
     add_heading(tr("Progressive photon map (sppm, the view)"));
     add_integer(tr("Photons per light per pass (0 = auto)"), "pass_photons", d.pass_photons, 0, 1LL << 30);
     add_integer(tr("Passes (lenslab render)"), "passes", d.passes, 0, 1 << 24);
@@ -414,6 +433,7 @@ void PropertyPanel::build_object() {
         return;
     }
     if (type == "triangle" || type == "disc" || type == "rectangle") build_detector();
+    add_flag(tr("Photon target (aim caustic photons)"), "photon_target", tr("auto"));
     add_heading(tr("Material"));
     build_material_ref(tr("Material"), "material");
 }

@@ -55,6 +55,9 @@ private:
     void add_choice(const QString& label, const std::string& key, const std::string& fallback,
                     const QStringList& choices,
                     const std::function<void(const std::string&)>& on_choose = {});
+    // A true/false key as a choice of yes and no; `when_absent` is shown while the key is
+    // absent ("auto" adds a choice that removes it).
+    void add_flag(const QString& label, const std::string& key, const QString& when_absent);
     void add_text(const QString& label, const std::string& key, const std::string& fallback);
     // A formula field: `check` returns why a text would be refused (shown under the field
     // while typing, in a label named "formula_error:" + key), or nothing.

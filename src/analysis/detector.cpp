@@ -130,13 +130,15 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
         }
     }
 
-    const int lights = photon_light_count(scene);
-    const int64_t n = settings.photons_per_light;
-    const int64_t total = n * lights;
     PhotonTracingSettings tracing;
-    tracing.photons_per_light = n;
+    tracing.photons_per_light = settings.photons_per_light;
+    tracing.caustic_photons_per_light =
+        settings.caustic_photons_per_light > 0 ? settings.caustic_photons_per_light : settings.photons_per_light;
+    tracing.aim = settings.aim;
     tracing.seed = settings.seed;
     tracing.max_depth = settings.max_depth;
+    const PhotonPlan plan = photon_plan(scene, tracing);
+    const int64_t total = plan.total();
 
     tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
     std::vector<double> sum_u(result.detectors.size()), sum_v(sum_u.size()), sum_r2(sum_u.size());
@@ -174,7 +176,7 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
                 };
                 const int64_t begin = first + (chunk * kChunk), end = std::min(last, begin + kChunk);
                 for (int64_t g = begin; g < end; ++g) {
-                    trace_photon_path(scene, tracing, static_cast<int>(g / n), g % n, on_arrival);
+                    trace_photon_path(scene, tracing, plan, g, on_arrival);
                 }
             }
         }); });
@@ -206,6 +208,7 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
     }
     result.cancelled = control.cancelled();
     result.photons_emitted = total;
+    result.photons_aimed = plan.aimed_total();
     for (size_t d = 0; d < result.detectors.size(); ++d) finish(result.detectors[d], sum_u[d], sum_v[d], sum_r2[d]);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return result;

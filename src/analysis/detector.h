@@ -19,7 +19,11 @@
 namespace lenslab {
 
 struct DetectionSettings {
-    int64_t photons_per_light = 200000;
+    int64_t photons_per_light = 200000;  // emitted as the lights emit, per light on average
+    // Aimed at the photon targets (the glass and mirrors), per light; 0: as many as
+    // photons_per_light. A detector behind a lens then gets its light through the lens.
+    int64_t caustic_photons_per_light = 0;
+    bool aim = true;
     uint64_t seed = 1;
     int max_depth = 8;  // specular bounces followed (render.max_depth)
     int threads = 0;    // 0: all cores
@@ -54,7 +58,8 @@ struct DetectorMeasurement {
 
 struct DetectionResult {
     std::vector<DetectorMeasurement> detectors;  // in the order of Scene::objects
-    int64_t photons_emitted = 0;
+    int64_t photons_emitted = 0;  // both streams
+    int64_t photons_aimed = 0;
     bool cancelled = false;
     double seconds = 0;
 };
@@ -62,7 +67,7 @@ struct DetectionResult {
 // Indices of the objects that are detectors.
 std::vector<int> detector_objects(const Scene& scene);
 
-// Shoots `photons_per_light` photons from every light and measures every detector. The
+// Shoots the photons of both streams (render/photon_emission.h) and measures every detector. The
 // result is the same for a given seed whatever the thread count (one random stream per
 // photon; arrivals are summed in photon order). Reports progress and stops early (with
 // `cancelled` set) through `control`.

@@ -13,4 +13,9 @@ bool Shape::contains(const Vec3& p) const {
     return dot(hit.normal, d) > 0.0;
 }
 
+BoundingSphere Shape::bounding_sphere() const {
+    const Aabb b = bounds();
+    return {(b.lo + b.hi) * 0.5, 0.5 * length(b.hi - b.lo)};
+}
+
 }  // namespace lenslab

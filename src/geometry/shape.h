@@ -12,6 +12,13 @@ struct SurfaceHit {
     Vec3 normal;  // unit, geometric, pointing out of the solid (for a triangle: its face normal)
 };
 
+// A sphere holding every point of a shape: photons aimed at an object are sent into the
+// cone this subtends (the tighter, the fewer aimed photons miss).
+struct BoundingSphere {
+    Vec3 centre;
+    double radius = 0;
+};
+
 class Shape {
 public:
     virtual ~Shape() = default;
@@ -24,6 +31,8 @@ public:
     // default asks which way the nearest surface along a fixed direction faces: a closed
     // shape's normals point out, so a ray from inside meets its surface leaving it.
     virtual bool contains(const Vec3& p) const;
+    // Default: the sphere through the corners of bounds().
+    virtual BoundingSphere bounding_sphere() const;
 };
 
 }  // namespace lenslab

@@ -14,6 +14,7 @@ public:
     bool contains(const Vec3& p) const override {
         return length_squared(p - m_centre) <= m_radius * m_radius;
     }
+    BoundingSphere bounding_sphere() const override { return {m_centre, m_radius}; }
 
     const Vec3& centre() const { return m_centre; }
     double radius() const { return m_radius; }

@@ -1,49 +1,54 @@
 #include "render/photon_emission.h"
 
-#include <numbers>
-
-#include "math/frame.h"
-#include "math/sampling.h"
+#include <algorithm>
+#include <cmath>
 
 namespace lenslab {
 
-int photon_light_count(const Scene& scene) {
-    return static_cast<int>(scene.emitters().size() + scene.point_lights.size() +
-                            scene.beams.size());
-}
+int photon_light_count(const Scene& scene) { return static_cast<int>(scene.lights().size()); }
 
 const Spectrum& emitted_spectrum(const Scene& scene, int light) {
-    const int spheres = static_cast<int>(scene.emitters().size());
-    const int points = static_cast<int>(scene.point_lights.size());
-    if (light < spheres) return *scene.emitters()[light].radiance;
-    if (light < spheres + points) return *scene.point_lights[light - spheres].spectrum;
-    return *scene.beams[light - spheres - points].spectrum;
+    return scene.lights()[static_cast<size_t>(light)]->spectrum();
 }
 
-PhotonStart emit_photon(const Scene& scene, int light, int64_t n, Rng& rng) {
-    const Spectrum* spectrum = &emitted_spectrum(scene, light);
-    const double inv_n = 1.0 / static_cast<double>(n);
-    const int spheres = static_cast<int>(scene.emitters().size());
-    const int points = static_cast<int>(scene.point_lights.size());
-    if (light < spheres) {
-        const Sphere& sphere = *scene.emitters()[light].sphere;
-        const Vec3 normal = sample_uniform_sphere(rng.uniform(), rng.uniform());
-        const Vec3 dir = Frame::from_axis(normal).to_world(
-            sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
-        const double area = 4.0 * std::numbers::pi * sphere.radius() * sphere.radius();
-        return {{sphere.centre() + normal * sphere.radius(), dir},
-                spectrum,
-                std::numbers::pi * area * inv_n};
+std::vector<int64_t> photons_by_power(const Scene& scene, int64_t per_light) {
+    const auto& lights = scene.lights();
+    double total_power = 0;
+    for (const LightPtr& l : lights) total_power += l->power();
+    std::vector<int64_t> counts;
+    const double budget = static_cast<double>(per_light) * static_cast<double>(lights.size());
+    for (const LightPtr& l : lights) {
+        const double share = total_power > 0 ? l->power() / total_power : 1.0 / lights.size();
+        counts.push_back(per_light <= 0 ? 0 : std::max<int64_t>(1, std::llround(budget * share)));
     }
-    if (light < spheres + points) {
-        const PointLight& l = scene.point_lights[light - spheres];
-        return {{l.position, sample_uniform_sphere(rng.uniform(), rng.uniform())}, spectrum, inv_n};
+    return counts;
+}
+
+PhotonPlan::PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t aimed_per_light, bool aim)
+    : m_aiming(aim && !scene.photon_targets().empty() && aimed_per_light > 0) {
+    for (int stream = 0; stream < 2; ++stream) {
+        if (stream == 1 && !m_aiming) break;
+        const std::vector<int64_t> counts =
+            photons_by_power(scene, stream == 0 ? emitted_per_light : aimed_per_light);
+        for (size_t l = 0; l < counts.size(); ++l) {
+            if (counts[l] == 0) continue;
+            m_ranges.push_back({m_total, counts[l], static_cast<int>(l), stream == 1});
+            m_total += counts[l];
+            m_stream_total[stream] += counts[l];
+        }
     }
-    const BeamLight& b = scene.beams[light - spheres - points];
-    double x, y;
-    sample_disc_concentric(rng.uniform(), rng.uniform(), x, y);
-    const Frame f = Frame::from_axis(b.direction);
-    return {{b.origin + (f.u * x + f.v * y) * b.radius, b.direction}, spectrum, inv_n};
+}
+
+PhotonPlan::Photon PhotonPlan::start(const Scene& scene, int64_t index, Rng& rng) const {
+    // The last range starting at or before `index`.
+    const auto it = std::upper_bound(m_ranges.begin(), m_ranges.end(), index,
+                                     [](int64_t i, const Range& r) { return i < r.first; });
+    const Range& r = *(it - 1);
+    const Light& light = *scene.lights()[static_cast<size_t>(r.light)];
+    Photon p{r.light, r.aimed,
+             r.aimed ? light.sample_le_towards(scene.photon_targets(), rng) : light.sample_le(rng)};
+    p.start.scale /= static_cast<double>(r.count);
+    return p;
 }
 
 }  // namespace lenslab

@@ -1,21 +1,23 @@
 #pragma once
-// Where photons start: a point and direction on one light, and the share of the light's power
-// the photon carries. Shared by the photon-map tracer and sppm so both emit the same way.
+// Where photons start, shared by the photon-map tracer, sppm and detectors so all emit the
+// same way. Two streams leave each light:
+//   - emitted photons, sampled as the light emits (uniform directions for a point light);
+//   - aimed photons, sampled only towards the photon targets (scene/photon_targets.h), so
+//     that nearly every one of them reaches the glass and makes a caustic.
+// Each stream divides its photons among the lights in proportion to their power, so every
+// photon of a stream carries about the same power. While aiming, a photon of either stream
+// counts only in its part of the light's emission: an aimed photon only if the first object
+// it meets is a target, an emitted one only if it is not (`counts`), which keeps every
+// estimate unbiased. Without targets, or with aiming off, there are only emitted photons.
 
 #include <cstdint>
+#include <vector>
 
-#include "geometry/ray.h"
 #include "math/rng.h"
-#include "optics/spectrum.h"
+#include "scene/light_source.h"
 #include "scene/scene.h"
 
 namespace lenslab {
-
-struct PhotonStart {
-    Ray ray;
-    const Spectrum* spectrum = nullptr;  // spectral flux of its light (W per nm, before `scale`)
-    double scale = 0;  // this photon's share: the flux it carries is spectrum * scale
-};
 
 // Number of light sources that emit photons: emitting spheres, point lights, beams.
 int photon_light_count(const Scene& scene);
@@ -23,9 +25,44 @@ int photon_light_count(const Scene& scene);
 // Light `light` counts emitting spheres first, then point lights, then beams.
 const Spectrum& emitted_spectrum(const Scene& scene, int light);
 
-// Samples one of `n` photons of light `light`: emitting spheres send cosine-distributed
-// photons from uniform points on their surface (a Lambertian sphere of radiance L and radius
-// R emits pi L 4 pi R^2), point lights uniform directions, beams uniform points on their disc.
-PhotonStart emit_photon(const Scene& scene, int light, int64_t n, Rng& rng);
+class PhotonPlan {
+public:
+    // `emitted_per_light` and `aimed_per_light` photons per light on average in each stream.
+    PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t aimed_per_light, bool aim);
+
+    // All photons of both streams; photon `index` is in [0, total()).
+    int64_t total() const { return m_total; }
+    int64_t emitted_total() const { return m_stream_total[0]; }
+    int64_t aimed_total() const { return m_stream_total[1]; }
+    bool aiming() const { return m_aiming; }
+
+    struct Photon {
+        int light = 0;
+        bool aimed = false;
+        PhotonStart start;  // scale already divided by the photons its light sends in its stream
+    };
+    // Samples photon `index` with `rng` (the caller seeds one stream per photon).
+    Photon start(const Scene& scene, int64_t index, Rng& rng) const;
+
+    // Whether a photon of the given stream, whose first hit is `object`, counts.
+    bool counts(const Scene& scene, bool aimed, int object) const {
+        return !m_aiming || aimed == scene.is_photon_target(object);
+    }
+
+private:
+    struct Range {
+        int64_t first, count;
+        int light;
+        bool aimed;
+    };
+    std::vector<Range> m_ranges;  // in photon order: emitted stream light by light, then aimed
+    int64_t m_total = 0;
+    int64_t m_stream_total[2] = {0, 0};
+    bool m_aiming = false;
+};
+
+// Photons per light when `per_light` are asked for on average: their total divided in
+// proportion to the lights' powers, at least one each.
+std::vector<int64_t> photons_by_power(const Scene& scene, int64_t per_light);
 
 }  // namespace lenslab

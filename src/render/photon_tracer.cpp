@@ -28,7 +28,6 @@ constexpr int64_t kChunk = 4096;
 // light's spectrum and become that wavelength's colour. Scenes without dispersion thus get
 // no colour noise from wavelength sampling.
 struct EmittedPhoton {
-    Ray ray;
     Rgb power;
     const Spectrum* spectrum;  // spectral flux shape of its light
     double scale;              // this photon's share of it
@@ -53,11 +52,14 @@ struct LightSpectrum {
     double radiant_power;
 };
 
-// The photon-map tracer's photon: the emitted start with its colour as RGB and its power.
-EmittedPhoton emit(const Scene& scene, int light, const LightSpectrum& ls, int64_t n, Rng& rng) {
-    const PhotonStart start = emit_photon(scene, light, n, rng);
-    return EmittedPhoton{start.ray, ls.colour * start.scale, start.spectrum, start.scale,
-                         ls.radiant_power * start.scale};
+std::vector<LightSpectrum> light_spectra(const Scene& scene) {
+    std::vector<LightSpectrum> out;
+    for (const LightPtr& l : scene.lights()) out.push_back({spectrum_to_rgb(l->spectrum()), radiant_power(l->spectrum())});
+    return out;
+}
+
+EmittedPhoton emitted(const PhotonStart& start, const LightSpectrum& ls) {
+    return EmittedPhoton{ls.colour * start.scale, start.spectrum, start.scale, ls.radiant_power * start.scale};
 }
 
 Photon make_photon(const Vec3& p, const Rgb& power, const Vec3& towards, PhotonKind kind) {
@@ -73,50 +75,142 @@ Photon make_photon(const Vec3& p, const Rgb& power, const Vec3& towards, PhotonK
     return ph;
 }
 
-// Follows one photon until it is stored, absorbed, escapes or exceeds the depth. Returns
-// the stored photon (kind None if none). Russian roulette picks one event per hit with the
-// material's weights: diffuse (store; power / p_diffuse keeps the estimate unbiased),
-// one of the specular branches (power unchanged: its weight equals its probability), or
-// absorption.
-// `on_arrival`, if given, sees the photon at every surface before the material acts.
-Photon trace_one(const Scene& scene, EmittedPhoton e, int max_depth, Rng& rng,
-                 const PhotonArrivalFn* on_arrival = nullptr, int light = 0) {
-    Ray ray = e.ray;
-    for (int depth = 0; depth <= max_depth; ++depth) {
-        Interaction it;
-        if (!next_interaction(scene, ray, e.lambda_nm > 0 ? e.lambda_nm : kLineD, it)) break;
-        if (on_arrival) {
-            (*on_arrival)(PhotonArrival{&it, ray.direction, light, depth, e.spectrum, e.scale, e.lambda_nm});
+// One photon through the scene. `store` receives the photons it leaves on diffuse surfaces;
+// `on_arrival`, if given, sees it at every surface before the material acts.
+class PhotonWalk {
+public:
+    PhotonWalk(const Scene& scene, const PhotonPlan& plan, int max_depth, const PhotonArrivalFn* on_arrival,
+               std::vector<Photon>* store)
+        : m_scene(scene), m_plan(plan), m_max_depth(max_depth), m_on_arrival(on_arrival), m_store(store) {}
+
+    // Traces photon `p` with its own random stream `rng`.
+    void run(const PhotonPlan::Photon& p, const LightSpectrum& ls, Rng& rng) {
+        m_rng = &rng;
+        m_light = p.light;
+        m_aimed = p.aimed;
+        m_initial_scale = p.start.scale;
+        if (p.start.scale == 0.0) return;  // sampled where the light sends nothing
+        if (p.aimed) {
+            split(emitted(p.start, ls), p.start.ray);
+        } else {
+            roulette(emitted(p.start, ls), p.start.ray);
+        }
+    }
+
+private:
+    // The next surface, or false; the first surface must be in this stream's part of the
+    // light's emission (photon_emission.h).
+    bool arrive(const Ray& ray, EmittedPhoton& e, int depth, Interaction& it) {
+        if (!next_interaction(m_scene, ray, e.lambda_nm > 0 ? e.lambda_nm : kLineD, it)) return false;
+        if (depth == 0 && !m_plan.counts(m_scene, m_aimed, it.hit.object)) return false;
+        if (m_on_arrival) {
+            (*m_on_arrival)(PhotonArrival{&it, ray.direction, m_light, m_aimed, depth, e.spectrum, e.scale,
+                                          e.lambda_nm});
         }
         if (e.lambda_nm == 0 && it.scattering.dispersive) {
-            e.pick_wavelength(rng);
+            e.pick_wavelength(*m_rng);
             it.scattering = scatter_at(it, ray.direction, e.lambda_nm);
         }
-        const Scattering& s = it.scattering;
-        double u = rng.uniform();
-        const double p_diffuse = it.material->color.is_black() ? 0.0 : s.diffuse;
-        if (u < p_diffuse) {
-            const PhotonKind kind = depth == 0 ? PhotonKind::Direct : PhotonKind::Caustic;
-            return make_photon(it.point(), e.power * (1.0 / p_diffuse), -ray.direction, kind);
-        }
-        u -= p_diffuse;
-        const Branch* chosen = nullptr;
-        for (int i = 0; i < s.count && !chosen; ++i) {
-            if (u < s.branches[i].weight) chosen = &s.branches[i];
-            u -= s.branches[i].weight;
-        }
-        if (!chosen) break;  // absorbed (or the diffuse share of a black surface)
-        ray = {it.point(), chosen->direction};
+        return true;
     }
-    return Photon{};
-}
 
+    double diffuse_share(const Interaction& it) const {
+        return it.material->color.is_black() ? 0.0 : it.scattering.diffuse;
+    }
+
+    void store(const Interaction& it, const Rgb& power, const Vec3& direction, int depth) {
+        if (m_store) {
+            m_store->push_back(make_photon(it.point(), power, -direction,
+                                           depth == 0 ? PhotonKind::Direct : PhotonKind::Caustic));
+        }
+    }
+
+    // Russian roulette picks one event per hit with the material's weights: diffuse (store;
+    // power / p_diffuse keeps the estimate unbiased), one of the specular branches (power
+    // unchanged: its weight equals its probability), or absorption.
+    void roulette(EmittedPhoton e, Ray ray) {
+        for (int depth = 0; depth <= m_max_depth; ++depth) {
+            Interaction it;
+            if (!arrive(ray, e, depth, it)) return;
+            const Scattering& s = it.scattering;
+            double u = m_rng->uniform();
+            const double p_diffuse = diffuse_share(it);
+            if (u < p_diffuse) {
+                store(it, e.power * (1.0 / p_diffuse), ray.direction, depth);
+                return;
+            }
+            u -= p_diffuse;
+            const Branch* chosen = nullptr;
+            for (int i = 0; i < s.count && !chosen; ++i) {
+                if (u < s.branches[i].weight) chosen = &s.branches[i];
+                u -= s.branches[i].weight;
+            }
+            if (!chosen) return;  // absorbed (or the diffuse share of a black surface)
+            ray = {it.point(), chosen->direction};
+        }
+    }
+
+    // Every event at once: the diffuse share is stored (the photon's whole arriving power,
+    // as roulette stores on average) and each specular branch goes on with its weight.
+    // Branches wait on a list, not the call stack: a mirror corridor is a thousand deep.
+    void split(const EmittedPhoton& e, const Ray& ray) {
+        m_pending.clear();
+        m_pending.push_back({e, ray, 0});
+        while (!m_pending.empty()) {
+            Pending p = m_pending.back();
+            m_pending.pop_back();
+            Interaction it;
+            if (p.depth > m_max_depth || !arrive(p.ray, p.photon, p.depth, it)) continue;
+            if (diffuse_share(it) > 0.0) store(it, p.photon.power, p.ray.direction, p.depth);
+            const Scattering& s = it.scattering;
+            for (int i = 0; i < s.count; ++i) {
+                double w = s.branches[i].weight;
+                const double share = w * p.photon.scale / m_initial_scale;
+                if (share < kSplitFloor) {
+                    // Survives with probability share / floor, carrying the floor.
+                    if (m_rng->uniform() * kSplitFloor >= share) continue;
+                    w *= kSplitFloor / share;
+                }
+                EmittedPhoton branch = p.photon;
+                branch.power = branch.power * w;
+                branch.scale *= w;
+                branch.radiant_power *= w;
+                m_pending.push_back({branch, {it.point(), s.branches[i].direction}, p.depth + 1});
+            }
+        }
+    }
+
+    struct Pending {
+        EmittedPhoton photon;
+        Ray ray;
+        int depth;
+    };
+
+    const Scene& m_scene;
+    const PhotonPlan& m_plan;
+    int m_max_depth;
+    Rng* m_rng = nullptr;
+    const PhotonArrivalFn* m_on_arrival;
+    std::vector<Photon>* m_store;
+    int m_light = 0;
+    bool m_aimed = false;
+    double m_initial_scale = 1.0;  // the photon's share as it left the light
+    std::vector<Pending> m_pending;
+};
 }  // namespace
 
-uint64_t photon_storage_bytes(const Scene& scene, int64_t photons_per_light) {
-    // One slot per emitted photon: a photon is stored at most once (at its first diffuse
-    // surface), and the slots are compacted afterwards.
-    const long double bytes = static_cast<long double>(photons_per_light) * photon_light_count(scene) * sizeof(Photon);
+PhotonPlan photon_plan(const Scene& scene, const PhotonTracingSettings& settings) {
+    return PhotonPlan(scene, settings.photons_per_light, settings.caustic_photons_per_light, settings.aim);
+}
+
+uint64_t photon_storage_bytes(const Scene& scene, const PhotonTracingSettings& settings) {
+    // An emitted photon is stored at most once (at its first diffuse surface); an aimed one
+    // splits, and through glass leaves about one photon and a share of another (kSplitFloor
+    // bounds the branches): two slots each.
+    const PhotonPlan plan = photon_plan(scene, settings);
+    const long double bytes =
+        (static_cast<long double>(plan.emitted_total()) + 2.0L * static_cast<long double>(plan.aimed_total())) *
+        sizeof(Photon);
     return bytes > static_cast<long double>(std::numeric_limits<uint64_t>::max())
                ? std::numeric_limits<uint64_t>::max()
                : static_cast<uint64_t>(bytes);
@@ -136,45 +230,50 @@ uint64_t available_memory_bytes() {
 PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& settings,
                         RenderControl& control, PhotonTracingStats* stats) {
     const auto t0 = std::chrono::steady_clock::now();
-    const int lights = photon_light_count(scene);
-    const int64_t n = settings.photons_per_light;
-    const uint64_t need = photon_storage_bytes(scene, n);
+    const PhotonPlan plan = photon_plan(scene, settings);
+    const uint64_t need = photon_storage_bytes(scene, settings);
     const uint64_t have = available_memory_bytes();
     // Leave room for the image, the scene and the system: use at most 80% of what is free.
     if (need > have / 10 * 8) {
         std::ostringstream msg;
-        msg << "photons: " << n << " photons per light x " << lights << " light(s) need "
-            << need / (1024 * 1024) << " MiB of photon storage, but only " << have / (1024 * 1024)
-            << " MiB of memory is available; use fewer photons";
+        msg << "photons: " << plan.total() << " photons in all from " << photon_light_count(scene)
+            << " light(s) need " << need / (1024 * 1024) << " MiB of photon storage, but only "
+            << have / (1024 * 1024) << " MiB of memory is available; use fewer photons";
         throw ResourceError(msg.str());
     }
 
-    std::vector<Photon> slots(static_cast<size_t>(n) * lights);
-    std::vector<LightSpectrum> spectra;
-    for (int l = 0; l < lights; ++l) {
-        const Spectrum& s = emitted_spectrum(scene, l);
-        spectra.push_back({spectrum_to_rgb(s), radiant_power(s)});
-    }
-    const int64_t chunks_per_light = (n + kChunk - 1) / kChunk;
-    const int64_t chunks = chunks_per_light * lights;
+    const std::vector<LightSpectrum> spectra = light_spectra(scene);
+    const int64_t chunks = (plan.total() + kChunk - 1) / kChunk;
+    std::vector<std::vector<Photon>> found(static_cast<size_t>(chunks));
     tbb::parallel_for(tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
         for (int64_t chunk = r.begin(); chunk != r.end(); ++chunk) {
             if (control.cancelled()) return;
-            const int light = static_cast<int>(chunk / chunks_per_light);
-            const int64_t first = (chunk % chunks_per_light) * kChunk;
-            const int64_t last = std::min(n, first + kChunk);
+            std::vector<Photon>& out = found[static_cast<size_t>(chunk)];
+            const int64_t first = chunk * kChunk, last = std::min(plan.total(), first + kChunk);
+            out.reserve(static_cast<size_t>(last - first));
+            PhotonWalk walk(scene, plan, settings.max_depth, nullptr, &out);
             for (int64_t i = first; i < last; ++i) {
-                const int64_t slot = light * n + i;
-                Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(slot));
-                slots[static_cast<size_t>(slot)] = trace_one(scene, emit(scene, light, spectra[light], n, rng), settings.max_depth, rng);
+                Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(i));
+                const PhotonPlan::Photon p = plan.start(scene, i, rng);
+                walk.run(p, spectra[static_cast<size_t>(p.light)], rng);
             }
         }
     });
+    // Concatenated in photon order: the same maps for any thread count.
+    size_t stored = 0;
+    for (const auto& chunk : found) stored += chunk.size();
+    std::vector<Photon> photons;
+    photons.reserve(stored);
+    for (auto& chunk : found) {
+        photons.insert(photons.end(), chunk.begin(), chunk.end());
+        std::vector<Photon>().swap(chunk);
+    }
     const auto t1 = std::chrono::steady_clock::now();
-    PhotonMap map(std::move(slots));
+    PhotonMap map(std::move(photons));
     const auto t2 = std::chrono::steady_clock::now();
     if (stats) {
-        stats->emitted = n * lights;
+        stats->emitted = plan.total();
+        stats->aimed = plan.aimed_total();
         stats->direct = map.direct().size();
         stats->caustic = map.caustic().size();
         stats->trace_seconds = std::chrono::duration<double>(t1 - t0).count();
@@ -184,14 +283,13 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
     return map;
 }
 
-void trace_photon_path(const Scene& scene, const PhotonTracingSettings& settings, int light, int64_t index,
-                       const PhotonArrivalFn& on_arrival) {
-    // The stream and the draws of trace_photons' slot for this photon; the colour only
-    // feeds the stored RGB power, which nothing reads here.
-    const int64_t slot = light * settings.photons_per_light + index;
-    Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(slot));
-    const EmittedPhoton e = emit(scene, light, LightSpectrum{}, settings.photons_per_light, rng);
-    (void)trace_one(scene, e, settings.max_depth, rng, &on_arrival, light);
+void trace_photon_path(const Scene& scene, const PhotonTracingSettings& settings, const PhotonPlan& plan,
+                       int64_t index, const PhotonArrivalFn& on_arrival) {
+    // The stream and the draws of trace_photons' photon `index`; the colour only feeds the
+    // stored RGB power, which nothing reads here.
+    Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(index));
+    const PhotonPlan::Photon p = plan.start(scene, index, rng);
+    PhotonWalk(scene, plan, settings.max_depth, &on_arrival, nullptr).run(p, LightSpectrum{}, rng);
 }
 
 }  // namespace lenslab

@@ -1,8 +1,13 @@
 #pragma once
 // Photon tracing (Jensen 2001, chapter 5): photons leave every light, bounce off mirrors and
-// through glass chosen by Russian roulette on the Fresnel weights, and are stored where they
-// meet a diffuse surface. Each light emits the same number of photons; a photon carries the
-// light's power divided by that number, so the estimate does not change with the count.
+// through glass, and are stored where they meet a diffuse surface. Two streams
+// (render/photon_emission.h): emitted photons, sent as the lights emit, choose one event per
+// surface by Russian roulette on the material's weights; aimed photons, sent only towards
+// the glass and mirrors, split at each surface into its reflected and refracted branches
+// (weighted; Russian roulette only below kSplitFloor of a photon's power), so a caustic
+// photon rarely carries more than its share and the faint reflected caustics come at low
+// noise. A photon's power is its light's divided by the photons that light sends in its
+// stream, so the estimate does not change with the counts.
 
 #include <cstdint>
 #include <functional>
@@ -17,13 +22,20 @@
 namespace lenslab {
 
 struct PhotonTracingSettings {
-    int64_t photons_per_light = 200000;
+    int64_t photons_per_light = 200000;  // emitted stream, per light on average
     int max_depth = 8;   // specular bounces followed before a photon is dropped
     uint64_t seed = 1;
+    int64_t caustic_photons_per_light = 0;  // aimed stream, per light on average (0: none)
+    bool aim = true;  // false: no aimed stream, whatever its count
 };
 
+// Branches of an aimed photon weaker than this share of its power play Russian roulette
+// (surviving at this share), so splitting stays bounded.
+inline constexpr double kSplitFloor = 0.1;
+
 struct PhotonTracingStats {
-    int64_t emitted = 0;
+    int64_t emitted = 0;  // both streams
+    int64_t aimed = 0;    // of which aimed at the photon targets
     size_t direct = 0, caustic = 0;
     double trace_seconds = 0, build_seconds = 0;
     size_t memory_bytes = 0;
@@ -35,8 +47,8 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Bytes of photon storage the settings need at most, and the memory available for it.
-uint64_t photon_storage_bytes(const Scene& scene, int64_t photons_per_light);
+// Bytes of photon storage the settings are expected to need, and the memory available.
+uint64_t photon_storage_bytes(const Scene& scene, const PhotonTracingSettings& settings);
 uint64_t available_memory_bytes();
 
 // Traces the photons and builds the maps. Deterministic for a given seed at any thread
@@ -50,8 +62,10 @@ struct PhotonArrival {
     const Interaction* interaction;  // the surface, the point, its outward normal
     Vec3 direction;                  // of travel, unit
     int light;                       // which light sent it (in photon_light_count's order)
+    bool aimed;                      // from the aimed stream
     int depth;                       // surfaces met before this one
-    // What it carries: `scale` times its light's spectral power `*spectrum` at every
+    // What it carries (an aimed photon's branch: its share of the photon): `scale` times its
+    // light's spectral power `*spectrum` at every
     // wavelength while `lambda_nm` is 0; once a dispersive refraction picked one wavelength,
     // `lambda_nm` > 0 and the photon carries the same radiant power, `scale` times that of
     // `*spectrum`, all at that wavelength (a photon never gains power when it disperses).
@@ -61,10 +75,14 @@ struct PhotonArrival {
 };
 using PhotonArrivalFn = std::function<void(const PhotonArrival&)>;
 
-// Follows photon `index` (0 <= index < photons_per_light) of light `light` along the path
-// trace_photons gives it (the same random stream and choices) and calls `on_arrival` at
-// every surface it reaches; stores nothing. Deterministic per (seed, light, index).
-void trace_photon_path(const Scene& scene, const PhotonTracingSettings& settings, int light, int64_t index,
-                       const PhotonArrivalFn& on_arrival);
+// Follows photon `index` of `plan` (0 <= index < plan.total()) along the path trace_photons
+// gives it (the same random stream and choices) and calls `on_arrival` at every surface it
+// (or, aimed, each of its branches) reaches, where it counts; stores nothing.
+// Deterministic per (seed, index).
+void trace_photon_path(const Scene& scene, const PhotonTracingSettings& settings, const PhotonPlan& plan,
+                       int64_t index, const PhotonArrivalFn& on_arrival);
+
+// The photons `settings` ask for, in the streams photon_emission.h describes.
+PhotonPlan photon_plan(const Scene& scene, const PhotonTracingSettings& settings);
 
 }  // namespace lenslab

@@ -26,9 +26,12 @@ struct ChunkOut {
     std::vector<uint32_t> chains;
 };
 
-void trace_one(const Scene& scene, const PhotonPassSettings& s, int light, Rng& rng,
-               ChunkOut& out) {
-    const PhotonStart start = emit_photon(scene, light, s.photons_per_light, rng);
+void trace_one(const Scene& scene, const PhotonPassSettings& s, const PhotonPlan& plan, int64_t index,
+               Rng& rng, ChunkOut& out) {
+    const PhotonPlan::Photon photon = plan.start(scene, index, rng);
+    const PhotonStart& start = photon.start;
+    if (start.scale == 0.0) return;  // sampled where the light sends nothing
+    const int light = photon.light;
     Ray ray = start.ray;
     double power = start.scale;
     bool dispersed = false;
@@ -39,6 +42,8 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, int light, Rng& 
     for (int depth = 0; depth <= s.max_depth; ++depth) {
         Interaction it;
         if (!next_interaction(scene, ray, lambda, it)) return;
+        // Only in its stream's part of the light's emission (photon_emission.h).
+        if (depth == 0 && !plan.counts(scene, photon.aimed, it.hit.object)) return;
         if (!dispersed && it.scattering.dispersive) {
             // From here the path depends on wavelength: take one.
             dispersed = true;
@@ -110,33 +115,32 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, int light, Rng& 
 
 }  // namespace
 
-uint64_t photon_pass_bytes(const Scene& scene, int64_t photons_per_light) {
+PhotonPlan photon_pass_plan(const Scene& scene, const PhotonPassSettings& s) {
+    return PhotonPlan(scene, s.photons_per_light, s.caustic_photons_per_light, s.aim);
+}
+
+uint64_t photon_pass_bytes(const Scene& scene, const PhotonPassSettings& s) {
     // A photon leaves on average a few hits (one per diffuse bounce after the first); four
     // per photon bounds what the scenes here need with room to spare.
-    const long double bytes = static_cast<long double>(photons_per_light) *
-                              photon_light_count(scene) *
+    const long double bytes = static_cast<long double>(photon_pass_plan(scene, s).total()) *
                               (4 * sizeof(PhotonHit) + 4 * sizeof(uint32_t));
     return bytes > 1.8e19L ? UINT64_MAX : static_cast<uint64_t>(bytes);
 }
 
 PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s,
                              RenderControl& control) {
-    const int lights = photon_light_count(scene);
-    const int64_t n = s.photons_per_light;
-    const int64_t chunks_per_light = (n + kChunk - 1) / kChunk;
-    const int64_t chunks = chunks_per_light * lights;
+    const PhotonPlan plan = photon_pass_plan(scene, s);
+    const int64_t chunks = (plan.total() + kChunk - 1) / kChunk;
     std::vector<ChunkOut> outs(static_cast<size_t>(chunks));
     tbb::parallel_for(
         tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
             for (int64_t c = r.begin(); c != r.end(); ++c) {
                 if (control.cancelled()) return;
-                const int light = static_cast<int>(c / chunks_per_light);
-                const int64_t first = (c % chunks_per_light) * kChunk;
-                const int64_t last = std::min(n, first + kChunk);
+                const int64_t first = c * kChunk, last = std::min(plan.total(), first + kChunk);
                 ChunkOut& out = outs[static_cast<size_t>(c)];
                 for (int64_t i = first; i < last; ++i) {
-                    Rng rng(s.seed, kPhotonStreamBase + static_cast<uint64_t>(light * n + i));
-                    trace_one(scene, s, light, rng, out);
+                    Rng rng(s.seed, kPhotonStreamBase + static_cast<uint64_t>(i));
+                    trace_one(scene, s, plan, i, rng, out);
                 }
             }
         });
@@ -160,7 +164,8 @@ PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s,
         std::copy(outs[c].chains.begin(), outs[c].chains.end(),
                   pass.chains.begin() + static_cast<ptrdiff_t>(chain_at[c]));
     });
-    pass.emitted = n * lights;
+    pass.emitted = plan.total();
+    pass.aimed = plan.aimed_total();
     return pass;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// One photon pass of stochastic progressive photon mapping. Photons leave every light, go
+// One photon pass of stochastic progressive photon mapping. Photons leave every light (as it
+// emits, and aimed at the glass and mirrors: render/photon_emission.h), go
 // through glass and off mirrors, bounce diffusely (Russian roulette on the albedo), and leave
 // a hit at every diffuse surface they reach after at least one scattering event: the light
 // that comes straight from a light source is found by shadow rays instead (sharp shadows at
@@ -54,17 +55,20 @@ struct PhotonPass {
     // Material indices of the diffuse surfaces each photon bounced off, in order: the flux
     // of a hit is power * spectrum_light(l) * prod albedo(chains[chain .. chain + length)).
     std::vector<uint32_t> chains;
-    int64_t emitted = 0;
+    int64_t emitted = 0;  // both streams
+    int64_t aimed = 0;
 };
 
 struct PhotonPassSettings {
-    int64_t photons_per_light = 100000;
+    int64_t photons_per_light = 100000;  // emitted as the lights emit, per light on average
     int max_depth = 8;       // surfaces a photon meets before it is dropped
     uint64_t seed = 1;       // this pass's seed
     double lambda_nm = 550;  // the pass wavelength
     double lambda_pdf = 1;   // its density
     double pass_share = 0;   // probability that a dispersed photon takes the pass wavelength
     const class PassWavelength* wavelengths = nullptr;  // where dispersed photons draw their own
+    int64_t caustic_photons_per_light = 0;  // aimed at the photon targets, per light
+    bool aim = true;
 };
 
 // Deterministic for a given seed at any thread count (one random stream per photon, hits
@@ -73,6 +77,6 @@ PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& setti
                              RenderControl& control);
 
 // Bytes one pass may need at most for its hits, to refuse a count that cannot fit.
-uint64_t photon_pass_bytes(const Scene& scene, int64_t photons_per_light);
+uint64_t photon_pass_bytes(const Scene& scene, const PhotonPassSettings& settings);
 
 }  // namespace lenslab

@@ -301,6 +301,13 @@ Rgb JsonObjectReader::albedo(const std::string& key, const Rgb& fallback) {
     return v ? as_color(*v, child_path(key), 1.0) : fallback;
 }
 
+std::optional<bool> JsonObjectReader::boolean(const std::string& key) {
+    const nlohmann::json* v = find(key);
+    if (!v) return std::nullopt;
+    if (!v->is_boolean()) throw SceneError(child_path(key), std::string("must be true or false, got ") + type_name(*v));
+    return v->get<bool>();
+}
+
 double JsonObjectReader::fraction(const std::string& key, double fallback) {
     const double v = number(key, fallback);
     if (v < 0 || v > 1) {

@@ -30,10 +30,11 @@ const std::vector<std::string>& lens_group_keys() {
 
 std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
                                          const MaterialResolver& material) {
-    std::vector<std::string> keys{"type", "name"};
+    std::vector<std::string> keys{"type", "name", "photon_target"};
     keys.insert(keys.end(), lens_group_keys().begin(), lens_group_keys().end());
     JsonObjectReader r(j, path, keys, "a lens group");
     const std::string name = r.string("name", path);
+    const std::optional<bool> photon_target = r.boolean("photon_target");
     const Vec3 vertex = r.vec3("vertex");
     const Vec3 axis = r.direction("axis");
     const double group_diameter = r.positive("diameter");
@@ -99,6 +100,7 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
         o.type = ObjectType::Lens;
         o.shape = std::make_shared<LensSolid>(std::move(p));
         o.material = e.material;
+        o.photon_target = photon_target;
         objects.push_back(std::move(o));
         z += e.thickness + e.gap;
     }

@@ -37,6 +37,11 @@ struct RenderSettings {
     double filter_k = 1.1;               // cone filter constant k >= 1
     int max_photons_per_estimate = 500;  // cap on the photons one estimate gathers
     std::string direct = "shadow_rays";  // shadow_rays | photon_map
+    // Photons aimed at the photon targets (the glass and mirrors), per light: the caustic
+    // budget, apart from `photons` (photon_map) or `pass_photons` (sppm, per pass);
+    // 0 = auto, as many as those.
+    int64_t caustic_photons = 0;
+    bool aim_photons = true;  // false: every photon leaves as the light emits (uniformly)
 
     // Stochastic progressive photon mapping (integrator sppm). The render stops after
     // `passes` passes or `time` seconds, whichever comes first (0: no limit of that kind).

@@ -19,6 +19,33 @@ void Scene::build() {
     }
     m_bvh = Bvh(std::move(shapes));
     find_touching_solids();
+    find_lights_and_targets();
+}
+
+void Scene::find_lights_and_targets() {
+    m_lights.clear();
+    for (const SphereEmitter& e : m_emitters) {
+        m_lights.push_back(make_sphere_light(
+            std::static_pointer_cast<const Sphere>(objects[static_cast<size_t>(e.object)].shape), e.radiance));
+    }
+    for (const PointLight& l : point_lights) m_lights.push_back(make_point_light(l));
+    for (const BeamLight& b : beams) m_lights.push_back(make_beam_light(b));
+
+    std::vector<BoundingSphere> targets;
+    m_is_target.assign(objects.size(), 0);
+    m_specular_non_target = false;
+    for (size_t i = 0; i < objects.size(); ++i) {
+        const Material& m = material_of(static_cast<int>(i));
+        const bool specular = m.transparency > 0.0 || m.specular > 0.0;
+        const bool target = objects[i].photon_target.value_or(specular) && !m.is_emitter();
+        if (target) {
+            m_is_target[i] = 1;
+            targets.push_back(objects[i].shape->bounding_sphere());
+        } else if (specular) {
+            m_specular_non_target = true;
+        }
+    }
+    m_targets = PhotonTargets(std::move(targets));
 }
 
 namespace {

@@ -12,6 +12,8 @@
 #include "scene/camera_settings.h"
 #include "scene/detector_settings.h"
 #include "scene/light.h"
+#include "scene/light_source.h"
+#include "scene/photon_targets.h"
 #include "scene/material.h"
 #include "scene/render_settings.h"
 
@@ -29,6 +31,9 @@ struct SceneObject {
     std::string group;  // the lens group's name, for its elements
     // Set when the object is a detector (triangles, discs and rectangles only).
     std::optional<DetectorSettings> detector;
+    // Whether photons are aimed at it (photon_targets.h); unset: when its material is
+    // transparent or a mirror, so it makes caustics.
+    std::optional<bool> photon_target;
 };
 
 // An emitting sphere: the report's light source.
@@ -65,13 +70,26 @@ public:
     const Material* medium_beyond(int object, const Vec3& point, const Vec3& outward_normal) const;
     // Objects whose material emits light: spheres (the report's lights).
     const std::vector<SphereEmitter>& emitters() const { return m_emitters; }
+    // Every light: emitting spheres first, then point lights, then beams.
+    const std::vector<LightPtr>& lights() const { return m_lights; }
+    // The objects photons are aimed at, and whether `object` is one of them.
+    const PhotonTargets& photon_targets() const { return m_targets; }
+    bool is_photon_target(int object) const { return m_is_target[static_cast<size_t>(object)] != 0; }
+    // A transparent or mirror object that is not a photon target: its caustics come from
+    // the ordinary (unaimed) photons.
+    bool has_specular_non_target() const { return m_specular_non_target; }
     Aabb bounds() const { return m_bvh.bounds(); }
 
 private:
     void find_touching_solids();
+    void find_lights_and_targets();
 
     Bvh m_bvh;
     std::vector<SphereEmitter> m_emitters;
+    std::vector<LightPtr> m_lights;
+    PhotonTargets m_targets;
+    std::vector<char> m_is_target;
+    bool m_specular_non_target = false;
     // For each object, the transparent solids whose boxes touch its box: the only candidates
     // for a shared surface. Empty for nearly every object, so medium_beyond costs nothing.
     std::vector<std::vector<int>> m_touching;

@@ -65,7 +65,7 @@ void read_render(const json& j, RenderSettings& s) {
                        {"width", "height", "spp", "max_depth", "seed", "ambient", "background",
                         "light_samples", "min_weight", "integrator", "photons", "radius",
                         "filter", "filter_k", "max_photons_per_estimate", "direct", "passes", "time",
-                        "pass_photons", "initial_radius", "alpha"});
+                        "pass_photons", "initial_radius", "alpha", "caustic_photons", "aim_photons"});
     s.width = static_cast<int>(r.integer("width", s.width, 1, kMaxImageSide));
     s.height = static_cast<int>(r.integer("height", s.height, 1, kMaxImageSide));
     if (auto problem = image_size_problem(s.width, s.height)) throw SceneError("render", *problem);
@@ -100,6 +100,8 @@ void read_render(const json& j, RenderSettings& s) {
         throw SceneError("render.passes", "0 means no pass limit, which needs a time budget: give render.time > 0");
     }
     s.pass_photons = r.integer("pass_photons", s.pass_photons, 0, int64_t{1} << 30);
+    s.caustic_photons = r.integer("caustic_photons", s.caustic_photons, 0, kMaxPhotonsPerLight);
+    s.aim_photons = r.boolean("aim_photons").value_or(s.aim_photons);
     s.initial_radius = r.positive("initial_radius", s.initial_radius);
     s.alpha = r.number("alpha", s.alpha);
     if (!(s.alpha > 0.0 && s.alpha < 1.0)) {
@@ -285,7 +287,7 @@ SceneObject read_object(const json& j, const std::string& path,
                         const std::map<std::string, int>& materials, std::vector<Material>& all,
                         const std::string& base_dir) {
     const std::string type = peek_type(j, path);
-    std::vector<std::string> keys{"type", "name", "material"};
+    std::vector<std::string> keys{"type", "name", "material", "photon_target"};
     SceneObject o;
     if (type == "sphere") {
         o.type = ObjectType::Sphere;
@@ -319,6 +321,7 @@ SceneObject read_object(const json& j, const std::string& path,
     }
     JsonObjectReader r(j, path, keys, (type == "implicit" ? "an " : "a ") + type);
     o.name = r.string("name", path);
+    o.photon_target = r.boolean("photon_target");
     switch (o.type) {
         case ObjectType::Sphere:
             o.shape = std::make_shared<Sphere>(r.vec3("center"), r.positive("radius"));

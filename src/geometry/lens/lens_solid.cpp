@@ -1,5 +1,6 @@
 #include "geometry/lens/lens_solid.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -191,6 +192,15 @@ bool LensSolid::intersect(const Ray& world_ray, double t_min, double t_max,
     hit.point = world_ray.at(best_t);
     hit.normal = normalize(m_frame.to_world(best_normal));
     return true;
+}
+
+BoundingSphere LensSolid::bounding_sphere() const {
+    const double a = 0.5 * m_p.diameter;
+    const double z_lo = -0.5 * m_p.thickness + m_front_span.z_min;
+    const double z_hi = 0.5 * m_p.thickness + m_back_span.z_max;
+    const double half = 0.5 * (z_hi - z_lo);
+    const double pad = 1e-6 * std::max(1.0, a);
+    return {m_p.centre + m_frame.to_world({0, 0, 0.5 * (z_lo + z_hi)}), std::sqrt(a * a + half * half) + pad};
 }
 
 Aabb LensSolid::bounds() const {

@@ -47,6 +47,9 @@ public:
     bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const override;
     Aabb bounds() const override;
     bool is_closed() const override { return true; }
+    // Around the cylinder of the lens's diameter between its faces' axial extremes: much
+    // tighter than the box of a tilted lens.
+    BoundingSphere bounding_sphere() const override;
 
     // True for points inside or on the solid.
     bool contains(const Vec3& p) const override;

@@ -21,7 +21,14 @@ GatherSettings gather_settings(const Scene& scene) {
 }
 
 PhotonTracingSettings photon_tracing_settings(const Scene& scene) {
-    return {scene.render.photons, scene.render.max_depth, scene.render.seed};
+    const RenderSettings& r = scene.render;
+    PhotonTracingSettings s{r.photons, r.max_depth, r.seed,
+                            r.caustic_photons > 0 ? r.caustic_photons : r.photons, r.aim_photons};
+    // With shadow rays for direct light, the emitted photons serve only the caustics of glass
+    // and mirrors that are not aimed at: without such objects they would be traced for nothing.
+    const bool aiming = s.aim && !scene.photon_targets().empty();
+    if (r.direct == "shadow_rays" && aiming && !scene.has_specular_non_target()) s.photons_per_light = 0;
+    return s;
 }
 
 PhotonMapIntegrator::PhotonMapIntegrator(const Scene& scene)

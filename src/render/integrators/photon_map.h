@@ -43,6 +43,7 @@ double default_gather_radius(const Scene& scene);
 
 // The gather settings a scene's render block asks for (auto radius resolved).
 GatherSettings gather_settings(const Scene& scene);
+// The photons a scene's render block asks for: `photons` emitted, `caustic_photons` aimed.
 PhotonTracingSettings photon_tracing_settings(const Scene& scene);
 
 }  // namespace lenslab

@@ -194,8 +194,14 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
 bool SppmIntegrator::add_pass(RenderControl& control) {
     const Scene& scene = m_scene;
     const RenderSettings& r = scene.render;
+    PhotonPassSettings photon_settings;
+    photon_settings.photons_per_light = pass_photons();
+    photon_settings.max_depth = r.max_depth;
+    photon_settings.caustic_photons_per_light = r.caustic_photons > 0 ? r.caustic_photons : pass_photons();
+    photon_settings.aim = r.aim_photons;
+    photon_settings.wavelengths = &m_pass_wavelength;
     if (m_stats.passes == 0) {
-        const uint64_t need = photon_pass_bytes(scene, pass_photons());
+        const uint64_t need = photon_pass_bytes(scene, photon_settings);
         const uint64_t have = available_memory_bytes();
         if (need > have / 10 * 8) {
             throw ResourceError("pass_photons: " + std::to_string(pass_photons()) +
@@ -238,11 +244,11 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
             ? 0.0
             : std::clamp(double(dispersed_points) / double(valid_points), 0.1, 0.5);
     t0 = std::chrono::steady_clock::now();
-    const PhotonPass photons =
-        trace_photon_pass(scene,
-                          {pass_photons(), r.max_depth, pass.seed, pass.lambda_nm, pass.lambda_pdf,
-                           pass_share, &m_pass_wavelength},
-                          control);
+    photon_settings.seed = pass.seed;
+    photon_settings.lambda_nm = pass.lambda_nm;
+    photon_settings.lambda_pdf = pass.lambda_pdf;
+    photon_settings.pass_share = pass_share;
+    const PhotonPass photons = trace_photon_pass(scene, photon_settings, control);
     if (control.cancelled()) return false;
     const double photon_seconds = seconds_since(t0);
 
@@ -342,6 +348,7 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
 
     ++m_stats.passes;
     m_stats.photons_emitted += photons.emitted;
+    m_stats.photons_aimed += photons.aimed;
     m_stats.photon_hits = hits.size();
     m_stats.camera_seconds += camera_seconds;
     m_stats.photon_seconds += photon_seconds;

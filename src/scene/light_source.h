@@ -1,0 +1,70 @@
+#pragma once
+// What every kind of light offers the tracers (pbrt-v4's Light interface, in lenslab's
+// terms): its power, photons of its emission (all of it, or only the part aimed at the
+// photon targets), and the light it sends to a point, for shadow rays. Photon tracing,
+// progressive photon mapping, detectors and direct lighting see lights only through this.
+//
+// Spectra: `spectrum()` is the light's spectral flux for point lights and beams (W per nm)
+// and its spectral radiance for emitting spheres; a photon carries `scale` times it, and a
+// light sample's irradiance is `factor` times it.
+
+#include <memory>
+#include <vector>
+
+#include "geometry/ray.h"
+#include "math/rng.h"
+#include "optics/spectrum.h"
+#include "scene/photon_targets.h"
+
+namespace lenslab {
+
+struct PhotonStart {
+    Ray ray;
+    const Spectrum* spectrum = nullptr;  // the light's spectrum(), before `scale`
+    // The share of it this photon carries when it is the only one sent (divide by the
+    // number sent); 0 when the sample fell where the light does not emit (the photon still
+    // counts as sent, so the estimate stays unbiased).
+    double scale = 0;
+};
+
+struct LightSample {
+    Vec3 wi;                // unit, from the lit point towards the light
+    double distance = 0;    // to the light along wi: the shadow ray's length
+    // Irradiance on a surface facing wi, per unit of spectrum(), divided by the sample's
+    // probability: multiply by the cosine at the surface and the spectrum.
+    double factor = 0;
+};
+
+class Light {
+public:
+    explicit Light(SpectrumPtr spectrum) : m_spectrum(std::move(spectrum)) {}
+    virtual ~Light() = default;
+
+    const Spectrum& spectrum() const { return *m_spectrum; }
+    // Radiant flux over the visible range, W.
+    virtual double power() const = 0;
+    // A photon of the whole emission.
+    virtual PhotonStart sample_le(Rng& rng) const = 0;
+    // A photon of the part of the emission that can reach `targets` first (photon_targets.h);
+    // the light's own sampling where aiming would not be denser.
+    virtual PhotonStart sample_le_towards(const PhotonTargets& targets, Rng& rng) const = 0;
+    // Light reaching `p`, with no shadow ray traced; false when none can.
+    virtual bool sample_li(const Vec3& p, Rng& rng, LightSample& out) const = 0;
+    // One sample of sample_li is exact (a point or a beam), not an estimate.
+    virtual bool is_delta() const = 0;
+
+private:
+    SpectrumPtr m_spectrum;
+};
+
+using LightPtr = std::shared_ptr<const Light>;
+
+struct PointLight;
+struct BeamLight;
+class Sphere;
+LightPtr make_point_light(const PointLight& l);
+LightPtr make_beam_light(const BeamLight& b);
+// A Lambertian sphere of spectral radiance `radiance`.
+LightPtr make_sphere_light(std::shared_ptr<const Sphere> sphere, SpectrumPtr radiance);
+
+}  // namespace lenslab
