@@ -324,8 +324,12 @@ TEST(Sppm, NoLightThroughAThinSheet) {
     below.camera.direction = {0, 1, 0};
     const Film lit = render(above, "sppm").film;
     const Film unlit = render(below, "sppm").film;
-    EXPECT_GT(mean_luminance(lit, whole(lit)), 0.5 * kBeamFloorRadiance);
-    EXPECT_EQ(mean_luminance(unlit, whole(unlit)), 0.0);
+    const double top = mean_luminance(lit, whole(lit));
+    EXPECT_GT(top, 0.5 * kBeamFloorRadiance);
+    // Light does reach the underside the long way round (reflected down by the pane's
+    // underside past the sheet's edge, then up off the floor): at some seeds a photon or two,
+    // 1e-4 of the top. Photons leaking through would light it like the top.
+    EXPECT_LT(mean_luminance(unlit, whole(unlit)), 1e-3 * top);
 }
 
 // A camera 2 above a floor lit by a point light, looking straight down through a 1-degree
