@@ -44,9 +44,10 @@ size_t pick(const std::vector<Item>& items, double u, double total, Measure meas
 
 bool PhotonTargets::sample_direction(const Vec3& from, double u0, double u1, double u2,
                                      double max_solid_angle, Vec3& dir, double& pdf) const {
-    // Few targets in a scene: the cones are rebuilt for each sample rather than stored.
-    std::vector<Cone> cones;
-    cones.reserve(m_spheres.size());
+    // Few targets in a scene: the cones are rebuilt for each sample rather than stored (a
+    // point on an emitting sphere sees them from a new place each time).
+    thread_local std::vector<Cone> cones;
+    cones.clear();
     double total = 0;
     for (const BoundingSphere& s : m_spheres) {
         cones.push_back(cone_of(s, from));
@@ -71,7 +72,8 @@ bool PhotonTargets::sample_plane_point(const Vec3& origin, const Vec3& normal, d
         Vec3 centre;
         double radius, area;
     };
-    std::vector<Disc> discs;
+    thread_local std::vector<Disc> discs;
+    discs.clear();
     double total = 0;
     for (const BoundingSphere& s : m_spheres) {
         const double along = dot(s.centre - origin, normal);
