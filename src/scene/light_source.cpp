@@ -143,8 +143,8 @@ public:
         const double cos_max = std::sqrt(1.0 - r2 / d2);
         // 1 - cos_max written without cancellation for small, distant lights.
         const double one_minus_cos = (r2 / d2) / (1.0 + cos_max);
-        const double u1 = rng.uniform(), u2 = rng.uniform();
-        out.wi = Frame::from_axis(to_centre / std::sqrt(d2)).to_world(sample_uniform_cone(u1, u2, cos_max));
+        out.wi = Frame::from_axis(to_centre / std::sqrt(d2))
+                     .to_world(sample_uniform_cone(rng.uniform(), rng.uniform(), cos_max));
         SurfaceHit h;
         // A direction grazing the silhouette can miss by rounding: it brings nothing.
         if (!m_sphere->intersect({p, out.wi}, surface_epsilon(p), INFINITY, h)) return false;

@@ -30,6 +30,7 @@ void Scene::find_lights_and_targets() {
     }
     for (const PointLight& l : point_lights) m_lights.push_back(make_point_light(l));
     for (const BeamLight& b : beams) m_lights.push_back(make_beam_light(b));
+    m_light_sampler = LightSampler(m_lights);
 
     std::vector<BoundingSphere> targets;
     m_is_target.assign(objects.size(), 0);

@@ -12,6 +12,7 @@
 #include "scene/camera_settings.h"
 #include "scene/detector_settings.h"
 #include "scene/light.h"
+#include "scene/light_sampler.h"
 #include "scene/light_source.h"
 #include "scene/photon_targets.h"
 #include "scene/material.h"
@@ -72,6 +73,7 @@ public:
     const std::vector<SphereEmitter>& emitters() const { return m_emitters; }
     // Every light: emitting spheres first, then point lights, then beams.
     const std::vector<LightPtr>& lights() const { return m_lights; }
+    const LightSampler& light_sampler() const { return m_light_sampler; }
     // The objects photons are aimed at, and whether `object` is one of them.
     const PhotonTargets& photon_targets() const { return m_targets; }
     bool is_photon_target(int object) const { return m_is_target[static_cast<size_t>(object)] != 0; }
@@ -87,6 +89,7 @@ private:
     Bvh m_bvh;
     std::vector<SphereEmitter> m_emitters;
     std::vector<LightPtr> m_lights;
+    LightSampler m_light_sampler;
     PhotonTargets m_targets;
     std::vector<char> m_is_target;
     bool m_specular_non_target = false;
