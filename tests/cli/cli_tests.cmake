@@ -206,6 +206,23 @@ lenslab_cli_test(NAME render.path
            -DOUTPUT=${path_out} -DOUTPUT_CREATED=ON)
 lenslab_cli_bad_scene(render_passes_zero_without_time
     "render.passes: 0 means no pass limit, which needs a time budget: give render.time > 0")
+lenslab_cli_bad_scene(photon_target_not_boolean "objects[0].photon_target: must be true or false, got a string")
+lenslab_cli_bad_scene(render_caustic_photons_negative
+    "render.caustic_photons: must be between 0 and 1099511627776, got -5")
+lenslab_cli_bad_scene(render_aim_photons_number "render.aim_photons: must be true or false, got a number")
+
+# Aimed photons: the stderr line says how many were aimed; --aim-photons off aims none.
+set(aimed_out ${LENSLAB_CLI_OUT}/aimed.png)
+lenslab_cli_test(NAME render.caustic_photons
+    ARGS render scenes/default.json --integrator photon_map -o ${aimed_out} --width 32 --height 24 --spp 1
+         --photons 2000 --caustic-photons 5000
+    CHECKS -DEXPECT_EXIT=zero "-DSTDERR_CONTAINS=(5000 aimed at the glass and mirrors)" -DOUTPUT=${aimed_out}
+           -DOUTPUT_CREATED=ON)
+lenslab_cli_test(NAME render.aim_photons_off
+    ARGS render scenes/default.json --integrator photon_map -o ${aimed_out} --width 32 --height 24 --spp 1
+         --photons 2000 --caustic-photons 5000 --aim-photons off
+    CHECKS -DEXPECT_EXIT=zero "-DSTDERR_CONTAINS=photons: 2000 emitted (0 aimed at the glass and mirrors)"
+           -DOUTPUT=${aimed_out} -DOUTPUT_CREATED=ON)
 
 # Limits (docs/reliability.md): refused before any work, one line, nothing written.
 lenslab_cli_bad_scene(render_too_many_pixels
