@@ -119,6 +119,8 @@ void DetectorDock::measure() {
     if (detector_objects(m_document->scene()).empty()) return;
     DetectionSettings settings;
     settings.photons_per_light = m_photons->value();
+    settings.caustic_photons_per_light = m_document->scene().render.caustic_photons;
+    settings.aim = m_document->scene().render.aim_photons;
     settings.seed = m_document->scene().render.seed;
     settings.max_depth = m_document->scene().render.max_depth;
     m_control = std::make_unique<RenderControl>();
