@@ -1,5 +1,6 @@
 // `lenslab bench report`: the course report's cost experiment, with its figures beside ours.
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -29,6 +30,8 @@ struct ConvergenceArgs {
     std::string out_dir = "bench-sppm";
     ConvergenceSettings settings;
     int64_t pass_photons = 0;  // 0: the scene's
+    std::string aim_photons;   // "": the scene's
+    std::vector<int> region;
 };
 
 bool have_gnuplot() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
@@ -69,10 +72,13 @@ bool plot_convergence(const std::filesystem::path& dir, const ConvergenceResult&
 int run_convergence_bench(const ConvergenceArgs& a) {
     Scene scene = a.scene.empty() ? default_scene() : load_scene_file(a.scene);
     if (a.pass_photons > 0) scene.render.pass_photons = a.pass_photons;
+    if (!a.aim_photons.empty()) scene.render.aim_photons = a.aim_photons == "on";
+    ConvergenceSettings settings = a.settings;
+    std::copy(a.region.begin(), a.region.end(), settings.region);
     const std::filesystem::path dir(a.out_dir);
     std::filesystem::create_directories(dir);
     const ConvergenceResult r =
-        run_convergence(scene, a.settings, [](const std::string& line) { std::cerr << line << "\n"; });
+        run_convergence(scene, settings, [](const std::string& line) { std::cerr << line << "\n"; });
     std::ofstream(dir / "convergence.csv") << convergence_csv(r);
     write_image(r.reference, (dir / "reference.png").string());
     write_image(r.sppm_last, (dir / "sppm.png").string());
@@ -195,6 +201,10 @@ Action add_bench_command(CLI::App& app) {
     sppm->add_option("--pass-photons", conv->pass_photons, "Photons per light in each sppm pass (default: the scene's)")
         ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 30));
     sppm->add_option("--threads", c.threads, "Worker threads (default: all cores)")->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
+    sppm->add_option("--aim-photons", conv->aim_photons, "on: aim caustic photons at the glass (default: the scene's); off: uniform")
+        ->check(CLI::IsMember({"on", "off"}));
+    sppm->add_option("--region", conv->region, "Also measure the error in the pixels X0,Y0,X1,Y1 (a caustic, say)")
+        ->delimiter(',')->expected(4)->check(CLI::Range(0, 16384));
 
     // Both subcommands share the one action; CLI11 says which was chosen.
     return [args, conv, sppm] {

@@ -47,6 +47,17 @@ double block_relative_error(const Film& a, const Film& reference, int block) {
     return n ? sum / n : 0.0;
 }
 
+double region_relative_error(const Film& a, const Film& reference, const int region[4]) {
+    double ma = 0, mr = 0;
+    for (int y = std::max(0, region[1]); y < std::min(reference.height(), region[3]); ++y) {
+        for (int x = std::max(0, region[0]); x < std::min(reference.width(), region[2]); ++x) {
+            ma += luminance(a.at(x, y));
+            mr += luminance(reference.at(x, y));
+        }
+    }
+    return mr > 0 ? std::abs(ma - mr) / mr : 0.0;
+}
+
 double rms_relative_error(const Film& a, const Film& reference) {
     double sum2 = 0, mean = 0;
     const size_t n = reference.pixels().size();
@@ -79,10 +90,12 @@ ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings&
 
     auto add = [&](const std::string& integrator, int amount, double seconds, const Film& film) {
         ConvergencePoint p{integrator, amount, seconds, block_relative_error(film, r.reference),
-                           rms_relative_error(film, r.reference)};
+                           rms_relative_error(film, r.reference),
+                           s.has_region() ? region_relative_error(film, r.reference, s.region) : 0.0};
         r.points.push_back(p);
         log(format("%s %d: %.3f s, block error %.4f, rms error %.4f", integrator.c_str(), amount,
-                   seconds, p.block_error, p.rms_error));
+                   seconds, p.block_error, p.rms_error) +
+            (s.has_region() ? format(", region error %.4f", p.region_error) : std::string()));
     };
 
     Scene sppm = base;
@@ -113,10 +126,10 @@ ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings&
 
 std::string convergence_csv(const ConvergenceResult& r) {
     std::ostringstream out;
-    out << "integrator,passes_or_spp,seconds,block_error,rms_error\n";
+    out << "integrator,passes_or_spp,seconds,block_error,rms_error,region_error\n";
     for (const ConvergencePoint& p : r.points) {
         out << p.integrator << "," << p.amount << "," << p.seconds << "," << p.block_error << ","
-            << p.rms_error << "\n";
+            << p.rms_error << "," << p.region_error << "\n";
     }
     return out.str();
 }

@@ -19,6 +19,10 @@ struct ConvergenceSettings {
     std::vector<int> passes{1, 2, 4, 8, 16, 32, 64, 128, 256};  // sppm snapshots (cumulative)
     std::vector<int> path_spp{1, 4, 16, 64, 256, 1024};
     int threads = 0;  // 0: all cores
+    // A rectangle of pixels [x0, x1) x [y0, y1) measured on its own too (a caustic, say);
+    // empty (x1 <= x0) for none.
+    int region[4] = {0, 0, 0, 0};
+    bool has_region() const { return region[2] > region[0] && region[3] > region[1]; }
 };
 
 struct ConvergencePoint {
@@ -27,6 +31,7 @@ struct ConvergencePoint {
     double seconds = 0;      // rendering time to this point
     double block_error = 0;  // mean over 8x8-pixel blocks of |block - reference| / reference
     double rms_error = 0;    // RMS over pixels of the luminance error, over the reference's mean
+    double region_error = 0;  // |region mean - reference's| / reference's, in luminance
 };
 
 struct ConvergenceResult {
@@ -41,6 +46,8 @@ struct ConvergenceResult {
 double block_relative_error(const Film& a, const Film& reference, int block = 8);
 // Root mean square over pixels of the luminance difference, divided by the reference's mean.
 double rms_relative_error(const Film& a, const Film& reference);
+// |mean(a) - mean(reference)| / mean(reference) in luminance over the pixels [x0, x1) x [y0, y1).
+double region_relative_error(const Film& a, const Film& reference, const int region[4]);
 
 // Renders the reference (path, `reference_spp`, a seed of its own), then sppm pass by pass
 // and path at each sample count. `log` receives one line per measurement.

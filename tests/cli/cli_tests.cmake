@@ -188,7 +188,7 @@ set(sppm_out ${LENSLAB_CLI_OUT}/sppm.png)
 lenslab_cli_test(NAME render.sppm_passes
     ARGS render scenes/caustic_room.json -o ${sppm_out} --width 24 --height 24 --passes 3 --pass-photons 2000
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=wrote ${sppm_out} (24x24, 3 passes"
-           "-DSTDERR_CONTAINS=sppm: 3 passes, 12000 photons (6000 aimed" -DOUTPUT=${sppm_out} -DOUTPUT_CREATED=ON)
+           "-DSTDERR_CONTAINS=sppm: 3 passes, 7500 photons (1500 aimed" -DOUTPUT=${sppm_out} -DOUTPUT_CREATED=ON)
 set(sppm_time_out ${LENSLAB_CLI_OUT}/sppm_time.png)
 lenslab_cli_test(NAME render.sppm_time
     ARGS render --integrator sppm -o ${sppm_time_out} --width 16 --height 12 --time 0.2 --pass-photons 1000 -q

@@ -197,7 +197,10 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     PhotonPassSettings photon_settings;
     photon_settings.photons_per_light = pass_photons();
     photon_settings.max_depth = r.max_depth;
-    photon_settings.caustic_photons_per_light = r.caustic_photons > 0 ? r.caustic_photons : pass_photons();
+    // Auto: a quarter of the pass's photons aimed. They serve the caustics only, where the
+    // light's own photons rarely go; the rest of the image needs the emitted ones.
+    photon_settings.caustic_photons_per_light =
+        r.caustic_photons > 0 ? r.caustic_photons : std::max<int64_t>(1, pass_photons() / 4);
     photon_settings.aim = r.aim_photons;
     photon_settings.wavelengths = &m_pass_wavelength;
     if (m_stats.passes == 0) {
