@@ -13,25 +13,37 @@ const Spectrum& emitted_spectrum(const Scene& scene, int light) {
 
 std::vector<int64_t> photons_by_power(const Scene& scene, int64_t per_light) {
     const auto& lights = scene.lights();
+    const double n = static_cast<double>(lights.size());
     double total_power = 0;
     for (const LightPtr& l : lights) total_power += l->power();
-    std::vector<int64_t> counts;
-    const double budget = static_cast<double>(per_light) * static_cast<double>(lights.size());
+    // Shares by power, each at least a quarter of an equal share: a 1 W measuring beam
+    // beside a 300 kW lamp still gets photons.
+    std::vector<double> shares;
+    double sum = 0;
     for (const LightPtr& l : lights) {
-        const double share = total_power > 0 ? l->power() / total_power : 1.0 / lights.size();
-        counts.push_back(per_light <= 0 ? 0 : std::max<int64_t>(1, std::llround(budget * share)));
+        shares.push_back(std::max(total_power > 0 ? l->power() / total_power : 0.0, 0.25 / n));
+        sum += shares.back();
+    }
+    std::vector<int64_t> counts;
+    const double budget = static_cast<double>(per_light) * n;
+    for (const double share : shares) {
+        counts.push_back(per_light <= 0 ? 0 : std::max<int64_t>(1, std::llround(budget * share / sum)));
     }
     return counts;
 }
 
-PhotonPlan::PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t aimed_per_light, bool aim)
-    : m_aiming(aim && !scene.photon_targets().empty() && aimed_per_light > 0) {
+PhotonPlan::PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t aimed_per_light, bool aim) {
+    const bool aiming = aim && !scene.photon_targets().empty() && aimed_per_light > 0;
+    for (const LightPtr& l : scene.lights()) {
+        m_light_aims.push_back(aiming && l->worth_aiming(scene.photon_targets()));
+        m_aiming = m_aiming || m_light_aims.back();
+    }
     for (int stream = 0; stream < 2; ++stream) {
         if (stream == 1 && !m_aiming) break;
         const std::vector<int64_t> counts =
             photons_by_power(scene, stream == 0 ? emitted_per_light : aimed_per_light);
         for (size_t l = 0; l < counts.size(); ++l) {
-            if (counts[l] == 0) continue;
+            if (counts[l] == 0 || (stream == 1 && !m_light_aims[l])) continue;
             m_ranges.push_back({m_total, counts[l], static_cast<int>(l), stream == 1});
             m_total += counts[l];
             m_stream_total[stream] += counts[l];

@@ -5,10 +5,11 @@
 //   - aimed photons, sampled only towards the photon targets (scene/photon_targets.h), so
 //     that nearly every one of them reaches the glass and makes a caustic.
 // Each stream divides its photons among the lights in proportion to their power, so every
-// photon of a stream carries about the same power. While aiming, a photon of either stream
-// counts only in its part of the light's emission: an aimed photon only if the first object
-// it meets is a target, an emitted one only if it is not (`counts`), which keeps every
-// estimate unbiased. Without targets, or with aiming off, there are only emitted photons.
+// photon of a stream carries about the same power. A light sends aimed photons only where
+// aiming is denser than its own sampling (Light::worth_aiming). For such a light a photon of
+// either stream counts only in its part of the light's emission: an aimed photon only if the
+// first object it meets is a target, an emitted one only if it is not (`counts`), which keeps
+// every estimate unbiased. Without targets, or with aiming off, there are only emitted photons.
 
 #include <cstdint>
 #include <vector>
@@ -44,9 +45,9 @@ public:
     // Samples photon `index` with `rng` (the caller seeds one stream per photon).
     Photon start(const Scene& scene, int64_t index, Rng& rng) const;
 
-    // Whether a photon of the given stream, whose first hit is `object`, counts.
-    bool counts(const Scene& scene, bool aimed, int object) const {
-        return !m_aiming || aimed == scene.is_photon_target(object);
+    // Whether a photon of `light` from the given stream, whose first hit is `object`, counts.
+    bool counts(const Scene& scene, int light, bool aimed, int object) const {
+        return !m_light_aims[static_cast<size_t>(light)] || aimed == scene.is_photon_target(object);
     }
 
 private:
@@ -56,13 +57,14 @@ private:
         bool aimed;
     };
     std::vector<Range> m_ranges;  // in photon order: emitted stream light by light, then aimed
+    std::vector<char> m_light_aims;  // per light: it sends an aimed stream
     int64_t m_total = 0;
     int64_t m_stream_total[2] = {0, 0};
     bool m_aiming = false;
 };
 
 // Photons per light when `per_light` are asked for on average: their total divided in
-// proportion to the lights' powers, at least one each.
+// proportion to the lights' powers, but at least a quarter of an equal share each.
 std::vector<int64_t> photons_by_power(const Scene& scene, int64_t per_light);
 
 }  // namespace lenslab

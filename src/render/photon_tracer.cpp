@@ -102,7 +102,7 @@ private:
     // light's emission (photon_emission.h).
     bool arrive(const Ray& ray, EmittedPhoton& e, int depth, Interaction& it) {
         if (!next_interaction(m_scene, ray, e.lambda_nm > 0 ? e.lambda_nm : kLineD, it)) return false;
-        if (depth == 0 && !m_plan.counts(m_scene, m_aimed, it.hit.object)) return false;
+        if (depth == 0 && !m_plan.counts(m_scene, m_light, m_aimed, it.hit.object)) return false;
         if (m_on_arrival) {
             (*m_on_arrival)(PhotonArrival{&it, ray.direction, m_light, m_aimed, depth, e.spectrum, e.scale,
                                           e.lambda_nm});

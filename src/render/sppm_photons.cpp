@@ -43,7 +43,7 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, const PhotonPlan
         Interaction it;
         if (!next_interaction(scene, ray, lambda, it)) return;
         // Only in its stream's part of the light's emission (photon_emission.h).
-        if (depth == 0 && !plan.counts(scene, photon.aimed, it.hit.object)) return;
+        if (depth == 0 && !plan.counts(scene, light, photon.aimed, it.hit.object)) return;
         if (!dispersed && it.scattering.dispersive) {
             // From here the path depends on wavelength: take one.
             dispersed = true;

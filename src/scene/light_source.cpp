@@ -49,6 +49,10 @@ public:
 
     bool is_delta() const override { return true; }
 
+    bool worth_aiming(const PhotonTargets& targets) const override {
+        return targets.solid_angle(m_position) < 4.0 * kPi;
+    }
+
 private:
     Vec3 m_position;
 };
@@ -90,6 +94,10 @@ public:
     }
 
     bool is_delta() const override { return true; }
+
+    bool worth_aiming(const PhotonTargets& targets) const override {
+        return targets.plane_area(m_origin, m_direction) < kPi * m_radius * m_radius;
+    }
 
 private:
     Vec3 point_on_disc(double u1, double u2) const {
@@ -154,6 +162,12 @@ public:
     }
 
     bool is_delta() const override { return false; }
+
+    // Judged from the centre: each point of the surface sees the targets a little
+    // differently, and falls back to cosine sampling where aiming does not pay.
+    bool worth_aiming(const PhotonTargets& targets) const override {
+        return targets.solid_angle(m_sphere->centre()) < kPi;
+    }
 
 private:
     double area() const { return 4.0 * kPi * m_sphere->radius() * m_sphere->radius(); }

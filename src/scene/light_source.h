@@ -48,6 +48,9 @@ public:
     // A photon of the part of the emission that can reach `targets` first (photon_targets.h);
     // the light's own sampling where aiming would not be denser.
     virtual PhotonStart sample_le_towards(const PhotonTargets& targets, Rng& rng) const = 0;
+    // Whether aiming at `targets` is denser than the light's own sampling, so that an aimed
+    // stream is worth sending (photon_emission.h); false when the targets fill its emission.
+    virtual bool worth_aiming(const PhotonTargets& targets) const = 0;
     // Light reaching `p`, with no shadow ray traced; false when none can.
     virtual bool sample_li(const Vec3& p, Rng& rng, LightSample& out) const = 0;
     // One sample of sample_li is exact (a point or a beam), not an estimate.

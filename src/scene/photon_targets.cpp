@@ -40,7 +40,31 @@ size_t pick(const std::vector<Item>& items, double u, double total, Measure meas
     return items.size() - 1;
 }
 
+// The disc a sphere casts along `normal` on the plane through `origin`; false when the
+// sphere lies wholly behind the plane.
+bool disc_of(const BoundingSphere& s, const Vec3& origin, const Vec3& normal, Vec3& centre) {
+    const double along = dot(s.centre - origin, normal);
+    if (along < -s.radius) return false;
+    centre = s.centre - normal * along;
+    return true;
+}
+
 }  // namespace
+
+double PhotonTargets::solid_angle(const Vec3& from) const {
+    double total = 0;
+    for (const BoundingSphere& s : m_spheres) total += cone_of(s, from).solid_angle;
+    return total;
+}
+
+double PhotonTargets::plane_area(const Vec3& origin, const Vec3& normal) const {
+    double total = 0;
+    Vec3 centre;
+    for (const BoundingSphere& s : m_spheres) {
+        if (disc_of(s, origin, normal, centre)) total += kPi * s.radius * s.radius;
+    }
+    return total;
+}
 
 bool PhotonTargets::sample_direction(const Vec3& from, double u0, double u1, double u2,
                                      double max_solid_angle, Vec3& dir, double& pdf) const {
@@ -75,10 +99,10 @@ bool PhotonTargets::sample_plane_point(const Vec3& origin, const Vec3& normal, d
     thread_local std::vector<Disc> discs;
     discs.clear();
     double total = 0;
+    Vec3 centre;
     for (const BoundingSphere& s : m_spheres) {
-        const double along = dot(s.centre - origin, normal);
-        if (along < -s.radius) continue;  // wholly behind the plane
-        discs.push_back({s.centre - normal * along, s.radius, kPi * s.radius * s.radius});
+        if (!disc_of(s, origin, normal, centre)) continue;
+        discs.push_back({centre, s.radius, kPi * s.radius * s.radius});
         total += discs.back().area;
     }
     if (discs.empty() || total >= max_area) return false;

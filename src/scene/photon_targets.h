@@ -40,6 +40,11 @@ public:
     bool sample_plane_point(const Vec3& origin, const Vec3& normal, double u0, double u1, double u2,
                             double max_area, Vec3& point, double& pdf) const;
 
+    // The sum of the targets' solid angles seen from `from`, and of the areas of their discs
+    // on the plane through `origin` perpendicular to `normal` (targets behind it skipped).
+    double solid_angle(const Vec3& from) const;
+    double plane_area(const Vec3& origin, const Vec3& normal) const;
+
 private:
     std::vector<BoundingSphere> m_spheres;
 };

@@ -62,16 +62,23 @@ TEST(LightSource, PowerAndIrradianceMatchTheClosedForms) {
 }
 
 TEST(LightSource, PhotonsAreSharedByPower) {
-    const Scene scene = lights_scene(R"({"type": "point", "position": [0, 2, 0], "power": 1},
-        {"type": "point", "position": [1, 2, 0], "power": 3})");
+    // The glowing sphere sends pi L 4 pi R^2 = 19.7 W; the points 10 W and 30 W.
+    const Scene scene = lights_scene(R"({"type": "point", "position": [0, 2, 0], "power": 10},
+        {"type": "point", "position": [1, 2, 0], "power": 30})");
     const std::vector<int64_t> counts = photons_by_power(scene, 1000);
     ASSERT_EQ(counts.size(), 3u);
-    const double total = scene.lights()[0]->power() + 4;
+    const double total = scene.lights()[0]->power() + 40;
     EXPECT_EQ(counts[0] + counts[1] + counts[2], 3000);
-    EXPECT_NEAR(counts[1], 3000 * 1 / total, 1);
-    EXPECT_NEAR(counts[2], 3000 * 3 / total, 1);
+    EXPECT_NEAR(counts[1], 3000 * 10 / total, 1);
+    EXPECT_NEAR(counts[2], 3000 * 30 / total, 1);
     // So every photon carries about the same power.
     EXPECT_NEAR(scene.lights()[1]->power() / counts[1], scene.lights()[2]->power() / counts[2], 1e-3);
+
+    // A 1 W beam beside a 300 kW lamp still gets a quarter of an equal share.
+    const Scene lopsided = lights_scene(R"({"type": "point", "position": [0, 2, 0], "power": 300000},
+        {"type": "beam", "origin": [0, 0, -2], "direction": [0, 0, 1], "radius": 0.5, "power": 1})");
+    const std::vector<int64_t> c = photons_by_power(lopsided, 1000);
+    EXPECT_NEAR(c[2], 3000 * 0.25 / 3 / (1 + 0.25 / 3 + 0.25 / 3), 1);
 }
 
 TEST(LightSampler, AsksEveryLightOfASmallSceneAndPicksByPowerInALargeOne) {

@@ -54,6 +54,9 @@ const BadScene kBadScenes[] = {
     {"render_alpha_one.json", "render.alpha", "must be between 0 and 1 (exclusive), got 1"},
     {"render_time_negative.json", "render.time", "must be >= 0 seconds (0: no time limit), got -5"},
     {"render_pass_photons_negative.json", "render.pass_photons", "must be between 0 and 1073741824, got -5"},
+    {"render_caustic_photons_negative.json", "render.caustic_photons", "must be between 0 and 1099511627776, got -5"},
+    {"render_aim_photons_number.json", "render.aim_photons", "must be true or false, got a number"},
+    {"photon_target_not_boolean.json", "objects[0].photon_target", "must be true or false, got a string"},
     {"render_initial_radius_negative.json", "render.initial_radius", "must be > 0, got -0.01"},
     // Materials.
     {"unknown_material_name.json", "objects[0].material",

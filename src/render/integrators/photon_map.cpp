@@ -1,5 +1,7 @@
 #include "render/integrators/photon_map.h"
 
+#include <algorithm>
+
 #include "render/direct_light.h"
 
 namespace lenslab {
@@ -25,9 +27,12 @@ PhotonTracingSettings photon_tracing_settings(const Scene& scene) {
     PhotonTracingSettings s{r.photons, r.max_depth, r.seed,
                             r.caustic_photons > 0 ? r.caustic_photons : r.photons, r.aim_photons};
     // With shadow rays for direct light, the emitted photons serve only the caustics of glass
-    // and mirrors that are not aimed at: without such objects they would be traced for nothing.
-    const bool aiming = s.aim && !scene.photon_targets().empty();
-    if (r.direct == "shadow_rays" && aiming && !scene.has_specular_non_target()) s.photons_per_light = 0;
+    // and mirrors that are not aimed at: when every light aims at every such object they
+    // would be traced for nothing.
+    const auto aims = [&](const LightPtr& l) { return l->worth_aiming(scene.photon_targets()); };
+    const bool all_aimed = s.aim && !scene.photon_targets().empty() && !scene.has_specular_non_target() &&
+                           std::all_of(scene.lights().begin(), scene.lights().end(), aims);
+    if (r.direct == "shadow_rays" && all_aimed) s.photons_per_light = 0;
     return s;
 }
 
