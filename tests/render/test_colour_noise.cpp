@@ -18,7 +18,7 @@ namespace {
 std::string grey_floor_scene(const std::string& integrator, const std::string& objects, const std::string& lights) {
     return R"({
       "camera": {"position": [0, 2, -3], "look_at": [0, 0, 0.5], "fov": 50},
-      "render": {"width": 64, "height": 48, "spp": 1, "photons": 20000, "integrator": ")" +
+      "render": {"width": 64, "height": 48, "spp": 1, "photons": 20000, "passes": 1, "integrator": ")" +
            integrator + R"("},
       "objects": [
         {"type": "triangle", "vertices": [[-50, 0, -50], [-50, 0, 50], [50, 0, 50]], "material": {"color": 0.5}},
@@ -66,7 +66,7 @@ TEST_P(ColourNoise, EmittingSphereOnGreyFloorIsGreyInEveryPixel) {
         GetParam(), R"(, {"type": "sphere", "center": [0, 1.5, 1], "radius": 0.2, "material": {"color": 0, "emission": {"intensity": 20}}})", "")));
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, ColourNoise, testing::Values("whitted", "photon_map", "path"));
+INSTANTIATE_TEST_SUITE_P(Integrators, ColourNoise, testing::Values("whitted", "photon_map", "path", "sppm"));
 
 // The floor through a glass ball: with a constant index it stays grey, with a dispersive
 // glass (N-SF11) each camera sample keeps one wavelength there and the pixels are coloured.
