@@ -33,7 +33,6 @@ double integrate(F f) {
     return s * step;
 }
 
-
 // Constants derived once from the tables: D65 scaled to Y = 1, and the 3x3 matrix taking
 // band weights to the linear sRGB of the banded spectrum lit by (or multiplied with) D65.
 struct Calibration {

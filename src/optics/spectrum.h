@@ -89,7 +89,9 @@ struct BandColour {
 
     Rgb total() const { return band[0] + band[1] + band[2]; }
     // The colour of `a` times this spectrum.
-    Rgb through(const BandWeights& a) const { return band[0] * a[0] + band[1] * a[1] + band[2] * a[2]; }
+    Rgb through(const BandWeights& a) const {
+        return band[0] * a[0] + band[1] * a[1] + band[2] * a[2];
+    }
     BandColour& operator+=(const BandColour& o) {
         for (int b = 0; b < 3; ++b) band[b] += o.band[b];
         return *this;

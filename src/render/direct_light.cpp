@@ -11,8 +11,8 @@ namespace lenslab {
 
 namespace {
 
-void from_point_light(const Scene& scene, const PointLight& l, const Vec3& p, const Vec3& n, double eps,
-                      const DirectLightSink& add) {
+void from_point_light(const Scene& scene, const PointLight& l, const Vec3& p, const Vec3& n,
+                      double eps, const DirectLightSink& add) {
     const Vec3 to_light = l.position - p;
     const double dist2 = length_squared(to_light);
     const double dist = std::sqrt(dist2);
@@ -33,8 +33,9 @@ void from_beam(const Scene& scene, const BeamLight& b, const Vec3& p, const Vec3
     add(*b.spectrum, cos_n / (std::numbers::pi * b.radius * b.radius));
 }
 
-void from_sphere_emitter(const Scene& scene, const SphereEmitter& emitter, const Vec3& p, const Vec3& n,
-                         int samples, Rng& rng, double eps, const DirectLightSink& add) {
+void from_sphere_emitter(const Scene& scene, const SphereEmitter& emitter, const Vec3& p,
+                         const Vec3& n, int samples, Rng& rng, double eps,
+                         const DirectLightSink& add) {
     const Sphere& sphere = *emitter.sphere;
     const Vec3 to_centre = sphere.centre() - p;
     const double d2 = length_squared(to_centre);
@@ -67,7 +68,8 @@ void for_each_direct_light(const Scene& scene, const Vec3& p, const Vec3& n, int
     const double eps = surface_epsilon(p);
     for (const PointLight& l : scene.point_lights) from_point_light(scene, l, p, n, eps, add);
     for (const BeamLight& b : scene.beams) from_beam(scene, b, p, n, eps, add);
-    for (const SphereEmitter& s : scene.emitters()) from_sphere_emitter(scene, s, p, n, samples, rng, eps, add);
+    for (const SphereEmitter& s : scene.emitters())
+        from_sphere_emitter(scene, s, p, n, samples, rng, eps, add);
 }
 
 SampledSpectrum direct_irradiance(const Scene& scene, const Vec3& p, const Vec3& n, int samples,

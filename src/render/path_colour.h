@@ -54,7 +54,8 @@ private:
 // the form the path that found it needs: band colours, or its value at the hero wavelength.
 class LightSum {
 public:
-    explicit LightSum(const PathColour& path) : m_hero_nm(path.hero_nm()), m_dispersed(path.dispersed()) {}
+    explicit LightSum(const PathColour& path)
+        : m_hero_nm(path.hero_nm()), m_dispersed(path.dispersed()) {}
 
     void add(const Spectrum& s, double factor);
     // Adds illuminant_from_rgb(rgb): how photon-map estimates, which are colours, are lit.

@@ -51,8 +51,8 @@ TEST(Spectrum, RgbRoundTripsThroughTheBands) {
 // The band colours split spectrum_to_rgb's integral by band: they sum to it, whatever the
 // spectrum (a band-edge crossing grid point, or a coarser sum, would break this).
 TEST(Spectrum, BandColoursSumToTheSpectrumsColour) {
-    for (const SpectrumPtr& s : {d65_spectrum(), blackbody_spectrum(2700), line_spectrum(532), line_spectrum(489.9),
-                                 illuminant_from_rgb({0.75, 0.12, 0.1})}) {
+    for (const SpectrumPtr& s : {d65_spectrum(), blackbody_spectrum(2700), line_spectrum(532),
+                                 line_spectrum(489.9), illuminant_from_rgb({0.75, 0.12, 0.1})}) {
         const Rgb whole = spectrum_to_rgb(*s);
         const Rgb sum = s->band_colour().total();
         const double scale = whole.max_component();
@@ -84,7 +84,8 @@ TEST(Spectrum, GreyAlbedoUnderD65IsExactlyGrey) {
         EXPECT_NEAR(direct.band[b].b, integrated.band[b].b, 1e-12);
     }
     // And a coloured albedo under white light keeps its colour.
-    const Rgb red = illuminant_band_colour({1, 1, 1}).through(reflectance_bands({0.75, 0.15, 0.12}));
+    const Rgb red =
+        illuminant_band_colour({1, 1, 1}).through(reflectance_bands({0.75, 0.15, 0.12}));
     EXPECT_NEAR(red.r, 0.75, 1e-9);
     EXPECT_NEAR(red.g, 0.15, 1e-9);
     EXPECT_NEAR(red.b, 0.12, 1e-9);

@@ -15,7 +15,8 @@ namespace lenslab {
 namespace {
 
 // A grey floor (albedo 0.5) seen obliquely, filling the 64 x 48 image, at 1 sample per pixel.
-std::string grey_floor_scene(const std::string& integrator, const std::string& objects, const std::string& lights) {
+std::string grey_floor_scene(const std::string& integrator, const std::string& objects,
+                             const std::string& lights) {
     return R"({
       "camera": {"position": [0, 2, -3], "look_at": [0, 0, 0.5], "fov": 50},
       "render": {"width": 64, "height": 48, "spp": 1, "photons": 20000, "passes": 1, "integrator": ")" +
@@ -24,7 +25,8 @@ std::string grey_floor_scene(const std::string& integrator, const std::string& o
         {"type": "triangle", "vertices": [[-50, 0, -50], [-50, 0, 50], [50, 0, 50]], "material": {"color": 0.5}},
         {"type": "triangle", "vertices": [[-50, 0, -50], [50, 0, 50], [50, 0, -50]], "material": {"color": 0.5}})" +
            objects + R"(],
-      "lights": [)" + lights + "]}";
+      "lights": [)" +
+           lights + "]}";
 }
 
 Film render(const std::string& json) {
@@ -32,9 +34,7 @@ Film render(const std::string& json) {
     return render_scene(parse_scene(json), control).film;
 }
 
-double chroma(const PixelRgb& p) {
-    return std::max({p.r, p.g, p.b}) / std::min({p.r, p.g, p.b});
-}
+double chroma(const PixelRgb& p) { return std::max({p.r, p.g, p.b}) / std::min({p.r, p.g, p.b}); }
 
 // Every pixel, and the image's mean, neutral: largest channel over smallest below 1.01.
 void expect_grey_in_every_pixel(const Film& film) {
@@ -47,7 +47,8 @@ void expect_grey_in_every_pixel(const Film& film) {
         sum[2] += p.b;
     }
     const double mean = std::max({sum[0], sum[1], sum[2]}) / std::min({sum[0], sum[1], sum[2]});
-    std::printf("largest channel / smallest, minus 1: worst pixel %.2e, image mean %.2e\n", worst - 1, mean - 1);
+    std::printf("largest channel / smallest, minus 1: worst pixel %.2e, image mean %.2e\n",
+                worst - 1, mean - 1);
     EXPECT_LT(worst, 1.01);
     EXPECT_LT(mean, 1.01);
 }
@@ -55,27 +56,33 @@ void expect_grey_in_every_pixel(const Film& film) {
 class ColourNoise : public testing::TestWithParam<const char*> {};
 
 TEST_P(ColourNoise, WhitePointLightOnGreyFloorIsGreyInEveryPixel) {
-    expect_grey_in_every_pixel(render(grey_floor_scene(GetParam(), "", R"({"type": "point", "position": [0, 2, 0.5], "power": 100})")));
+    expect_grey_in_every_pixel(render(grey_floor_scene(
+        GetParam(), "", R"({"type": "point", "position": [0, 2, 0.5], "power": 100})")));
     // Any light spectrum gives the floor that light's colour, evenly: here a D65 spectrum.
     expect_grey_in_every_pixel(render(grey_floor_scene(
-        GetParam(), "", R"({"type": "point", "position": [0, 2, 0.5], "power": 100, "spectrum": "d65"})")));
+        GetParam(), "",
+        R"({"type": "point", "position": [0, 2, 0.5], "power": 100, "spectrum": "d65"})")));
 }
 
 TEST_P(ColourNoise, EmittingSphereOnGreyFloorIsGreyInEveryPixel) {
     expect_grey_in_every_pixel(render(grey_floor_scene(
-        GetParam(), R"(, {"type": "sphere", "center": [0, 1.5, 1], "radius": 0.2, "material": {"color": 0, "emission": {"intensity": 20}}})", "")));
+        GetParam(),
+        R"(, {"type": "sphere", "center": [0, 1.5, 1], "radius": 0.2, "material": {"color": 0, "emission": {"intensity": 20}}})",
+        "")));
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, ColourNoise, testing::Values("whitted", "photon_map", "path", "sppm"));
+INSTANTIATE_TEST_SUITE_P(Integrators, ColourNoise,
+                         testing::Values("whitted", "photon_map", "path", "sppm"));
 
 // The floor through a glass ball: with a constant index it stays grey, with a dispersive
 // glass (N-SF11) each camera sample keeps one wavelength there and the pixels are coloured.
 TEST(ColourNoiseThroughGlass, DispersiveGlassStillSplitsTheColours) {
     auto ball = [](const std::string& glass) {
-        return grey_floor_scene("whitted",
-                                R"(, {"type": "sphere", "center": [0, 0.6, -0.5], "radius": 0.5, "material": {"color": 1, "transparency": 1, )" +
-                                    glass + "}}",
-                                R"({"type": "point", "position": [0, 2, 0.5], "power": 100})");
+        return grey_floor_scene(
+            "whitted",
+            R"(, {"type": "sphere", "center": [0, 0.6, -0.5], "radius": 0.5, "material": {"color": 1, "transparency": 1, )" +
+                glass + "}}",
+            R"({"type": "point", "position": [0, 2, 0.5], "power": 100})");
     };
     const Film plain = render(ball(R"("ior": 1.5)"));
     const Film dispersive = render(ball(R"("glass": "N-SF11")"));

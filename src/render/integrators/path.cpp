@@ -44,8 +44,9 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
         const bool diffuse = s.diffuse > 0.0 && !m.color.is_black();
         if (diffuse) {
             LightSum e(path);
-            for_each_direct_light(scene, p, facing, scene.render.light_samples, rng,
-                                  [&](const Spectrum& light, double factor) { e.add(light, factor); });
+            for_each_direct_light(
+                scene, p, facing, scene.render.light_samples, rng,
+                [&](const Spectrum& light, double factor) { e.add(light, factor); });
             e *= 1.0 / std::numbers::pi;
             if (seen_from_camera && m_ambient) e.add(*m_ambient, 1.0);
             PathColour reflected = path;

@@ -37,7 +37,8 @@ bool PhotonMapIntegrator::render(const Scene& scene, const Camera& camera, Film&
     return WhittedIntegrator::render(scene, camera, film, control);
 }
 
-void PhotonMapIntegrator::add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n, Rng& rng) const {
+void PhotonMapIntegrator::add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n,
+                                                 Rng& rng) const {
     thread_local std::vector<PhotonNeighbour> scratch;
     // Photons store colours; the estimate is lit as an RGB illuminant (D65 times bands), whose
     // band colours are exact.

@@ -165,9 +165,10 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
                 if (m_ambient) e += kPi * m_ambient->eval(pass.lambda_nm);
                 found_pass += beta * m.albedo->eval(pass.lambda_nm) / kPi * e;
             } else {
-                for_each_direct_light(scene, p, facing, samples, rng, [&](const Spectrum& light, double f) {
-                    found += light.band_colour().through(m.albedo_bands) * (f * beta / kPi);
-                });
+                for_each_direct_light(
+                    scene, p, facing, samples, rng, [&](const Spectrum& light, double f) {
+                        found += light.band_colour().through(m.albedo_bands) * (f * beta / kPi);
+                    });
                 if (m_ambient) found += m_ambient->band_colour().through(m.albedo_bands) * beta;
             }
             break;
@@ -317,7 +318,8 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
                         BandWeights f = vp.albedo_bands;
                         for (double& b : f) b *= ph.power;
                         for (uint32_t k = 0; k < ph.chain_length; ++k) {
-                            const BandWeights& a = scene.materials[photons.chains[ph.chain + k]].albedo_bands;
+                            const BandWeights& a =
+                                scene.materials[photons.chains[ph.chain + k]].albedo_bands;
                             for (int b = 0; b < 3; ++b) f[b] *= a[b];
                         }
                         flux += light_bands[ph.light].through(f);

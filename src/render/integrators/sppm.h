@@ -19,9 +19,10 @@
 //
 // Spectra: a visible point not behind dispersive glass has an exact colour, as has each
 // photon's flux there (its light's band colours times band-constant albedos,
-// render/path_colour.h); paths through dispersive glass take the pass's wavelength (pass_wavelength.h) and count through the
-// density it was drawn with. Output is the same for any thread count: per-pixel and
-// per-photon random streams, and each pixel sums its photons in photon order.
+// render/path_colour.h); paths through dispersive glass take the pass's wavelength
+// (pass_wavelength.h) and count through the density it was drawn with. Output is the same
+// for any thread count: per-pixel and per-photon random streams, and each pixel sums its
+// photons in photon order.
 
 #include <vector>
 

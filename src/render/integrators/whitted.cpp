@@ -10,24 +10,28 @@ namespace lenslab {
 
 WhittedIntegrator::WhittedIntegrator(const Scene& scene) : PixelIntegrator(scene) {
     if (!scene.render.ambient.is_black()) m_ambient = illuminant_from_rgb(scene.render.ambient);
-    if (!scene.render.background.is_black()) m_background = illuminant_from_rgb(scene.render.background);
+    if (!scene.render.background.is_black())
+        m_background = illuminant_from_rgb(scene.render.background);
 }
 
 Rgb WhittedIntegrator::radiance(const Ray& ray, const SampledWavelengths& w, Rng& rng) const {
     return trace(ray, 0, 1.0, PathColour(w), rng);
 }
 
-void WhittedIntegrator::add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n, Rng& rng) const {
+void WhittedIntegrator::add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n,
+                                               Rng& rng) const {
     for_each_direct_light(m_scene, p, n, m_scene.render.light_samples, rng,
                           [&](const Spectrum& s, double factor) { e.add(s, factor); });
 }
 
-Rgb WhittedIntegrator::trace(const Ray& ray, int depth, double weight, const PathColour& path, Rng& rng) const {
+Rgb WhittedIntegrator::trace(const Ray& ray, int depth, double weight, const PathColour& path,
+                             Rng& rng) const {
     const Scene& scene = m_scene;
     Interaction it;
     // Refraction follows the hero wavelength; the others ride along until a dispersive
     // refraction splits them off.
-    if (!next_interaction(scene, ray, path.hero_nm(), it)) return m_background ? path.of(*m_background) : Rgb{};
+    if (!next_interaction(scene, ray, path.hero_nm(), it))
+        return m_background ? path.of(*m_background) : Rgb{};
     const Material& m = *it.material;
     const Vec3& p = it.point();
     const Vec3& n = it.normal();
