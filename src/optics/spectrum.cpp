@@ -33,8 +33,6 @@ double integrate(F f) {
     return s * step;
 }
 
-int band_of(double nm) { return nm < 490.0 ? 2 : (nm < 585.0 ? 1 : 0); }  // 0 red, 1 green, 2 blue
-
 // Constants derived once from the tables: D65 scaled to Y = 1, and the 3x3 matrix taking
 // band weights to the linear sRGB of the banded spectrum lit by (or multiplied with) D65.
 struct Calibration {
@@ -42,6 +40,7 @@ struct Calibration {
     double d65_power = 1.0;       // int D65 * d65_scale over the visible range
     Rgb white{1, 1, 1};           // linear sRGB of that D65 before white balancing
     double inverse[3][3] = {};    // band weights from linear sRGB
+    BandColour d65_bands;         // band colours of D65 * d65_scale
 
     // The tabulated D65 is a hair off the sRGB white point; dividing by its colour makes
     // D65 exactly [1, 1, 1], so greys round-trip exactly.
@@ -68,6 +67,7 @@ struct Calibration {
                          }) / y_integral;
             }
             const Rgb rgb = balanced(xyz);
+            d65_bands.band[band] = rgb;
             m[0][band] = rgb.r;
             m[1][band] = rgb.g;
             m[2][band] = rgb.b;
@@ -137,6 +137,8 @@ SpectrumPtr make_normalised(F f) {
 }
 
 }  // namespace
+
+int band_of(double nm) { return nm < 490.0 ? 2 : (nm < 585.0 ? 1 : 0); }
 
 SampledWavelengths SampledWavelengths::sample(double u) {
     SampledWavelengths w;
@@ -223,6 +225,22 @@ double Spectrum::sample_wavelength(double u, double& nm) const {
     return in_bin / total;  // density per nm, constant over this 1 nm bin
 }
 
+const BandColour& Spectrum::band_colour() const {
+    std::call_once(m_band_once, [this] {
+        // spectrum_to_rgb's sum, split by band: the 0.1 nm grid's midpoints never fall on a
+        // band edge, so each term lands in exactly one band.
+        std::array<Vec3, 3> xyz;
+        constexpr double step = 0.1;
+        for (double nm = kLambdaMinNm + 0.5 * step; nm < kLambdaMaxNm; nm += step) {
+            xyz[band_of(nm)] += cie_xyz_bar(nm) * eval(nm);
+        }
+        for (int b = 0; b < 3; ++b) {
+            m_band_colour.band[b] = calibration().balanced(xyz[b] * (step / cie_y_integral()));
+        }
+    });
+    return m_band_colour;
+}
+
 double radiant_watts(const Spectrum& s, double lo_nm, double hi_nm) {
     // The midpoint rule on the grid `integrate` uses (0.1 nm), clipped to [lo, hi], so the
     // bands of a partition sum to the whole and a white light of power P gives P watts.
@@ -239,6 +257,15 @@ double radiant_watts(const Spectrum& s, double lo_nm, double hi_nm) {
 
 SpectrumPtr reflectance_from_rgb(const Rgb& rgb) {
     return std::make_shared<BandSpectrum>(calibration().weights(rgb, 1.0), false);
+}
+
+BandWeights reflectance_bands(const Rgb& rgb) { return calibration().weights(rgb, 1.0); }
+
+BandColour illuminant_band_colour(const Rgb& rgb) {
+    const auto weights = calibration().weights(rgb, INFINITY);
+    BandColour c = calibration().d65_bands;
+    for (int b = 0; b < 3; ++b) c.band[b] *= weights[b];
+    return c;
 }
 
 SpectrumPtr illuminant_from_rgb(const Rgb& rgb) {

@@ -74,6 +74,36 @@ Rgb sample_to_rgb(double value, double nm, double pdf);
 // pdf 1) has, on average, the spectrum's colour.
 double radiant_power(const class Spectrum& s);
 
+// The three bands RGB colours become spectra over (see reflectance_from_rgb): 0 red
+// (>= 585 nm), 1 green, 2 blue (< 490 nm).
+int band_of(double nm);
+// A value per band: a band-constant spectrum (an albedo), or a product of them.
+using BandWeights = std::array<double, 3>;
+
+// Linear sRGB of a spectrum cut into the three bands: spectrum_to_rgb's integral taken over
+// each band alone, so the three sum to the spectrum's colour. A band-constant factor a (an
+// albedo, a product of albedos) scales each band, so the colour of a S is exactly
+// sum_b a_b band_b(S): no wavelength sampling, hence no colour noise.
+struct BandColour {
+    std::array<Rgb, 3> band{};
+
+    Rgb total() const { return band[0] + band[1] + band[2]; }
+    // The colour of `a` times this spectrum.
+    Rgb through(const BandWeights& a) const {
+        return band[0] * a[0] + band[1] * a[1] + band[2] * a[2];
+    }
+    BandColour& operator+=(const BandColour& o) {
+        for (int b = 0; b < 3; ++b) band[b] += o.band[b];
+        return *this;
+    }
+    BandColour& operator*=(double s) {
+        for (Rgb& c : band) c *= s;
+        return *this;
+    }
+};
+
+inline BandColour operator*(BandColour c, double s) { return c *= s; }
+
 // A spectral distribution: reflectances, illuminants, blackbodies, laser lines.
 class Spectrum {
 public:
@@ -84,10 +114,14 @@ public:
     // histogram of the spectrum (for photons), so a narrow laser line gets every photon;
     // returns the density (per nm).
     double sample_wavelength(double u, double& nm) const;
+    // The spectrum's band colours, computed on first use.
+    const BandColour& band_colour() const;
 
 private:
     mutable std::once_flag m_cdf_once;
     mutable std::vector<double> m_cdf;  // built on first use
+    mutable std::once_flag m_band_once;
+    mutable BandColour m_band_colour;
 };
 
 using SpectrumPtr = std::shared_ptr<const Spectrum>;
@@ -97,9 +131,14 @@ using SpectrumPtr = std::shared_ptr<const Spectrum>;
 // D65, renders back to the same linear sRGB colour: greys and white are exact, saturated
 // colours are clamped to what three bands can make. A reflectance stays within [0, 1].
 SpectrumPtr reflectance_from_rgb(const Rgb& rgb);
+// The band weights of reflectance_from_rgb(rgb).
+BandWeights reflectance_bands(const Rgb& rgb);
 // An illuminant: D65 times the bands; renders to `rgb` (so [1, 1, 1] is D65 white, Y = 1).
 SpectrumPtr illuminant_from_rgb(const Rgb& rgb);
 SampledSpectrum illuminant_from_rgb(const Rgb& rgb, const SampledWavelengths& w);
+// The band colours of illuminant_from_rgb(rgb), without building the spectrum (photon-map
+// estimates are colours, turned into such illuminants at every pixel).
+BandColour illuminant_band_colour(const Rgb& rgb);
 // Light spectra are `power` times a shape whose integral over the visible range is that of
 // D65 white (scaled to Y = 1); this converts such spectral power back to watts: the watts
 // between lo_nm and hi_nm of spectral power `s` (radiant_power(s) / D65's, over the whole

@@ -11,36 +11,36 @@ namespace lenslab {
 
 namespace {
 
-SampledSpectrum from_point_light(const Scene& scene, const PointLight& l, const Vec3& p, const Vec3& n,
-                                 const SampledWavelengths& w, double eps) {
+void from_point_light(const Scene& scene, const PointLight& l, const Vec3& p, const Vec3& n,
+                      double eps, const DirectLightSink& add) {
     const Vec3 to_light = l.position - p;
     const double dist2 = length_squared(to_light);
     const double dist = std::sqrt(dist2);
     const Vec3 wi = to_light / dist;
     const double cos_n = dot(n, wi);
-    if (cos_n <= 0.0 || scene.occluded({p, wi}, eps, dist - eps)) return {};
+    if (cos_n <= 0.0 || scene.occluded({p, wi}, eps, dist - eps)) return;
     // E = I cos(theta) / r^2 with I = Phi / (4 pi) for an isotropic source.
-    return l.spectrum->sample(w) * (cos_n / (4.0 * std::numbers::pi * dist2));
+    add(*l.spectrum, cos_n / (4.0 * std::numbers::pi * dist2));
 }
 
-SampledSpectrum from_beam(const Scene& scene, const BeamLight& b, const Vec3& p, const Vec3& n,
-                          const SampledWavelengths& w, double eps) {
+void from_beam(const Scene& scene, const BeamLight& b, const Vec3& p, const Vec3& n, double eps,
+               const DirectLightSink& add) {
     const Vec3 v = p - b.origin;
     const double along = dot(v, b.direction);
-    if (along <= 0.0 || length_squared(v - b.direction * along) > b.radius * b.radius) return {};
+    if (along <= 0.0 || length_squared(v - b.direction * along) > b.radius * b.radius) return;
     const double cos_n = -dot(n, b.direction);
-    if (cos_n <= 0.0 || scene.occluded({p, -b.direction}, eps, along - eps)) return {};
-    return b.spectrum->sample(w) * (cos_n / (std::numbers::pi * b.radius * b.radius));
+    if (cos_n <= 0.0 || scene.occluded({p, -b.direction}, eps, along - eps)) return;
+    add(*b.spectrum, cos_n / (std::numbers::pi * b.radius * b.radius));
 }
 
-SampledSpectrum from_sphere_emitter(const Scene& scene, const SphereEmitter& emitter, const Vec3& p,
-                                    const Vec3& n, int samples, const SampledWavelengths& w, Rng& rng,
-                                    double eps) {
+void from_sphere_emitter(const Scene& scene, const SphereEmitter& emitter, const Vec3& p,
+                         const Vec3& n, int samples, Rng& rng, double eps,
+                         const DirectLightSink& add) {
     const Sphere& sphere = *emitter.sphere;
     const Vec3 to_centre = sphere.centre() - p;
     const double d2 = length_squared(to_centre);
     const double r2 = sphere.radius() * sphere.radius();
-    if (d2 <= r2) return {};  // inside the light
+    if (d2 <= r2) return;  // inside the light
     const double d = std::sqrt(d2);
     const double cos_max = std::sqrt(1.0 - r2 / d2);
     // 1 - cos_max written without cancellation for small, distant lights.
@@ -58,18 +58,25 @@ SampledSpectrum from_sphere_emitter(const Scene& scene, const SphereEmitter& emi
         if (scene.occluded({p, wi}, eps, h.t - eps)) continue;
         sum += cos_n;
     }
-    return emitter.radiance->sample(w) * (sum * inv_pdf / samples);
+    add(*emitter.radiance, sum * inv_pdf / samples);
 }
 
 }  // namespace
 
+void for_each_direct_light(const Scene& scene, const Vec3& p, const Vec3& n, int samples, Rng& rng,
+                           const DirectLightSink& add) {
+    const double eps = surface_epsilon(p);
+    for (const PointLight& l : scene.point_lights) from_point_light(scene, l, p, n, eps, add);
+    for (const BeamLight& b : scene.beams) from_beam(scene, b, p, n, eps, add);
+    for (const SphereEmitter& s : scene.emitters())
+        from_sphere_emitter(scene, s, p, n, samples, rng, eps, add);
+}
+
 SampledSpectrum direct_irradiance(const Scene& scene, const Vec3& p, const Vec3& n, int samples,
                                   const SampledWavelengths& w, Rng& rng) {
-    const double eps = surface_epsilon(p);
     SampledSpectrum e;
-    for (const PointLight& l : scene.point_lights) e += from_point_light(scene, l, p, n, w, eps);
-    for (const BeamLight& b : scene.beams) e += from_beam(scene, b, p, n, w, eps);
-    for (const SphereEmitter& s : scene.emitters()) e += from_sphere_emitter(scene, s, p, n, samples, w, rng, eps);
+    for_each_direct_light(scene, p, n, samples, rng,
+                          [&](const Spectrum& s, double factor) { e += s.sample(w) * factor; });
     return e;
 }
 

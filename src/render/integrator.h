@@ -31,8 +31,10 @@ public:
 
 protected:
     explicit PixelIntegrator(const Scene& scene) : m_scene(scene) {}
-    // Radiance along `ray` at the sampled wavelengths.
-    virtual SampledSpectrum radiance(const Ray& ray, const SampledWavelengths& w, class Rng& rng) const = 0;
+    // The linear sRGB of the radiance along `ray`. `w`: the camera sample's wavelengths, for
+    // what depends on the wavelength (dispersion); light that does not may be coloured
+    // exactly (render/path_colour.h).
+    virtual Rgb radiance(const Ray& ray, const SampledWavelengths& w, class Rng& rng) const = 0;
     const Scene& m_scene;
 };
 

@@ -53,7 +53,7 @@ bool PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& fil
                         // scrambled order so they do not follow the sample positions.
                         const double u_lambda = ((s * 7919 + 13) % spp + rng.uniform()) / spp;
                         const SampledWavelengths lambdas = SampledWavelengths::sample(u_lambda);
-                        const Rgb l = to_rgb(radiance(camera.generate_ray(x + jx, y + jy), lambdas, rng), lambdas);
+                        const Rgb l = radiance(camera.generate_ray(x + jx, y + jy), lambdas, rng);
                         // A non-finite sample would poison the pixel; it is a bug, but the
                         // picture must stay usable (DESIGN.md: no NaN reaches a pixel), and
                         // the count tells the user.

@@ -30,6 +30,7 @@ struct Material {
 
     // Spectra derived from the colours; `finish()` builds them after the fields are set.
     SpectrumPtr albedo;
+    BandWeights albedo_bands{};  // albedo's value in each band (it is band-constant)
     SpectrumPtr emission;  // emitted radiance spectrum (intensity included)
     void finish();
 

@@ -48,6 +48,49 @@ TEST(Spectrum, RgbRoundTripsThroughTheBands) {
     for (double nm = 360; nm <= 830; nm += 5) EXPECT_LE(r->eval(nm), 1.0);
 }
 
+// The band colours split spectrum_to_rgb's integral by band: they sum to it, whatever the
+// spectrum (a band-edge crossing grid point, or a coarser sum, would break this).
+TEST(Spectrum, BandColoursSumToTheSpectrumsColour) {
+    for (const SpectrumPtr& s : {d65_spectrum(), blackbody_spectrum(2700), line_spectrum(532),
+                                 line_spectrum(489.9), illuminant_from_rgb({0.75, 0.12, 0.1})}) {
+        const Rgb whole = spectrum_to_rgb(*s);
+        const Rgb sum = s->band_colour().total();
+        const double scale = whole.max_component();
+        EXPECT_NEAR(sum.r, whole.r, 1e-12 * scale);
+        EXPECT_NEAR(sum.g, whole.g, 1e-12 * scale);
+        EXPECT_NEAR(sum.b, whole.b, 1e-12 * scale);
+    }
+    // A laser line lies in one band: the others are black.
+    const BandColour green = line_spectrum(532)->band_colour();
+    EXPECT_EQ(green.band[0].max_component(), 0.0);
+    EXPECT_EQ(green.band[2].max_component(), 0.0);
+}
+
+TEST(Spectrum, GreyAlbedoUnderD65IsExactlyGrey) {
+    // The colour of albedo x light is sum_b a_b band_b(light), with no wavelength sampling.
+    for (double a : {0.18, 0.5, 0.8}) {
+        const Rgb c = d65_spectrum()->band_colour().through(reflectance_bands(Rgb::grey(a)));
+        EXPECT_NEAR(c.r, a, 1e-12);
+        EXPECT_NEAR(c.g, a, 1e-12);
+        EXPECT_NEAR(c.b, a, 1e-12);
+    }
+    // An RGB illuminant's band colours, computed from the bands directly, are its spectrum's.
+    const Rgb rgb{0.3, 0.9, 0.4};
+    const BandColour direct = illuminant_band_colour(rgb);
+    const BandColour integrated = illuminant_from_rgb(rgb)->band_colour();
+    for (int b = 0; b < 3; ++b) {
+        EXPECT_NEAR(direct.band[b].r, integrated.band[b].r, 1e-12);
+        EXPECT_NEAR(direct.band[b].g, integrated.band[b].g, 1e-12);
+        EXPECT_NEAR(direct.band[b].b, integrated.band[b].b, 1e-12);
+    }
+    // And a coloured albedo under white light keeps its colour.
+    const Rgb red =
+        illuminant_band_colour({1, 1, 1}).through(reflectance_bands({0.75, 0.15, 0.12}));
+    EXPECT_NEAR(red.r, 0.75, 1e-9);
+    EXPECT_NEAR(red.g, 0.15, 1e-9);
+    EXPECT_NEAR(red.b, 0.12, 1e-9);
+}
+
 TEST(Spectrum, ColoursOfLightSources) {
     // A 6504 K blackbody is close to D65 (D65's correlated colour temperature): near-neutral.
     const Rgb bb = spectrum_to_rgb(*blackbody_spectrum(6504));

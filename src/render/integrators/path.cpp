@@ -6,6 +6,7 @@
 #include "math/rng.h"
 #include "math/sampling.h"
 #include "render/direct_light.h"
+#include "render/path_colour.h"
 #include "scene/interaction.h"
 
 namespace lenslab {
@@ -16,42 +17,41 @@ PathIntegrator::PathIntegrator(const Scene& scene) : PixelIntegrator(scene) {
         m_background = illuminant_from_rgb(scene.render.background);
 }
 
-SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
-                                         Rng& rng) const {
+Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w, Rng& rng) const {
     const Scene& scene = m_scene;
-    SampledSpectrum l;
-    SampledSpectrum beta = SampledSpectrum::constant(1.0);
+    Rgb l;
+    PathColour path(w);  // the throughput, and what the path still carries
     Ray ray = camera_ray;
     bool seen_from_camera = true;  // no diffuse bounce yet: the camera sees this chain
     bool count_emission = true;    // the last event was the camera or a specular one
-    bool hero_only = false;
     for (int bounce = 0;; ++bounce) {
         Interaction it;
         // Refraction follows the hero wavelength (the others are dropped at a dispersive one).
-        if (!next_interaction(scene, ray, w.nm[0], it)) {
-            if (seen_from_camera && m_background) l += beta * m_background->sample(w);
+        if (!next_interaction(scene, ray, path.hero_nm(), it)) {
+            if (seen_from_camera && m_background) l += path.of(*m_background);
             break;
         }
-        if (it.scattering.dispersive && !hero_only) {
-            hero_only = true;
-            beta = beta.hero_only();
-        }
+        if (it.scattering.dispersive) path.disperse();
         const Material& m = *it.material;
         const Vec3& p = it.point();
         const Vec3& n = it.normal();
         const bool front_side = dot(ray.direction, n) < 0.0;
         const Vec3 facing = front_side ? n : -n;
-        if (count_emission && front_side && m.is_emitter()) l += beta * m.emission->sample(w);
+        if (count_emission && front_side && m.is_emitter()) l += path.of(*m.emission);
         if (bounce >= scene.render.max_depth) break;
 
         const Scattering& s = it.scattering;
         const bool diffuse = s.diffuse > 0.0 && !m.color.is_black();
         if (diffuse) {
-            SampledSpectrum e =
-                direct_irradiance(scene, p, facing, scene.render.light_samples, w, rng) *
-                (1.0 / std::numbers::pi);
-            if (seen_from_camera && m_ambient) e += m_ambient->sample(w);
-            l += beta * m.albedo->sample(w) * e * s.diffuse;
+            LightSum e(path);
+            for_each_direct_light(
+                scene, p, facing, scene.render.light_samples, rng,
+                [&](const Spectrum& light, double factor) { e.add(light, factor); });
+            e *= 1.0 / std::numbers::pi;
+            if (seen_from_camera && m_ambient) e.add(*m_ambient, 1.0);
+            PathColour reflected = path;
+            reflected *= m.albedo_bands;
+            l += reflected.of(e) * s.diffuse;
         }
 
         // One event, with the material's weights as probabilities. The diffuse bounce
@@ -59,7 +59,8 @@ SampledSpectrum PathIntegrator::radiance(const Ray& camera_ray, const SampledWav
         const double survive = diffuse ? s.diffuse * std::min(1.0, m.color.max_component()) : 0.0;
         double u = rng.uniform();
         if (u < survive) {
-            beta *= m.albedo->sample(w) * (s.diffuse / survive);
+            path *= m.albedo_bands;
+            path *= s.diffuse / survive;
             const Vec3 dir = Frame::from_axis(facing).to_world(
                 sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
             ray = {p, dir};

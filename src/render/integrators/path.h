@@ -15,6 +15,10 @@
 // The report's ambient term is kept as it is in `whitted`: added where the camera, directly
 // or through mirrors and glass, first sees a diffuse surface; `background` is what rays that
 // leave the scene on such a chain see, not a light (so all integrators agree on both).
+//
+// The throughput of a path that met no dispersive refraction is a number times band-constant
+// albedos, so its colour is exact (render/path_colour.h); a dispersive surface leaves the
+// hero wavelength alone on the path.
 
 #include "render/integrator.h"
 
@@ -25,7 +29,7 @@ public:
     explicit PathIntegrator(const Scene& scene);
 
 protected:
-    SampledSpectrum radiance(const Ray& ray, const SampledWavelengths& w, Rng& rng) const override;
+    Rgb radiance(const Ray& ray, const SampledWavelengths& w, Rng& rng) const override;
 
 private:
     SpectrumPtr m_ambient, m_background;  // null when black

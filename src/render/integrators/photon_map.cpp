@@ -49,19 +49,18 @@ bool PhotonMapIntegrator::render(const Scene& scene, const Camera& camera, Film&
     return WhittedIntegrator::render(scene, camera, film, control);
 }
 
-SampledSpectrum PhotonMapIntegrator::diffuse_irradiance(const Vec3& p, const Vec3& n, const SampledWavelengths& w,
-                                                        Rng& rng) const {
+void PhotonMapIntegrator::add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n,
+                                                 Rng& rng) const {
     thread_local std::vector<PhotonNeighbour> scratch;
-    // Photons store the colour of their single wavelength; the estimate is turned back into a
-    // spectrum at the camera sample's wavelengths.
+    // Photons store colours; the estimate is lit as an RGB illuminant (D65 times bands), whose
+    // band colours are exact.
     Rgb from_maps = PhotonMap::irradiance(m_map->caustic(), p, n, m_gather, scratch);
-    SampledSpectrum e;
     if (m_scene.render.direct == "photon_map") {
         from_maps += PhotonMap::irradiance(m_map->direct(), p, n, m_gather, scratch);
     } else {
-        e = direct_irradiance(m_scene, p, n, m_scene.render.light_samples, w, rng);
+        WhittedIntegrator::add_diffuse_irradiance(e, p, n, rng);
     }
-    return e + illuminant_from_rgb(from_maps, w);
+    e.add_illuminant(from_maps);
 }
 
 }  // namespace lenslab

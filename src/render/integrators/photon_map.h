@@ -28,8 +28,7 @@ public:
     const std::shared_ptr<const PhotonMap>& shared_photon_map() const { return m_map; }
 
 protected:
-    SampledSpectrum diffuse_irradiance(const Vec3& p, const Vec3& n, const SampledWavelengths& w,
-                                       Rng& rng) const override;
+    void add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n, Rng& rng) const override;
 
 private:
     GatherSettings m_gather;

@@ -24,8 +24,9 @@ namespace lenslab {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// Streams of the per-pixel wavelength rotations, apart from the camera paths' (pixel index)
-// and the photons' (2^62 + photon index).
+// The pass wavelengths' rotation uses the stream just below this one, apart from the camera
+// paths' (pixel index) and the photons' (2^62 + photon index). (Streams from here up once
+// rotated the visible points' wavelengths, before their colour became exact.)
 constexpr uint64_t kRotationStreamBase = uint64_t{1} << 61;
 // Automatic initial radius: this many pixel footprints, at most this share of the scene's
 // diagonal (the photon_map integrator's default radius).
@@ -58,9 +59,9 @@ struct SppmIntegrator::Pixel {
 
 struct SppmIntegrator::VisiblePoint {
     Vec3 p, n;          // n: the normal on the side the camera sees
-    double hero_u = 0;  // the pixel's wavelengths this pass: SampledWavelengths::sample(hero_u)
     double beta = 0;    // path throughput to the point
     const Spectrum* albedo = nullptr;
+    BandWeights albedo_bands{};  // the same albedo, per band
     double path_length = 0;  // camera to point, through mirrors and glass
     bool valid = false;      // the path reached a diffuse surface
     bool dispersed = false;  // it went through dispersive glass: pass wavelength only
@@ -108,27 +109,20 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
     const Scene& scene = m_scene;
     const uint64_t pixel = uint64_t(y) * uint64_t(m_width) + uint64_t(x);
     Rng rng(pass.seed, pixel);
-    // The pixel's hero wavelength runs through the van der Corput sequence over the passes,
-    // rotated per pixel: stratified in each pixel, uncorrelated between pixels. The four
-    // wavelengths are a quarter of the range apart, so the sequence is squeezed into one
-    // quarter: 4 passes then give 16 evenly spread wavelengths, not the same 4 four times.
-    double u = radical_inverse_base2(static_cast<uint32_t>(pass.index)) / kWavelengthSamples +
-               Rng(scene.render.seed, kRotationStreamBase + pixel).uniform();
-    if (u >= 1.0) u -= 1.0;
     vp = VisiblePoint{};
-    vp.hero_u = u;
-    const SampledWavelengths w = SampledWavelengths::sample(u);
     const double jx = rng.uniform(), jy = rng.uniform();
     Ray ray = pass.camera.generate_ray(x + jx, y + jy);
 
     double beta = 1.0;
-    SampledSpectrum found;  // at w
+    // Until a dispersive refraction the path carries the whole spectrum and its colour is
+    // exact (render/path_colour.h); after one, the pass wavelength alone.
+    Rgb found;
     double found_pass = 0;  // at the pass wavelength
     auto add = [&](const Spectrum& s) {
         if (vp.dispersed) {
             found_pass += beta * s.eval(pass.lambda_nm);
         } else {
-            found += s.sample(w) * beta;
+            found += s.band_colour().total() * beta;
         }
     };
     for (int depth = 0; depth <= scene.render.max_depth; ++depth) {
@@ -163,6 +157,7 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
             vp.n = facing;
             vp.beta = beta;
             vp.albedo = m.albedo.get();
+            vp.albedo_bands = m.albedo_bands;
             const int samples = scene.render.light_samples;
             if (vp.dispersed) {
                 const SampledWavelengths at_pass = SampledWavelengths::single(pass.lambda_nm);
@@ -170,9 +165,11 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
                 if (m_ambient) e += kPi * m_ambient->eval(pass.lambda_nm);
                 found_pass += beta * m.albedo->eval(pass.lambda_nm) / kPi * e;
             } else {
-                SampledSpectrum e = direct_irradiance(scene, p, facing, samples, w, rng);
-                if (m_ambient) e += m_ambient->sample(w) * kPi;
-                found += m.albedo->sample(w) * e * (beta / kPi);
+                for_each_direct_light(
+                    scene, p, facing, samples, rng, [&](const Spectrum& light, double f) {
+                        found += light.band_colour().through(m.albedo_bands) * (f * beta / kPi);
+                    });
+                if (m_ambient) found += m_ambient->band_colour().through(m.albedo_bands) * beta;
             }
             break;
         }
@@ -187,7 +184,7 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
         }
         ray = {p, chosen->direction};
     }
-    vp.direct = to_rgb(found, w);
+    vp.direct = found;
     if (found_pass != 0.0) vp.direct += sample_to_rgb(found_pass, pass.lambda_nm, pass.lambda_pdf);
 }
 
@@ -281,8 +278,11 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     const std::vector<PhotonHit> hits = grid.reorder(photons.hits);
     const int lights = photon_light_count(scene);
     std::vector<double> light_at_pass(lights), albedo_at_pass(scene.materials.size());
-    for (int l = 0; l < lights; ++l)
+    std::vector<BandColour> light_bands(lights);
+    for (int l = 0; l < lights; ++l) {
         light_at_pass[l] = emitted_spectrum(scene, l).eval(pass.lambda_nm);
+        light_bands[l] = emitted_spectrum(scene, l).band_colour();
+    }
     for (size_t m = 0; m < scene.materials.size(); ++m) {
         albedo_at_pass[m] =
             scene.materials[m].albedo ? scene.materials[m].albedo->eval(pass.lambda_nm) : 0.0;
@@ -291,17 +291,13 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     tbb::parallel_for(
         tbb::blocked_range<size_t>(0, m_pixels.size(), 256),
         [&](const tbb::blocked_range<size_t>& range) {
-            std::vector<SampledSpectrum> light_at_w(lights);
             for (size_t i = range.begin(); i != range.end(); ++i) {
                 const VisiblePoint& vp = points[i];
                 Pixel& px = m_pixels[i];
                 px.direct += vp.direct;
                 if (!vp.valid) continue;
-                const SampledWavelengths w = SampledWavelengths::sample(vp.hero_u);
-                for (int l = 0; l < lights && !vp.dispersed; ++l)
-                    light_at_w[l] = emitted_spectrum(scene, l).sample(w);
                 const double radius2 = px.radius * px.radius;
-                SampledSpectrum flux;    // at w, photons not dispersed
+                Rgb flux;                // photons not dispersed, reflected: exact colour
                 double flux_pass = 0.0;  // at the pass wavelength
                 Rgb dispersed;           // photons at wavelengths of their own
                 int64_t found = 0;
@@ -326,16 +322,21 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
                             f *= albedo_at_pass[photons.chains[ph.chain + k]];
                         flux_pass += f;
                     } else {
-                        SampledSpectrum f = light_at_w[ph.light] * static_cast<double>(ph.power);
+                        // power x the albedos it met (band-constant) x its light's spectrum,
+                        // reflected by the visible point's albedo: exact per band.
+                        BandWeights f = vp.albedo_bands;
+                        for (double& b : f) b *= ph.power;
                         for (uint32_t k = 0; k < ph.chain_length; ++k) {
-                            f *= scene.materials[photons.chains[ph.chain + k]].albedo->sample(w);
+                            const BandWeights& a =
+                                scene.materials[photons.chains[ph.chain + k]].albedo_bands;
+                            for (int b = 0; b < 3; ++b) f[b] *= a[b];
                         }
-                        flux += f;
+                        flux += light_bands[ph.light].through(f);
                     }
                 });
                 if (found == 0) continue;
                 Rgb phi = dispersed;
-                if (!vp.dispersed) phi += to_rgb(vp.albedo->sample(w) * flux * (vp.beta / kPi), w);
+                if (!vp.dispersed) phi += flux * (vp.beta / kPi);
                 if (flux_pass != 0.0) {
                     const double weight_pass = vp.beta * vp.albedo->eval(pass.lambda_nm) / kPi;
                     phi += sample_to_rgb(weight_pass * flux_pass, pass.lambda_nm, pass.lambda_pdf);

@@ -17,11 +17,12 @@
 // The initial radius (render.initial_radius, 0 = auto) is per pixel: 2 pixel footprints at
 // the distance of its first visible point, at most 0.5% of the scene's diagonal.
 //
-// Spectra: a visible point keeps its pixel's four wavelengths (stratified over the passes)
-// and evaluates each photon's flux, a function of wavelength, at them; paths through
-// dispersive glass take the pass's wavelength (pass_wavelength.h) and count through the
-// density it was drawn with. Output is the same for any thread count: per-pixel and
-// per-photon random streams, and each pixel sums its photons in photon order.
+// Spectra: a visible point not behind dispersive glass has an exact colour, as has each
+// photon's flux there (its light's band colours times band-constant albedos,
+// render/path_colour.h); paths through dispersive glass take the pass's wavelength
+// (pass_wavelength.h) and count through the density it was drawn with. Output is the same
+// for any thread count: per-pixel and per-photon random streams, and each pixel sums its
+// photons in photon order.
 
 #include <vector>
 

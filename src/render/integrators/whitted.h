@@ -6,26 +6,29 @@
 // mirror ray and, at a dielectric, the Fresnel-weighted reflected and refracted rays, up to
 // render.max_depth. Radiometry is physical: a Lambertian surface of albedo a under
 // irradiance E has radiance a E / pi. Light through glass (caustics) needs photon maps.
+// Colour is exact on branches that met no dispersive refraction (render/path_colour.h).
 
 #include "render/integrator.h"
+#include "render/path_colour.h"
 
 namespace lenslab {
 
 class WhittedIntegrator : public PixelIntegrator {
 public:
-    explicit WhittedIntegrator(const Scene& scene) : PixelIntegrator(scene) {}
+    explicit WhittedIntegrator(const Scene& scene);
 
 protected:
-    SampledSpectrum radiance(const Ray& ray, const SampledWavelengths& w, Rng& rng) const override;
-    // Irradiance reaching a diffuse point `p` whose normal `n` faces the viewer: here the
-    // direct light through shadow rays. The photon-map integrator adds caustics.
-    virtual SampledSpectrum diffuse_irradiance(const Vec3& p, const Vec3& n, const SampledWavelengths& w,
-                                               Rng& rng) const;
+    Rgb radiance(const Ray& ray, const SampledWavelengths& w, Rng& rng) const override;
+    // Adds the irradiance reaching a diffuse point `p` whose normal `n` faces the viewer: here
+    // the direct light through shadow rays. The photon-map integrator adds caustics.
+    virtual void add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n, Rng& rng) const;
 
 private:
-    // `hero_only`: a dispersive refraction upstream already kept only the hero wavelength.
-    SampledSpectrum trace(const Ray& ray, int depth, double weight, const SampledWavelengths& w,
-                          bool hero_only, Rng& rng) const;
+    // `path`: what the branch still carries (the hero wavelength alone once a dispersive
+    // refraction upstream split the wavelengths).
+    Rgb trace(const Ray& ray, int depth, double weight, const PathColour& path, Rng& rng) const;
+
+    SpectrumPtr m_ambient, m_background;  // null when black
 };
 
 }  // namespace lenslab

@@ -1,0 +1,73 @@
+#pragma once
+// The colour of a camera sample without colour noise (issue 13).
+//
+// Until a path meets a dispersive refraction, nothing on it depends on the wavelength:
+// specular weights are numbers, and every albedo is constant over the three bands RGB colours
+// become (reflectance_from_rgb). The light it brings is then a sum of (number) x (product of
+// band-constant albedos) x (a light's spectrum), whose colour is exact from the light's band
+// colours (Spectrum::band_colour): the path carries the whole spectrum, and a white light on
+// a grey floor is grey in every pixel. At a dispersive refraction only the camera sample's
+// hero wavelength goes on, and the colour becomes that wavelength's Monte Carlo estimate.
+
+#include "optics/spectrum.h"
+
+namespace lenslab {
+
+class LightSum;
+
+// A camera path's throughput and what it still carries: the whole spectrum, or (dispersed)
+// the hero wavelength alone. The throughput is a number times band-constant albedos, so
+// three numbers, one per band, hold it exactly.
+class PathColour {
+public:
+    explicit PathColour(const SampledWavelengths& w) : m_hero_nm(w.nm[0]) {}
+
+    double hero_nm() const { return m_hero_nm; }
+    bool dispersed() const { return m_dispersed; }
+    // A dispersive refraction: from here on only the hero wavelength follows the path.
+    void disperse() { m_dispersed = true; }
+
+    PathColour& operator*=(double s) {
+        for (double& b : m_beta) b *= s;
+        return *this;
+    }
+    PathColour& operator*=(const BandWeights& albedo) {
+        for (int b = 0; b < 3; ++b) m_beta[b] *= albedo[b];
+        return *this;
+    }
+
+    // Linear sRGB that light of spectrum `s` (or a sum of such) met along the path brings
+    // to the camera.
+    Rgb of(const Spectrum& s) const;
+    Rgb of(const LightSum& e) const;
+
+private:
+    // One wavelength's estimate of the colour, `value` being the light there.
+    Rgb hero_colour(double value) const;
+
+    double m_hero_nm;
+    bool m_dispersed = false;
+    BandWeights m_beta{1.0, 1.0, 1.0};
+};
+
+// Light arriving at a point (an irradiance, a radiance), a sum of weighted spectra, kept in
+// the form the path that found it needs: band colours, or its value at the hero wavelength.
+class LightSum {
+public:
+    explicit LightSum(const PathColour& path)
+        : m_hero_nm(path.hero_nm()), m_dispersed(path.dispersed()) {}
+
+    void add(const Spectrum& s, double factor);
+    // Adds illuminant_from_rgb(rgb): how photon-map estimates, which are colours, are lit.
+    void add_illuminant(const Rgb& rgb);
+    LightSum& operator*=(double s);
+
+private:
+    friend class PathColour;
+    double m_hero_nm;
+    bool m_dispersed;
+    BandColour m_bands;  // when not dispersed
+    double m_hero = 0;   // when dispersed
+};
+
+}  // namespace lenslab
