@@ -115,9 +115,7 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
     // Watts of every light's spectrum per detector's bands, looked up by the spectrum a
     // photon carries (whatever order the tracer numbers lights in).
     std::vector<const Spectrum*> spectra;
-    for (const SphereEmitter& e : scene.emitters()) spectra.push_back(e.radiance.get());
-    for (const PointLight& l : scene.point_lights) spectra.push_back(l.spectrum.get());
-    for (const BeamLight& b : scene.beams) spectra.push_back(b.spectrum.get());
+    for (const LightPtr& l : scene.lights()) spectra.push_back(&l->spectrum());
     // watts[detector][spectrum]
     std::vector<std::unordered_map<const Spectrum*, SpectrumWatts>> watts(result.detectors.size());
     for (size_t d = 0; d < result.detectors.size(); ++d) {
