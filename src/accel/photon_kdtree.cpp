@@ -12,7 +12,7 @@ namespace {
 // Below this many photons a subtree is built on the current thread.
 constexpr size_t kParallelBuildThreshold = 1 << 15;
 // Ranges this small are scanned linearly by queries instead of descended.
-constexpr size_t kLeafSize = 32;
+constexpr size_t kLeafSize = 16;
 
 }  // namespace
 

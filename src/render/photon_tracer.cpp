@@ -1,5 +1,6 @@
 #include "render/photon_tracer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -250,7 +251,8 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
             if (control.cancelled()) return;
             std::vector<Photon>& out = found[static_cast<size_t>(chunk)];
             const int64_t first = chunk * kChunk, last = std::min(plan.total(), first + kChunk);
-            out.reserve(static_cast<size_t>(last - first));
+            // Room for the split photons too: growing a chunk would copy it.
+            out.reserve(static_cast<size_t>(2 * (last - first)));
             PhotonWalk walk(scene, plan, settings.max_depth, nullptr, &out);
             for (int64_t i = first; i < last; ++i) {
                 Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(i));
@@ -259,15 +261,14 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
             }
         }
     });
-    // Concatenated in photon order: the same maps for any thread count.
-    size_t stored = 0;
-    for (const auto& chunk : found) stored += chunk.size();
-    std::vector<Photon> photons;
-    photons.reserve(stored);
-    for (auto& chunk : found) {
-        photons.insert(photons.end(), chunk.begin(), chunk.end());
-        std::vector<Photon>().swap(chunk);
-    }
+    // Concatenated in photon order (the same maps for any thread count), chunks in parallel.
+    std::vector<size_t> offset(found.size() + 1, 0);
+    for (size_t c = 0; c < found.size(); ++c) offset[c + 1] = offset[c] + found[c].size();
+    std::vector<Photon> photons(offset.back());
+    tbb::parallel_for(size_t{0}, found.size(), [&](size_t c) {
+        std::copy(found[c].begin(), found[c].end(), photons.begin() + static_cast<ptrdiff_t>(offset[c]));
+        std::vector<Photon>().swap(found[c]);
+    });
     const auto t1 = std::chrono::steady_clock::now();
     PhotonMap map(std::move(photons));
     const auto t2 = std::chrono::steady_clock::now();

@@ -31,7 +31,7 @@ struct PhotonTracingSettings {
 
 // Branches of an aimed photon weaker than this share of its power play Russian roulette
 // (surviving at this share), so splitting stays bounded.
-inline constexpr double kSplitFloor = 0.25;
+inline constexpr double kSplitFloor = 0.5;
 
 struct PhotonTracingStats {
     int64_t emitted = 0;  // both streams
