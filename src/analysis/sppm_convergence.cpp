@@ -48,14 +48,17 @@ double block_relative_error(const Film& a, const Film& reference, int block) {
 }
 
 double region_relative_error(const Film& a, const Film& reference, const int region[4]) {
-    double ma = 0, mr = 0;
+    double sum2 = 0, mean = 0;
+    int n = 0;
     for (int y = std::max(0, region[1]); y < std::min(reference.height(), region[3]); ++y) {
         for (int x = std::max(0, region[0]); x < std::min(reference.width(), region[2]); ++x) {
-            ma += luminance(a.at(x, y));
-            mr += luminance(reference.at(x, y));
+            const double d = luminance(a.at(x, y)) - luminance(reference.at(x, y));
+            sum2 += d * d;
+            mean += luminance(reference.at(x, y));
+            ++n;
         }
     }
-    return mr > 0 ? std::abs(ma - mr) / mr : 0.0;
+    return mean > 0 ? std::sqrt(sum2 / n) / (mean / n) : 0.0;
 }
 
 double rms_relative_error(const Film& a, const Film& reference) {

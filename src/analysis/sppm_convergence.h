@@ -31,7 +31,7 @@ struct ConvergencePoint {
     double seconds = 0;      // rendering time to this point
     double block_error = 0;  // mean over 8x8-pixel blocks of |block - reference| / reference
     double rms_error = 0;    // RMS over pixels of the luminance error, over the reference's mean
-    double region_error = 0;  // |region mean - reference's| / reference's, in luminance
+    double region_error = 0;  // rms_error over the region only
 };
 
 struct ConvergenceResult {
@@ -46,7 +46,7 @@ struct ConvergenceResult {
 double block_relative_error(const Film& a, const Film& reference, int block = 8);
 // Root mean square over pixels of the luminance difference, divided by the reference's mean.
 double rms_relative_error(const Film& a, const Film& reference);
-// |mean(a) - mean(reference)| / mean(reference) in luminance over the pixels [x0, x1) x [y0, y1).
+// rms_relative_error over the pixels [x0, x1) x [y0, y1) only (the reference's mean there).
 double region_relative_error(const Film& a, const Film& reference, const int region[4]);
 
 // Renders the reference (path, `reference_spp`, a seed of its own), then sppm pass by pass
