@@ -141,11 +141,7 @@ private:
                 return;
             }
             u -= p_diffuse;
-            const Branch* chosen = nullptr;
-            for (int i = 0; i < s.count && !chosen; ++i) {
-                if (u < s.branches[i].weight) chosen = &s.branches[i];
-                u -= s.branches[i].weight;
-            }
+            const Branch* chosen = roulette_branch(s, u);
             if (!chosen) return;  // absorbed (or the diffuse share of a black surface)
             ray = {it.point(), chosen->direction};
         }

@@ -103,11 +103,7 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, const PhotonPlan
             continue;
         }
         u -= survive;
-        const Branch* chosen = nullptr;
-        for (int i = 0; i < sc.count && !chosen; ++i) {
-            if (u < sc.branches[i].weight) chosen = &sc.branches[i];
-            u -= sc.branches[i].weight;
-        }
+        const Branch* chosen = roulette_branch(sc, u);
         if (!chosen) return;  // absorbed
         ray = {it.point(), chosen->direction};
     }

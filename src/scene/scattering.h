@@ -30,6 +30,17 @@ struct Scattering {
     bool dispersive = false;
 };
 
+// The specular branch whose share of the arriving power holds `u` (a uniform number, the
+// diffuse share already taken off), or nullptr for the rest: Russian roulette on the
+// branches, each chosen with probability equal to its weight.
+inline const Branch* roulette_branch(const Scattering& s, double u) {
+    for (int i = 0; i < s.count; ++i) {
+        if (u < s.branches[i].weight) return &s.branches[i];
+        u -= s.branches[i].weight;
+    }
+    return nullptr;
+}
+
 // Medium around the objects: air, taken as vacuum-like n = 1.
 inline constexpr double kOutsideIor = 1.0;
 

@@ -69,11 +69,7 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
             continue;
         }
         u -= survive;
-        const Branch* chosen = nullptr;
-        for (int i = 0; i < s.count && !chosen; ++i) {
-            if (u < s.branches[i].weight) chosen = &s.branches[i];
-            u -= s.branches[i].weight;
-        }
+        const Branch* chosen = roulette_branch(s, u);
         if (!chosen) break;  // absorbed
         ray = {p, chosen->direction};
         count_emission = true;
