@@ -196,9 +196,13 @@ Action add_bench_command(CLI::App& app) {
         ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 30));
     sppm->add_option("--threads", c.threads, "Worker threads (default: all cores)")->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
 
-    // Both subcommands share the one action; CLI11 says which was chosen.
-    return [args, conv, sppm] {
+    const Action povray = add_bench_povray_command(*bench);
+    CLI::App* povray_cmd = bench->get_subcommand("povray");
+
+    // The subcommands share the one action; CLI11 says which was chosen.
+    return [args, conv, sppm, povray, povray_cmd] {
         if (sppm->parsed()) return run_convergence_bench(*conv);
+        if (povray_cmd->parsed()) return povray();
         return run(*args);
     };
 }
