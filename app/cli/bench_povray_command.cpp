@@ -133,7 +133,8 @@ std::string tail_lines(const std::string& text, int lines) {
 
 void check_ran(const ChildResult& r, const std::string& who) {
     if (r.exited && r.exit_code == 0) return;
-    const std::string how = r.exited ? "exit code " + std::to_string(r.exit_code) : "killed by a signal";
+    const std::string how =
+        r.exited ? "exit code " + std::to_string(r.exit_code) : "killed by a signal";
     throw BenchError(who + " failed (" + how + "); its last output:\n" + tail_lines(r.output, 6));
 }
 
@@ -175,10 +176,12 @@ Image8 side_by_side(const Image8& povray_mirrored, const Image8& lenslab,
         double x, y;
     };
     const Centre lens{215.0 / 900, 548.0 / 900}, sphere{672.0 / 900, 548.0 / 900};
-    const int scale = w >= 600 ? 2 : 1;
-    const int bar = kGlyphHeight * scale + 6;
     Image8 out;
     out.width = 2 * crop_w;
+    // Large letters where both labels fit; small images get small (and maybe clipped) ones.
+    const int widest = std::max(text_width(povray_label, 1), text_width(lenslab_label, 1));
+    const int scale = 2 * widest <= out.width ? 2 : 1;
+    const int bar = kGlyphHeight * scale + 6;
     out.height = 2 * (bar + crop_h);
     out.rgb.assign(static_cast<size_t>(out.width) * out.height * 3, 0);
     const unsigned char white[3] = {255, 255, 255};
@@ -209,7 +212,8 @@ std::string ratio(double lenslab, double povray) {
 std::string markdown(const PovrayBenchArgs& a, const Side& pov, const Side& ll,
                      const std::string& load_before, const std::string& load_after) {
     std::ostringstream md;
-    const std::string pov_name = "POV-Ray " + (pov.version.empty() ? std::string("3.7") : pov.version);
+    const std::string pov_name =
+        "POV-Ray " + (pov.version.empty() ? std::string("3.7") : pov.version);
     md << "| | " << pov_name << " | lenslab | lenslab / POV-Ray |\n| --- | ---: | ---: | ---: |\n";
     const double pm = median(pov.seconds), lm = median(ll.seconds);
     md << "| wall time (same run, alternating, median of " << a.repeats << ") | " << fixed(pm, 2)
@@ -218,12 +222,14 @@ std::string markdown(const PovrayBenchArgs& a, const Side& pov, const Side& ll,
     const auto [lmin, lmax] = std::minmax_element(ll.seconds.begin(), ll.seconds.end());
     md << "| wall time, fastest - slowest run | " << fixed(*pmin, 2) << " - " << fixed(*pmax, 2)
        << " s | " << fixed(*lmin, 2) << " - " << fixed(*lmax, 2) << " s | |\n";
-    const auto count = [](const std::optional<int64_t>& n) { return n ? grouped(*n) : std::string("-"); };
+    const auto count = [](const std::optional<int64_t>& n) {
+        return n ? grouped(*n) : std::string("-");
+    };
     md << "| caustic photons stored | " << count(pov.caustic_stored) << " | "
        << count(ll.caustic_stored) << " | "
-       << (pov.caustic_stored && ll.caustic_stored
-               ? ratio(static_cast<double>(*ll.caustic_stored), static_cast<double>(*pov.caustic_stored))
-               : "")
+       << (pov.caustic_stored && ll.caustic_stored ? ratio(static_cast<double>(*ll.caustic_stored),
+                                                           static_cast<double>(*pov.caustic_stored))
+                                                   : "")
        << " |\n";
     md << "| direct photons stored | - (ray traced) | " << count(ll.direct_stored) << " | |\n";
     md << "| photons shot (POV-Ray) / emitted (lenslab) | " << count(pov.shot) << " | "
@@ -236,7 +242,8 @@ std::string markdown(const PovrayBenchArgs& a, const Side& pov, const Side& ll,
        << " threads, " << grouped(a.photons) << " photons requested, gather radius " << a.radius
        << ", at most " << a.gather_max << " photons per estimate.\n\nCommands (run alternately, "
        << a.repeats << " times each, in the output folder):\n\n```\n"
-       << shell_command_line(pov.command) << "\n" << shell_command_line(ll.command) << "\n```\n\n";
+       << shell_command_line(pov.command) << "\n"
+       << shell_command_line(ll.command) << "\n```\n\n";
     std::string cpu = first_line_matching("/proc/cpuinfo", "model name");
     md << "Machine: nproc " << sysconf(_SC_NPROCESSORS_ONLN) << ", CPU "
        << (cpu.empty() ? std::string("unknown") : cpu) << "; load average (1, 5, 15 min) "
@@ -248,18 +255,21 @@ void check_file(const std::string& path, const std::string& option) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) {
         throw BenchError(option + " " + path +
-                         ": no such file (run from the lenslab source folder, or give " + option + ")");
+                         ": no such file (run from the lenslab source folder, or give " + option +
+                         ")");
     }
 }
 
 int run_bench(const PovrayBenchArgs& a) {
     std::string povray = a.povray.empty() ? find_on_path("povray") : a.povray;
     if (povray.empty()) {
-        throw BenchError("POV-Ray is not installed (no 'povray' on PATH): install it with "
-                         "apt-get install povray, or give its path with --povray");
+        throw BenchError(
+            "POV-Ray is not installed (no 'povray' on PATH): install it with "
+            "apt-get install povray, or give its path with --povray");
     }
     if (!is_executable_file(povray)) {
-        throw BenchError("--povray " + povray + ": no such executable file; install POV-Ray with "
+        throw BenchError("--povray " + povray +
+                         ": no such executable file; install POV-Ray with "
                          "apt-get install povray");
     }
     check_file(a.pov, "--pov");
@@ -273,26 +283,51 @@ int run_bench(const PovrayBenchArgs& a) {
     const fs::path log = temporary_path_for((dir / "child.log").string());
 
     Side pov, ll;
-    pov.command = {povray, "+I" + fs::absolute(a.pov).string(), "+O" + pov_tmp, "+FN",
-                   "+W" + std::to_string(a.width), "+H" + std::to_string(a.height), "-A",
-                   "+WT" + std::to_string(a.threads), "-D", "-P",
+    pov.command = {povray,
+                   "+I" + fs::absolute(a.pov).string(),
+                   "+O" + pov_tmp,
+                   "+FN",
+                   "+W" + std::to_string(a.width),
+                   "+H" + std::to_string(a.height),
+                   "-A",
+                   "+WT" + std::to_string(a.threads),
+                   "-D",
+                   "-P",
                    "Declare=PhotonCount=" + std::to_string(a.photons),
-                   "Declare=GatherRadius=" + number(a.radius), "Declare=GatherMax=" + std::to_string(a.gather_max)};
+                   "Declare=GatherRadius=" + number(a.radius),
+                   "Declare=GatherMax=" + std::to_string(a.gather_max)};
     // Our own executable, so lenslab is timed as a whole process exactly as POV-Ray is.
-    ll.command = {fs::read_symlink("/proc/self/exe").string(), "render", fs::absolute(a.scene).string(),
-                  "-o", ll_png.string(), "--width", std::to_string(a.width), "--height",
-                  std::to_string(a.height), "--spp", "1", "--threads", std::to_string(a.threads),
-                  "--integrator", "photon_map", "--caustic-photons", std::to_string(a.photons),
-                  "--radius", number(a.radius), "--max-photons-per-estimate",
+    ll.command = {fs::read_symlink("/proc/self/exe").string(),
+                  "render",
+                  fs::absolute(a.scene).string(),
+                  "-o",
+                  ll_png.string(),
+                  "--width",
+                  std::to_string(a.width),
+                  "--height",
+                  std::to_string(a.height),
+                  "--spp",
+                  "1",
+                  "--threads",
+                  std::to_string(a.threads),
+                  "--integrator",
+                  "photon_map",
+                  "--caustic-photons",
+                  std::to_string(a.photons),
+                  "--radius",
+                  number(a.radius),
+                  "--max-photons-per-estimate",
                   std::to_string(a.gather_max)};
 
     const std::string load_before = load_average();
-    std::fprintf(stderr, "POV-Ray (%s) and lenslab, %d runs each, alternating; load average %s\n",
+    std::fprintf(stderr,
+                 "POV-Ray (%s) and lenslab, %d run(s) of each, alternating; load average %s\n",
                  povray.c_str(), a.repeats, load_before.c_str());
     const std::regex pov_stored(R"(Surface photons stored:\s+(\d+))");
     const std::regex pov_shot(R"(Number of photons shot:\s+(\d+))");
     const std::regex pov_version(R"(Ray Tracer Version (\d+\.\d+(\.\d+)*))");
-    const std::regex ll_photons(R"(photons: (\d+) emitted \((\d+) aimed[^)]*\), (\d+) direct \+ (\d+) caustic stored)");
+    const std::regex ll_photons(
+        R"(photons: (\d+) emitted \((\d+) aimed[^)]*\), (\d+) direct \+ (\d+) caustic stored)");
     for (int i = 0; i < a.repeats; ++i) {
         const ChildResult p = run_child(pov.command, dir, log);
         check_ran(p, "POV-Ray");
@@ -326,13 +361,14 @@ int run_bench(const PovrayBenchArgs& a) {
 
     const Image8 pov_img = read_png(pov_png.string()), ll_img = read_png(ll_png.string());
     if (pov_img.width != ll_img.width || pov_img.height != ll_img.height) {
-        throw BenchError("the two images differ in size: POV-Ray " + std::to_string(pov_img.width) + "x" +
-                         std::to_string(pov_img.height) + ", lenslab " + std::to_string(ll_img.width) +
-                         "x" + std::to_string(ll_img.height));
+        throw BenchError("the two images differ in size: POV-Ray " + std::to_string(pov_img.width) +
+                         "x" + std::to_string(pov_img.height) + ", lenslab " +
+                         std::to_string(ll_img.width) + "x" + std::to_string(ll_img.height));
     }
     const std::string amount = photons_short(a.photons) + " photons, r " + number(a.radius);
-    const std::string pov_label = "POV-Ray (mirrored) " + amount + " (" + fixed(median(pov.seconds), 2) + " s)";
-    const std::string ll_label = "lenslab photon_map " + amount + " (" + fixed(median(ll.seconds), 2) + " s)";
+    const std::string pov_label =
+        "POV-Ray, mirrored: " + amount + ", " + fixed(median(pov.seconds), 2) + " s";
+    const std::string ll_label = "lenslab: " + amount + ", " + fixed(median(ll.seconds), 2) + " s";
     write_png_image(side_by_side(mirrored(pov_img), ll_img, pov_label, ll_label),
                     (dir / "caustics_side_by_side.png").string());
 
@@ -347,8 +383,9 @@ int run_bench(const PovrayBenchArgs& a) {
 
 Action add_bench_povray_command(CLI::App& bench) {
     auto args = std::make_shared<PovrayBenchArgs>();
-    CLI::App* cmd = bench.add_subcommand(
-        "povray", "POV-Ray 3.7 and lenslab on the report scene, alternately: wall times, photons stored, images");
+    CLI::App* cmd = bench.add_subcommand("povray",
+                                         "POV-Ray 3.7 and lenslab on the report scene, "
+                                         "alternately: wall times, photons stored, images");
     cmd->add_option("--povray", args->povray, "POV-Ray executable (default: povray on PATH)");
     cmd->add_option("--pov", args->pov, "POV-Ray scene")->capture_default_str();
     cmd->add_option("--scene", args->scene, "lenslab scene")->capture_default_str();
@@ -356,21 +393,34 @@ Action add_bench_povray_command(CLI::App& bench) {
         ->capture_default_str();
     cmd->add_option("--photons", args->photons,
                     "Photons: POV-Ray's PhotonCount, lenslab's --caustic-photons")
-        ->capture_default_str()->check(CLI::TypeValidator<int64_t>())
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int64_t>())
         ->check(CLI::Range(int64_t{1}, int64_t{1} << 32));
     cmd->add_option("--radius", args->radius, "Gather radius of both")
-        ->capture_default_str()->check(CLI::PositiveNumber);
-    cmd->add_option("--gather-max", args->gather_max,
-                    "Most photons per estimate: POV-Ray's GatherMax, lenslab's --max-photons-per-estimate")
-        ->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1000000));
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
+    cmd->add_option(
+           "--gather-max", args->gather_max,
+           "Most photons per estimate: POV-Ray's GatherMax, lenslab's --max-photons-per-estimate")
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, 1000000));
     cmd->add_option("--repeats", args->repeats, "Runs of each (the median wall time is kept)")
-        ->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 100));
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, 100));
     cmd->add_option("--threads", args->threads, "Render threads of both")
-        ->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, 1024));
     cmd->add_option("--width", args->width, "Image width")
-        ->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(16, kMaxImageSide));
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(16, kMaxImageSide));
     cmd->add_option("--height", args->height, "Image height")
-        ->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(16, kMaxImageSide));
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(16, kMaxImageSide));
     return [args] {
         try {
             return run_bench(*args);

@@ -41,7 +41,9 @@ ChildResult run_child(const std::vector<std::string>& argv, const std::filesyste
     }
     int status = 0;
     while (waitpid(pid, &status, 0) < 0) {
-        if (errno != EINTR) throw std::runtime_error(std::string("waitpid failed: ") + std::strerror(errno));
+        if (errno != EINTR) {
+            throw std::runtime_error(std::string("waitpid failed: ") + std::strerror(errno));
+        }
     }
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.exited = WIFEXITED(status);
@@ -75,8 +77,11 @@ std::string shell_command_line(const std::vector<std::string>& argv) {
     std::string line;
     for (const std::string& a : argv) {
         if (!line.empty()) line += ' ';
-        const bool plain = !a.empty() && a.find_first_not_of(
-            "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-+=./,:@%") == std::string::npos;
+        const bool plain =
+            !a.empty() &&
+            a.find_first_not_of(
+                "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-+=./,:@%") ==
+                std::string::npos;
         if (plain) {
             line += a;
             continue;

@@ -9,10 +9,10 @@
 namespace lenslab::cli {
 
 struct ChildResult {
-    bool exited = false;   // false: killed by a signal, or it could not be started
-    int exit_code = -1;    // when exited
-    double seconds = 0;    // wall time from fork to the end of waitpid
-    std::string output;    // stdout and stderr together, in the order written
+    bool exited = false;  // false: killed by a signal, or it could not be started
+    int exit_code = -1;   // when exited
+    double seconds = 0;   // wall time from fork to the end of waitpid
+    std::string output;   // stdout and stderr together, in the order written
 };
 
 // Runs argv[0] (a path, not looked up on PATH) with `argv`, in folder `workdir`, stdin from
