@@ -269,8 +269,8 @@ int run_bench(const PovrayBenchArgs& a) {
     }
     if (!is_executable_file(povray)) {
         throw BenchError("--povray " + povray +
-                         ": no such executable file; install POV-Ray with "
-                         "apt-get install povray");
+                         ": no such executable file (install POV-Ray with "
+                         "apt-get install povray)");
     }
     check_file(a.pov, "--pov");
     check_file(a.scene, "--scene");

@@ -237,7 +237,7 @@ set(bench_povray_missing ${LENSLAB_CLI_OUT}/bench_povray_missing)
 lenslab_cli_test(NAME bench.povray.missing_executable
     ARGS bench povray --povray /nonexistent/povray -o ${bench_povray_missing}
     CHECKS -DEXPECT_EXIT=1
-           "-DSTDERR_LINE=lenslab: error: --povray /nonexistent/povray: no such executable file; install POV-Ray with apt-get install povray"
+           "-DSTDERR_LINE=lenslab: error: --povray /nonexistent/povray: no such executable file (install POV-Ray with apt-get install povray)"
            -DOUTPUT=${bench_povray_missing}/povray.md -DOUTPUT_CREATED=OFF)
 lenslab_cli_test(NAME bench.povray.not_on_path
     ARGS bench povray -o ${bench_povray_missing}
