@@ -241,7 +241,8 @@ std::string markdown(const PovrayBenchArgs& a, const Side& pov, const Side& ll,
     md << ".\n\nSettings: " << a.width << "x" << a.height << ", 1 sample per pixel, " << a.threads
        << " threads, " << grouped(a.photons) << " photons requested, gather radius " << a.radius
        << ", at most " << a.gather_max << " photons per estimate.\n\nCommands (run alternately, "
-       << a.repeats << " times each, in the output folder):\n\n```\n"
+       << a.repeats << (a.repeats == 1 ? " run" : " runs")
+       << " of each, in the output folder):\n\n```\n"
        << shell_command_line(pov.command) << "\n"
        << shell_command_line(ll.command) << "\n```\n\n";
     std::string cpu = first_line_matching("/proc/cpuinfo", "model name");
