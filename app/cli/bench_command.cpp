@@ -206,9 +206,13 @@ Action add_bench_command(CLI::App& app) {
     sppm->add_option("--region", conv->region, "Also measure the error in the pixels X0,Y0,X1,Y1 (a caustic, say)")
         ->delimiter(',')->expected(4)->check(CLI::Range(0, 16384));
 
-    // Both subcommands share the one action; CLI11 says which was chosen.
-    return [args, conv, sppm] {
+    const Action povray = add_bench_povray_command(*bench);
+    CLI::App* povray_cmd = bench->get_subcommand("povray");
+
+    // The subcommands share the one action; CLI11 says which was chosen.
+    return [args, conv, sppm, povray, povray_cmd] {
         if (sppm->parsed()) return run_convergence_bench(*conv);
+        if (povray_cmd->parsed()) return povray();
         return run(*args);
     };
 }

@@ -247,3 +247,29 @@ add_test(NAME cli.render.interrupt
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/interrupt_render.sh $<TARGET_FILE:lenslab> ${LENSLAB_CLI_OUT}/interrupt
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.render.interrupt PROPERTIES TIMEOUT 120 LABELS cli)
+
+# `bench povray` runs POV-Ray beside lenslab. Without POV-Ray: one line that says how to
+# install it, exit 1, nothing written.
+set(bench_povray_missing ${LENSLAB_CLI_OUT}/bench_povray_missing)
+lenslab_cli_test(NAME bench.povray.missing_executable
+    ARGS bench povray --povray /nonexistent/povray -o ${bench_povray_missing}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: --povray /nonexistent/povray: no such executable file (install POV-Ray with apt-get install povray)"
+           -DOUTPUT=${bench_povray_missing}/povray.md -DOUTPUT_CREATED=OFF)
+lenslab_cli_test(NAME bench.povray.not_on_path
+    ARGS bench povray -o ${bench_povray_missing}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: POV-Ray is not installed (no 'povray' on PATH): install it with apt-get install povray, or give its path with --povray"
+           -DOUTPUT=${bench_povray_missing}/povray.md -DOUTPUT_CREATED=OFF)
+set_tests_properties(cli.bench.povray.not_on_path PROPERTIES ENVIRONMENT "PATH=/nonexistent")
+# A small real run where POV-Ray is installed (CI does not install it: the test is then
+# disabled, and shows as "Not Run").
+find_program(LENSLAB_POVRAY povray)
+set(bench_povray_dir ${LENSLAB_CLI_OUT}/bench_povray)
+lenslab_cli_test(NAME bench.povray.small_run
+    ARGS bench povray -o ${bench_povray_dir} --width 120 --height 120 --photons 20000 --repeats 1
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=caustic photons stored"
+           -DOUTPUT=${bench_povray_dir}/caustics_side_by_side.png -DOUTPUT_CREATED=ON)
+if(NOT LENSLAB_POVRAY)
+    set_tests_properties(cli.bench.povray.small_run PROPERTIES DISABLED ON)
+endif()
