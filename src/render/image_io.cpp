@@ -32,6 +32,9 @@ void write_png(const Image8& img, const std::string& path) {
     image.width = static_cast<png_uint_32>(img.width);
     image.height = static_cast<png_uint_32>(img.height);
     image.format = PNG_FORMAT_RGB;
+    // libpng's default compression took 0.1 s for a 900x900 render, longer than rendering
+    // it without photons; the fast setting writes a file about a fifth larger in a fraction.
+    image.flags = PNG_IMAGE_FLAG_FAST;
     if (!png_image_write_to_file(&image, path.c_str(), 0, img.rgb.data(), 0, nullptr)) {
         throw ImageError("cannot write PNG '" + path + "': " + image.message);
     }
