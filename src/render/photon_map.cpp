@@ -25,19 +25,10 @@ const char* photon_filter_name(PhotonFilter f) {
     return "cone";
 }
 
-PhotonMap::PhotonMap(std::vector<Photon> photons) : m_storage(std::move(photons)) {
-    // Direct photons first, then caustic ones, then the empty slots; std::partition is
-    // deterministic, so the maps are the same for any thread count.
-    auto first_caustic = std::partition(m_storage.begin(), m_storage.end(),
-                                        [](const Photon& p) { return p.kind == PhotonKind::Direct; });
-    auto first_empty = std::partition(first_caustic, m_storage.end(),
-                                      [](const Photon& p) { return p.kind == PhotonKind::Caustic; });
-    const size_t n_direct = static_cast<size_t>(first_caustic - m_storage.begin());
-    m_storage.erase(first_empty, m_storage.end());
-    m_storage.shrink_to_fit();
+PhotonMap::PhotonMap(std::vector<Photon> photons, size_t direct) : m_storage(std::move(photons)) {
     Photon* base = m_storage.data();
-    tbb::parallel_invoke([&] { m_direct = PhotonKdTree(base, n_direct); },
-                         [&] { m_caustic = PhotonKdTree(base + n_direct, m_storage.size() - n_direct); });
+    tbb::parallel_invoke([&] { m_direct = PhotonKdTree(base, direct); },
+                         [&] { m_caustic = PhotonKdTree(base + direct, m_storage.size() - direct); });
 }
 
 Rgb PhotonMap::irradiance(const PhotonKdTree& map, const Vec3& x, const Vec3& n,

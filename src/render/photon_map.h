@@ -25,8 +25,9 @@ struct GatherSettings {
 class PhotonMap {
 public:
     PhotonMap() = default;
-    // Takes the photons (kind None entries are dropped) and builds both kd-trees.
-    explicit PhotonMap(std::vector<Photon> photons);
+    // Takes the photons, the `direct` ones first and then the caustic ones, and builds both
+    // kd-trees.
+    PhotonMap(std::vector<Photon> photons, size_t direct);
     PhotonMap(PhotonMap&&) = default;
     PhotonMap& operator=(PhotonMap&&) = default;
 

@@ -76,13 +76,15 @@ Photon make_photon(const Vec3& p, const Rgb& power, const Vec3& towards, PhotonK
     return ph;
 }
 
-// One photon through the scene. `store` receives the photons it leaves on diffuse surfaces;
+// One photon through the scene. The photons it leaves on diffuse surfaces go to the direct
+// or the caustic list (none when they are null);
 // `on_arrival`, if given, sees it at every surface before the material acts.
 class PhotonWalk {
 public:
     PhotonWalk(const Scene& scene, const PhotonPlan& plan, int max_depth, const PhotonArrivalFn* on_arrival,
-               std::vector<Photon>* store)
-        : m_scene(scene), m_plan(plan), m_max_depth(max_depth), m_on_arrival(on_arrival), m_store(store) {}
+               std::vector<Photon>* direct = nullptr, std::vector<Photon>* caustic = nullptr)
+        : m_scene(scene), m_plan(plan), m_max_depth(max_depth), m_on_arrival(on_arrival), m_direct(direct),
+          m_caustic(caustic) {}
 
     // Traces photon `p` with its own random stream `rng`.
     void run(const PhotonPlan::Photon& p, const LightSpectrum& ls, Rng& rng) {
@@ -120,9 +122,10 @@ private:
     }
 
     void store(const Interaction& it, const Rgb& power, const Vec3& direction, int depth) {
-        if (m_store) {
-            m_store->push_back(make_photon(it.point(), power, -direction,
-                                           depth == 0 ? PhotonKind::Direct : PhotonKind::Caustic));
+        std::vector<Photon>* map = depth == 0 ? m_direct : m_caustic;
+        if (map) {
+            map->push_back(make_photon(it.point(), power, -direction,
+                                       depth == 0 ? PhotonKind::Direct : PhotonKind::Caustic));
         }
     }
 
@@ -188,7 +191,8 @@ private:
     int m_max_depth;
     Rng* m_rng = nullptr;
     const PhotonArrivalFn* m_on_arrival;
-    std::vector<Photon>* m_store;
+    std::vector<Photon>* m_direct;   // where photons go, or nullptr (a detector's walk)
+    std::vector<Photon>* m_caustic;
     int m_light = 0;
     bool m_aimed = false;
     double m_initial_scale = 1.0;  // the photon's share as it left the light
@@ -241,15 +245,18 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
 
     const std::vector<LightSpectrum> spectra = light_spectra(scene);
     const int64_t chunks = (plan.total() + kChunk - 1) / kChunk;
-    std::vector<std::vector<Photon>> found(static_cast<size_t>(chunks));
+    // Per chunk, the direct photons and the caustic ones apart: the maps are then two runs.
+    std::vector<std::vector<Photon>> found(2 * static_cast<size_t>(chunks));
     tbb::parallel_for(tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
         for (int64_t chunk = r.begin(); chunk != r.end(); ++chunk) {
             if (control.cancelled()) return;
-            std::vector<Photon>& out = found[static_cast<size_t>(chunk)];
+            std::vector<Photon>& direct = found[static_cast<size_t>(chunk)];
+            std::vector<Photon>& caustic = found[static_cast<size_t>(chunks + chunk)];
             const int64_t first = chunk * kChunk, last = std::min(plan.total(), first + kChunk);
             // Room for the split photons too: growing a chunk would copy it.
-            out.reserve(static_cast<size_t>(2 * (last - first)));
-            PhotonWalk walk(scene, plan, settings.max_depth, nullptr, &out);
+            direct.reserve(static_cast<size_t>(last - first));
+            caustic.reserve(static_cast<size_t>(2 * (last - first)));
+            PhotonWalk walk(scene, plan, settings.max_depth, nullptr, &direct, &caustic);
             for (int64_t i = first; i < last; ++i) {
                 Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(i));
                 const PhotonPlan::Photon p = plan.start(scene, i, rng);
@@ -257,7 +264,8 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
             }
         }
     });
-    // Concatenated in photon order (the same maps for any thread count), chunks in parallel.
+    // Concatenated in photon order, direct then caustic (the same maps for any thread
+    // count), chunks in parallel.
     std::vector<size_t> offset(found.size() + 1, 0);
     for (size_t c = 0; c < found.size(); ++c) offset[c + 1] = offset[c] + found[c].size();
     std::vector<Photon> photons(offset.back());
@@ -266,7 +274,7 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
         std::vector<Photon>().swap(found[c]);
     });
     const auto t1 = std::chrono::steady_clock::now();
-    PhotonMap map(std::move(photons));
+    PhotonMap map(std::move(photons), offset[static_cast<size_t>(chunks)]);
     const auto t2 = std::chrono::steady_clock::now();
     if (stats) {
         stats->emitted = plan.total();
@@ -286,7 +294,7 @@ void trace_photon_path(const Scene& scene, const PhotonTracingSettings& settings
     // stored RGB power, which nothing reads here.
     Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(index));
     const PhotonPlan::Photon p = plan.start(scene, index, rng);
-    PhotonWalk(scene, plan, settings.max_depth, &on_arrival, nullptr).run(p, LightSpectrum{}, rng);
+    PhotonWalk(scene, plan, settings.max_depth, &on_arrival).run(p, LightSpectrum{}, rng);
 }
 
 }  // namespace lenslab
