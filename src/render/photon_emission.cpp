@@ -3,7 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math/halton.h"
+
 namespace lenslab {
+
+namespace {
+
+// Streams of the Halton rotations, apart from the photons' own (2^62 + photon index).
+constexpr uint64_t kRotationStreamBase = (uint64_t{1} << 62) - (uint64_t{1} << 20);
+
+}  // namespace
 
 int photon_light_count(const Scene& scene) { return static_cast<int>(scene.lights().size()); }
 
@@ -32,7 +41,8 @@ std::vector<int64_t> photons_by_power(const Scene& scene, int64_t per_light) {
     return counts;
 }
 
-PhotonPlan::PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t aimed_per_light, bool aim) {
+PhotonPlan::PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t aimed_per_light, bool aim,
+                       uint64_t seed) {
     const bool aiming = aim && !scene.photon_targets().empty() && aimed_per_light > 0;
     for (const LightPtr& l : scene.lights()) {
         m_light_aims.push_back(aiming && l->worth_aiming(scene.photon_targets()));
@@ -44,7 +54,10 @@ PhotonPlan::PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t ai
             photons_by_power(scene, stream == 0 ? emitted_per_light : aimed_per_light);
         for (size_t l = 0; l < counts.size(); ++l) {
             if (counts[l] == 0 || (stream == 1 && !m_light_aims[l])) continue;
-            m_ranges.push_back({m_total, counts[l], static_cast<int>(l), stream == 1});
+            Range r{m_total, counts[l], static_cast<int>(l), stream == 1, {}};
+            Rng rotation(seed, kRotationStreamBase + l);
+            for (double& x : r.rotation) x = rotation.uniform();
+            m_ranges.push_back(r);
             m_total += counts[l];
             m_stream_total[stream] += counts[l];
         }
@@ -57,8 +70,11 @@ PhotonPlan::Photon PhotonPlan::start(const Scene& scene, int64_t index, Rng& rng
                                      [](int64_t i, const Range& r) { return i < r.first; });
     const Range& r = *(it - 1);
     const Light& light = *scene.lights()[static_cast<size_t>(r.light)];
+    // Aimed photons from consecutive Halton points: they spread evenly over the caustic.
     Photon p{r.light, r.aimed,
-             r.aimed ? light.sample_le_towards(scene.photon_targets(), rng) : light.sample_le(rng)};
+             r.aimed ? light.sample_le_towards(scene.photon_targets(),
+                                               halton_point(static_cast<uint64_t>(index - r.first), r.rotation))
+                     : light.sample_le(rng)};
     p.start.scale /= static_cast<double>(r.count);
     return p;
 }

@@ -28,8 +28,10 @@ const Spectrum& emitted_spectrum(const Scene& scene, int light);
 
 class PhotonPlan {
 public:
-    // `emitted_per_light` and `aimed_per_light` photons per light on average in each stream.
-    PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t aimed_per_light, bool aim);
+    // `emitted_per_light` and `aimed_per_light` photons per light on average in each stream;
+    // `seed` rotates the stratified points aimed photons are drawn from (a new seed, a new
+    // set of photons).
+    PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t aimed_per_light, bool aim, uint64_t seed);
 
     // All photons of both streams; photon `index` is in [0, total()).
     int64_t total() const { return m_total; }
@@ -55,6 +57,7 @@ private:
         int64_t first, count;
         int light;
         bool aimed;
+        AimSample rotation;  // of the Halton points its aimed photons take
     };
     std::vector<Range> m_ranges;  // in photon order: emitted stream light by light, then aimed
     std::vector<char> m_light_aims;  // per light: it sends an aimed stream

@@ -201,7 +201,8 @@ private:
 }  // namespace
 
 PhotonPlan photon_plan(const Scene& scene, const PhotonTracingSettings& settings) {
-    return PhotonPlan(scene, settings.photons_per_light, settings.caustic_photons_per_light, settings.aim);
+    return PhotonPlan(scene, settings.photons_per_light, settings.caustic_photons_per_light, settings.aim,
+                      settings.seed);
 }
 
 uint64_t photon_storage_bytes(const Scene& scene, const PhotonTracingSettings& settings) {

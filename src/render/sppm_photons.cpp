@@ -112,7 +112,7 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, const PhotonPlan
 }  // namespace
 
 PhotonPlan photon_pass_plan(const Scene& scene, const PhotonPassSettings& s) {
-    return PhotonPlan(scene, s.photons_per_light, s.caustic_photons_per_light, s.aim);
+    return PhotonPlan(scene, s.photons_per_light, s.caustic_photons_per_light, s.aim, s.seed);
 }
 
 uint64_t photon_pass_bytes(const Scene& scene, const PhotonPassSettings& s) {

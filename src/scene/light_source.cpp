@@ -26,8 +26,8 @@ public:
         return {{m_position, sample_uniform_sphere(u1, u2)}, &spectrum(), 1.0};
     }
 
-    PhotonStart sample_le_towards(const PhotonTargets& targets, Rng& rng) const override {
-        const double u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
+    PhotonStart sample_le_towards(const PhotonTargets& targets, const AimSample& u) const override {
+        const double u0 = u[0], u1 = u[1], u2 = u[2];
         Vec3 dir;
         double pdf;
         if (!targets.sample_direction(m_position, u0, u1, u2, 4.0 * kPi, dir, pdf)) {
@@ -70,8 +70,8 @@ public:
         return {{point_on_disc(u1, u2), m_direction}, &spectrum(), 1.0};
     }
 
-    PhotonStart sample_le_towards(const PhotonTargets& targets, Rng& rng) const override {
-        const double u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
+    PhotonStart sample_le_towards(const PhotonTargets& targets, const AimSample& u) const override {
+        const double u0 = u[0], u1 = u[1], u2 = u[2];
         const double area = kPi * m_radius * m_radius;
         Vec3 p;
         double pdf;
@@ -127,10 +127,10 @@ public:
         return {{surface_point(normal), dir}, &spectrum(), kPi * area()};
     }
 
-    PhotonStart sample_le_towards(const PhotonTargets& targets, Rng& rng) const override {
-        const Vec3 normal = sample_uniform_sphere(rng.uniform(), rng.uniform());
+    PhotonStart sample_le_towards(const PhotonTargets& targets, const AimSample& u) const override {
+        const Vec3 normal = sample_uniform_sphere(u[3], u[4]);
         const Vec3 from = surface_point(normal);
-        const double u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
+        const double u0 = u[0], u1 = u[1], u2 = u[2];
         Vec3 dir;
         double pdf;
         // Cosine sampling has density cos / pi <= 1 / pi: aiming pays where the cones

@@ -8,6 +8,7 @@
 // and its spectral radiance for emitting spheres; a photon carries `scale` times it, and a
 // light sample's irradiance is `factor` times it.
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -17,6 +18,9 @@
 #include "scene/photon_targets.h"
 
 namespace lenslab {
+
+// The numbers an aimed photon is drawn from.
+using AimSample = std::array<double, 5>;
 
 struct PhotonStart {
     Ray ray;
@@ -46,8 +50,9 @@ public:
     // A photon of the whole emission.
     virtual PhotonStart sample_le(Rng& rng) const = 0;
     // A photon of the part of the emission that can reach `targets` first (photon_targets.h);
-    // the light's own sampling where aiming would not be denser.
-    virtual PhotonStart sample_le_towards(const PhotonTargets& targets, Rng& rng) const = 0;
+    // the light's own sampling where aiming would not be denser. `u`: uniform numbers in
+    // [0, 1) (a point of a stratified sequence: math/halton.h).
+    virtual PhotonStart sample_le_towards(const PhotonTargets& targets, const AimSample& u) const = 0;
     // Whether aiming at `targets` is denser than the light's own sampling, so that an aimed
     // stream is worth sending (photon_emission.h); false when the targets fill its emission.
     virtual bool worth_aiming(const PhotonTargets& targets) const = 0;
