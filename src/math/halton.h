@@ -26,8 +26,8 @@ inline double radical_inverse(int dimension, uint64_t index) {
 }
 
 // Point `index` of the sequence, each coordinate shifted by `rotation` modulo 1.
-inline std::array<double, kHaltonDimensions> halton_point(uint64_t index,
-                                                         const std::array<double, kHaltonDimensions>& rotation) {
+inline std::array<double, kHaltonDimensions> halton_point(
+    uint64_t index, const std::array<double, kHaltonDimensions>& rotation) {
     std::array<double, kHaltonDimensions> u{};
     for (int d = 0; d < kHaltonDimensions; ++d) {
         u[d] = radical_inverse(d, index) + rotation[d];

@@ -36,13 +36,14 @@ std::vector<int64_t> photons_by_power(const Scene& scene, int64_t per_light) {
     std::vector<int64_t> counts;
     const double budget = static_cast<double>(per_light) * n;
     for (const double share : shares) {
-        counts.push_back(per_light <= 0 ? 0 : std::max<int64_t>(1, std::llround(budget * share / sum)));
+        counts.push_back(per_light <= 0 ? 0
+                                        : std::max<int64_t>(1, std::llround(budget * share / sum)));
     }
     return counts;
 }
 
-PhotonPlan::PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t aimed_per_light, bool aim,
-                       uint64_t seed) {
+PhotonPlan::PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t aimed_per_light,
+                       bool aim, uint64_t seed) {
     const bool aiming = aim && !scene.photon_targets().empty() && aimed_per_light > 0;
     for (const LightPtr& l : scene.lights()) {
         m_light_aims.push_back(aiming && l->worth_aiming(scene.photon_targets()));
@@ -72,8 +73,9 @@ PhotonPlan::Photon PhotonPlan::start(const Scene& scene, int64_t index, Rng& rng
     const Light& light = *scene.lights()[static_cast<size_t>(r.light)];
     // Aimed photons from consecutive Halton points: they spread evenly over the caustic.
     Photon p{r.light, r.aimed,
-             r.aimed ? light.sample_le_towards(scene.photon_targets(),
-                                               halton_point(static_cast<uint64_t>(index - r.first), r.rotation))
+             r.aimed ? light.sample_le_towards(
+                           scene.photon_targets(),
+                           halton_point(static_cast<uint64_t>(index - r.first), r.rotation))
                      : light.sample_le(rng)};
     p.start.scale /= static_cast<double>(r.count);
     return p;

@@ -31,7 +31,8 @@ public:
     // `emitted_per_light` and `aimed_per_light` photons per light on average in each stream;
     // `seed` rotates the stratified points aimed photons are drawn from (a new seed, a new
     // set of photons).
-    PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t aimed_per_light, bool aim, uint64_t seed);
+    PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t aimed_per_light, bool aim,
+               uint64_t seed);
 
     // All photons of both streams; photon `index` is in [0, total()).
     int64_t total() const { return m_total; }
@@ -59,7 +60,7 @@ private:
         bool aimed;
         AimSample rotation;  // of the Halton points its aimed photons take
     };
-    std::vector<Range> m_ranges;  // in photon order: emitted stream light by light, then aimed
+    std::vector<Range> m_ranges;     // in photon order: emitted stream light by light, then aimed
     std::vector<char> m_light_aims;  // per light: it sends an aimed stream
     int64_t m_total = 0;
     int64_t m_stream_total[2] = {0, 0};

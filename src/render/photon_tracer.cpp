@@ -1,5 +1,9 @@
 #include "render/photon_tracer.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -7,10 +11,6 @@
 #include <limits>
 #include <sstream>
 #include <string>
-#include <unistd.h>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "math/rng.h"
 #include "render/photon_emission.h"
@@ -55,12 +55,14 @@ struct LightSpectrum {
 
 std::vector<LightSpectrum> light_spectra(const Scene& scene) {
     std::vector<LightSpectrum> out;
-    for (const LightPtr& l : scene.lights()) out.push_back({spectrum_to_rgb(l->spectrum()), radiant_power(l->spectrum())});
+    for (const LightPtr& l : scene.lights())
+        out.push_back({spectrum_to_rgb(l->spectrum()), radiant_power(l->spectrum())});
     return out;
 }
 
 EmittedPhoton emitted(const PhotonStart& start, const LightSpectrum& ls) {
-    return EmittedPhoton{ls.colour * start.scale, start.spectrum, start.scale, ls.radiant_power * start.scale};
+    return EmittedPhoton{ls.colour * start.scale, start.spectrum, start.scale,
+                         ls.radiant_power * start.scale};
 }
 
 Photon make_photon(const Vec3& p, const Rgb& power, const Vec3& towards, PhotonKind kind) {
@@ -81,9 +83,14 @@ Photon make_photon(const Vec3& p, const Rgb& power, const Vec3& towards, PhotonK
 // `on_arrival`, if given, sees it at every surface before the material acts.
 class PhotonWalk {
 public:
-    PhotonWalk(const Scene& scene, const PhotonPlan& plan, int max_depth, const PhotonArrivalFn* on_arrival,
-               std::vector<Photon>* direct = nullptr, std::vector<Photon>* caustic = nullptr)
-        : m_scene(scene), m_plan(plan), m_max_depth(max_depth), m_on_arrival(on_arrival), m_direct(direct),
+    PhotonWalk(const Scene& scene, const PhotonPlan& plan, int max_depth,
+               const PhotonArrivalFn* on_arrival, std::vector<Photon>* direct = nullptr,
+               std::vector<Photon>* caustic = nullptr)
+        : m_scene(scene),
+          m_plan(plan),
+          m_max_depth(max_depth),
+          m_on_arrival(on_arrival),
+          m_direct(direct),
           m_caustic(caustic) {}
 
     // Traces photon `p` with its own random stream `rng`.
@@ -104,11 +111,12 @@ private:
     // The next surface, or false; the first surface must be in this stream's part of the
     // light's emission (photon_emission.h).
     bool arrive(const Ray& ray, EmittedPhoton& e, int depth, Interaction& it) {
-        if (!next_interaction(m_scene, ray, e.lambda_nm > 0 ? e.lambda_nm : kLineD, it)) return false;
+        if (!next_interaction(m_scene, ray, e.lambda_nm > 0 ? e.lambda_nm : kLineD, it))
+            return false;
         if (depth == 0 && !m_plan.counts(m_scene, m_light, m_aimed, it.hit.object)) return false;
         if (m_on_arrival) {
-            (*m_on_arrival)(PhotonArrival{&it, ray.direction, m_light, m_aimed, depth, e.spectrum, e.scale,
-                                          e.lambda_nm});
+            (*m_on_arrival)(PhotonArrival{&it, ray.direction, m_light, m_aimed, depth, e.spectrum,
+                                          e.scale, e.lambda_nm});
         }
         if (e.lambda_nm == 0 && it.scattering.dispersive) {
             e.pick_wavelength(*m_rng);
@@ -191,7 +199,7 @@ private:
     int m_max_depth;
     Rng* m_rng = nullptr;
     const PhotonArrivalFn* m_on_arrival;
-    std::vector<Photon>* m_direct;   // where photons go, or nullptr (a detector's walk)
+    std::vector<Photon>* m_direct;  // where photons go, or nullptr (a detector's walk)
     std::vector<Photon>* m_caustic;
     int m_light = 0;
     bool m_aimed = false;
@@ -201,8 +209,8 @@ private:
 }  // namespace
 
 PhotonPlan photon_plan(const Scene& scene, const PhotonTracingSettings& settings) {
-    return PhotonPlan(scene, settings.photons_per_light, settings.caustic_photons_per_light, settings.aim,
-                      settings.seed);
+    return PhotonPlan(scene, settings.photons_per_light, settings.caustic_photons_per_light,
+                      settings.aim, settings.seed);
 }
 
 uint64_t photon_storage_bytes(const Scene& scene, const PhotonTracingSettings& settings) {
@@ -210,9 +218,9 @@ uint64_t photon_storage_bytes(const Scene& scene, const PhotonTracingSettings& s
     // splits, and through glass leaves about one photon and a share of another (kSplitFloor
     // bounds the branches): two slots each.
     const PhotonPlan plan = photon_plan(scene, settings);
-    const long double bytes =
-        (static_cast<long double>(plan.emitted_total()) + 2.0L * static_cast<long double>(plan.aimed_total())) *
-        sizeof(Photon);
+    const long double bytes = (static_cast<long double>(plan.emitted_total()) +
+                               2.0L * static_cast<long double>(plan.aimed_total())) *
+                              sizeof(Photon);
     return bytes > static_cast<long double>(std::numeric_limits<uint64_t>::max())
                ? std::numeric_limits<uint64_t>::max()
                : static_cast<uint64_t>(bytes);
@@ -226,7 +234,8 @@ uint64_t available_memory_bytes() {
         if (key == "MemAvailable:") return kib * 1024;
         meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
     }
-    return static_cast<uint64_t>(sysconf(_SC_PHYS_PAGES)) * static_cast<uint64_t>(sysconf(_SC_PAGE_SIZE));
+    return static_cast<uint64_t>(sysconf(_SC_PHYS_PAGES)) *
+           static_cast<uint64_t>(sysconf(_SC_PAGE_SIZE));
 }
 
 PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& settings,
@@ -248,30 +257,32 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
     const int64_t chunks = (plan.total() + kChunk - 1) / kChunk;
     // Per chunk, the direct photons and the caustic ones apart: the maps are then two runs.
     std::vector<std::vector<Photon>> found(2 * static_cast<size_t>(chunks));
-    tbb::parallel_for(tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
-        for (int64_t chunk = r.begin(); chunk != r.end(); ++chunk) {
-            if (control.cancelled()) return;
-            std::vector<Photon>& direct = found[static_cast<size_t>(chunk)];
-            std::vector<Photon>& caustic = found[static_cast<size_t>(chunks + chunk)];
-            const int64_t first = chunk * kChunk, last = std::min(plan.total(), first + kChunk);
-            // Room for the split photons too: growing a chunk would copy it.
-            direct.reserve(static_cast<size_t>(last - first));
-            caustic.reserve(static_cast<size_t>(2 * (last - first)));
-            PhotonWalk walk(scene, plan, settings.max_depth, nullptr, &direct, &caustic);
-            for (int64_t i = first; i < last; ++i) {
-                Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(i));
-                const PhotonPlan::Photon p = plan.start(scene, i, rng);
-                walk.run(p, spectra[static_cast<size_t>(p.light)], rng);
+    tbb::parallel_for(
+        tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
+            for (int64_t chunk = r.begin(); chunk != r.end(); ++chunk) {
+                if (control.cancelled()) return;
+                std::vector<Photon>& direct = found[static_cast<size_t>(chunk)];
+                std::vector<Photon>& caustic = found[static_cast<size_t>(chunks + chunk)];
+                const int64_t first = chunk * kChunk, last = std::min(plan.total(), first + kChunk);
+                // Room for the split photons too: growing a chunk would copy it.
+                direct.reserve(static_cast<size_t>(last - first));
+                caustic.reserve(static_cast<size_t>(2 * (last - first)));
+                PhotonWalk walk(scene, plan, settings.max_depth, nullptr, &direct, &caustic);
+                for (int64_t i = first; i < last; ++i) {
+                    Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(i));
+                    const PhotonPlan::Photon p = plan.start(scene, i, rng);
+                    walk.run(p, spectra[static_cast<size_t>(p.light)], rng);
+                }
             }
-        }
-    });
+        });
     // Concatenated in photon order, direct then caustic (the same maps for any thread
     // count), chunks in parallel.
     std::vector<size_t> offset(found.size() + 1, 0);
     for (size_t c = 0; c < found.size(); ++c) offset[c + 1] = offset[c] + found[c].size();
     std::vector<Photon> photons(offset.back());
     tbb::parallel_for(size_t{0}, found.size(), [&](size_t c) {
-        std::copy(found[c].begin(), found[c].end(), photons.begin() + static_cast<ptrdiff_t>(offset[c]));
+        std::copy(found[c].begin(), found[c].end(),
+                  photons.begin() + static_cast<ptrdiff_t>(offset[c]));
         std::vector<Photon>().swap(found[c]);
     });
     const auto t1 = std::chrono::steady_clock::now();
@@ -289,8 +300,8 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
     return map;
 }
 
-void trace_photon_path(const Scene& scene, const PhotonTracingSettings& settings, const PhotonPlan& plan,
-                       int64_t index, const PhotonArrivalFn& on_arrival) {
+void trace_photon_path(const Scene& scene, const PhotonTracingSettings& settings,
+                       const PhotonPlan& plan, int64_t index, const PhotonArrivalFn& on_arrival) {
     // The stream and the draws of trace_photons' photon `index`; the colour only feeds the
     // stored RGB power, which nothing reads here.
     Rng rng(settings.seed, kPhotonStreamBase + static_cast<uint64_t>(index));

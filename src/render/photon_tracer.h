@@ -23,10 +23,10 @@ namespace lenslab {
 
 struct PhotonTracingSettings {
     int64_t photons_per_light = 200000;  // emitted stream, per light on average
-    int max_depth = 8;   // specular bounces followed before a photon is dropped
+    int max_depth = 8;                   // specular bounces followed before a photon is dropped
     uint64_t seed = 1;
     int64_t caustic_photons_per_light = 0;  // aimed stream, per light on average (0: none)
-    bool aim = true;  // false: no aimed stream, whatever its count
+    bool aim = true;                        // false: no aimed stream, whatever its count
 };
 
 // Branches of an aimed photon weaker than this share of its power play Russian roulette
@@ -79,8 +79,8 @@ using PhotonArrivalFn = std::function<void(const PhotonArrival&)>;
 // gives it (the same random stream and choices) and calls `on_arrival` at every surface it
 // (or, aimed, each of its branches) reaches, where it counts; stores nothing.
 // Deterministic per (seed, index).
-void trace_photon_path(const Scene& scene, const PhotonTracingSettings& settings, const PhotonPlan& plan,
-                       int64_t index, const PhotonArrivalFn& on_arrival);
+void trace_photon_path(const Scene& scene, const PhotonTracingSettings& settings,
+                       const PhotonPlan& plan, int64_t index, const PhotonArrivalFn& on_arrival);
 
 // The photons `settings` ask for, in the streams photon_emission.h describes.
 PhotonPlan photon_plan(const Scene& scene, const PhotonTracingSettings& settings);

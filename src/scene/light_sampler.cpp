@@ -16,8 +16,9 @@ LightSampler::LightSampler(const std::vector<LightPtr>& lights) : m_lights(light
 }
 
 const Light& LightSampler::pick(double u, double& probability) const {
-    const size_t i = std::min(static_cast<size_t>(std::upper_bound(m_cdf.begin(), m_cdf.end(), u) - m_cdf.begin()),
-                              m_lights.size() - 1);
+    const size_t i = std::min(
+        static_cast<size_t>(std::upper_bound(m_cdf.begin(), m_cdf.end(), u) - m_cdf.begin()),
+        m_lights.size() - 1);
     probability = m_cdf[i] - (i > 0 ? m_cdf[i - 1] : 0.0);
     return *m_lights[i];
 }

@@ -86,7 +86,8 @@ public:
     bool sample_li(const Vec3& p, Rng&, LightSample& out) const override {
         const Vec3 v = p - m_origin;
         const double along = dot(v, m_direction);
-        if (along <= 0.0 || length_squared(v - m_direction * along) > m_radius * m_radius) return false;
+        if (along <= 0.0 || length_squared(v - m_direction * along) > m_radius * m_radius)
+            return false;
         out.wi = -m_direction;
         out.distance = along;
         out.factor = 1.0 / (kPi * m_radius * m_radius);
@@ -171,7 +172,9 @@ public:
 
 private:
     double area() const { return 4.0 * kPi * m_sphere->radius() * m_sphere->radius(); }
-    Vec3 surface_point(const Vec3& normal) const { return m_sphere->centre() + normal * m_sphere->radius(); }
+    Vec3 surface_point(const Vec3& normal) const {
+        return m_sphere->centre() + normal * m_sphere->radius();
+    }
 
     std::shared_ptr<const Sphere> m_sphere;
 };

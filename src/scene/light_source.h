@@ -32,8 +32,8 @@ struct PhotonStart {
 };
 
 struct LightSample {
-    Vec3 wi;                // unit, from the lit point towards the light
-    double distance = 0;    // to the light along wi: the shadow ray's length
+    Vec3 wi;              // unit, from the lit point towards the light
+    double distance = 0;  // to the light along wi: the shadow ray's length
     // Irradiance on a surface facing wi, per unit of spectrum(), divided by the sample's
     // probability: multiply by the cosine at the surface and the spectrum.
     double factor = 0;
@@ -52,7 +52,8 @@ public:
     // A photon of the part of the emission that can reach `targets` first (photon_targets.h);
     // the light's own sampling where aiming would not be denser. `u`: uniform numbers in
     // [0, 1) (a point of a stratified sequence: math/halton.h).
-    virtual PhotonStart sample_le_towards(const PhotonTargets& targets, const AimSample& u) const = 0;
+    virtual PhotonStart sample_le_towards(const PhotonTargets& targets,
+                                          const AimSample& u) const = 0;
     // Whether aiming at `targets` is denser than the light's own sampling, so that an aimed
     // stream is worth sending (photon_emission.h); false when the targets fill its emission.
     virtual bool worth_aiming(const PhotonTargets& targets) const = 0;

@@ -80,8 +80,9 @@ bool PhotonTargets::sample_direction(const Vec3& from, double u0, double u1, dou
     if (cones.empty() || total >= max_solid_angle) return false;
     const size_t chosen = pick(cones, u0, total, [](const Cone& c) { return c.solid_angle; });
     const Cone& c = cones[chosen];
-    dir = c.cos_max <= -1.0 ? sample_uniform_sphere(u1, u2)
-                            : Frame::from_axis(c.axis).to_world(sample_uniform_cone(u1, u2, c.cos_max));
+    dir = c.cos_max <= -1.0
+              ? sample_uniform_sphere(u1, u2)
+              : Frame::from_axis(c.axis).to_world(sample_uniform_cone(u1, u2, c.cos_max));
     int holding = 1;  // the chosen cone, whatever rounding says
     for (size_t i = 0; i < cones.size(); ++i) {
         if (i != chosen && dot(dir, cones[i].axis) >= cones[i].cos_max) ++holding;
@@ -113,7 +114,8 @@ bool PhotonTargets::sample_plane_point(const Vec3& origin, const Vec3& normal, d
     point = discs[chosen].centre + (f.u * x + f.v * y) * discs[chosen].radius;
     int holding = 1;
     for (size_t i = 0; i < discs.size(); ++i) {
-        if (i != chosen && length_squared(point - discs[i].centre) <= discs[i].radius * discs[i].radius) {
+        if (i != chosen &&
+            length_squared(point - discs[i].centre) <= discs[i].radius * discs[i].radius) {
             ++holding;
         }
     }

@@ -45,11 +45,15 @@ constexpr double kR = 100, kA = 10, kN = 1.5, kLightZ = -40, kDiscZ = 1, kDiscRa
 std::string scene_text() {
     std::ostringstream s;
     s << R"({"camera": {"position": [0, 0, -100], "look_at": [0, 0, 0]},
-        "objects": [{"type": "lens", "center": [0, 0, 0], "axis": [0, 0, 1], "curvature_radius": )" << kR
-      << R"(, "aperture_radius": )" << kA << R"(, "material": {"transparency": 1, "ior": )" << kN << R"(}},
-                    {"name": "disc", "type": "disc", "center": [0, 0, )" << kDiscZ << R"(], "normal": [0, 0, -1],
-                     "radius": )" << kDiscRadius << R"(, "material": {"color": 0}, "detector": true}],
-        "lights": [{"type": "point", "position": [0, 0, )" << kLightZ << R"(], "power": 1}]})";
+        "objects": [{"type": "lens", "center": [0, 0, 0], "axis": [0, 0, 1], "curvature_radius": )"
+      << kR << R"(, "aperture_radius": )" << kA << R"(, "material": {"transparency": 1, "ior": )"
+      << kN << R"(}},
+                    {"name": "disc", "type": "disc", "center": [0, 0, )"
+      << kDiscZ << R"(], "normal": [0, 0, -1],
+                     "radius": )"
+      << kDiscRadius << R"(, "material": {"color": 0}, "detector": true}],
+        "lights": [{"type": "point", "position": [0, 0, )"
+      << kLightZ << R"(], "power": 1}]})";
     return s.str();
 }
 
@@ -75,10 +79,11 @@ double expected_power() {
         const Vec3 inside = u * eta + n1 * (eta * cos1 - cos_t);
         const Vec3 p2 = p1 + inside * to_sphere(p1, inside, back_centre, kR, true);
         const double cos2 = dot(inside, (p2 - back_centre) / kR);
-        through += fresnel_t(cos1, 1, kN) * fresnel_t(cos2, kN, 1) * std::sin(theta) * (theta_lens / kSteps);
+        through += fresnel_t(cos1, 1, kN) * fresnel_t(cos2, kN, 1) * std::sin(theta) *
+                   (theta_lens / kSteps);
     }
     const double past = std::cos(theta_lens) - std::cos(theta_disc);  // solid angle / (2 pi)
-    return (past + through) / 2.0;  // P / (4 pi) * 2 pi (...)
+    return (past + through) / 2.0;                                    // P / (4 pi) * 2 pi (...)
 }
 
 TEST(AimedPhotons, DetectorBehindALensGetsTheSamePowerAsWithUniformPhotons) {
@@ -99,9 +104,12 @@ TEST(AimedPhotons, DetectorBehindALensGetsTheSamePowerAsWithUniformPhotons) {
         const DetectionResult a = measure_detectors(scene, aimed, control);
         ASSERT_EQ(a.photons_aimed, 200000);
         const double pu = u.detectors.at(0).total_power, pa = a.detectors.at(0).total_power;
-        std::printf("seed %llu: uniform %.5f W (%lld arrivals), aimed %.5f W (%lld arrivals), closed form %.5f W\n",
-                    static_cast<unsigned long long>(seed), pu, static_cast<long long>(u.detectors[0].arrivals), pa,
-                    static_cast<long long>(a.detectors[0].arrivals), expected);
+        std::printf(
+            "seed %llu: uniform %.5f W (%lld arrivals), aimed %.5f W (%lld arrivals), closed form "
+            "%.5f W\n",
+            static_cast<unsigned long long>(seed), pu,
+            static_cast<long long>(u.detectors[0].arrivals), pa,
+            static_cast<long long>(a.detectors[0].arrivals), expected);
         // Uniform: about 60 000 arrivals, 0.4% noise; aimed: the lens part at 0.1%.
         EXPECT_NEAR(pu, expected, 0.015 * expected);
         EXPECT_NEAR(pa, expected, 0.01 * expected);
@@ -118,11 +126,15 @@ TEST(AimedPhotons, TheLensPartAloneIsTheFresnelTransmissionOfWhatTheLensIntercep
     s.photons_per_light = 0;
     s.caustic_photons_per_light = 400000;
     const DetectionResult r = measure_detectors(scene, s, control);
-    const double past = (std::cos(std::atan(kA / -kLightZ)) - std::cos(std::atan(kDiscRadius / (kDiscZ - kLightZ)))) / 2;
+    const double past = (std::cos(std::atan(kA / -kLightZ)) -
+                         std::cos(std::atan(kDiscRadius / (kDiscZ - kLightZ)))) /
+                        2;
     const double expected = expected_power() - past;
     const double intercepted = (1 - std::cos(std::atan(kA / -kLightZ))) / 2;  // P Omega / (4 pi)
-    std::printf("through the lens: %.6f W of the %.6f W it intercepts (T = %.4f); expected %.6f W\n",
-                r.detectors.at(0).total_power, intercepted, r.detectors.at(0).total_power / intercepted, expected);
+    std::printf(
+        "through the lens: %.6f W of the %.6f W it intercepts (T = %.4f); expected %.6f W\n",
+        r.detectors.at(0).total_power, intercepted, r.detectors.at(0).total_power / intercepted,
+        expected);
     EXPECT_NEAR(r.detectors.at(0).total_power, expected, 0.005 * expected);
     // Normal incidence on both faces would give (1 - 0.04)^2 = 0.9216.
     EXPECT_NEAR(expected / intercepted, 0.9216, 0.005);

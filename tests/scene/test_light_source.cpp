@@ -21,7 +21,8 @@ Scene lights_scene(const std::string& lights) {
     return parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
         "materials": {"lamp": {"color": 0, "emission": {"intensity": 2}}},
         "objects": [{"type": "sphere", "center": [0, 3, 0], "radius": 0.5, "material": "lamp"}],
-        "lights": [)" + lights + "]}");
+        "lights": [)" + lights +
+                       "]}");
 }
 
 TEST(LightSource, PowerAndIrradianceMatchTheClosedForms) {
@@ -72,10 +73,12 @@ TEST(LightSource, PhotonsAreSharedByPower) {
     EXPECT_NEAR(counts[1], 3000 * 10 / total, 1);
     EXPECT_NEAR(counts[2], 3000 * 30 / total, 1);
     // So every photon carries about the same power.
-    EXPECT_NEAR(scene.lights()[1]->power() / counts[1], scene.lights()[2]->power() / counts[2], 1e-3);
+    EXPECT_NEAR(scene.lights()[1]->power() / counts[1], scene.lights()[2]->power() / counts[2],
+                1e-3);
 
     // A 1 W beam beside a 300 kW lamp still gets a quarter of an equal share.
-    const Scene lopsided = lights_scene(R"({"type": "point", "position": [0, 2, 0], "power": 300000},
+    const Scene lopsided =
+        lights_scene(R"({"type": "point", "position": [0, 2, 0], "power": 300000},
         {"type": "beam", "origin": [0, 0, -2], "direction": [0, 0, 1], "radius": 0.5, "power": 1})");
     const std::vector<int64_t> c = photons_by_power(lopsided, 1000);
     EXPECT_NEAR(c[2], 3000 * 0.25 / 3 / (1 + 0.25 / 3 + 0.25 / 3), 1);
@@ -84,8 +87,9 @@ TEST(LightSource, PhotonsAreSharedByPower) {
 TEST(LightSampler, AsksEveryLightOfASmallSceneAndPicksByPowerInALargeOne) {
     std::string lights;
     for (int i = 0; i < 12; ++i) {
-        lights += std::string(i ? ", " : "") + R"({"type": "point", "position": [0, 2, 0], "power": )" +
-                  std::to_string(i + 1) + "}";
+        lights += std::string(i ? ", " : "") +
+                  R"({"type": "point", "position": [0, 2, 0], "power": )" + std::to_string(i + 1) +
+                  "}";
     }
     const Scene many = lights_scene(lights);
     ASSERT_GT(many.lights().size(), LightSampler::kAskAllUpTo);
@@ -96,7 +100,8 @@ TEST(LightSampler, AsksEveryLightOfASmallSceneAndPicksByPowerInALargeOne) {
     for (const LightPtr& l : many.lights()) total += power[l.get()] = l->power();
     constexpr int kDraws = 20000;
     for (int i = 0; i < kDraws; ++i) {
-        many.light_sampler().for_each(rng, [&](const Light& l, double weight) { sum += power[&l] * weight; });
+        many.light_sampler().for_each(
+            rng, [&](const Light& l, double weight) { sum += power[&l] * weight; });
     }
     // Power sampling makes power x weight the same for every light: no variance at all.
     EXPECT_NEAR(sum / kDraws, total, 1e-9 * total);

@@ -28,7 +28,8 @@ TEST(PhotonTargets, ConeDensityIntegratesToTheUnionsSolidAngle) {
     for (int i = 0; i < kSamples; ++i) {
         Vec3 dir;
         double pdf;
-        ASSERT_TRUE(targets.sample_direction({0, 0, 0}, rng.uniform(), rng.uniform(), rng.uniform(), 4 * kPi, dir, pdf));
+        ASSERT_TRUE(targets.sample_direction({0, 0, 0}, rng.uniform(), rng.uniform(), rng.uniform(),
+                                             4 * kPi, dir, pdf));
         EXPECT_NEAR(length(dir), 1.0, 1e-12);
         sum_inverse += 1.0 / pdf;
     }
@@ -45,8 +46,8 @@ TEST(PhotonTargets, ConeDensityIntegratesToTheUnionsSolidAngle) {
         }
     }
     const double by_density = sum_inverse / kSamples, by_counting = 4 * kPi * inside / kSamples;
-    std::printf("union solid angle: %.5f sr by the sampler's density, %.5f sr by counting\n", by_density,
-                by_counting);
+    std::printf("union solid angle: %.5f sr by the sampler's density, %.5f sr by counting\n",
+                by_density, by_counting);
     EXPECT_NEAR(by_density, by_counting, 0.01 * by_counting);
 }
 
@@ -77,8 +78,8 @@ TEST(PhotonTargets, PlaneDensityIntegratesToTheUnionsArea) {
     for (int i = 0; i < kSamples; ++i) {
         Vec3 p;
         double pdf;
-        ASSERT_TRUE(targets.sample_plane_point({0, 0, 0}, {0, 0, 1}, rng.uniform(), rng.uniform(), rng.uniform(),
-                                               1e9, p, pdf));
+        ASSERT_TRUE(targets.sample_plane_point({0, 0, 0}, {0, 0, 1}, rng.uniform(), rng.uniform(),
+                                               rng.uniform(), 1e9, p, pdf));
         EXPECT_NEAR(p.z, 0.0, 1e-12);
         sum_inverse += 1.0 / pdf;
     }
@@ -86,9 +87,10 @@ TEST(PhotonTargets, PlaneDensityIntegratesToTheUnionsArea) {
     // r1^2 acos((d^2 + r1^2 - r2^2) / (2 d r1)) + r2^2 acos((d^2 + r2^2 - r1^2) / (2 d r2))
     //   - sqrt((-d + r1 + r2)(d + r1 - r2)(d - r1 + r2)(d + r1 + r2)) / 2.
     const double r1 = 1, r2 = 2, d = 2;
-    const double lens = r1 * r1 * std::acos((d * d + r1 * r1 - r2 * r2) / (2 * d * r1)) +
-                        r2 * r2 * std::acos((d * d + r2 * r2 - r1 * r1) / (2 * d * r2)) -
-                        0.5 * std::sqrt((-d + r1 + r2) * (d + r1 - r2) * (d - r1 + r2) * (d + r1 + r2));
+    const double lens =
+        r1 * r1 * std::acos((d * d + r1 * r1 - r2 * r2) / (2 * d * r1)) +
+        r2 * r2 * std::acos((d * d + r2 * r2 - r1 * r1) / (2 * d * r2)) -
+        0.5 * std::sqrt((-d + r1 + r2) * (d + r1 - r2) * (d - r1 + r2) * (d + r1 + r2));
     const double expected = kPi * (r1 * r1 + r2 * r2) - lens;
     EXPECT_NEAR(sum_inverse / kSamples, expected, 0.01 * expected);
 }
