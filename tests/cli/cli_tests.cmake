@@ -218,11 +218,12 @@ lenslab_cli_test(NAME render.caustic_photons
          --photons 2000 --caustic-photons 5000
     CHECKS -DEXPECT_EXIT=zero "-DSTDERR_CONTAINS=(5000 aimed at the glass and mirrors)" -DOUTPUT=${aimed_out}
            -DOUTPUT_CREATED=ON)
+set(uniform_out ${LENSLAB_CLI_OUT}/uniform.png)  # its own file: the tests run in parallel
 lenslab_cli_test(NAME render.aim_photons_off
-    ARGS render scenes/default.json --integrator photon_map -o ${aimed_out} --width 32 --height 24 --spp 1
+    ARGS render scenes/default.json --integrator photon_map -o ${uniform_out} --width 32 --height 24 --spp 1
          --photons 2000 --caustic-photons 5000 --aim-photons off
     CHECKS -DEXPECT_EXIT=zero "-DSTDERR_CONTAINS=photons: 2000 emitted (0 aimed at the glass and mirrors)"
-           -DOUTPUT=${aimed_out} -DOUTPUT_CREATED=ON)
+           -DOUTPUT=${uniform_out} -DOUTPUT_CREATED=ON)
 
 # Limits (docs/reliability.md): refused before any work, one line, nothing written.
 lenslab_cli_bad_scene(render_too_many_pixels
