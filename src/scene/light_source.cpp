@@ -19,7 +19,7 @@ class PointLightSource final : public Light {
 public:
     explicit PointLightSource(const PointLight& l) : Light(l.spectrum), m_position(l.position) {}
 
-    double power() const override { return radiant_watts(spectrum()); }
+    double power() const override { return spectrum_watts(); }
 
     PhotonStart sample_le(Rng& rng) const override {
         const double u1 = rng.uniform(), u2 = rng.uniform();
@@ -63,7 +63,7 @@ public:
     explicit BeamLightSource(const BeamLight& b)
         : Light(b.spectrum), m_origin(b.origin), m_direction(b.direction), m_radius(b.radius) {}
 
-    double power() const override { return radiant_watts(spectrum()); }
+    double power() const override { return spectrum_watts(); }
 
     PhotonStart sample_le(Rng& rng) const override {
         const double u1 = rng.uniform(), u2 = rng.uniform();
@@ -119,7 +119,7 @@ public:
     SphereLightSource(std::shared_ptr<const Sphere> sphere, SpectrumPtr radiance)
         : Light(std::move(radiance)), m_sphere(std::move(sphere)) {}
 
-    double power() const override { return kPi * area() * radiant_watts(spectrum()); }
+    double power() const override { return kPi * area() * spectrum_watts(); }
 
     PhotonStart sample_le(Rng& rng) const override {
         const Vec3 normal = sample_uniform_sphere(rng.uniform(), rng.uniform());

@@ -41,7 +41,8 @@ struct LightSample {
 
 class Light {
 public:
-    explicit Light(SpectrumPtr spectrum) : m_spectrum(std::move(spectrum)) {}
+    explicit Light(SpectrumPtr spectrum)
+        : m_spectrum(std::move(spectrum)), m_spectrum_watts(radiant_watts(*m_spectrum)) {}
     virtual ~Light() = default;
 
     const Spectrum& spectrum() const { return *m_spectrum; }
@@ -62,8 +63,14 @@ public:
     // One sample of sample_li is exact (a point or a beam), not an estimate.
     virtual bool is_delta() const = 0;
 
+protected:
+    // radiant_watts(spectrum()), integrated once: photon plans and the light sampler ask for
+    // the power of every light each time they are built (each sppm pass).
+    double spectrum_watts() const { return m_spectrum_watts; }
+
 private:
     SpectrumPtr m_spectrum;
+    double m_spectrum_watts;
 };
 
 using LightPtr = std::shared_ptr<const Light>;
