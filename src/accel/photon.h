@@ -1,6 +1,6 @@
 #pragma once
-// A photon as stored in a photon map: 32 bytes (PERFORMANCE.md asks for at most 32).
-// Position and power in float: bulk storage stays compact (DESIGN.md principles).
+// A photon as stored in a photon map: 32 bytes (docs/performance.md: the budget is 32).
+// Position and power in float: bulk storage stays compact; what is computed with them is double.
 
 #include <cmath>
 #include <cstdint>

@@ -1,6 +1,6 @@
 #pragma once
 // Deterministic random numbers: one PCG32 stream per pixel or photon index, so a render
-// is identical for a given seed whatever the thread count (STYLE.md rule 8).
+// is identical for a given seed whatever the thread count.
 
 #include <cstdint>
 

@@ -1,6 +1,7 @@
 #pragma once
 // Three-component double-precision vector: points, directions and normals.
-// Geometry and ray math stay in double precision (DESIGN.md principles).
+// Geometry and ray math stay in double precision: optical path
+// differences of a lens are tiny against its size, and float loses them.
 
 #include <algorithm>
 #include <cmath>

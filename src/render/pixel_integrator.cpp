@@ -55,7 +55,7 @@ bool PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& fil
                         const SampledWavelengths lambdas = SampledWavelengths::sample(u_lambda);
                         const Rgb l = radiance(camera.generate_ray(x + jx, y + jy), lambdas, rng);
                         // A non-finite sample would poison the pixel; it is a bug, but the
-                        // picture must stay usable (DESIGN.md: no NaN reaches a pixel), and
+                        // picture must stay usable (no NaN may reach a pixel), and
                         // the count tells the user.
                         if (l.is_finite()) {
                             sum += l;
