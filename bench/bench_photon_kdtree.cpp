@@ -1,5 +1,5 @@
-// Our implicit photon kd-tree against nanoflann (nanoflann is the
-// default choice unless a benchmark shows our own is faster). Same photons, same queries: k nearest within a radius.
+// Our implicit photon kd-tree against nanoflann (nanoflann is the default choice unless a
+// benchmark shows our own is faster). Same photons, same queries: k nearest within a radius.
 
 #include <benchmark/benchmark.h>
 
