@@ -10,7 +10,7 @@
 #include "analysis/ray_diagram.h"
 #include "analysis/ray_diagram_svg.h"
 #include "commands.h"
-#include "render/atomic_file.h"
+#include "util/atomic_file.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
 
@@ -46,7 +46,7 @@ std::optional<int> find_lens(const Scene& scene, const std::string& name, std::s
     return std::nullopt;
 }
 
-// Written atomically (render/atomic_file.h), so a failed write leaves no half file.
+// Written atomically (util/atomic_file.h), so a failed write leaves no half file.
 bool write_file(const std::string& path, const std::string& text) {
     try {
         write_text_atomically(path, text);

@@ -10,7 +10,7 @@
 #include "analysis/report_benchmark.h"
 #include "analysis/sppm_convergence.h"
 #include "commands.h"
-#include "render/atomic_file.h"
+#include "util/atomic_file.h"
 #include "render/image_io.h"
 #include "scene/limits.h"
 #include "scene/scene_json.h"

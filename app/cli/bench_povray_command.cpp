@@ -19,10 +19,11 @@
 
 #include "child_process.h"
 #include "commands.h"
-#include "render/atomic_file.h"
-#include "render/bitmap_font.h"
+#include "util/atomic_file.h"
+#include "util/bitmap_font.h"
 #include "render/image_io.h"
 #include "scene/limits.h"
+#include "util/error.h"
 
 namespace lenslab::cli {
 
@@ -44,9 +45,9 @@ struct PovrayBenchArgs {
 };
 
 // A failure the user can act on: one line, exit 1.
-class BenchError : public std::runtime_error {
+class BenchError : public Error {
 public:
-    using std::runtime_error::runtime_error;
+    using Error::Error;
 };
 
 // What one renderer's runs produced.

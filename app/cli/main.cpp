@@ -3,10 +3,7 @@
 #include <iostream>
 
 #include "commands.h"
-#include "render/atomic_file.h"
-#include "render/image_io.h"
-#include "render/photon_tracer.h"
-#include "scene/json_reader.h"
+#include "util/error.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"lenslab: physically based rendering of light through lenses, and an optical bench"};
@@ -33,16 +30,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("glass")) return glass();
         if (app.got_subcommand("analyze")) return analyze();
         if (app.got_subcommand("detect")) return detect();
-    } catch (const lenslab::SceneError& e) {
-        std::cerr << "lenslab: error: " << e.what() << "\n";
-        return 1;
-    } catch (const lenslab::ResourceError& e) {
-        std::cerr << "lenslab: error: " << e.what() << "\n";
-        return 1;
-    } catch (const lenslab::ImageError& e) {
-        std::cerr << "lenslab: error: " << e.what() << "\n";
-        return 1;
-    } catch (const lenslab::FileWriteError& e) {
+    } catch (const lenslab::Error& e) {  // the user's to fix: bad input, a full disk, ...
         std::cerr << "lenslab: error: " << e.what() << "\n";
         return 1;
     } catch (const std::exception& e) {

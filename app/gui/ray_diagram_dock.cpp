@@ -6,7 +6,7 @@
 #include <QVBoxLayout>
 
 #include "analysis/lens_report.h"
-#include "scene/json_reader.h"
+#include "scene/scene_error.h"
 #include "scene_document.h"
 
 namespace lenslab::gui {

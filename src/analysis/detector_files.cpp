@@ -9,6 +9,7 @@
 
 #include "analysis/detector_image.h"
 #include "render/image_io.h"
+#include "util/atomic_file.h"
 
 namespace lenslab {
 
@@ -98,7 +99,7 @@ std::string detector_csv(const DetectorMeasurement& m, const DetectionSettings& 
 void write_detector_files(const DetectorMeasurement& m, const DetectionSettings& settings, const std::string& dir,
                           const std::string& stem, ColourScale scale) {
     const std::filesystem::path base = std::filesystem::path(dir) / stem;
-    write_text_file(detector_csv(m, settings), base.string() + ".csv");
+    write_text_atomically(base.string() + ".csv", detector_csv(m, settings));
     // EXR rows run top to bottom: row 0 is the highest v, as in the picture.
     const DetectorGrid& g = m.grid;
     const int nu = g.cells_u(), nv = g.cells_v();

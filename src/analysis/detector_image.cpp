@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "render/bitmap_font.h"
-#include "render/colormap.h"
+#include "util/bitmap_font.h"
+#include "util/colormap.h"
 
 namespace lenslab {
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "scene/json_reader.h"
+#include "scene/scene_error.h"
 
 namespace lenslab {
 

@@ -9,7 +9,7 @@
 #include "geometry/lens/flat_surface.h"
 #include "geometry/lens/lens_solid.h"
 #include "geometry/lens/spherical_surface.h"
-#include "scene/json_reader.h"
+#include "scene/scene_error.h"
 #include "scene/scattering.h"
 
 namespace lenslab {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "scene/json_reader.h"
+#include "scene/scene_error.h"
 
 namespace lenslab {
 

@@ -83,7 +83,7 @@ double checked_atanh(double v) {
 }  // namespace
 
 FormulaError::FormulaError(int position, const std::string& message)
-    : std::runtime_error(message), m_position(position), m_message(message) {}
+    : Error(message), m_position(position), m_message(message) {}
 
 // One thread's parser, with its own variable storage bound by address.
 class ParserEvaluator final : public Formula::Evaluator {

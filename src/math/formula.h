@@ -15,11 +15,13 @@
 #include <string>
 #include <vector>
 
+#include "util/error.h"
+
 namespace lenslab {
 
 // Why a formula was refused. `position` counts characters from 1 (0 when the problem has
 // no single position), `message` is for people, e.g. `Unexpected operator "*"`.
-class FormulaError : public std::runtime_error {
+class FormulaError : public Error {
 public:
     FormulaError(int position, const std::string& message);
     int position() const { return m_position; }

@@ -14,7 +14,7 @@
 #include <fstream>
 #include <limits>
 
-#include "render/atomic_file.h"
+#include "util/atomic_file.h"
 
 namespace lenslab {
 
@@ -70,7 +70,7 @@ void write_exr(const Film& film, const std::string& path, double scale) {
     }
 }
 
-// write_atomically (render/atomic_file.h), with a failed rename reported as an ImageError
+// write_atomically (util/atomic_file.h), with a failed rename reported as an ImageError
 // like every other failure here.
 template <class Write>
 void write_via_temporary(const std::string& path, Write write) {
@@ -103,15 +103,6 @@ void write_exr_channels(int width, int height, const std::vector<ExrChannel>& ch
         } catch (const std::exception& e) {
             throw ImageError("cannot write EXR '" + path + "': " + e.what());
         }
-    });
-}
-
-void write_text_file(const std::string& text, const std::string& path) {
-    write_via_temporary(path, [&](const std::string& tmp) {
-        std::ofstream out(tmp, std::ios::binary);
-        out << text;
-        out.close();
-        if (!out) throw ImageError("cannot write '" + path + "'");
     });
 }
 

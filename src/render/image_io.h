@@ -7,19 +7,20 @@
 #include <vector>
 
 #include "render/film.h"
+#include "util/error.h"
 
 namespace lenslab {
 
-class ImageError : public std::runtime_error {
+class ImageError : public Error {
 public:
-    using std::runtime_error::runtime_error;
+    using Error::Error;
 };
 
 // Linear value -> sRGB-encoded [0, 1] (IEC 61966-2-1 transfer function).
 double linear_to_srgb(double v);
 
 // Writes `film` to `path`: .png (sRGB, scaled by 2^exposure_stops and clipped) or .exr
-// (linear, exposure also applied). Written atomically (render/atomic_file.h): an interrupted
+// (linear, exposure also applied). Written atomically (util/atomic_file.h): an interrupted
 // or failed write never leaves a half image, nor its temporary file. Throws ImageError.
 void write_image(const Film& film, const std::string& path, double exposure_stops = 0.0);
 
@@ -44,8 +45,5 @@ struct ExrChannel {
 };
 // Writes linear float channels as an OpenEXR file, atomically. Throws ImageError.
 void write_exr_channels(int width, int height, const std::vector<ExrChannel>& channels, const std::string& path);
-
-// Writes `text` to `path` atomically (temporary file, then rename). Throws ImageError.
-void write_text_file(const std::string& text, const std::string& path);
 
 }  // namespace lenslab

@@ -18,6 +18,7 @@
 #include "render/render_control.h"
 #include "scene/interaction.h"
 #include "scene/scene.h"
+#include "util/error.h"
 
 namespace lenslab {
 
@@ -42,9 +43,9 @@ struct PhotonTracingStats {
 };
 
 // Thrown before any work when the photons asked for cannot fit in memory.
-class ResourceError : public std::runtime_error {
+class ResourceError : public Error {
 public:
-    using std::runtime_error::runtime_error;
+    using Error::Error;
 };
 
 // Bytes of photon storage the settings are expected to need, and the memory available.

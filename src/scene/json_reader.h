@@ -14,22 +14,9 @@
 
 #include "math/vec3.h"
 #include "optics/rgb.h"
+#include "scene/scene_error.h"
 
 namespace lenslab {
-
-// An error in a scene or its JSON: what() is "path: reason".
-class SceneError : public std::runtime_error {
-public:
-    SceneError(const std::string& path, const std::string& reason)
-        : std::runtime_error(path.empty() ? reason : path + ": " + reason),
-          m_path(path), m_reason(reason) {}
-    const std::string& path() const { return m_path; }
-    const std::string& reason() const { return m_reason; }
-
-private:
-    std::string m_path;
-    std::string m_reason;
-};
 
 // Largest magnitude any number in a scene file may have.
 inline constexpr double kMaxSceneNumber = 1e15;

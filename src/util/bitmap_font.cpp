@@ -1,4 +1,4 @@
-#include "render/bitmap_font.h"
+#include "util/bitmap_font.h"
 
 #include <array>
 #include <string_view>

@@ -6,7 +6,7 @@
 #include <set>
 #include <string>
 
-#include "render/bitmap_font.h"
+#include "util/bitmap_font.h"
 
 namespace lenslab {
 namespace {

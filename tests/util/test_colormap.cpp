@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/colormap.h"
+#include "util/colormap.h"
 
 namespace lenslab {
 namespace {

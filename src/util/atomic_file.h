@@ -5,14 +5,15 @@
 // and an existing file stays as it was until the new one replaces it.
 
 #include <functional>
-#include <stdexcept>
 #include <string>
+
+#include "util/error.h"
 
 namespace lenslab {
 
-class FileWriteError : public std::runtime_error {
+class FileWriteError : public Error {
 public:
-    using std::runtime_error::runtime_error;
+    using Error::Error;
 };
 
 // The temporary name write_atomically uses for `path`: "<path>.tmp<pid><extension>" (the

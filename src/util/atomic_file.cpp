@@ -1,4 +1,4 @@
-#include "render/atomic_file.h"
+#include "util/atomic_file.h"
 
 #include <cerrno>
 #include <cstring>

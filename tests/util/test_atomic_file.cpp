@@ -1,4 +1,4 @@
-// Files are written whole or not at all (render/atomic_file.h): the content appears under
+// Files are written whole or not at all (util/atomic_file.h): the content appears under
 // its name only once complete, a failure leaves the old file as it was, and no temporary
 // file survives either way.
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "render/atomic_file.h"
+#include "util/atomic_file.h"
 #include "render/image_io.h"
 
 namespace lenslab {

@@ -1,4 +1,4 @@
-#include "render/colormap.h"
+#include "util/colormap.h"
 
 #include <algorithm>
 
