@@ -12,10 +12,11 @@ PACKAGES=(
     libgtest-dev libgmock-dev libbenchmark-dev
     gnuplot-nox colord-data
     qt6-base-dev
-    clang libclang-rt-14-dev llvm
+    clang libclang-rt-14-dev llvm clang-format
 )
 # clang + libclang-rt-14-dev: libFuzzer and clang's sanitizers for the fuzz targets
-# (scripts/fuzz.sh); llvm: llvm-symbolizer, so sanitizer reports name files and lines.
+# (scripts/fuzz.sh); llvm: llvm-symbolizer, so sanitizer reports name files and lines;
+# clang-format: scripts/check-format.sh, the first thing the test suite checks.
 
 missing=()
 for p in "${PACKAGES[@]}"; do
