@@ -145,16 +145,14 @@ private:
             Interaction it;
             if (!arrive(ray, e, depth, it)) return;
             const Scattering& s = it.scattering;
-            double u = m_rng->uniform();
             const double p_diffuse = diffuse_share(it);
-            if (u < p_diffuse) {
+            const EventPick event = pick_event(s, p_diffuse, m_rng->uniform());
+            if (event.diffuse) {
                 store(it, e.power * (1.0 / p_diffuse), ray.direction, depth);
                 return;
             }
-            u -= p_diffuse;
-            const Branch* chosen = roulette_branch(s, u);
-            if (!chosen) return;  // absorbed (or the diffuse share of a black surface)
-            ray = {it.point(), chosen->direction};
+            if (!event.branch) return;  // absorbed (or the diffuse share of a black surface)
+            ray = {it.point(), event.branch->direction};
         }
     }
 

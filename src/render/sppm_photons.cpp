@@ -6,9 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "accel/photon.h"
-#include "math/frame.h"
 #include "math/rng.h"
-#include "math/sampling.h"
 #include "optics/glass.h"
 #include "render/pass_wavelength.h"
 #include "render/photon_emission.h"
@@ -88,9 +86,9 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, const PhotonPlan
         }
         // One event with the material's weights as probabilities (Russian roulette); the
         // diffuse bounce survives with the albedo's largest component.
-        const double survive = diffuse ? sc.diffuse * std::min(1.0, m.color.max_component()) : 0.0;
-        double u = rng.uniform();
-        if (u < survive) {
+        const double survive = diffuse_continuation(sc, m);
+        const EventPick event = pick_event(sc, survive, rng.uniform());
+        if (event.diffuse) {
             power *= sc.diffuse / survive;
             if (dispersed) {
                 power *= m.albedo->eval(lambda);
@@ -98,14 +96,11 @@ void trace_one(const Scene& scene, const PhotonPassSettings& s, const PhotonPlan
                 out.chains.push_back(static_cast<uint32_t>(it.object->material));
                 ++chain_length;
             }
-            ray = {it.point(), Frame::from_axis(facing).to_world(
-                                   sample_cosine_hemisphere(rng.uniform(), rng.uniform()))};
+            ray = {it.point(), sample_diffuse_direction(facing, rng)};
             continue;
         }
-        u -= survive;
-        const Branch* chosen = roulette_branch(sc, u);
-        if (!chosen) return;  // absorbed
-        ray = {it.point(), chosen->direction};
+        if (!event.branch) return;  // absorbed
+        ray = {it.point(), event.branch->direction};
     }
 }
 

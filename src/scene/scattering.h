@@ -4,8 +4,12 @@
 // internal reflection) and the diffuse part. One place for the whitted integrator, the ray
 // tracer of `lenslab trace` and, later, photon tracing.
 
+#include <algorithm>
 #include <array>
 
+#include "math/frame.h"
+#include "math/rng.h"
+#include "math/sampling.h"
 #include "math/vec3.h"
 #include "scene/material.h"
 
@@ -30,15 +34,38 @@ struct Scattering {
     bool dispersive = false;
 };
 
-// The specular branch whose share of the arriving power holds `u` (a uniform number, the
-// diffuse share already taken off), or nullptr for the rest: Russian roulette on the
-// branches, each chosen with probability equal to its weight.
-inline const Branch* roulette_branch(const Scattering& s, double u) {
+// One event at a hit, chosen with probabilities (Russian roulette): the diffuse part with
+// probability `diffuse_probability`, else each specular branch with its weight, else
+// absorption (neither set). Every integrator and photon tracer picks its events here.
+struct EventPick {
+    bool diffuse = false;
+    const Branch* branch = nullptr;  // the specular branch taken, if one was
+};
+
+// `u` is a uniform number in [0, 1) scaled by the caller (by the sum of the probabilities
+// when absorption is excluded).
+inline EventPick pick_event(const Scattering& s, double diffuse_probability, double u) {
+    if (u < diffuse_probability) return {true, nullptr};
+    u -= diffuse_probability;
     for (int i = 0; i < s.count; ++i) {
-        if (u < s.branches[i].weight) return &s.branches[i];
+        if (u < s.branches[i].weight) return {false, &s.branches[i]};
         u -= s.branches[i].weight;
     }
-    return nullptr;
+    return {};
+}
+
+// Probability that a path or photon goes on with a diffuse bounce, for pick_event: the
+// diffuse share times the albedo's largest component, so dark surfaces end more paths (0 on
+// a black one). The survivor carries albedo × diffuse share / this.
+inline double diffuse_continuation(const Scattering& s, const Material& m) {
+    if (!(s.diffuse > 0.0) || m.color.is_black()) return 0.0;
+    return s.diffuse * std::min(1.0, m.color.max_component());
+}
+
+// The diffuse bounce's direction: cosine-distributed about `facing` (the side arrived from).
+inline Vec3 sample_diffuse_direction(const Vec3& facing, Rng& rng) {
+    return Frame::from_axis(facing).to_world(
+        sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
 }
 
 // Medium around the objects: air, taken as vacuum-like n = 1.

@@ -68,5 +68,30 @@ TEST(Scattering, TotalInternalReflectionSendsEverythingBack) {
     EXPECT_LT(s.branches[0].direction.z, 0.0);
 }
 
+TEST(Scattering, PickEventTakesEachShareInTurn) {
+    // Diffuse 0.1, then the branches' weights 0.3 and 0.5, the last 0.1 absorbed: a uniform
+    // number picks the event whose share holds it, so each is taken with its probability.
+    Scattering s;
+    s.count = 2;
+    s.branches[0].weight = 0.3;
+    s.branches[1].weight = 0.5;
+    EXPECT_TRUE(pick_event(s, 0.1, 0.05).diffuse);
+    EXPECT_EQ(pick_event(s, 0.1, 0.15).branch, &s.branches[0]);
+    EXPECT_EQ(pick_event(s, 0.1, 0.85).branch, &s.branches[1]);
+    const EventPick absorbed = pick_event(s, 0.1, 0.95);
+    EXPECT_FALSE(absorbed.diffuse);
+    EXPECT_EQ(absorbed.branch, nullptr);
+}
+
+TEST(Scattering, DiffuseContinuationFollowsTheBrightestChannel) {
+    Scattering s;
+    s.diffuse = 0.8;
+    Material m;
+    m.color = {0.5, 0.25, 0.1};
+    EXPECT_DOUBLE_EQ(diffuse_continuation(s, m), 0.4);
+    m.color = {0, 0, 0};
+    EXPECT_EQ(diffuse_continuation(s, m), 0.0);  // a black surface ends every path
+}
+
 }  // namespace
 }  // namespace lenslab

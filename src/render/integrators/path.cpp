@@ -2,9 +2,7 @@
 
 #include <numbers>
 
-#include "math/frame.h"
 #include "math/rng.h"
-#include "math/sampling.h"
 #include "render/direct_light.h"
 #include "render/path_colour.h"
 #include "scene/interaction.h"
@@ -56,22 +54,18 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
 
         // One event, with the material's weights as probabilities. The diffuse bounce
         // survives with the albedo's largest component and carries albedo / that.
-        const double survive = diffuse ? s.diffuse * std::min(1.0, m.color.max_component()) : 0.0;
-        double u = rng.uniform();
-        if (u < survive) {
+        const double survive = diffuse_continuation(s, m);
+        const EventPick event = pick_event(s, survive, rng.uniform());
+        if (event.diffuse) {
             path *= m.albedo_bands;
             path *= s.diffuse / survive;
-            const Vec3 dir = Frame::from_axis(facing).to_world(
-                sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
-            ray = {p, dir};
+            ray = {p, sample_diffuse_direction(facing, rng)};
             seen_from_camera = false;
             count_emission = false;
             continue;
         }
-        u -= survive;
-        const Branch* chosen = roulette_branch(s, u);
-        if (!chosen) break;  // absorbed
-        ray = {p, chosen->direction};
+        if (!event.branch) break;  // absorbed
+        ray = {p, event.branch->direction};
         count_emission = true;
     }
     return l;

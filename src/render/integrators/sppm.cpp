@@ -149,9 +149,9 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
         double total = diffuse;
         for (int i = 0; i < s.count; ++i) total += s.branches[i].weight;
         if (!(total > 0.0)) break;
-        double pick = rng.uniform() * total;
+        const EventPick event = pick_event(s, diffuse, rng.uniform() * total);
         beta *= total;
-        if (pick < diffuse) {
+        if (event.diffuse) {
             vp.valid = true;
             vp.p = p;
             vp.n = facing;
@@ -173,16 +173,8 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
             }
             break;
         }
-        pick -= diffuse;
-        const Branch* chosen = &s.branches[s.count - 1];  // rounding can leave pick at the end
-        for (int i = 0; i < s.count; ++i) {
-            if (pick < s.branches[i].weight) {
-                chosen = &s.branches[i];
-                break;
-            }
-            pick -= s.branches[i].weight;
-        }
-        ray = {p, chosen->direction};
+        // Rounding can leave the pick just past the last branch: that one is meant.
+        ray = {p, (event.branch ? event.branch : &s.branches[s.count - 1])->direction};
     }
     vp.direct = found;
     if (found_pass != 0.0) vp.direct += sample_to_rgb(found_pass, pass.lambda_nm, pass.lambda_pdf);
