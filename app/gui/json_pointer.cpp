@@ -18,14 +18,17 @@ std::string escape_pointer_token(std::string_view token) {
 }
 
 std::string unescape_pointer_token(std::string_view token) {
-    std::string out(token);
-    // "~1" first: unescaping "~0" first would turn "~01" (the text "~1") into "~1" and
-    // then into '/'.
-    for (size_t i = out.find("~1"); i != std::string::npos; i = out.find("~1", i + 1)) {
-        out.replace(i, 2, "/");
-    }
-    for (size_t i = out.find("~0"); i != std::string::npos; i = out.find("~0", i + 1)) {
-        out.replace(i, 2, "~");
+    // One pass, each "~0" or "~1" decoded once: the same as RFC 6901's "~1" then "~0", so
+    // "~01" (the text "~1") never becomes '/'.
+    std::string out;
+    out.reserve(token.size());
+    for (size_t i = 0; i < token.size(); ++i) {
+        if (token[i] == '~' && i + 1 < token.size() &&
+            (token[i + 1] == '0' || token[i + 1] == '1')) {
+            out += token[++i] == '0' ? '~' : '/';
+        } else {
+            out += token[i];
+        }
     }
     return out;
 }

@@ -44,7 +44,7 @@ void SceneDocument::load_default() {
 SceneUpdate SceneDocument::read_update(const nlohmann::json& j) const {
     SceneUpdate update;
     if (only_camera_differs(m_json, j)) {
-        update.camera = camera_from_json(j["camera"]);
+        update.camera = camera_from_json(j.at("camera"));
     } else {
         update.scene = scene_from_json(j, folder_of(m_path));
     }
