@@ -35,7 +35,12 @@ int EditSceneCommand::id() const { return m_merge_pointer.empty() ? -1 : kSetVal
 bool EditSceneCommand::mergeWith(const QUndoCommand* other) {
     // QUndoStack offers only a command with the same id, so `other` is a value edit too.
     const auto* next = static_cast<const EditSceneCommand*>(other);
-    if (next->m_document != m_document || next->m_merge_pointer != m_merge_pointer) return false;
+    // The same description too: a whole element rewritten by two different fields (detector,
+    // then photon target) stays two steps.
+    if (next->m_document != m_document || next->m_merge_pointer != m_merge_pointer ||
+        next->text() != text()) {
+        return false;
+    }
     m_after = next->m_after;
     // Edited back to where it began: the stack drops the step.
     setObsolete(m_after == m_before);

@@ -2,7 +2,7 @@
 // One undoable edit of the scene document: the document before and after. Scene files are
 // small (tens of kilobytes), so whole snapshots keep every edit kind (a value, an added or
 // deleted object, a camera drag) in one simple command. Successive edits of one value (the
-// same pointer) merge into one step, as spin box steps should.
+// same pointer and description) merge into one step, as spin box steps should.
 
 #include <QUndoCommand>
 

@@ -3,6 +3,7 @@
 // nothing (counted in BVH builds).
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QSignalSpy>
@@ -172,6 +173,22 @@ private slots:
         type_value(field(w, "radius"), 0.9);
         type_value(field(w, "radius"), 0.5);
         QVERIFY(!w.document()->undo_stack()->canUndo());
+    }
+
+    // Two choices that each rewrite the whole element (same pointer) are still two fields.
+    void two_fields_rewriting_one_element_are_two_steps() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.tree()->select_pointer("/objects/1");  // a triangle
+        for (const char* name : {"field:detector", "field:photon_target"}) {
+            auto* box = w.panel()->findChild<QComboBox*>(name);
+            QVERIFY(box);
+            box->setCurrentText("yes");
+            emit box->activated(box->currentIndex());
+        }
+        QVERIFY(w.document()->json()["objects"][1].contains("detector"));
+        QCOMPARE(w.document()->json()["objects"][1]["photon_target"].get<bool>(), true);
+        QCOMPARE(w.document()->undo_stack()->count(), 2);
     }
 
     // An edit reads the scene once (it used to build it twice: to check, then to install).
