@@ -10,6 +10,7 @@
 
 #include "analysis/detector_files.h"
 #include "analysis/detector_image.h"
+#include "json_pointer.h"
 #include "scene_document.h"
 
 namespace lenslab::gui {
@@ -89,8 +90,9 @@ void DetectorDock::stop_worker() {
 }
 
 void DetectorDock::show_pointer(const QString& pointer) {
-    if (!pointer.startsWith("/objects/")) return;
-    const int entry = pointer.section('/', 2, 2).toInt();
+    const QStringList tokens = split_pointer(pointer);
+    if (tokens.size() != 2 || tokens[0] != "objects") return;
+    const int entry = tokens[1].toInt();
     const Scene& scene = m_document->scene();
     // Scene objects follow the file's entries, except that a lens group makes several.
     for (size_t i = 0; i < scene.objects.size(); ++i) {

@@ -15,6 +15,7 @@
 #include <QToolBar>
 
 #include "detector_dock.h"
+#include "json_pointer.h"
 #include "property_panel.h"
 #include "ray_diagram_dock.h"
 #include "render/image_io.h"
@@ -107,7 +108,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_tree, &SceneTree::pointer_selected, m_ray_diagram, &RayDiagramDock::show_pointer);
     connect(m_tree, &SceneTree::pointer_selected, m_detector_dock, &DetectorDock::show_pointer);
     connect(m_viewport, &Viewport::object_picked, this, [this](int object) {
-        m_tree->select_pointer(object >= 0 ? QString("/objects/%1").arg(object) : QString());
+        m_tree->select_pointer(object >= 0 ? join_pointer("/objects", object) : QString());
     });
     connect(m_panel, &PropertyPanel::edit_refused, this, &MainWindow::show_message);
     connect(m_viewport, &Viewport::edit_refused, this, &MainWindow::show_message);
@@ -318,7 +319,8 @@ void MainWindow::add_element(const QString& kind) {
         show_message(error);
         return;
     }
-    m_tree->select_pointer(QString("/%1/%2").arg(list).arg(edited[list].size() - 1));
+    m_tree->select_pointer(
+        join_pointer(join_pointer("", list), qsizetype(edited[list].size() - 1)));
 }
 
 void MainWindow::duplicate_selected() {
@@ -335,22 +337,24 @@ void MainWindow::duplicate_selected() {
         for (auto& v : copy["vertices"]) v[0] = v[0].get<double>() + 0.5;
     }
     if (copy.contains("name")) copy["name"] = copy["name"].get<std::string>() + " copy";
-    const std::string list = pointer.section('/', 1, 1).toStdString();
+    const std::string list = split_pointer(pointer)[0].toStdString();
     edited[list].push_back(copy);
     QString error;
     if (!m_document->apply(edited, tr("Duplicate"), &error)) {
         show_message(error);
         return;
     }
-    m_tree->select_pointer(QString("/%1/%2").arg(QString::fromStdString(list)).arg(edited[list].size() - 1));
+    m_tree->select_pointer(join_pointer(join_pointer("", QString::fromStdString(list)),
+                                        qsizetype(edited[list].size() - 1)));
 }
 
 void MainWindow::delete_selected() {
     const QString pointer = m_tree->selected_pointer();
     if (!pointer.startsWith("/objects/") && !pointer.startsWith("/lights/")) return;
     json edited = m_document->json();
-    const std::string list = pointer.section('/', 1, 1).toStdString();
-    edited[list].erase(size_t(pointer.section('/', 2, 2).toInt()));
+    const QStringList tokens = split_pointer(pointer);  // {"objects", "3"}
+    const std::string list = tokens[0].toStdString();
+    edited[list].erase(size_t(tokens[1].toInt()));
     QString error;
     if (!m_document->apply(edited, tr("Delete"), &error)) {
         show_message(error);

@@ -10,6 +10,7 @@
 
 #include "geometry/implicit_solid.h"
 #include "geometry/lens/sag_formula_surface.h"
+#include "json_pointer.h"
 #include "optics/spectrum.h"
 #include "scene/json_reader.h"
 #include "scene/material.h"
@@ -138,7 +139,7 @@ void PropertyPanel::show_pointer(const QString& pointer) {
 
 const json* PropertyPanel::value_at(const std::string& key) const {
     const json& doc = m_document->json();
-    const json::json_pointer p(m_pointer.toStdString() + (key.empty() ? "" : "/" + key));
+    const json::json_pointer p(append_pointer(m_pointer.toStdString(), key));
     return doc.contains(p) ? &doc.at(p) : nullptr;
 }
 
@@ -147,14 +148,15 @@ void PropertyPanel::commit(const std::string& key, const json& value, const QStr
     if (const size_t slash = key.rfind('/'); slash != std::string::npos) {
         const json* parent = value_at(key.substr(0, slash));
         if (parent && parent->is_boolean()) {
-            commit(key.substr(0, slash), json{{key.substr(slash + 1), value}}, label);
+            commit(key.substr(0, slash),
+                   json{{unescape_pointer_token(key.substr(slash + 1)), value}}, label);
             return;
         }
     }
     const json* current = value_at(key);
     if (current && *current == value) return;
     QString error;
-    const json::json_pointer p(m_pointer.toStdString() + (key.empty() ? "" : "/" + key));
+    const json::json_pointer p(append_pointer(m_pointer.toStdString(), key));
     if (m_document->set_value(p, value, tr("Change %1").arg(label), &error)) {
         m_error->clear();
     } else {

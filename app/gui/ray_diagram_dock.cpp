@@ -2,10 +2,10 @@
 
 #include <QPainter>
 #include <QPainterPath>
-#include <QRegularExpression>
 #include <QVBoxLayout>
 
 #include "analysis/lens_report.h"
+#include "json_pointer.h"
 #include "scene/scene_error.h"
 #include "scene_document.h"
 
@@ -123,10 +123,11 @@ void RayDiagramDock::show_pointer(const QString& pointer) {
 }
 
 void RayDiagramDock::refresh() {
-    static const QRegularExpression object_pointer("^/objects/(\\d+)$");
-    const QRegularExpressionMatch match = object_pointer.match(m_pointer);
+    const QStringList tokens = split_pointer(m_pointer);  // {"objects", "3"}: an object
+    bool is_object = tokens.size() == 2 && tokens[0] == "objects";
+    int entry = is_object ? tokens[1].toInt(&is_object) : -1;
+    if (!is_object) entry = -1;
     const Scene& scene = m_document->scene();
-    const int entry = match.hasMatch() ? match.captured(1).toInt() : -1;
     // The first scene object made from that entry of the file (a lens group makes several).
     int index = -1;
     for (int i = 0; i < int(scene.objects.size()) && index < 0 && entry >= 0; ++i) {

@@ -15,6 +15,19 @@ namespace {
 std::string folder_of(const QString& path) {
     return path.isEmpty() ? std::string() : QFileInfo(path).absolutePath().toStdString();
 }
+
+// Whether `b` differs from `a` in the camera block alone, or not at all: then the objects,
+// materials, lights and their BVH stay as they are.
+bool only_camera_differs(const nlohmann::json& a, const nlohmann::json& b) {
+    if (!a.is_object() || !b.is_object() || a.size() != b.size()) return false;
+    if (!a.contains("camera") || !b.contains("camera")) return false;
+    for (const auto& [key, value] : a.items()) {
+        if (key == "camera") continue;
+        const auto it = b.find(key);
+        if (it == b.end() || *it != value) return false;
+    }
+    return true;
+}
 }  // namespace
 
 SceneDocument::SceneDocument(QObject* parent) : QObject(parent) { load_default(); }
@@ -28,9 +41,19 @@ void SceneDocument::load_default() {
     emit changed();
 }
 
-bool SceneDocument::validate(const nlohmann::json& j, Scene& out, QString* error) const {
+SceneUpdate SceneDocument::read_update(const nlohmann::json& j) const {
+    SceneUpdate update;
+    if (only_camera_differs(m_json, j)) {
+        update.camera = camera_from_json(j.at("camera"));
+    } else {
+        update.scene = scene_from_json(j, folder_of(m_path));
+    }
+    return update;
+}
+
+bool SceneDocument::check(const nlohmann::json& j, SceneUpdate& out, QString* error) const {
     try {
-        out = scene_from_json(j, folder_of(m_path));
+        out = read_update(j);
         return true;
     } catch (const SceneError& e) {
         if (error) *error = QString::fromStdString(e.what());
@@ -82,9 +105,16 @@ bool SceneDocument::save(const QString& path, QString* error) {
 }
 
 bool SceneDocument::apply(const nlohmann::json& edited, const QString& description, QString* error) {
-    Scene scene;
-    if (!validate(edited, scene, error)) return false;
-    m_undo.push(new EditSceneCommand(this, m_json, edited, description));
+    return edit(edited, description, error, {});
+}
+
+bool SceneDocument::edit(const nlohmann::json& edited, const QString& description, QString* error,
+                         std::string merge_pointer) {
+    SceneUpdate update;
+    if (!check(edited, update, error)) return false;
+    // The command's first redo installs what was read here: no second build.
+    m_undo.push(new EditSceneCommand(this, m_json, edited, description, std::move(update),
+                                     std::move(merge_pointer)));
     return true;
 }
 
@@ -92,25 +122,33 @@ bool SceneDocument::set_value(const nlohmann::json::json_pointer& pointer, const
                               const QString& description, QString* error) {
     nlohmann::json edited = m_json;
     edited[pointer] = value;
-    return apply(edited, description, error);
+    return edit(edited, description, error, pointer.to_string());
 }
 
 bool SceneDocument::preview(const nlohmann::json& edited) {
-    Scene scene;
-    if (!validate(edited, scene, nullptr)) return false;
-    m_json = edited;
-    m_scene = std::move(scene);
-    emit changed();
+    SceneUpdate update;
+    if (!check(edited, update, nullptr)) return false;
+    install(edited, std::move(update));
     return true;
 }
 
 void SceneDocument::commit_preview(const nlohmann::json& before, const QString& description) {
-    if (before != m_json) m_undo.push(new EditSceneCommand(this, before, m_json, description));
+    // The previews installed the document already: the first redo changes nothing.
+    if (before == m_json) return;
+    m_undo.push(new EditSceneCommand(this, before, m_json, description, SceneUpdate{}));
 }
 
 void SceneDocument::install(const nlohmann::json& json) {
+    install(json, read_update(json));  // validated before it entered the stack
+}
+
+void SceneDocument::install(const nlohmann::json& json, SceneUpdate update) {
+    if (update.scene) {
+        m_scene = std::move(*update.scene);
+    } else if (update.camera) {
+        m_scene.camera = *update.camera;  // nothing the BVH or the lights hold depends on it
+    }
     m_json = json;
-    m_scene = scene_from_json(m_json, folder_of(m_path));  // validated before it entered the stack
     emit changed();
 }
 

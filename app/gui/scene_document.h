@@ -2,6 +2,8 @@
 // The scene being edited: its JSON document (the single source of truth, saved as it is),
 // the file it came from, and the undo stack. Every edit is checked by the same reader the
 // command line uses, so the editor cannot hold a scene that `lenslab render` would refuse.
+// An edit is read once and that result installed; one that changes the camera alone (a
+// camera drag) updates the installed scene's camera and rebuilds nothing.
 
 #include <QObject>
 #include <QString>
@@ -9,9 +11,19 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
+#include <string>
+
 #include "scene/scene.h"
 
 namespace lenslab::gui {
+
+// What installing a checked document changes in the installed scene: a whole new scene, or
+// only the camera (nothing else in the document differs), or nothing (neither set).
+struct SceneUpdate {
+    std::optional<Scene> scene;
+    std::optional<CameraSettings> camera;
+};
 
 class SceneDocument : public QObject {
     Q_OBJECT
@@ -35,7 +47,8 @@ public:
     // Applies an edit as one undoable step. Refused (nothing changes, `error` says why)
     // when the resulting scene would not load.
     bool apply(const nlohmann::json& edited, const QString& description, QString* error);
-    // Sets one value, e.g. pointer "/objects/2/radius".
+    // Sets one value, e.g. pointer "/objects/2/radius". Successive sets of the same pointer
+    // (spin box steps) merge into one undo step.
     bool set_value(const nlohmann::json::json_pointer& pointer, const nlohmann::json& value,
                    const QString& description, QString* error);
 
@@ -44,15 +57,24 @@ public:
     bool preview(const nlohmann::json& edited);
     void commit_preview(const nlohmann::json& before, const QString& description);
 
-    // Used by the undo command: installs an already validated document.
+    // Used by the undo command: installs an already validated document, reading only what
+    // differs from the installed one; or with `update`, what reading it gave already.
     void install(const nlohmann::json& json);
+    void install(const nlohmann::json& json, SceneUpdate update);
 
 signals:
     void changed();           // the document (and so the scene) changed
     void path_changed();      // a new file name (open, save as)
 
 private:
-    bool validate(const nlohmann::json& j, Scene& out, QString* error) const;
+    // Reads `j` with the scene reader, only as far as it differs from the installed document
+    // (the camera block alone, or all of it). Throws SceneError.
+    SceneUpdate read_update(const nlohmann::json& j) const;
+    bool check(const nlohmann::json& j, SceneUpdate& out, QString* error) const;
+    // `merge_pointer`: set for a set_value, whose step merges with the next one of the same
+    // pointer.
+    bool edit(const nlohmann::json& edited, const QString& description, QString* error,
+              std::string merge_pointer);
 
     nlohmann::json m_json;
     Scene m_scene;

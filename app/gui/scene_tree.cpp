@@ -2,6 +2,7 @@
 
 #include <QHeaderView>
 
+#include "json_pointer.h"
 #include "scene_document.h"
 
 namespace lenslab::gui {
@@ -52,7 +53,9 @@ void SceneTree::rebuild() {
     auto* materials = add_item(invisibleRootItem(), tr("Materials"), "");
     if (j.contains("materials")) {
         for (const auto& [name, value] : j["materials"].items()) {
-            add_item(materials, QString::fromStdString(name), "/materials/" + QString::fromStdString(name));
+            // Names are free text: "a/b" must be one token ("/materials/a~1b").
+            add_item(materials, QString::fromStdString(name),
+                     join_pointer("/materials", QString::fromStdString(name)));
         }
     }
     auto* objects = add_item(invisibleRootItem(), tr("Objects"), "");
@@ -62,14 +65,18 @@ void SceneTree::rebuild() {
             const QString type = QString::fromStdString(o.value("type", "?"));
             const QString name = o.contains("name") ? QString::fromStdString(o["name"].get<std::string>())
                                                     : QString("objects[%1]").arg(i);
-            add_item(objects, QString("%1 (%2)").arg(name, type), QString("/objects/%1").arg(i));
+            add_item(objects, QString("%1 (%2)").arg(name, type),
+                     join_pointer("/objects", qsizetype(i)));
         }
     }
     auto* lights = add_item(invisibleRootItem(), tr("Lights"), "");
     if (j.contains("lights")) {
         for (size_t i = 0; i < j["lights"].size(); ++i) {
-            add_item(lights, QString("%1 light %2").arg(QString::fromStdString(j["lights"][i].value("type", "?"))).arg(i),
-                     QString("/lights/%1").arg(i));
+            add_item(lights,
+                     QString("%1 light %2")
+                         .arg(QString::fromStdString(j["lights"][i].value("type", "?")))
+                         .arg(i),
+                     join_pointer("/lights", qsizetype(i)));
         }
     }
     materials->setExpanded(true);

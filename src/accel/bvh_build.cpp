@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 
 namespace lenslab {
 
 namespace {
+
+// Relaxed: a count read after the builds, never used to order anything.
+std::atomic<uint64_t> g_builds{0};
 
 constexpr int kBins = 16;
 // Past this depth nodes split at the median, which bounds the remaining depth by log2(n):
@@ -117,6 +121,7 @@ private:
 }  // namespace
 
 BvhLayout build_bvh(const std::vector<Aabb>& boxes, int max_leaf_size) {
+    g_builds.fetch_add(1, std::memory_order_relaxed);
     BvhLayout layout;
     const int n = static_cast<int>(boxes.size());
     if (n == 0) return layout;
@@ -126,5 +131,7 @@ BvhLayout build_bvh(const std::vector<Aabb>& boxes, int max_leaf_size) {
     Builder(boxes, std::max(1, max_leaf_size), layout).build(0, n, 0);
     return layout;
 }
+
+uint64_t bvh_build_count() { return g_builds.load(std::memory_order_relaxed); }
 
 }  // namespace lenslab

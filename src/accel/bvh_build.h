@@ -28,6 +28,10 @@ struct BvhLayout {
 // unless their centres coincide.
 BvhLayout build_bvh(const std::vector<Aabb>& boxes, int max_leaf_size);
 
+// How many times build_bvh has run in this process (scene and mesh BVHs alike), so tests can
+// check that an edit rebuilds only what it must (a camera move: nothing).
+uint64_t bvh_build_count();
+
 // Deepest tree build_bvh makes is kMaxSahDepth + log2(n) + 1: far below the stack size.
 inline constexpr int kBvhStackSize = 128;
 

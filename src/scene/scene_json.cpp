@@ -423,6 +423,12 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
     return scene;
 }
 
+CameraSettings camera_from_json(const nlohmann::json& camera) {
+    CameraSettings settings;
+    read_camera(camera, settings);
+    return settings;
+}
+
 Scene load_scene_file(const std::string& path, const SceneReadOptions& options) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {

@@ -27,6 +27,10 @@ Scene parse_scene(const std::string& text, const std::string& source = "scene",
 Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir = "",
                       const SceneReadOptions& options = {});
 
+// Reads a scene's `camera` block alone, with the checks and messages scene_from_json gives
+// it: an editor moving the camera need not rebuild the objects. Throws SceneError.
+CameraSettings camera_from_json(const nlohmann::json& camera);
+
 // Reads and parses a scene file; relative paths in it are relative to the file's folder.
 // Throws SceneError (unreadable file, syntax, content).
 Scene load_scene_file(const std::string& path, const SceneReadOptions& options = {});

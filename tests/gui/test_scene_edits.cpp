@@ -1,0 +1,270 @@
+// Edits as the editor records and installs them: JSON pointers to names holding '~' and '/',
+// successive edits of one field merged into one undo step, and camera moves that rebuild
+// nothing (counted in BVH builds).
+
+#include <QApplication>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTreeWidgetItemIterator>
+#include <QWheelEvent>
+#include <QtTest>
+
+#include "accel/bvh_build.h"
+#include "json_pointer.h"
+#include "main_window.h"
+#include "property_panel.h"
+#include "render_controller.h"
+#include "scene/scene_json.h"
+#include "scene_document.h"
+#include "scene_tree.h"
+#include "viewport.h"
+
+using lenslab::bvh_build_count;
+using lenslab::gui::MainWindow;
+using nlohmann::json;
+namespace gui = lenslab::gui;
+
+namespace {
+
+const QString kSmallScene = QStringLiteral(LENSLAB_TEST_DATA "/gui/small_scene.json");
+const std::string kOddName = "a~b/c";
+
+QDoubleSpinBox* field(MainWindow& w, const QString& name) {
+    return w.panel()->findChild<QDoubleSpinBox*>("field:" + name);
+}
+
+// Sets a spin box as a user would (value, then leaving the field).
+void type_value(QDoubleSpinBox* box, double v) {
+    box->setValue(v);
+    emit box->editingFinished();
+}
+
+// Clicks the tree item showing `text`, as a user selects it.
+bool click_item(MainWindow& w, const QString& text) {
+    for (QTreeWidgetItemIterator it(w.tree()); *it; ++it) {
+        if ((*it)->text(0) == text) {
+            w.tree()->setCurrentItem(*it);
+            return true;
+        }
+    }
+    return false;
+}
+
+// The small test scene with its red material renamed `name` (the ball uses it).
+QString write_scene_with_material(const QTemporaryDir& dir, const std::string& name) {
+    QFile in(kSmallScene);
+    if (!in.open(QIODevice::ReadOnly)) return {};
+    json j = json::parse(in.readAll().toStdString());
+    j["materials"][name] = j["materials"]["red"];
+    j["materials"].erase("red");
+    j["objects"][0]["material"] = name;
+    const QString path = dir.filePath("odd_name.json");
+    QFile out(path);
+    if (!out.open(QIODevice::WriteOnly)) return {};
+    out.write(QByteArray::fromStdString(j.dump(2)));
+    return path;
+}
+
+bool same_vec(const lenslab::Vec3& a, const lenslab::Vec3& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+}
+
+// Exactly equal: the view renders from it, and must render what a full read would give.
+bool same_camera(const lenslab::CameraSettings& a, const lenslab::CameraSettings& b) {
+    return same_vec(a.position, b.position) && same_vec(a.direction, b.direction) &&
+           same_vec(a.up, b.up) && a.fov_deg == b.fov_deg;
+}
+
+}  // namespace
+
+class TestSceneEdits : public QObject {
+    Q_OBJECT
+
+private slots:
+    void pointer_tokens_are_escaped_both_ways() {
+        QCOMPARE(gui::escape_pointer_token("a~b/c"), std::string("a~0b~1c"));
+        QCOMPARE(gui::unescape_pointer_token("a~0b~1c"), std::string("a~b/c"));
+        // RFC 6901's order: "~01" is the text "~1", not '/'.
+        QCOMPARE(gui::unescape_pointer_token("~01"), std::string("~1"));
+        QCOMPARE(gui::escape_pointer_token("~1"), std::string("~01"));
+        QCOMPARE(gui::join_pointer("/materials", QString("a~b/c")), QString("/materials/a~0b~1c"));
+        QCOMPARE(gui::join_pointer("/objects", qsizetype(3)), QString("/objects/3"));
+        QCOMPARE(gui::split_pointer("/materials/a~0b~1c"), QStringList({"materials", "a~b/c"}));
+        QCOMPARE(gui::split_pointer(""), QStringList());
+        QCOMPARE(gui::append_pointer("/materials/a~0b", "emission/intensity"),
+                 std::string("/materials/a~0b/emission/intensity"));
+        QCOMPARE(gui::append_pointer("/camera", ""), std::string("/camera"));
+        // What the editor builds is what nlohmann::json reads back.
+        const json doc{{"materials", {{kOddName, {{"specular", 0.2}}}}}};
+        const json::json_pointer p(gui::append_pointer(
+            gui::join_pointer("/materials", QString::fromStdString(kOddName)).toStdString(),
+            "specular"));
+        QCOMPARE(doc.at(p).get<double>(), 0.2);
+    }
+
+    // A material named "a~b/c": selected (no abort, a full panel), edited, undone, edited
+    // again and saved with its name intact.
+    void a_material_named_with_tilde_and_slash_is_edited_and_saved() {
+        QTemporaryDir dir;
+        const QString path = write_scene_with_material(dir, kOddName);
+        QVERIFY(!path.isEmpty());
+        MainWindow w;
+        QString error;
+        QVERIFY2(w.open_file(path, &error), qPrintable(error));
+        QVERIFY(click_item(w, QString::fromStdString(kOddName)));
+        QCOMPARE(w.panel()->pointer(), QString("/materials/a~0b~1c"));
+        QDoubleSpinBox* specular = field(w, "specular");
+        QVERIFY(specular);  // the panel is not empty
+        QCOMPARE(specular->value(), 0.2);
+
+        type_value(specular, 0.35);
+        QCOMPARE(w.document()->json()["materials"][kOddName]["specular"].get<double>(), 0.35);
+        QVERIFY(w.panel()->error_text().isEmpty());
+        w.document()->undo_stack()->undo();
+        QCOMPARE(w.document()->json()["materials"][kOddName]["specular"].get<double>(), 0.2);
+        QCOMPARE(field(w, "specular")->value(), 0.2);
+        type_value(field(w, "specular"), 0.4);
+
+        const QString saved_path = dir.filePath("saved.json");
+        QVERIFY2(w.save_file(saved_path, &error), qPrintable(error));
+        QFile saved(saved_path);
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        const json j = json::parse(saved.readAll().toStdString());
+        QVERIFY(j["materials"].contains(kOddName));
+        QCOMPARE(j["materials"].size(), size_t(2));
+        QCOMPARE(j["materials"][kOddName]["specular"].get<double>(), 0.4);
+        QCOMPARE(j["objects"][0]["material"].get<std::string>(), kOddName);
+        // And the command line's reader takes it.
+        QCOMPARE(lenslab::load_scene_file(saved_path.toStdString()).materials[0].specular, 0.4);
+    }
+
+    void successive_edits_of_one_field_are_one_undo_step() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.tree()->select_pointer("/objects/0");
+        for (double r : {0.6, 0.7, 0.8}) type_value(field(w, "radius"), r);
+        QCOMPARE(w.document()->json()["objects"][0]["radius"].get<double>(), 0.8);
+        QCOMPARE(w.document()->undo_stack()->count(), 1);
+        w.document()->undo_stack()->undo();
+        QCOMPARE(w.document()->json()["objects"][0]["radius"].get<double>(), 0.5);
+        QVERIFY(!w.document()->is_modified());
+        w.document()->undo_stack()->redo();
+        QCOMPARE(w.document()->json()["objects"][0]["radius"].get<double>(), 0.8);
+        QCOMPARE(w.document()->scene().objects.size(), size_t(3));
+    }
+
+    void edits_of_two_fields_are_two_undo_steps() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.tree()->select_pointer("/objects/0");
+        type_value(field(w, "radius"), 0.6);
+        type_value(field(w, "center.y"), 0.75);
+        type_value(field(w, "center.y"), 0.8);  // merges with the 0.75
+        QCOMPARE(w.document()->undo_stack()->count(), 2);
+        w.document()->undo_stack()->undo();
+        QCOMPARE(w.document()->json()["objects"][0]["center"][1].get<double>(), 0.5);
+        QCOMPARE(w.document()->json()["objects"][0]["radius"].get<double>(), 0.6);
+        w.document()->undo_stack()->undo();
+        QCOMPARE(w.document()->json()["objects"][0]["radius"].get<double>(), 0.5);
+        // A field edited back to where it began leaves no step at all.
+        type_value(field(w, "radius"), 0.9);
+        type_value(field(w, "radius"), 0.5);
+        QVERIFY(!w.document()->undo_stack()->canUndo());
+    }
+
+    // Two choices that each rewrite the whole element (same pointer) are still two fields.
+    void two_fields_rewriting_one_element_are_two_steps() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.tree()->select_pointer("/objects/1");  // a triangle
+        for (const char* name : {"field:detector", "field:photon_target"}) {
+            auto* box = w.panel()->findChild<QComboBox*>(name);
+            QVERIFY(box);
+            box->setCurrentText("yes");
+            emit box->activated(box->currentIndex());
+        }
+        QVERIFY(w.document()->json()["objects"][1].contains("detector"));
+        QCOMPARE(w.document()->json()["objects"][1]["photon_target"].get<bool>(), true);
+        QCOMPARE(w.document()->undo_stack()->count(), 2);
+    }
+
+    // An edit reads the scene once (it used to build it twice: to check, then to install).
+    void an_edit_builds_the_scene_once() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.tree()->select_pointer("/objects/0");
+        const uint64_t before = bvh_build_count();
+        type_value(field(w, "radius"), 0.7);
+        QCOMPARE(bvh_build_count() - before, uint64_t(1));
+        w.document()->undo_stack()->undo();
+        QCOMPARE(bvh_build_count() - before, uint64_t(2));
+    }
+
+    // A camera drag of 50 mouse moves (each one previewed and rendered) rebuilds no BVH: the
+    // installed scene's camera alone changes. Its undo, a wheel zoom and a camera field edit
+    // rebuild nothing either.
+    void a_camera_drag_rebuilds_nothing_but_the_camera() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const json camera_before = w.document()->json()["camera"];
+        QWidget* v = w.viewport();
+        const QPoint c = v->rect().center() - QPoint(100, 0);
+        QSignalSpy changes(w.document(), &gui::SceneDocument::changed);
+        const uint64_t before = bvh_build_count();
+        QTest::mousePress(v, Qt::LeftButton, {}, c);
+        for (int i = 1; i <= 50; ++i) QTest::mouseMove(v, c + QPoint(4 * i, i % 3));
+        QTest::mouseRelease(v, Qt::LeftButton, {}, c + QPoint(200, 2));
+        const uint64_t drag_builds = bvh_build_count() - before;
+        qInfo("BVH builds during a 50-move camera drag: %llu (document changes: %lld)",
+              static_cast<unsigned long long>(drag_builds),
+              static_cast<long long>(changes.count()));
+        QVERIFY(changes.count() >= 50);  // every move was shown
+        QVERIFY(drag_builds <= 1);
+        QCOMPARE(drag_builds, uint64_t(0));
+        QVERIFY(w.document()->json()["camera"] != camera_before);
+        QCOMPARE(w.document()->undo_stack()->count(), 1);
+        // The installed camera is what the reader makes of the document's camera block.
+        const lenslab::Scene read = lenslab::scene_from_json(w.document()->json());
+        QVERIFY(same_camera(w.document()->scene().camera, read.camera));
+        QCOMPARE(w.document()->scene().objects.size(), size_t(3));
+
+        QSignalSpy frames(w.renderer(), &gui::RenderController::frame_ready);
+        QVERIFY(frames.wait(20000));  // the view renders the moved camera
+
+        const uint64_t later = bvh_build_count();  // after the test's own read above
+        w.document()->undo_stack()->undo();
+        QCOMPARE(w.document()->json()["camera"], camera_before);
+        QVERIFY(
+            same_camera(w.document()->scene().camera, lenslab::camera_from_json(camera_before)));
+        QWheelEvent wheel(QPointF(c), v->mapToGlobal(QPointF(c)), {}, {0, 120}, Qt::NoButton, {},
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(v, &wheel);
+        QCOMPARE(w.document()->undo_stack()->count(), 1);  // the zoom replaced the undone drag
+        w.tree()->select_pointer("/camera");
+        type_value(field(w, "fov"), 50);
+        QCOMPARE(w.document()->scene().camera.fov_deg, 50.0);
+        QCOMPARE(bvh_build_count() - later, uint64_t(0));
+    }
+
+    // A camera edit the reader refuses is refused without touching the installed scene.
+    void a_bad_camera_edit_is_refused() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        const json before = w.document()->json();
+        json edited = before;
+        edited["camera"]["look_at"] = edited["camera"]["position"];
+        QString error;
+        QVERIFY(!w.document()->apply(edited, "bad camera", &error));
+        QCOMPARE(error, QString("camera.look_at: must differ from position"));
+        QCOMPARE(w.document()->json(), before);
+        QVERIFY(!w.document()->undo_stack()->canUndo());
+    }
+};
+
+QTEST_MAIN(TestSceneEdits)
+#include "test_scene_edits.moc"
