@@ -7,11 +7,12 @@
 #include <iostream>
 #include <memory>
 
-#include "analysis/report_benchmark.h"
-#include "analysis/sppm_convergence.h"
+#include "bench/report_benchmark.h"
+#include "bench/sppm_convergence.h"
 #include "commands.h"
 #include "render/atomic_file.h"
 #include "render/image_io.h"
+#include "render/integrator_names.h"
 #include "scene/limits.h"
 #include "scene/scene_json.h"
 
@@ -40,7 +41,7 @@ bool have_gnuplot() { return std::system("command -v gnuplot >/dev/null 2>&1") =
 bool plot_convergence(const std::filesystem::path& dir, const ConvergenceResult& r) {
     const auto data = dir / "convergence.dat";
     std::ofstream dat(data);
-    for (const char* integrator : {"sppm", "path"}) {
+    for (const std::string_view integrator : {integrators::kSppm, integrators::kPath}) {
         dat << "# " << integrator << ": amount seconds block_error rms_error\n";
         for (const ConvergencePoint& p : r.points) {
             if (p.integrator == integrator) dat << p.amount << " " << p.seconds << " " << p.block_error << " " << p.rms_error << "\n";
