@@ -5,7 +5,7 @@
 #include "commands.h"
 #include "render/atomic_file.h"
 #include "render/image_io.h"
-#include "render/photon_tracer.h"
+#include "render/memory_budget.h"
 #include "scene/json_reader.h"
 
 int main(int argc, char** argv) {

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <functional>
+
 #include "render/memory_budget.h"
 #include "render/photon_emission.h"
 #include "render/photon_map.h"

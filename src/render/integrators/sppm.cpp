@@ -15,6 +15,7 @@
 #include "optics/glass.h"
 #include "render/camera.h"
 #include "render/direct_light.h"
+#include "render/memory_budget.h"
 #include "render/photon_emission.h"
 #include "render/photon_tracer.h"
 #include "render/sppm_photons.h"
@@ -203,10 +204,10 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     photon_settings.wavelengths = &m_pass_wavelength;
     if (m_stats.passes == 0) {
         const uint64_t need = photon_pass_bytes(scene, photon_settings);
-        check_memory_budget(need,
-                            "pass_photons: " + std::to_string(pass_photons()) +
-                                " photons per light need up to",
-                            " per pass", "use fewer");
+        check_memory_budget(
+            need,
+            "pass_photons: " + std::to_string(pass_photons()) + " photons per light need up to",
+            " per pass", "use fewer");
     }
     PassState pass{m_stats.passes,
                    splitmix64(r.seed ^ splitmix64(static_cast<uint64_t>(m_stats.passes))), 550, 1,
@@ -403,9 +404,8 @@ RenderStats SppmIntegrator::stats(double seconds) const {
                   "sppm: %d passes, %lld photons (%lld aimed; %.3g passes/s, %.3g photons/s); "
                   "camera %.2f s, photons %.2f s, gather %.2f s; mean radius %.4g",
                   p.passes, static_cast<long long>(p.photons_emitted),
-                  static_cast<long long>(p.photons_aimed), rate(p.passes),
-                  rate(p.photons_emitted), p.camera_seconds, p.photon_seconds,
-                  p.gather_seconds, p.mean_radius);
+                  static_cast<long long>(p.photons_aimed), rate(p.passes), rate(p.photons_emitted),
+                  p.camera_seconds, p.photon_seconds, p.gather_seconds, p.mean_radius);
     out.summary = line;
     return out;
 }
