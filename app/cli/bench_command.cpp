@@ -185,8 +185,9 @@ Action add_bench_command(CLI::App& app) {
     report->add_option("--threads", s.threads, "Worker threads (default: all cores)")->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
 
     auto conv = std::make_shared<ConvergenceArgs>();
+    // Named after the integrator it measures.
     CLI::App* sppm = bench->add_subcommand(
-        "sppm", "How sppm converges: its error against a long path-traced reference, against passes and time");
+        std::string(integrators::kSppm), "How sppm converges: its error against a long path-traced reference, against passes and time");
     sppm->add_option("scene", conv->scene, "Scene file (default: the built-in default scene)");
     sppm->add_option("-o,--output", conv->out_dir, "Folder for convergence.csv, the plots and images")
         ->capture_default_str();
