@@ -3,6 +3,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "render/integrator_names.h"
 #include "render/progressive_render.h"
 #include "render/render_session.h"
 #include "scene/scene_json.h"
@@ -12,7 +13,7 @@ namespace {
 
 void BM_WhittedDefaultScene(benchmark::State& state) {
     Scene scene = default_scene();
-    scene.render.integrator = "whitted";
+    scene.render.integrator = integrators::kWhitted;
     scene.render.width = 200;
     scene.render.height = 150;
     scene.render.spp = 4;
@@ -36,7 +37,7 @@ namespace {
 // update), single-threaded and on every core.
 void BM_SppmPassDefaultScene(benchmark::State& state) {
     Scene scene = default_scene();
-    scene.render.integrator = "sppm";
+    scene.render.integrator = integrators::kSppm;
     scene.render.width = 400;
     scene.render.height = 300;
     ProgressiveRender render(scene, static_cast<int>(state.range(0)));
@@ -44,7 +45,7 @@ void BM_SppmPassDefaultScene(benchmark::State& state) {
     for (auto _ : state) render.add_pass(control);
     state.SetItemsProcessed(state.iterations() * scene.render.width * scene.render.height);
     state.counters["photons/s"] = benchmark::Counter(
-        static_cast<double>(render.sppm_stats()->photons_emitted), benchmark::Counter::kIsRate);
+        static_cast<double>(render.stats(0).photons), benchmark::Counter::kIsRate);
 }
 
 BENCHMARK(BM_SppmPassDefaultScene)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -7,11 +7,12 @@
 #include <iostream>
 #include <memory>
 
-#include "analysis/report_benchmark.h"
-#include "analysis/sppm_convergence.h"
+#include "bench/report_benchmark.h"
+#include "bench/sppm_convergence.h"
 #include "commands.h"
 #include "util/atomic_file.h"
 #include "render/image_io.h"
+#include "render/integrator_names.h"
 #include "scene/limits.h"
 #include "scene/scene_json.h"
 
@@ -40,7 +41,7 @@ bool have_gnuplot() { return std::system("command -v gnuplot >/dev/null 2>&1") =
 bool plot_convergence(const std::filesystem::path& dir, const ConvergenceResult& r) {
     const auto data = dir / "convergence.dat";
     std::ofstream dat(data);
-    for (const char* integrator : {"sppm", "path"}) {
+    for (const std::string_view integrator : {integrators::kSppm, integrators::kPath}) {
         dat << "# " << integrator << ": amount seconds block_error rms_error\n";
         for (const ConvergencePoint& p : r.points) {
             if (p.integrator == integrator) dat << p.amount << " " << p.seconds << " " << p.block_error << " " << p.rms_error << "\n";
@@ -184,8 +185,9 @@ Action add_bench_command(CLI::App& app) {
     report->add_option("--threads", s.threads, "Worker threads (default: all cores)")->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
 
     auto conv = std::make_shared<ConvergenceArgs>();
+    // Named after the integrator it measures.
     CLI::App* sppm = bench->add_subcommand(
-        "sppm", "How sppm converges: its error against a long path-traced reference, against passes and time");
+        std::string(integrators::kSppm), "How sppm converges: its error against a long path-traced reference, against passes and time");
     sppm->add_option("scene", conv->scene, "Scene file (default: the built-in default scene)");
     sppm->add_option("-o,--output", conv->out_dir, "Folder for convergence.csv, the plots and images")
         ->capture_default_str();

@@ -22,6 +22,7 @@
 #include "util/atomic_file.h"
 #include "util/bitmap_font.h"
 #include "render/image_io.h"
+#include "render/integrator_names.h"
 #include "scene/limits.h"
 #include "util/error.h"
 
@@ -313,7 +314,7 @@ int run_bench(const PovrayBenchArgs& a) {
                   "--threads",
                   std::to_string(a.threads),
                   "--integrator",
-                  "photon_map",
+                  std::string(integrators::kPhotonMap),
                   "--caustic-photons",
                   std::to_string(a.photons),
                   "--radius",

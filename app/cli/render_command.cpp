@@ -107,9 +107,9 @@ int run(const RenderArgs& a) {
     }
 
     const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
-    const bool sppm = s.integrator == "sppm";
+    const bool progressive = integrator_info(s.integrator).progressive;
     std::string amount = std::to_string(s.spp) + " spp";
-    if (sppm) {
+    if (progressive) {
         amount = s.passes > 0 ? std::to_string(s.passes) + " passes" : "";
         if (s.time > 0) amount += (amount.empty() ? "" : " or ") + format_seconds(s.time);
     }
@@ -132,24 +132,7 @@ int run(const RenderArgs& a) {
         std::cerr << "\nlenslab: render cancelled; nothing written\n";
         return 130;
     }
-    if (result.photons && !a.quiet) {
-        const PhotonTracingStats& p = *result.photons;
-        std::fprintf(stderr,
-                     "photons: %lld emitted (%lld aimed at the glass and mirrors), %zu direct + %zu caustic "
-                     "stored (%.1f MiB), traced in %.3f s, maps built in %.3f s\n",
-                     static_cast<long long>(p.emitted), static_cast<long long>(p.aimed), p.direct, p.caustic,
-                     p.memory_bytes / (1024.0 * 1024.0), p.trace_seconds, p.build_seconds);
-    }
-    if (result.sppm && !a.quiet) {
-        const SppmStats& p = *result.sppm;
-        std::fprintf(stderr,
-                     "sppm: %d passes, %lld photons (%lld aimed; %.3g passes/s, %.3g photons/s); camera %.2f s, "
-                     "photons %.2f s, gather %.2f s; mean radius %.4g\n",
-                     p.passes, static_cast<long long>(p.photons_emitted), static_cast<long long>(p.photons_aimed),
-                     p.passes / result.seconds,
-                     p.photons_emitted / result.seconds, p.camera_seconds, p.photon_seconds, p.gather_seconds,
-                     p.mean_radius);
-    }
+    if (!result.stats.summary.empty() && !a.quiet) std::fprintf(stderr, "%s\n", result.stats.summary.c_str());
     if (control.non_finite_samples() > 0) {
         std::fprintf(stderr,
                      "lenslab: warning: %lld samples came out NaN or infinite and were left out of "
@@ -173,8 +156,8 @@ int run(const RenderArgs& a) {
         throw;
     }
     sigprocmask(SIG_SETMASK, &previous, nullptr);
-    if (result.sppm) {
-        std::printf("wrote %s (%dx%d, %d passes, %.2f s)\n", a.output.c_str(), s.width, s.height, result.sppm->passes,
+    if (result.stats.passes > 0) {
+        std::printf("wrote %s (%dx%d, %d passes, %.2f s)\n", a.output.c_str(), s.width, s.height, result.stats.passes,
                     result.seconds);
     } else {
         std::printf("wrote %s (%dx%d, %d spp, %.2f s)\n", a.output.c_str(), s.width, s.height, s.spp,

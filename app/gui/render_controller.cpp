@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "render/image_io.h"
+#include "render/integrator_names.h"
 #include "render/progressive_render.h"
 
 namespace lenslab::gui {
@@ -36,7 +37,7 @@ RenderController::~RenderController() {
 
 void RenderController::restart(const Scene& scene, int delay_ms) {
     Scene preview = scene;
-    if (!m_use_scene_integrator) preview.render.integrator = "sppm";
+    if (!m_use_scene_integrator) preview.render.integrator = integrators::kView;
     const int largest = std::max(preview.render.width, preview.render.height);
     if (largest > m_preview_size) {
         const double s = double(m_preview_size) / largest;
@@ -115,13 +116,8 @@ void RenderController::run() {
                     QMutexLocker lock(&m_mutex);
                     m_last = film;
                 }
-                qint64 photons = 0;
-                if (const SppmStats* sppm = render.sppm_stats()) {
-                    photons = sppm->photons_emitted;
-                } else if (const auto& stats = render.photon_stats()) {
-                    photons = qint64(stats->direct + stats->caustic);
-                }
-                emit frame_ready(to_qimage(film), render.passes(), photons, clock.elapsed() / 1000.0,
+                const double seconds = clock.elapsed() / 1000.0;
+                emit frame_ready(to_qimage(film), render.passes(), qint64(render.stats(seconds).photons), seconds,
                                  QString::fromStdString(scene.render.integrator));
             }
         } catch (const std::exception& e) {

@@ -8,6 +8,7 @@
 #include "render/film.h"
 #include "optics/spectrum.h"
 #include "render/render_control.h"
+#include "render/render_stats.h"
 #include "scene/scene.h"
 
 namespace lenslab {
@@ -20,6 +21,9 @@ public:
     // pixel was finished.
     virtual bool render(const Scene& scene, const Camera& camera, Film& film,
                         RenderControl& control) = 0;
+    // What the renders so far did (passes, photons, timings), with a summary line. `seconds`:
+    // how long the caller's render took, for the rates in the summary.
+    virtual RenderStats stats(double /*seconds*/) const { return {}; }
 };
 
 // Base for integrators that estimate radiance along independent camera rays. Handles the

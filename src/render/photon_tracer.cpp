@@ -2,14 +2,11 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 
 #include "math/rng.h"
@@ -224,32 +221,15 @@ uint64_t photon_storage_bytes(const Scene& scene, const PhotonTracingSettings& s
                : static_cast<uint64_t>(bytes);
 }
 
-uint64_t available_memory_bytes() {
-    std::ifstream meminfo("/proc/meminfo");
-    std::string key;
-    uint64_t kib = 0;
-    while (meminfo >> key >> kib) {
-        if (key == "MemAvailable:") return kib * 1024;
-        meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
-    }
-    return static_cast<uint64_t>(sysconf(_SC_PHYS_PAGES)) *
-           static_cast<uint64_t>(sysconf(_SC_PAGE_SIZE));
-}
-
 PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& settings,
                         RenderControl& control, PhotonTracingStats* stats) {
     const auto t0 = std::chrono::steady_clock::now();
     const PhotonPlan plan = photon_plan(scene, settings);
     const uint64_t need = photon_storage_bytes(scene, settings);
-    const uint64_t have = available_memory_bytes();
-    // Leave room for the image, the scene and the system: use at most 80% of what is free.
-    if (need > have / 10 * 8) {
-        std::ostringstream msg;
-        msg << "photons: " << plan.total() << " photons in all from " << photon_light_count(scene)
-            << " light(s) need " << need / (1024 * 1024) << " MiB of photon storage, but only "
-            << have / (1024 * 1024) << " MiB of memory is available; use fewer photons";
-        throw ResourceError(msg.str());
-    }
+    check_memory_budget(need,
+                        "photons: " + std::to_string(plan.total()) + " photons in all from " +
+                            std::to_string(photon_light_count(scene)) + " light(s) need",
+                        " of photon storage", "use fewer photons");
 
     const std::vector<LightSpectrum> spectra = light_spectra(scene);
     const int64_t chunks = (plan.total() + kChunk - 1) / kChunk;

@@ -11,8 +11,8 @@
 
 #include <cstdint>
 #include <functional>
-#include <stdexcept>
 
+#include "render/memory_budget.h"
 #include "render/photon_emission.h"
 #include "render/photon_map.h"
 #include "render/render_control.h"
@@ -42,15 +42,8 @@ struct PhotonTracingStats {
     size_t memory_bytes = 0;
 };
 
-// Thrown before any work when the photons asked for cannot fit in memory.
-class ResourceError : public Error {
-public:
-    using Error::Error;
-};
-
-// Bytes of photon storage the settings are expected to need, and the memory available.
+// Bytes of photon storage the settings are expected to need.
 uint64_t photon_storage_bytes(const Scene& scene, const PhotonTracingSettings& settings);
-uint64_t available_memory_bytes();
 
 // Traces the photons and builds the maps. Deterministic for a given seed at any thread
 // count (one random stream per photon). Throws ResourceError if storage would not fit.

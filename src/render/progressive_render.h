@@ -1,27 +1,23 @@
 #pragma once
-// A render that improves pass by pass, for interactive views. With sppm a pass is one sppm
-// pass (camera paths, photons, radius update) of one integrator that lives as long as the
-// render. With the other integrators each pass adds one sample per pixel with a fresh seed
-// to a running average; the photon maps are traced once, with the first pass, and reused by
-// the later ones.
+// A render that improves pass by pass, for interactive views. A progressive integrator
+// (sppm) runs its own passes, and lives as long as the render; the others add one sample
+// per pixel with a fresh seed each pass to a running average, the photon maps traced once,
+// with the first pass, and reused by the later ones (render/averaged_passes.h).
 
 #include <memory>
-#include <optional>
-#include <vector>
 
 #include "render/film.h"
-#include "render/integrators/sppm.h"
-#include "render/photon_tracer.h"
+#include "render/integrator.h"
 #include "render/render_control.h"
+#include "render/render_stats.h"
 #include "scene/scene.h"
 
 namespace lenslab {
 
-class PhotonMap;
-
 class ProgressiveRender {
 public:
     // threads <= 0: all cores. The scene is copied; later edits need a new ProgressiveRender.
+    // Throws std::invalid_argument for an unknown integrator.
     explicit ProgressiveRender(const Scene& scene, int threads = 0);
     ~ProgressiveRender();
     ProgressiveRender(const ProgressiveRender&) = delete;
@@ -31,20 +27,15 @@ public:
     // `control` was cancelled before the pass finished.
     bool add_pass(RenderControl& control);
 
-    int passes() const { return m_passes; }
+    int passes() const { return m_integrator->passes(); }
     Film image() const;  // the image after the passes so far (black before the first)
-    const std::optional<PhotonTracingStats>& photon_stats() const { return m_photon_stats; }
-    // Set when the scene's integrator is sppm.
-    const SppmStats* sppm_stats() const { return m_sppm ? &m_sppm->stats() : nullptr; }
+    // The integrator's statistics after the passes so far; `seconds`: the time they took.
+    RenderStats stats(double seconds) const { return m_integrator->stats(seconds); }
 
 private:
     Scene m_scene;
     int m_threads;
-    int m_passes = 0;
-    std::vector<double> m_sum;  // RGB per pixel, averaged integrators
-    std::shared_ptr<const PhotonMap> m_photons;
-    std::optional<PhotonTracingStats> m_photon_stats;
-    std::unique_ptr<SppmIntegrator> m_sppm;  // refers to m_scene
+    std::unique_ptr<ProgressiveIntegrator> m_integrator;  // refers to m_scene
 };
 
 }  // namespace lenslab

@@ -1,5 +1,5 @@
 // The same seed gives a byte-identical image at 1, 2 and 8 threads, for every integrator
-// render_session knows (integrator_names(), so one added later is covered once listed):
+// the registry knows (integrator_names(), so one added later is covered once registered):
 // random streams are tied to pixels and photons, never to threads.
 
 #include <gtest/gtest.h>

@@ -351,10 +351,10 @@ TEST(Sppm, InitialRadiusIsTwoPixelFootprints) {
     // cap, 0.5% of the scene's diagonal, is 0.7 here).
     const RenderResult r = render(point_lit_floor(), "sppm");
     const double footprint = 2.0 * (2.0 * std::tan(0.5 * kPi / 180.0) / 3.0);
-    EXPECT_NEAR(r.sppm->mean_radius, 2.0 * footprint, 1e-4 * footprint);
+    EXPECT_NEAR(r.stats.value("mean_radius"), 2.0 * footprint, 1e-4 * footprint);
     Scene given = point_lit_floor();
     given.render.initial_radius = 0.01;
-    EXPECT_DOUBLE_EQ(render(given, "sppm").sppm->mean_radius, 0.01);
+    EXPECT_DOUBLE_EQ(render(given, "sppm").stats.value("mean_radius"), 0.01);
 }
 
 TEST(Sppm, TimeBudgetEndsTheRender) {
@@ -363,7 +363,7 @@ TEST(Sppm, TimeBudgetEndsTheRender) {
     s.render.time = 0.05;
     const RenderResult r = render(s, "sppm");
     EXPECT_FALSE(r.cancelled);
-    EXPECT_GE(r.sppm->passes, 1);
+    EXPECT_GE(r.stats.passes, 1);
 }
 
 TEST(Sppm, CancelledRenderWritesNothing) {

@@ -1,6 +1,7 @@
 #include "render/integrators/photon_map.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "render/direct_light.h"
 
@@ -32,7 +33,7 @@ PhotonTracingSettings photon_tracing_settings(const Scene& scene) {
     const auto aims = [&](const LightPtr& l) { return l->worth_aiming(scene.photon_targets()); };
     const bool all_aimed = s.aim && !scene.photon_targets().empty() && !scene.has_specular_non_target() &&
                            std::all_of(scene.lights().begin(), scene.lights().end(), aims);
-    if (r.direct == "shadow_rays" && all_aimed) s.photons_per_light = 0;
+    if (r.direct == kDirectFromShadowRays && all_aimed) s.photons_per_light = 0;
     return s;
 }
 
@@ -42,11 +43,33 @@ PhotonMapIntegrator::PhotonMapIntegrator(const Scene& scene)
 bool PhotonMapIntegrator::render(const Scene& scene, const Camera& camera, Film& film,
                                  RenderControl& control) {
     if (!m_map) {
-        m_map = std::make_shared<const PhotonMap>(
+        auto map = std::make_shared<const PhotonMap>(
             trace_photons(scene, photon_tracing_settings(scene), control, &m_stats));
+        // A cancelled trace leaves a partial map: not kept for a later render to reuse.
+        if (control.cancelled()) return false;
+        m_map = std::move(map);
     }
     if (control.cancelled()) return false;
     return WhittedIntegrator::render(scene, camera, film, control);
+}
+
+RenderStats PhotonMapIntegrator::stats(double /*seconds*/) const {
+    const PhotonTracingStats& p = m_stats;
+    RenderStats out;
+    out.photons = static_cast<int64_t>(p.direct + p.caustic);
+    out.values = {{"photons_emitted", double(p.emitted)},  {"photons_aimed", double(p.aimed)},
+                  {"direct_photons", double(p.direct)},    {"caustic_photons", double(p.caustic)},
+                  {"trace_seconds", p.trace_seconds},      {"build_seconds", p.build_seconds},
+                  {"memory_bytes", double(p.memory_bytes)}};
+    // Tools parse this line (`lenslab bench povray`): keep its wording.
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "photons: %lld emitted (%lld aimed at the glass and mirrors), %zu direct + %zu "
+                  "caustic stored (%.1f MiB), traced in %.3f s, maps built in %.3f s",
+                  static_cast<long long>(p.emitted), static_cast<long long>(p.aimed), p.direct,
+                  p.caustic, p.memory_bytes / (1024.0 * 1024.0), p.trace_seconds, p.build_seconds);
+    out.summary = line;
+    return out;
 }
 
 void PhotonMapIntegrator::add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n,
@@ -55,7 +78,7 @@ void PhotonMapIntegrator::add_diffuse_irradiance(LightSum& e, const Vec3& p, con
     // Photons store colours; the estimate is lit as an RGB illuminant (D65 times bands), whose
     // band colours are exact.
     Rgb from_maps = PhotonMap::irradiance(m_map->caustic(), p, n, m_gather, scratch);
-    if (m_scene.render.direct == "photon_map") {
+    if (m_scene.render.direct == kDirectFromPhotonMap) {
         from_maps += PhotonMap::irradiance(m_map->direct(), p, n, m_gather, scratch);
     } else {
         WhittedIntegrator::add_diffuse_irradiance(e, p, n, rng);

@@ -8,12 +8,17 @@
 //     render.max_photons_per_estimate photons per estimate.
 
 #include <memory>
+#include <string_view>
 
 #include "render/integrators/whitted.h"
 #include "render/photon_map.h"
 #include "render/photon_tracer.h"
 
 namespace lenslab {
+
+// render.direct's values (kDirectLightNames): where the direct light comes from.
+inline constexpr std::string_view kDirectFromShadowRays = "shadow_rays";
+inline constexpr std::string_view kDirectFromPhotonMap = "photon_map";
 
 class PhotonMapIntegrator final : public WhittedIntegrator {
 public:
@@ -22,10 +27,10 @@ public:
     // Traces the photons, builds the maps, then renders the pixels.
     bool render(const Scene& scene, const Camera& camera, Film& film, RenderControl& control) override;
 
-    const PhotonTracingStats& photon_stats() const { return m_stats; }
+    // The photons traced (none yet: zeros); summary "photons: N emitted (...) ...".
+    RenderStats stats(double seconds) const override;
     // Uses maps traced elsewhere (benchmarks reuse one map across several renders).
     void set_photon_map(std::shared_ptr<const PhotonMap> map) { m_map = std::move(map); }
-    const std::shared_ptr<const PhotonMap>& shared_photon_map() const { return m_map; }
 
 protected:
     void add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n, Rng& rng) const override;

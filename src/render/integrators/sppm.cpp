@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include <tbb/blocked_range.h>
@@ -14,6 +15,7 @@
 #include "optics/glass.h"
 #include "render/camera.h"
 #include "render/direct_light.h"
+#include "render/memory_budget.h"
 #include "render/photon_emission.h"
 #include "render/photon_tracer.h"
 #include "render/sppm_photons.h"
@@ -194,14 +196,10 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     photon_settings.wavelengths = &m_pass_wavelength;
     if (m_stats.passes == 0) {
         const uint64_t need = photon_pass_bytes(scene, photon_settings);
-        const uint64_t have = available_memory_bytes();
-        if (need > have / 10 * 8) {
-            throw ResourceError("pass_photons: " + std::to_string(pass_photons()) +
-                                " photons per light need up to " +
-                                std::to_string(need / (1024 * 1024)) + " MiB per pass, but only " +
-                                std::to_string(have / (1024 * 1024)) +
-                                " MiB of memory is available; use fewer");
-        }
+        check_memory_budget(
+            need,
+            "pass_photons: " + std::to_string(pass_photons()) + " photons per light need up to",
+            " per pass", "use fewer");
     }
     PassState pass{m_stats.passes,
                    splitmix64(r.seed ^ splitmix64(static_cast<uint64_t>(m_stats.passes))), 550, 1,
@@ -372,6 +370,36 @@ void SppmIntegrator::develop(Film& film) const {
             film.set(x, y, l.is_finite() ? l : Rgb{});
         }
     }
+}
+
+}  // namespace lenslab
+
+namespace lenslab {
+
+RenderStats SppmIntegrator::stats(double seconds) const {
+    const SppmStats& p = m_stats;
+    RenderStats out;
+    out.passes = p.passes;
+    out.photons = p.photons_emitted;
+    out.values = {{"passes", double(p.passes)},
+                  {"photons_emitted", double(p.photons_emitted)},
+                  {"photons_aimed", double(p.photons_aimed)},
+                  {"photon_hits", double(p.photon_hits)},
+                  {"camera_seconds", p.camera_seconds},
+                  {"photon_seconds", p.photon_seconds},
+                  {"gather_seconds", p.gather_seconds},
+                  {"mean_radius", p.mean_radius}};
+    const auto rate = [seconds](auto n) { return seconds > 0 ? double(n) / seconds : 0.0; };
+    // Tools parse this line: keep its wording.
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "sppm: %d passes, %lld photons (%lld aimed; %.3g passes/s, %.3g photons/s); "
+                  "camera %.2f s, photons %.2f s, gather %.2f s; mean radius %.4g",
+                  p.passes, static_cast<long long>(p.photons_emitted),
+                  static_cast<long long>(p.photons_aimed), rate(p.passes), rate(p.photons_emitted),
+                  p.camera_seconds, p.photon_seconds, p.gather_seconds, p.mean_radius);
+    out.summary = line;
+    return out;
 }
 
 }  // namespace lenslab

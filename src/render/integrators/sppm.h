@@ -48,7 +48,8 @@ public:
     bool add_pass(RenderControl& control) override;
     int passes() const override { return m_stats.passes; }
     void develop(Film& film) const override;
-    const SppmStats& stats() const { return m_stats; }
+    // SppmStats as values; summary "sppm: N passes, ...", its rates over `seconds`.
+    RenderStats stats(double seconds) const override;
 
 private:
     struct Pixel;

@@ -39,7 +39,7 @@ struct ReportBenchmarkResult {
     Film grid;  // rows: radii, columns: photon counts (the report's Figure 4.4)
 };
 
-// The report's figures (../shared/PERFORMANCE.md), for the ratios in the CSV.
+// The course report's figures (docs/performance.md lists them), for the ratios in the CSV.
 double report_build_seconds(int64_t photons);                // Table 4.1; 0 if not listed
 double report_render_seconds(int64_t photons, double radius);  // Table 4.2; 0 if not listed
 

@@ -26,7 +26,7 @@ struct ConvergenceSettings {
 };
 
 struct ConvergencePoint {
-    std::string integrator;  // "sppm" or "path"
+    std::string integrator;  // integrators::kSppm or kPath
     int amount = 0;          // passes or samples per pixel
     double seconds = 0;      // rendering time to this point
     double block_error = 0;  // mean over 8x8-pixel blocks of |block - reference| / reference

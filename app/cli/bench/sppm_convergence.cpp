@@ -1,4 +1,4 @@
-#include "analysis/sppm_convergence.h"
+#include "bench/sppm_convergence.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "render/integrator_names.h"
 #include "render/progressive_render.h"
 #include "render/render_session.h"
 
@@ -82,7 +83,7 @@ ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings&
 
     // The reference takes a seed of its own, so the images measured share no samples with it.
     Scene ref = base;
-    ref.render.integrator = "path";
+    ref.render.integrator = integrators::kPath;
     ref.render.spp = s.reference_spp;
     ref.render.seed = base.render.seed + 1000003;
     RenderControl control;
@@ -102,7 +103,7 @@ ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings&
     };
 
     Scene sppm = base;
-    sppm.render.integrator = "sppm";
+    sppm.render.integrator = integrators::kSppm;
     ProgressiveRender progressive(sppm, s.threads);
     double seconds = 0;
     std::vector<int> passes = s.passes;
@@ -114,15 +115,15 @@ ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings&
             seconds += seconds_since(t0);
         }
         r.sppm_last = progressive.image();
-        add("sppm", target, seconds, r.sppm_last);
+        add(std::string(integrators::kSppm), target, seconds, r.sppm_last);
     }
 
     Scene path = base;
-    path.render.integrator = "path";
+    path.render.integrator = integrators::kPath;
     for (int spp : s.path_spp) {
         path.render.spp = spp;
         const RenderResult result = render_scene(path, control, s.threads);
-        add("path", spp, result.seconds, result.film);
+        add(std::string(integrators::kPath), spp, result.seconds, result.film);
     }
     return r;
 }

@@ -1,4 +1,4 @@
-#include "analysis/report_benchmark.h"
+#include "bench/report_benchmark.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,6 +9,7 @@
 #include <tbb/task_arena.h>
 
 #include "render/camera.h"
+#include "render/integrator_names.h"
 #include "render/integrators/photon_map.h"
 
 namespace lenslab {
@@ -72,8 +73,8 @@ ReportBenchmarkResult run_report_benchmark(const Scene& base, const ReportBenchm
     scene.render.width = s.width;
     scene.render.height = s.height;
     scene.render.spp = s.spp;
-    scene.render.integrator = "photon_map";
-    scene.render.direct = "photon_map";
+    scene.render.integrator = integrators::kPhotonMap;
+    scene.render.direct = kDirectFromPhotonMap;
     const Camera camera(scene.camera, s.width, s.height);
 
     ReportBenchmarkResult result;

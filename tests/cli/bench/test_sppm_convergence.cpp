@@ -1,0 +1,59 @@
+// `lenslab bench sppm`'s harness: its error measures, and a tiny run.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "bench/sppm_convergence.h"
+#include "render/integrator_names.h"
+#include "scene/scene_json.h"
+
+namespace lenslab {
+namespace {
+
+Film filled(int w, int h, float v) {
+    Film f(w, h);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) f.set(x, y, Rgb{v, v, v});
+    }
+    return f;
+}
+
+TEST(SppmConvergence, ErrorsAreRelativeToTheReference) {
+    const Film reference = filled(16, 16, 2.0f), off = filled(16, 16, 2.5f);
+    EXPECT_DOUBLE_EQ(block_relative_error(reference, reference), 0.0);
+    EXPECT_NEAR(block_relative_error(off, reference), 0.25, 1e-6);
+    EXPECT_NEAR(rms_relative_error(off, reference), 0.25, 1e-6);
+    const int region[4] = {0, 0, 4, 4};
+    EXPECT_NEAR(region_relative_error(off, reference, region), 0.25, 1e-6);
+}
+
+TEST(SppmConvergence, BlackReferenceBlocksAreSkipped) {
+    EXPECT_DOUBLE_EQ(block_relative_error(filled(16, 16, 1.0f), filled(16, 16, 0.0f)), 0.0);
+}
+
+TEST(SppmConvergence, RunsSppmAndPathAgainstTheReference) {
+    ConvergenceSettings s;
+    s.width = s.height = 8;
+    s.reference_spp = 4;
+    s.passes = {2, 1};
+    s.path_spp = {1};
+    s.threads = 1;
+    Scene scene = load_scene_file(LENSLAB_SOURCE_DIR "/scenes/caustic_room.json");
+    scene.render.pass_photons = 500;
+    const ConvergenceResult r = run_convergence(scene, s, [](const std::string&) {});
+    ASSERT_EQ(r.points.size(), 3u);
+    EXPECT_EQ(r.points[0].integrator, integrators::kSppm);
+    EXPECT_EQ(r.points[0].amount, 1);  // sorted
+    EXPECT_EQ(r.points[1].amount, 2);
+    EXPECT_EQ(r.points[2].integrator, integrators::kPath);
+    EXPECT_EQ(r.reference.width(), 8);
+    EXPECT_EQ(r.sppm_last.width(), 8);
+    const std::string csv = convergence_csv(r);
+    EXPECT_EQ(csv.rfind("integrator,passes_or_spp,seconds,block_error,rms_error,region_error\n", 0),
+              0u);
+    EXPECT_NE(csv.find("\npath,1,"), std::string::npos) << csv;
+}
+
+}  // namespace
+}  // namespace lenslab
