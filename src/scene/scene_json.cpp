@@ -12,12 +12,15 @@
 #include "geometry/lens/lens_solid.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
+#include "scene/camera_spec.h"
 #include "scene/json_reader.h"
 #include "scene/lens_group_json.h"
 #include "scene/limits.h"
 #include "scene/mesh_json.h"
 #include "scene/planar_json.h"
+#include "scene/render_settings_spec.h"
 #include "scene/spectral_json.h"
+#include "scene/spec_reader.h"
 #include "scene/surface_json.h"
 
 namespace lenslab {
@@ -31,8 +34,8 @@ std::string index_path(const std::string& base, size_t i) {
 }
 
 void read_camera(const json& j, CameraSettings& cam) {
-    JsonObjectReader r(j, "camera", {"position", "look_at", "direction", "up", "fov"});
-    cam.position = r.vec3("position");
+    SpecReader r(j, "camera", camera_spec());
+    cam.position = r.point("position");
     if (!r.has("look_at") && !r.has("direction")) {
         throw SceneError("camera", "give look_at (a point) or direction (a vector)");
     }
@@ -40,73 +43,53 @@ void read_camera(const json& j, CameraSettings& cam) {
         throw SceneError("camera.direction", "give either look_at or direction, not both");
     }
     if (r.has("look_at")) {
-        const Vec3 d = r.vec3("look_at") - cam.position;
+        const Vec3 d = r.point("look_at") - cam.position;
         if (!(length(d) > 1e-12)) throw SceneError("camera.look_at", "must differ from position");
         cam.direction = normalize(d);
     } else {
-        cam.direction = r.direction("direction");
+        cam.direction = r.unit_vector("direction");
     }
     const bool up_given = r.has("up");
-    cam.up = r.direction("up", {0, 1, 0});
+    cam.up = r.unit_vector("up");
     if (length(cross(cam.up, cam.direction)) < 1e-9) {
         throw SceneError("camera.up", up_given ? "must not be parallel to the view direction"
                                                : "the default up [0, 1, 0] is parallel to the view "
                                                  "direction; give camera.up");
     }
-    cam.fov_deg = r.number("fov", cam.fov_deg);
-    if (!(cam.fov_deg > 0 && cam.fov_deg < 180)) {
-        throw SceneError("camera.fov", "must be between 0 and 180 degrees (exclusive), got " +
-                                           format_number(cam.fov_deg));
-    }
+    cam.fov_deg = r.real("fov");
 }
 
+// Keys, defaults and ranges come from render_settings_spec(); what stays here are the
+// rules between fields.
 void read_render(const json& j, RenderSettings& s) {
-    JsonObjectReader r(j, "render",
-                       {"width", "height", "spp", "max_depth", "seed", "ambient", "background",
-                        "light_samples", "min_weight", "integrator", "photons", "radius",
-                        "filter", "filter_k", "max_photons_per_estimate", "direct", "passes", "time",
-                        "pass_photons", "initial_radius", "alpha", "caustic_photons", "aim_photons"});
-    s.width = static_cast<int>(r.integer("width", s.width, 1, kMaxImageSide));
-    s.height = static_cast<int>(r.integer("height", s.height, 1, kMaxImageSide));
+    SpecReader r(j, "render", render_settings_spec());
+    s.width = static_cast<int>(r.whole("width"));
+    s.height = static_cast<int>(r.whole("height"));
     if (auto problem = image_size_problem(s.width, s.height)) throw SceneError("render", *problem);
-    s.spp = static_cast<int>(r.integer("spp", s.spp, 1, kMaxSpp));
-    s.max_depth = static_cast<int>(r.integer("max_depth", s.max_depth, 0, kMaxDepth));
-    s.seed = static_cast<uint64_t>(r.integer("seed", static_cast<int64_t>(s.seed), 0, 2147483647));
-    s.ambient = r.color("ambient", s.ambient);
-    s.background = r.color("background", s.background);
-    s.light_samples = static_cast<int>(r.integer("light_samples", s.light_samples, 1, 4096));
-    s.min_weight = r.fraction("min_weight", s.min_weight);
-    if (s.min_weight < kMinBranchWeight) {
-        throw SceneError("render.min_weight",
-                         "must be at least 1e-06 (each camera ray then spawns at most about "
-                         "a million rays), got " + format_number(s.min_weight));
-    }
-    s.integrator = r.choice("integrator", s.integrator, kIntegratorNames);
-    s.photons = r.integer("photons", s.photons, 1, kMaxPhotonsPerLight);
-    s.radius = r.positive("radius", s.radius);
-    s.filter = r.choice("filter", s.filter, kPhotonFilterNames);
-    s.filter_k = r.number("filter_k", s.filter_k);
-    if (!(s.filter_k >= 1.0)) {
-        throw SceneError("render.filter_k", "must be >= 1 (the cone reaches zero at k r), got " +
-                                                format_number(s.filter_k));
-    }
-    s.max_photons_per_estimate = static_cast<int>(
-        r.integer("max_photons_per_estimate", s.max_photons_per_estimate, 1, 1000000));
-    s.direct = r.choice("direct", s.direct, kDirectLightNames);
-    s.passes = static_cast<int>(r.integer("passes", s.passes, 0, 1 << 24));
-    s.time = r.number("time", s.time);
-    if (!(s.time >= 0.0)) throw SceneError("render.time", "must be >= 0 seconds (0: no time limit), got " + format_number(s.time));
+    s.spp = static_cast<int>(r.whole("spp"));
+    s.max_depth = static_cast<int>(r.whole("max_depth"));
+    s.seed = static_cast<uint64_t>(r.whole("seed"));
+    s.ambient = r.colour("ambient");
+    s.background = r.colour("background");
+    s.light_samples = static_cast<int>(r.whole("light_samples"));
+    s.min_weight = r.real("min_weight");
+    s.integrator = r.text("integrator");
+    s.photons = r.whole("photons");
+    s.radius = r.real("radius");
+    s.filter = r.text("filter");
+    s.filter_k = r.real("filter_k");
+    s.max_photons_per_estimate = static_cast<int>(r.whole("max_photons_per_estimate"));
+    s.direct = r.text("direct");
+    s.passes = static_cast<int>(r.whole("passes"));
+    s.time = r.real("time");
     if (s.passes == 0 && s.time == 0.0) {
         throw SceneError("render.passes", "0 means no pass limit, which needs a time budget: give render.time > 0");
     }
-    s.pass_photons = r.integer("pass_photons", s.pass_photons, 0, int64_t{1} << 30);
-    s.caustic_photons = r.integer("caustic_photons", s.caustic_photons, 0, kMaxPhotonsPerLight);
-    s.aim_photons = r.boolean("aim_photons").value_or(s.aim_photons);
-    s.initial_radius = r.positive("initial_radius", s.initial_radius);
-    s.alpha = r.number("alpha", s.alpha);
-    if (!(s.alpha > 0.0 && s.alpha < 1.0)) {
-        throw SceneError("render.alpha", "must be between 0 and 1 (exclusive), got " + format_number(s.alpha));
-    }
+    s.pass_photons = r.whole("pass_photons");
+    s.caustic_photons = r.whole("caustic_photons");
+    s.aim_photons = r.flag("aim_photons");
+    s.initial_radius = r.real("initial_radius");
+    s.alpha = r.real("alpha");
 }
 
 Material read_material(const json& j, const std::string& path, const std::string& name) {
@@ -423,7 +406,22 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
     return scene;
 }
 
-Scene load_scene_file(const std::string& path, const SceneReadOptions& options) {
+namespace {
+
+// Prefixes the file name so a message says where, whatever the JSON path.
+template <typename Fn>
+auto naming_file(const std::string& path, Fn&& fn) {
+    try {
+        return fn();
+    } catch (const SceneError& e) {
+        if (e.path() == path || e.path().empty()) throw SceneError(path, e.reason());
+        throw SceneError(path + ": " + e.path(), e.reason());
+    }
+}
+
+}  // namespace
+
+nlohmann::json read_scene_json_file(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         throw SceneError(path, "is a directory, not a scene file");
@@ -437,15 +435,23 @@ Scene load_scene_file(const std::string& path, const SceneReadOptions& options) 
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) throw SceneError(path, "cannot read scene file");
-    try {
-        // Files a scene names (OBJ meshes) are found next to it.
-        return parse_scene(text.str(), path, std::filesystem::path(path).parent_path().string(),
-                           options);
-    } catch (const SceneError& e) {
-        // Prefix the file name so the message says where, whatever the JSON path.
-        if (e.path() == path || e.path().empty()) throw SceneError(path, e.reason());
-        throw SceneError(path + ": " + e.path(), e.reason());
-    }
+    return naming_file(path, [&] {
+        json root = parse_json_strict(text.str(), path);
+        if (!root.is_object()) throw SceneError(path, "the top level must be a JSON object { ... }");
+        return root;
+    });
+}
+
+Scene scene_from_file_json(const nlohmann::json& root, const std::string& path,
+                           const SceneReadOptions& options) {
+    // Files a scene names (OBJ meshes) are found next to it.
+    return naming_file(path, [&] {
+        return scene_from_json(root, std::filesystem::path(path).parent_path().string(), options);
+    });
+}
+
+Scene load_scene_file(const std::string& path, const SceneReadOptions& options) {
+    return scene_from_file_json(read_scene_json_file(path), path, options);
 }
 
 Scene default_scene() { return parse_scene(default_scene_text(), "default scene"); }
