@@ -8,12 +8,15 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include <cmath>
+
 #include "geometry/implicit_solid.h"
 #include "geometry/lens/sag_formula_surface.h"
 #include "optics/spectrum.h"
+#include "scene/camera_spec.h"
 #include "scene/json_reader.h"
 #include "scene/material.h"
-#include "scene/render_settings.h"
+#include "scene/render_settings_spec.h"
 #include "scene/surface_json.h"
 #include "scene_document.h"
 
@@ -336,42 +339,66 @@ void PropertyPanel::add_number_list(const QString& label, const std::string& key
     m_form->addRow(label, box);
 }
 
+void PropertyPanel::add_param(const ParamSpec& p, const std::string& prefix) {
+    const QString label = QString::fromStdString(p.label);
+    const std::string key = prefix + p.key;
+    // The declared range; an exclusive end moves in by the field's last digit, and an open
+    // end stops at a value no scene needs.
+    constexpr double kOpenEnd = 1e9;
+    const double step = std::pow(10.0, -p.decimals);
+    const double low = p.min ? p.min->value + (p.min->exclusive ? step : 0.0)
+                             : (p.kind == ParamKind::Fraction ? 0.0 : -kOpenEnd);
+    const double high = p.max ? p.max->value - (p.max->exclusive ? step : 0.0)
+                              : (p.kind == ParamKind::Fraction ? 1.0 : kOpenEnd);
+    const json& d = p.fallback;
+    switch (p.kind) {
+        case ParamKind::WholeNumber:
+            add_integer(label, key, d.get<long long>(), static_cast<long long>(low),
+                        static_cast<long long>(high));
+            break;
+        case ParamKind::Number:
+        case ParamKind::Fraction:
+            add_number(label, key, d.is_number() ? d.get<double>() : 0.0, low, high, p.decimals);
+            break;
+        case ParamKind::Boolean:
+            add_flag(label, key, d.is_boolean() && d.get<bool>() ? tr("yes") : tr("no"));
+            break;
+        case ParamKind::Choice:
+            add_choice(label, key, d.get<std::string>(), to_qt(p.choices));
+            break;
+        case ParamKind::String: add_text(label, key, d.is_string() ? d.get<std::string>() : ""); break;
+        case ParamKind::Colour: add_vec3(label, key, as_triple(d), 0, 1e6); break;
+        case ParamKind::Albedo: add_vec3(label, key, as_triple(d), 0, 1); break;
+        case ParamKind::Point: add_vec3(label, key, d.is_null() ? json::array({0, 0, 0}) : d); break;
+        case ParamKind::Direction:
+            add_vec3(label, key, d.is_null() ? json::array({0, 0, -1}) : d);
+            break;
+        case ParamKind::Object:
+        case ParamKind::Array: break;  // nested things have forms of their own
+    }
+}
+
+void PropertyPanel::build_declared(const ElementSpec& spec, const std::string& skip) {
+    std::string group;
+    for (const ParamSpec& p : spec.params) {
+        if (p.label.empty() || p.key == skip) continue;
+        if (p.group != group) {
+            group = p.group;
+            add_heading(QString::fromStdString(group));
+        }
+        add_param(p);
+    }
+}
+
 void PropertyPanel::build_camera() {
     add_heading(tr("Camera"));
-    add_vec3(tr("Position"), "position", json::array({0, 0, 5}));
-    if (value_at("look_at")) {
-        add_vec3(tr("Look at"), "look_at", json::array({0, 0, 0}));
-    } else {
-        add_vec3(tr("Direction"), "direction", json::array({0, 0, -1}), -1e6, 1e6);
-    }
-    add_vec3(tr("Up"), "up", json::array({0, 1, 0}));
-    add_number(tr("Field of view (deg)"), "fov", 40.0, 0.1, 179.9, 2);
+    // The camera takes look_at or direction; the form edits the one the file gives.
+    build_declared(camera_spec(), value_at("look_at") ? "direction" : "look_at");
 }
 
 void PropertyPanel::build_render() {
-    const RenderSettings d;
     add_heading(tr("Render settings"));
-    add_integer(tr("Width"), "width", d.width, 1, 16384);
-    add_integer(tr("Height"), "height", d.height, 1, 16384);
-    add_integer(tr("Samples per pixel"), "spp", d.spp, 1, 1 << 20);
-    add_integer(tr("Max depth"), "max_depth", d.max_depth, 0, 1000);
-    add_integer(tr("Seed"), "seed", static_cast<long long>(d.seed), 0, 2147483647);
-    add_vec3(tr("Ambient"), "ambient", rgb_json(d.ambient), 0, 1e6);
-    add_vec3(tr("Background"), "background", rgb_json(d.background), 0, 1e6);
-    add_choice(tr("Integrator"), "integrator", d.integrator, to_qt(kIntegratorNames));
-    add_heading(tr("Photon map"));
-    add_integer(tr("Photons per light"), "photons", d.photons, 1, 1LL << 40);
-    add_number(tr("Gather radius"), "radius", 0.05, 1e-6, 1e6, 5);
-    add_choice(tr("Filter"), "filter", d.filter, to_qt(kPhotonFilterNames));
-    add_number(tr("Filter constant k"), "filter_k", d.filter_k, 1.0, 1e6, 3);
-    add_integer(tr("Max photons per estimate"), "max_photons_per_estimate", d.max_photons_per_estimate, 1, 1000000);
-    add_choice(tr("Direct light"), "direct", d.direct, to_qt(kDirectLightNames));
-    add_integer(tr("Caustic photons per light (0 = as many)"), "caustic_photons", d.caustic_photons, 0, 1LL << 40);
-    add_flag(tr("Aim photons at glass and mirrors"), "aim_photons", d.aim_photons ? tr("yes") : tr("no"));
-    add_heading(tr("Progressive photon map (sppm, the view)"));
-    add_integer(tr("Photons per light per pass (0 = auto)"), "pass_photons", d.pass_photons, 0, 1LL << 30);
-    add_integer(tr("Passes (lenslab render)"), "passes", d.passes, 0, 1 << 24);
-    add_number(tr("Time budget (s, 0 = none)"), "time", d.time, 0, 1e9, 1);
+    build_declared(render_settings_spec());
 }
 
 void PropertyPanel::build_material(const std::string& prefix) {

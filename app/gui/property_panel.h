@@ -18,6 +18,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/param_spec.h"
+
 class QFormLayout;
 
 namespace lenslab::gui {
@@ -67,6 +69,11 @@ private:
     void add_number_list(const QString& label, const std::string& key, const nlohmann::json& fallback,
                          size_t max_count);
     void add_heading(const QString& text);
+    // A declared parameter's field (param_spec.h): its label, fallback, range and choices.
+    void add_param(const ParamSpec& p, const std::string& prefix = "");
+    // Every parameter of `spec` the editor shows (those with a label) but `skip`, under the
+    // declared headings.
+    void build_declared(const ElementSpec& spec, const std::string& skip = "");
 
     void build_camera();
     void build_render();
