@@ -1,0 +1,186 @@
+// Each element type's declaration (param_spec.h) against everything that repeats it: the
+// reference table in docs/scene-format.md, the scene reader's defaults and bounds, and the
+// help of `lenslab render`'s generated options. A docs default or range edited by hand, or a
+// reader check that drifts from the declaration, fails here.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "scene/camera_spec.h"
+#include "scene/json_reader.h"
+#include "scene/param_spec.h"
+#include "scene/render_settings_spec.h"
+#include "scene/scene_json.h"
+
+namespace {
+
+using lenslab::ElementSpec;
+using lenslab::ParamKind;
+using lenslab::ParamSpec;
+using nlohmann::json;
+
+std::string trim(const std::string& s) {
+    const size_t a = s.find_first_not_of(' ');
+    const size_t b = s.find_last_not_of(' ');
+    return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+std::vector<std::string> cells(const std::string& row) {
+    std::vector<std::string> out;
+    std::stringstream in(row.substr(1));  // after the leading '|'
+    std::string cell;
+    while (std::getline(in, cell, '|')) out.push_back(trim(cell));
+    return out;
+}
+
+// The reference table under `heading` in docs/scene-format.md: key -> its cells
+// (key, type, default, range, meaning).
+std::map<std::string, std::vector<std::string>> docs_table(const std::string& heading) {
+    std::ifstream docs(LENSLAB_SOURCE_DIR "/docs/scene-format.md");
+    std::string line;
+    while (std::getline(docs, line) && line != heading) {
+    }
+    EXPECT_EQ(line, heading) << "no heading in docs/scene-format.md";
+    while (std::getline(docs, line) && line.rfind("| key |", 0) != 0) {
+    }
+    EXPECT_EQ(line, "| key | type | default | range | meaning |") << "under " << heading;
+    std::getline(docs, line);  // | --- | ...
+    std::map<std::string, std::vector<std::string>> rows;
+    while (std::getline(docs, line) && line.rfind("|", 0) == 0) {
+        std::vector<std::string> row = cells(line);
+        const std::string key = row.at(0).substr(1, row.at(0).size() - 2);  // `key`
+        rows[key] = row;
+    }
+    return rows;
+}
+
+struct Case {
+    const ElementSpec& (*spec)();
+    const char* heading;
+    json scene;  // a valid scene; the element is at scene[spec().name]
+};
+
+std::vector<Case> cases() {
+    const json camera = {{"position", {0, 0, 5}}, {"look_at", {0, 0, 0}}};
+    // time > 0, so passes 0 alone is not what refuses a value.
+    return {
+        {lenslab::render_settings_spec, "## Render", {{"camera", camera}, {"render", {{"time", 1}}}}},
+        {lenslab::camera_spec, "## Camera", {{"camera", camera}}},
+    };
+}
+
+class DeclaredElement : public testing::TestWithParam<Case> {};
+
+TEST_P(DeclaredElement, DocsTableAgreesWithTheDeclaration) {
+    const ElementSpec& spec = GetParam().spec();
+    auto rows = docs_table(GetParam().heading);
+    for (const ParamSpec& p : spec.params) {
+        const auto it = rows.find(p.key);
+        ASSERT_NE(it, rows.end()) << spec.name << "." << p.key << " is not in the docs table";
+        const std::vector<std::string>& row = it->second;
+        ASSERT_GE(row.size(), 5u) << spec.name << "." << p.key;
+        EXPECT_EQ(row[1], lenslab::kind_text(p)) << spec.name << "." << p.key << ": type";
+        EXPECT_EQ(row[2], lenslab::default_text(p)) << spec.name << "." << p.key << ": default";
+        EXPECT_EQ(row[3], lenslab::range_text(p)) << spec.name << "." << p.key << ": range";
+        rows.erase(it);
+    }
+    for (const auto& [key, row] : rows) ADD_FAILURE() << "docs list " << key << ", not declared";
+}
+
+// Reads `scene` with the element's `key` set to `value`: "" when accepted, else the error.
+std::string read_with(const Case& c, const std::string& key, const json& value) {
+    json scene = c.scene;
+    scene[c.spec().name][key] = value;
+    try {
+        (void)lenslab::scene_from_json(scene);
+        return "";
+    } catch (const lenslab::SceneError& e) {
+        return e.what();
+    }
+}
+
+TEST_P(DeclaredElement, ReaderAcceptsDefaultsAndRefusesPastTheBounds) {
+    const Case& c = GetParam();
+    const std::string name = c.spec().name;
+    for (const ParamSpec& p : c.spec().params) {
+        const std::string path = name + "." + p.key + ": ";
+        if (!p.fallback.is_null() && lenslab::fallback_in_range(p)) {
+            EXPECT_EQ(read_with(c, p.key, p.fallback), "") << "the default of " << path;
+        }
+        for (const std::string& choice : p.choices) EXPECT_EQ(read_with(c, p.key, choice), "");
+        if (p.kind == ParamKind::Choice) {
+            EXPECT_EQ(read_with(c, p.key, "bogus"), path + *lenslab::choice_problem(p, "bogus"));
+        }
+        if (p.kind != ParamKind::Number && p.kind != ParamKind::WholeNumber &&
+            p.kind != ParamKind::Fraction) {
+            continue;
+        }
+        // Just past each end: the next whole number, or a small step for other numbers.
+        const auto past = [&p](double bound, double direction) {
+            return bound + direction * (p.is_integer() ? 1.0 : 1e-9 * std::max(1.0, std::abs(bound)));
+        };
+        const auto check_end = [&](const lenslab::Bound& b, double outwards) {
+            const double outside = b.exclusive ? b.value : past(b.value, outwards);
+            const json written = p.is_integer() ? json(int64_t(outside)) : json(outside);
+            EXPECT_EQ(read_with(c, p.key, written), path + *lenslab::range_problem(p, outside));
+            if (!b.exclusive) {
+                const json at = p.is_integer() ? json(int64_t(b.value)) : json(b.value);
+                EXPECT_EQ(read_with(c, p.key, at), "") << path << "at the bound " << b.value;
+            }
+        };
+        if (p.min) check_end(*p.min, -1.0);
+        if (p.max) check_end(*p.max, 1.0);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Elements, DeclaredElement, testing::ValuesIn(cases()),
+                         [](const testing::TestParamInfo<Case>& info) {
+                             return info.param.spec().name;
+                         });
+
+std::string run_and_capture(const std::string& command) {
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+    std::string out;
+    std::array<char, 4096> buffer{};
+    while (pipe && fgets(buffer.data(), buffer.size(), pipe.get())) out += buffer.data();
+    return out;
+}
+
+// The option names are a contract with scripts; the declaration generates exactly these.
+TEST(RenderOptions, AreTheDeclaredKeysWithTheirRangesInTheHelp) {
+    const std::vector<std::string> contract{
+        "--width", "--height", "--spp", "--max-depth", "--seed", "--integrator", "--photons",
+        "--caustic-photons", "--aim-photons", "--radius", "--filter", "--direct", "--filter-k",
+        "--max-photons-per-estimate", "--passes", "--time", "--pass-photons", "--initial-radius"};
+    std::vector<std::string> declared;
+    for (const ParamSpec& p : lenslab::render_settings_spec().params) {
+        if (p.cli) declared.push_back(p.option_name());
+    }
+    EXPECT_EQ(declared, contract);
+
+    const std::string help = run_and_capture(std::string(LENSLAB_BINARY) + " render --help");
+    ASSERT_NE(help.find("--seed"), std::string::npos) << help;
+    for (const ParamSpec& p : lenslab::render_settings_spec().params) {
+        if (!p.cli) continue;
+        // CLI11 may wrap a long description: the option's text runs to the next option.
+        const size_t at = help.find("  " + p.option_name() + " ");
+        ASSERT_NE(at, std::string::npos) << p.option_name() << " not in\n" << help;
+        const std::string entry = help.substr(at, help.find("\n  --", at + 1) - at);
+        std::string range = p.kind == ParamKind::Boolean ? "on or off" : lenslab::range_text(p);
+        range.erase(std::remove(range.begin(), range.end(), '`'), range.end());
+        EXPECT_NE(entry.find(range), std::string::npos) << p.option_name() << ": " << entry;
+        EXPECT_NE(entry.find(p.doc), std::string::npos) << p.option_name() << ": " << entry;
+    }
+}
+
+}  // namespace
