@@ -8,6 +8,7 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/implicit_solid.h"
@@ -15,6 +16,9 @@
 #include "optics/spectrum.h"
 #include "scene/camera_spec.h"
 #include "scene/json_reader.h"
+#include "scene/light_spec.h"
+#include "scene/material_spec.h"
+#include "scene/object_spec.h"
 #include "scene/material.h"
 #include "scene/render_settings_spec.h"
 #include "scene/surface_json.h"
@@ -43,8 +47,6 @@ QDoubleSpinBox* make_spin_box(QWidget* parent, const std::string& name, int deci
     box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     return box;
 }
-
-json rgb_json(const Rgb& c) { return json::array({c.r, c.g, c.b}); }
 
 // A colour given as one number means grey; the form always edits three components.
 json as_triple(const json& v) {
@@ -343,8 +345,8 @@ void PropertyPanel::add_param(const ParamSpec& p, const std::string& prefix) {
     const QString label = QString::fromStdString(p.label);
     const std::string key = prefix + p.key;
     // The declared range; an exclusive end moves in by the field's last digit, and an open
-    // end stops at a value no scene needs.
-    constexpr double kOpenEnd = 1e9;
+    // end stops where every scene number does.
+    constexpr double kOpenEnd = kMaxSceneNumber;
     const double step = std::pow(10.0, -p.decimals);
     const double low = p.min ? p.min->value + (p.min->exclusive ? step : 0.0)
                              : (p.kind == ParamKind::Fraction ? 0.0 : -kOpenEnd);
@@ -378,10 +380,10 @@ void PropertyPanel::add_param(const ParamSpec& p, const std::string& prefix) {
     }
 }
 
-void PropertyPanel::build_declared(const ElementSpec& spec, const std::string& skip) {
+void PropertyPanel::build_declared(const ElementSpec& spec, const std::vector<std::string>& skip) {
     std::string group;
     for (const ParamSpec& p : spec.params) {
-        if (p.label.empty() || p.key == skip) continue;
+        if (p.label.empty() || std::find(skip.begin(), skip.end(), p.key) != skip.end()) continue;
         if (p.group != group) {
             group = p.group;
             add_heading(QString::fromStdString(group));
@@ -393,7 +395,7 @@ void PropertyPanel::build_declared(const ElementSpec& spec, const std::string& s
 void PropertyPanel::build_camera() {
     add_heading(tr("Camera"));
     // The camera takes look_at or direction; the form edits the one the file gives.
-    build_declared(camera_spec(), value_at("look_at") ? "direction" : "look_at");
+    build_declared(camera_spec(), {value_at("look_at") ? "direction" : "look_at"});
 }
 
 void PropertyPanel::build_render() {
@@ -402,10 +404,8 @@ void PropertyPanel::build_render() {
 }
 
 void PropertyPanel::build_material(const std::string& prefix) {
-    const Material d;
-    add_vec3(tr("Colour (albedo)"), prefix + "color", rgb_json(d.color), 0, 1);
-    add_number(tr("Transparency"), prefix + "transparency", d.transparency, 0, 1);
-    add_number(tr("Specular (mirror)"), prefix + "specular", d.specular, 0, 1);
+    const ElementSpec& declared = material_spec();
+    for (const char* key : {"color", "transparency", "specular"}) add_param(declared.param(key), prefix);
     // Glass picker: a catalogue glass, or a constant index typed in.
     QStringList glasses{tr("constant index")};
     for (const Glass& g : glass_catalogue()) glasses << QString::fromStdString(g.name);
@@ -425,15 +425,19 @@ void PropertyPanel::build_material(const std::string& prefix) {
                });
     const json* ior = value_at(prefix + "ior");
     if (!glass && (!ior || ior->is_number())) {
-        add_number(tr("Refractive index"), prefix + "ior", d.ior(kLineD), 0.01, 100);
+        add_param(declared.param("ior"), prefix);
     } else if (!glass) {
         m_form->addRow(tr("Refractive index"), new QLabel(tr("dispersion model (edit the file)"), m_form_widget));
     }
-    add_number(tr("Emission intensity"), prefix + "emission/intensity", d.emission_intensity, 0, 1e12);
-    if (value_at(prefix + "emission")) {
+    // Shown as 0 while there is no emission (the intensity an emission block defaults to is 1).
+    const json* emission = value_at(prefix + "emission");
+    ParamSpec intensity = emission_spec().param("intensity");
+    if (!emission) intensity.fallback = 0.0;
+    add_param(intensity, prefix + "emission/");
+    if (emission) {
         build_spectrum(prefix + "emission/");
     } else {
-        add_vec3(tr("Emission colour"), prefix + "emission/color", rgb_json(d.emission_color), 0, 1e6);
+        add_param(emission_spec().param("color"), prefix + "emission/");
     }
 }
 
@@ -443,8 +447,8 @@ void PropertyPanel::build_object() {
     add_heading(QString::fromStdString(type));
     add_text(tr("Name"), "name", "");
     if (type == "sphere") {
-        add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
-        add_number(tr("Radius"), "radius", 1.0, 1e-6, 1e6);
+        add_param(sphere_spec().param("center"));
+        add_param(sphere_spec().param("radius"));
     } else if (type == "triangle") {
         for (int i = 0; i < 3; ++i) {
             add_vec3(tr("Vertex %1").arg(i + 1), "vertices/" + std::to_string(i), json::array({0, 0, 0}));
@@ -593,14 +597,8 @@ void PropertyPanel::build_light() {
     const json& l = *value_at("");
     const std::string type = l.value("type", "");
     add_heading(QString::fromStdString(type) + tr(" light"));
-    if (type == "point") {
-        add_vec3(tr("Position"), "position", json::array({0, 0, 0}));
-    } else {
-        add_vec3(tr("Origin"), "origin", json::array({0, 0, 0}));
-        add_vec3(tr("Direction"), "direction", json::array({0, 0, -1}));
-        add_number(tr("Beam radius"), "radius", 1.0, 1e-6, 1e6);
-    }
-    add_number(tr("Power (W)"), "power", 1.0, 1e-6, 1e15);
+    // The colour is one of the spectrum's forms, edited with it.
+    build_declared(type == "point" ? point_light_spec() : beam_spec(), {"color"});
     build_spectrum("");
 }
 

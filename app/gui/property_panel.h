@@ -15,6 +15,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -73,7 +74,7 @@ private:
     void add_param(const ParamSpec& p, const std::string& prefix = "");
     // Every parameter of `spec` the editor shows (those with a label) but `skip`, under the
     // declared headings.
-    void build_declared(const ElementSpec& spec, const std::string& skip = "");
+    void build_declared(const ElementSpec& spec, const std::vector<std::string>& skip = {});
 
     void build_camera();
     void build_render();

@@ -184,6 +184,7 @@ bool fallback_in_range(const ParamSpec& p) {
 }
 
 std::string kind_text(const ParamSpec& p) {
+    if (!p.written_as.empty()) return p.written_as;
     std::string text;
     switch (p.kind) {
         case ParamKind::Number: text = "number"; break;
@@ -204,7 +205,7 @@ std::string kind_text(const ParamSpec& p) {
 
 std::string default_text(const ParamSpec& p) {
     if (p.required) return "**required**";
-    if (p.fallback.is_null()) return "—";
+    if (p.fallback.is_null()) return p.auto_meaning.empty() ? "—" : p.auto_meaning;
     if (!fallback_in_range(p) && !p.auto_meaning.empty()) return p.auto_meaning;
     const std::string value = "`" + value_text(p.fallback) + "`";
     return p.auto_meaning.empty() ? value : value + " (" + p.auto_meaning + ")";

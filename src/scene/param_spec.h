@@ -47,6 +47,7 @@ struct ParamSpec {
     std::optional<Bound> min, max;
     std::vector<std::string> choices;
     std::string unit;  // "degrees", "seconds": in messages and the docs' type column
+    std::string written_as;  // the docs' type words where the kind's own do not say it
     std::string why;   // why the range is what it is, added to the refusal
     std::string doc;   // one line: the CLI's option help
     std::string label;  // the editor's field label; empty: not in the editor's form
@@ -68,6 +69,8 @@ struct ParamSpec {
     }
     ParamSpec& under(std::string heading) { return (group = std::move(heading), *this); }
     ParamSpec& on_command_line() { return (cli = true, *this); }
+    ParamSpec& needed() { return (required = true, fallback = nullptr, *this); }
+    ParamSpec& as_written(std::string words) { return (written_as = std::move(words), *this); }
 
     bool is_integer() const { return kind == ParamKind::WholeNumber; }
     // The command-line option for this key: "max_depth" -> "--max-depth".

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include "geometry/implicit_solid.h"
@@ -15,7 +16,10 @@
 #include "scene/camera_spec.h"
 #include "scene/json_reader.h"
 #include "scene/lens_group_json.h"
+#include "scene/light_spec.h"
 #include "scene/limits.h"
+#include "scene/material_spec.h"
+#include "scene/object_spec.h"
 #include "scene/mesh_json.h"
 #include "scene/planar_json.h"
 #include "scene/render_settings_spec.h"
@@ -93,12 +97,12 @@ void read_render(const json& j, RenderSettings& s) {
 }
 
 Material read_material(const json& j, const std::string& path, const std::string& name) {
-    JsonObjectReader r(j, path, {"color", "transparency", "specular", "ior", "glass", "emission"});
+    SpecReader r(j, path, material_spec());
     Material m;
     m.name = name;
-    m.color = r.albedo("color", m.color);
-    m.transparency = r.fraction("transparency", m.transparency);
-    m.specular = r.fraction("specular", m.specular);
+    m.color = r.colour("color");
+    m.transparency = r.real("transparency");
+    m.specular = r.real("specular");
     if (m.transparency + m.specular > 1.0 + 1e-12) {
         throw SceneError(r.child_path("specular"),
                          "transparency + specular must be at most 1, got " +
@@ -112,20 +116,16 @@ Material read_material(const json& j, const std::string& path, const std::string
         m.index = glass.model;
         m.glass = glass.name;
     } else if (const json* n = r.find("ior")) {
-        m.index = read_index_model(*n, r.child_path("ior"));
+        m.index = n->is_number() ? constant_index(r.real("ior")) : read_index_model(*n, r.child_path("ior"));
     }
     if (const json* e = r.find("emission")) {
-        JsonObjectReader er(*e, r.child_path("emission"), {"color", "intensity", "spectrum"});
+        SpecReader er(*e, r.child_path("emission"), emission_spec());
         if (const json* s = er.find("spectrum")) {
             if (er.has("color")) throw SceneError(er.child_path("color"), "give either color or spectrum, not both");
             m.emission_spectrum = read_spectrum(*s, er.child_path("spectrum"));
         }
-        m.emission_color = er.color("color", m.emission_color);
-        m.emission_intensity = er.number("intensity", 1.0);
-        if (m.emission_intensity < 0) {
-            throw SceneError(er.child_path("intensity"),
-                             "must be >= 0, got " + format_number(m.emission_intensity));
-        }
+        m.emission_color = er.colour("color");
+        m.emission_intensity = er.real("intensity");
     }
     m.finish();
     return m;
@@ -274,7 +274,6 @@ SceneObject read_object(const json& j, const std::string& path,
     SceneObject o;
     if (type == "sphere") {
         o.type = ObjectType::Sphere;
-        keys.insert(keys.end(), {"center", "radius"});
     } else if (type == "triangle") {
         o.type = ObjectType::Triangle;
         keys.insert(keys.end(), {"vertices", "detector"});
@@ -302,13 +301,20 @@ SceneObject read_object(const json& j, const std::string& path,
     if (o.type != ObjectType::Triangle && o.type != ObjectType::Disc && o.type != ObjectType::Rectangle) {
         check_detector_allowed(j, path, type);
     }
-    JsonObjectReader r(j, path, keys, (type == "implicit" ? "an " : "a ") + type);
+    // Declared shapes read through their declaration; the others list their keys above.
+    const std::unique_ptr<JsonObjectReader> reader =
+        o.type == ObjectType::Sphere
+            ? std::make_unique<SpecReader>(j, path, sphere_spec())
+            : std::make_unique<JsonObjectReader>(j, path, keys, (type == "implicit" ? "an " : "a ") + type);
+    JsonObjectReader& r = *reader;
     o.name = r.string("name", path);
     o.photon_target = r.boolean("photon_target");
     switch (o.type) {
-        case ObjectType::Sphere:
-            o.shape = std::make_shared<Sphere>(r.vec3("center"), r.positive("radius"));
+        case ObjectType::Sphere: {
+            SpecReader& sphere = static_cast<SpecReader&>(r);
+            o.shape = std::make_shared<Sphere>(sphere.point("center"), sphere.real("radius"));
             break;
+        }
         case ObjectType::Triangle: o.shape = read_triangle(r); break;
         case ObjectType::Lens: o.shape = read_lens(r); break;
         case ObjectType::Mesh:
@@ -330,20 +336,19 @@ SceneObject read_object(const json& j, const std::string& path,
 void read_light(const json& j, const std::string& path, Scene& scene) {
     const std::string type = peek_type(j, path);
     if (type == "point") {
-        JsonObjectReader r(j, path, {"type", "position", "color", "spectrum", "power"}, "a point light");
+        SpecReader r(j, path, point_light_spec());
         PointLight l;
-        l.position = r.vec3("position");
-        l.power = r.positive("power");
+        l.position = r.point("position");
+        l.power = r.real("power");
         l.spectrum = light_spectrum(r, l.color, l.power);
         scene.point_lights.push_back(l);
     } else if (type == "beam") {
-        JsonObjectReader r(j, path, {"type", "origin", "direction", "radius", "color", "spectrum", "power"},
-                           "a beam");
+        SpecReader r(j, path, beam_spec());
         BeamLight b;
-        b.origin = r.vec3("origin");
-        b.direction = r.direction("direction");
-        b.radius = r.positive("radius");
-        b.power = r.positive("power");
+        b.origin = r.point("origin");
+        b.direction = r.unit_vector("direction");
+        b.radius = r.real("radius");
+        b.power = r.real("power");
         b.spectrum = light_spectrum(r, b.color, b.power);
         scene.beams.push_back(b);
     } else {

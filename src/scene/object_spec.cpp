@@ -1,0 +1,55 @@
+#include "scene/object_spec.h"
+
+namespace lenslab {
+
+namespace {
+
+ElementSpec declare_common() {
+    ElementSpec s{"object", "an object", {}};
+    s.params = {
+        string_param("type", "").needed().describe("which kind of object"),
+        nested_param(ParamKind::String, "name")
+            .meaning_auto("its path, e.g. `\"objects[3]\"`")
+            .describe("shown by lenslab trace")
+            .in_editor("Name"),
+        nested_param(ParamKind::Object, "material")
+            .needed()
+            .as_written("string or object")
+            .describe("a name from materials, or an inline material"),
+        nested_param(ParamKind::Object, "detector")
+            .as_written("`true`, `false` or object")
+            .describe("triangles, discs and rectangles only: measure the light arriving"),
+        nested_param(ParamKind::Boolean, "photon_target")
+            .meaning_auto("auto")
+            .describe("aim caustic photons at it")
+            .in_editor("Photon target (aim caustic photons)"),
+    };
+    return s;
+}
+
+ElementSpec declare_sphere() {
+    ElementSpec s{"sphere", "a sphere", {}};
+    for (const ParamSpec& p : object_common_spec().params) {
+        if (p.key != "detector") s.params.push_back(p);
+    }
+    s.params.push_back(point_param("center").describe("centre").in_editor("Centre"));
+    s.params.push_back(
+        number_param("radius", 0).above(0).needed().describe("radius").in_editor("Radius"));
+    return s;
+}
+
+}  // namespace
+
+const ElementSpec& object_common_spec() {
+    static const ElementSpec spec = declare_common();
+    return spec;
+}
+
+const ElementSpec& sphere_spec() {
+    static const ElementSpec spec = declare_sphere();
+    return spec;
+}
+
+bool is_common_object_key(const std::string& key) { return object_common_spec().find(key) != nullptr; }
+
+}  // namespace lenslab

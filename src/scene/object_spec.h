@@ -1,0 +1,17 @@
+#pragma once
+// The declarations of what every object in `objects` takes, and of the shapes read through
+// them (so far the sphere; the other shapes still list their keys in their readers).
+
+#include "scene/param_spec.h"
+
+namespace lenslab {
+
+// type, name, material, detector, photon_target: the docs' "Objects" table.
+const ElementSpec& object_common_spec();
+// The common keys a sphere takes (not `detector`) and its own.
+const ElementSpec& sphere_spec();
+
+// Whether `key` is one of the common keys (documented once, not under each shape).
+bool is_common_object_key(const std::string& key);
+
+}  // namespace lenslab
