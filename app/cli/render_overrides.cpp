@@ -31,17 +31,22 @@ std::optional<json> value_of(const ParamSpec& p, const std::string& text) {
         case ParamKind::Boolean:
             if (text == "on" || text == "off") return text == "on";
             return std::nullopt;
-        default: return text;
+        default:
+            return text;
     }
 }
 
 std::string type_name(const ParamSpec& p) {
     switch (p.kind) {
-        case ParamKind::WholeNumber: return "INT";
+        case ParamKind::WholeNumber:
+            return "INT";
         case ParamKind::Number:
-        case ParamKind::Fraction: return "NUMBER";
-        case ParamKind::Boolean: return "on|off";
-        default: return "TEXT";
+        case ParamKind::Fraction:
+            return "NUMBER";
+        case ParamKind::Boolean:
+            return "on|off";
+        default:
+            return "TEXT";
     }
 }
 
@@ -101,11 +106,14 @@ Scene RenderOverrides::scene_from(const json& root, const std::string& path) con
         return path.empty() ? scene_from_json(root) : scene_from_file_json(root, path);
     } catch (const SceneError& e) {
         // The reason is the reader's; only where it points changes, to the option given.
-        const std::string where = path.empty() ? e.path() : e.path().substr(std::min(e.path().size(), path.size() + 2));
+        const std::string where =
+            path.empty() ? e.path() : e.path().substr(std::min(e.path().size(), path.size() + 2));
         if (where.rfind("render.", 0) == 0 && given(where.substr(7))) {
-            throw SceneError(render_settings_spec().param(where.substr(7)).option_name(), e.reason());
+            throw SceneError(render_settings_spec().param(where.substr(7)).option_name(),
+                             e.reason());
         }
-        if (where == "render" && (given("width") || given("height"))) throw SceneError("image", e.reason());
+        if (where == "render" && (given("width") || given("height")))
+            throw SceneError("image", e.reason());
         throw;
     }
 }

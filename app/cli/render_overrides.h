@@ -5,12 +5,11 @@
 // JSON patch and applied to the scene file's JSON, which the scene reader then reads as
 // usual, so there is no second set of checks.
 
+#include <CLI/CLI.hpp>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "scene/scene.h"
 

@@ -9,8 +9,14 @@ namespace {
 // What every light takes besides where it is.
 std::vector<ParamSpec> emission_params(const Rgb& colour) {
     return {
-        number_param("power", 0).above(0).needed().describe("radiant flux (W)").in_editor("Power (W)"),
-        colour_param("color", colour).describe("the light's colour; 1 is D65 daylight white").in_editor("Colour"),
+        number_param("power", 0)
+            .above(0)
+            .needed()
+            .describe("radiant flux (W)")
+            .in_editor("Power (W)"),
+        colour_param("color", colour)
+            .describe("the light's colour; 1 is D65 daylight white")
+            .in_editor("Colour"),
         nested_param(ParamKind::Object, "spectrum")
             .as_written("spectrum")
             .describe("instead of color: a named spectrum"),
@@ -31,7 +37,9 @@ ElementSpec declare_beam() {
     ElementSpec s{"beam", "a beam", {}};
     s.params = {
         string_param("type", "beam").needed().describe("\"beam\""),
-        point_param("origin").describe("centre of the disc the beam leaves from").in_editor("Origin"),
+        point_param("origin")
+            .describe("centre of the disc the beam leaves from")
+            .in_editor("Origin"),
         direction_param("direction").describe("where the beam goes").in_editor("Direction"),
         number_param("radius", 0)
             .above(0)

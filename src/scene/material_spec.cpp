@@ -38,7 +38,9 @@ ElementSpec declare_emission() {
         colour_param("color", d.emission_color)
             .describe("colour of the emitted light; 1 is D65 daylight white")
             .in_editor("Emission colour"),
-        nested_param(ParamKind::Object, "spectrum").as_written("spectrum").describe("instead of color: a named spectrum"),
+        nested_param(ParamKind::Object, "spectrum")
+            .as_written("spectrum")
+            .describe("instead of color: a named spectrum"),
         // Giving an emission means it emits: intensity 1 unless said (Material's 0 is none).
         number_param("intensity", 1.0)
             .at_least(0)

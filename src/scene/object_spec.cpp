@@ -50,6 +50,8 @@ const ElementSpec& sphere_spec() {
     return spec;
 }
 
-bool is_common_object_key(const std::string& key) { return object_common_spec().find(key) != nullptr; }
+bool is_common_object_key(const std::string& key) {
+    return object_common_spec().find(key) != nullptr;
+}
 
 }  // namespace lenslab

@@ -187,18 +187,42 @@ std::string kind_text(const ParamSpec& p) {
     if (!p.written_as.empty()) return p.written_as;
     std::string text;
     switch (p.kind) {
-        case ParamKind::Number: text = "number"; break;
-        case ParamKind::WholeNumber: text = "whole number"; break;
-        case ParamKind::Boolean: text = "`true` or `false`"; break;
-        case ParamKind::Choice: text = "string"; break;
-        case ParamKind::String: text = "string"; break;
-        case ParamKind::Point: text = "point"; break;
-        case ParamKind::Direction: text = "direction"; break;
-        case ParamKind::Colour: text = "colour"; break;
-        case ParamKind::Albedo: text = "colour, each component in [0, 1]"; break;
-        case ParamKind::Fraction: text = "fraction"; break;
-        case ParamKind::Object: text = "object"; break;
-        case ParamKind::Array: text = "array"; break;
+        case ParamKind::Number:
+            text = "number";
+            break;
+        case ParamKind::WholeNumber:
+            text = "whole number";
+            break;
+        case ParamKind::Boolean:
+            text = "`true` or `false`";
+            break;
+        case ParamKind::Choice:
+            text = "string";
+            break;
+        case ParamKind::String:
+            text = "string";
+            break;
+        case ParamKind::Point:
+            text = "point";
+            break;
+        case ParamKind::Direction:
+            text = "direction";
+            break;
+        case ParamKind::Colour:
+            text = "colour";
+            break;
+        case ParamKind::Albedo:
+            text = "colour, each component in [0, 1]";
+            break;
+        case ParamKind::Fraction:
+            text = "fraction";
+            break;
+        case ParamKind::Object:
+            text = "object";
+            break;
+        case ParamKind::Array:
+            text = "array";
+            break;
     }
     return p.unit.empty() ? text : text + ", " + p.unit;
 }
@@ -217,10 +241,12 @@ std::string range_text(const ParamSpec& p) {
             return whole_text(p.min->value) + " – " + whole_text(p.max->value);
         case ParamKind::Fraction:
             return p.min ? "[" + format_number(p.min->value) + ", 1]" : "[0, 1]";
-        case ParamKind::Colour: return "`>= 0`";
+        case ParamKind::Colour:
+            return "`>= 0`";
         case ParamKind::Choice: {
             std::string out;
-            for (const std::string& c : p.choices) out += (out.empty() ? "`\"" : ", `\"") + c + "\"`";
+            for (const std::string& c : p.choices)
+                out += (out.empty() ? "`\"" : ", `\"") + c + "\"`";
             return out;
         }
         case ParamKind::Number:
@@ -228,10 +254,15 @@ std::string range_text(const ParamSpec& p) {
                 return (p.min->exclusive ? "(" : "[") + format_number(p.min->value) + ", " +
                        format_number(p.max->value) + (p.max->exclusive ? ")" : "]");
             }
-            if (p.min) return std::string("`") + (p.min->exclusive ? "> " : ">= ") + format_number(p.min->value) + "`";
-            if (p.max) return std::string("`") + (p.max->exclusive ? "< " : "<= ") + format_number(p.max->value) + "`";
+            if (p.min)
+                return std::string("`") + (p.min->exclusive ? "> " : ">= ") +
+                       format_number(p.min->value) + "`";
+            if (p.max)
+                return std::string("`") + (p.max->exclusive ? "< " : "<= ") +
+                       format_number(p.max->value) + "`";
             return "";
-        default: return "";
+        default:
+            return "";
     }
 }
 

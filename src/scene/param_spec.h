@@ -4,11 +4,10 @@
 // overrides, the editor's forms and the docs test all read these declarations, so a range or
 // a default cannot disagree between them.
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "optics/rgb.h"
 
@@ -46,14 +45,14 @@ struct ParamSpec {
     std::string auto_meaning;
     std::optional<Bound> min, max;
     std::vector<std::string> choices;
-    std::string unit;  // "degrees", "seconds": in messages and the docs' type column
+    std::string unit;        // "degrees", "seconds": in messages and the docs' type column
     std::string written_as;  // the docs' type words where the kind's own do not say it
-    std::string why;   // why the range is what it is, added to the refusal
-    std::string doc;   // one line: the CLI's option help
-    std::string label;  // the editor's field label; empty: not in the editor's form
-    std::string group;  // the editor's heading above the field ("Photon map")
-    bool cli = false;   // `lenslab render --KEY` overrides it (the option names are a contract)
-    int decimals = 6;   // digits the editor shows
+    std::string why;         // why the range is what it is, added to the refusal
+    std::string doc;         // one line: the CLI's option help
+    std::string label;       // the editor's field label; empty: not in the editor's form
+    std::string group;       // the editor's heading above the field ("Photon map")
+    bool cli = false;  // `lenslab render --KEY` overrides it (the option names are a contract)
+    int decimals = 6;  // digits the editor shows
 
     // Chained setters keep each declaration one readable expression.
     ParamSpec& above(double v) { return (min = Bound{v, true}, *this); }
@@ -86,7 +85,7 @@ ParamSpec choice_param(std::string key, std::string fallback, std::vector<std::s
 ParamSpec string_param(std::string key, std::string fallback);
 ParamSpec colour_param(std::string key, const Rgb& fallback);
 ParamSpec albedo_param(std::string key, const Rgb& fallback);
-ParamSpec point_param(std::string key);  // required
+ParamSpec point_param(std::string key);      // required
 ParamSpec direction_param(std::string key);  // required
 ParamSpec vector_param(ParamKind kind, std::string key, const nlohmann::json& fallback);
 ParamSpec nested_param(ParamKind kind, std::string key);  // optional object or array

@@ -7,7 +7,9 @@ namespace lenslab {
 
 namespace {
 
-Vec3 vec3_of(const nlohmann::json& v) { return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()}; }
+Vec3 vec3_of(const nlohmann::json& v) {
+    return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+}
 
 Rgb rgb_of(const nlohmann::json& v) {
     if (v.is_number()) return Rgb::grey(v.get<double>());
@@ -25,7 +27,8 @@ const ParamSpec& SpecReader::declared(const std::string& key, ParamKind a, Param
         throw std::logic_error("SpecReader: " + m_spec.name + "." + key + " read as another kind");
     }
     if (p.required || !p.fallback.is_null()) return p;
-    if (!has(key)) throw std::logic_error("SpecReader: " + key + " has no fallback; check has() first");
+    if (!has(key))
+        throw std::logic_error("SpecReader: " + key + " has no fallback; check has() first");
     return p;
 }
 

@@ -18,13 +18,13 @@ public:
 
     // Each reads the declared key (of the matching kind): the declared fallback when absent
     // (a required one throws "missing (required)"), and refuses a value out of range.
-    double real(const std::string& key);          // Number, Fraction
-    int64_t whole(const std::string& key);        // WholeNumber
-    bool flag(const std::string& key);            // Boolean
-    std::string text(const std::string& key);     // String, Choice
-    Rgb colour(const std::string& key);           // Colour, Albedo
-    Vec3 point(const std::string& key);           // Point
-    Vec3 unit_vector(const std::string& key);     // Direction, normalised
+    double real(const std::string& key);       // Number, Fraction
+    int64_t whole(const std::string& key);     // WholeNumber
+    bool flag(const std::string& key);         // Boolean
+    std::string text(const std::string& key);  // String, Choice
+    Rgb colour(const std::string& key);        // Colour, Albedo
+    Vec3 point(const std::string& key);        // Point
+    Vec3 unit_vector(const std::string& key);  // Direction, normalised
 
 private:
     const ParamSpec& declared(const std::string& key, ParamKind a, ParamKind b) const;

@@ -7,7 +7,6 @@
 #include <QFile>
 #include <QTemporaryDir>
 #include <QtTest>
-
 #include <cmath>
 
 #include "main_window.h"
@@ -31,11 +30,13 @@ QString write_bare_scene(QTemporaryDir& dir, const json& render) {
     const QString path = dir.filePath("bare.json");
     QFile file(path);
     file.open(QIODevice::WriteOnly);
-    const json scene = {{"camera", {{"position", {0, 1, 4}}, {"look_at", {0, 0, 0}}}},
-                        {"render", render},
-                        {"materials", {{"grey", {{"color", 0.5}}}}},
-                        {"objects", {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 0.5}, {"material", "grey"}}}},
-                        {"lights", {{{"type", "point"}, {"position", {1, 3, 2}}, {"power", 100}}}}};
+    const json scene = {
+        {"camera", {{"position", {0, 1, 4}}, {"look_at", {0, 0, 0}}}},
+        {"render", render},
+        {"materials", {{"grey", {{"color", 0.5}}}}},
+        {"objects",
+         {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 0.5}, {"material", "grey"}}}},
+        {"lights", {{{"type", "point"}, {"position", {1, 3, 2}}, {"power", 100}}}}};
     file.write(QByteArray::fromStdString(scene.dump(2)));
     return path;
 }
@@ -54,15 +55,18 @@ void check_form(MainWindow& w, const ElementSpec& spec, const std::string& skip)
                 QVERIFY2(box, where.constData());
                 const double step = std::pow(10.0, -box->decimals());
                 // Shown to the field's digits (alpha's 2/3 as 0.6667).
-                QVERIFY2(std::abs(box->value() - p.fallback.get<double>()) <= 0.5 * step, where.constData());
+                QVERIFY2(std::abs(box->value() - p.fallback.get<double>()) <= 0.5 * step,
+                         where.constData());
                 QCOMPARE(box->decimals(), p.decimals);
                 if (p.min) {
                     // An exclusive end sits one shown digit inside.
-                    QVERIFY2(std::abs(box->minimum() - (p.min->value + (p.min->exclusive ? step : 0))) < 1e-12,
+                    QVERIFY2(std::abs(box->minimum() -
+                                      (p.min->value + (p.min->exclusive ? step : 0))) < 1e-12,
                              where.constData());
                 }
                 if (p.max) {
-                    QVERIFY2(std::abs(box->maximum() - (p.max->value - (p.max->exclusive ? step : 0))) < 1e-12,
+                    QVERIFY2(std::abs(box->maximum() -
+                                      (p.max->value - (p.max->exclusive ? step : 0))) < 1e-12,
                              where.constData());
                 }
                 if (p.kind == ParamKind::Fraction && !p.min) QCOMPARE(box->minimum(), 0.0);
@@ -83,13 +87,15 @@ void check_form(MainWindow& w, const ElementSpec& spec, const std::string& skip)
             case ParamKind::Boolean: {
                 auto* box = w.panel()->findChild<QComboBox*>(name);
                 QVERIFY2(box, where.constData());
-                QCOMPARE(box->currentText(), p.fallback.get<bool>() ? QString("yes") : QString("no"));
+                QCOMPARE(box->currentText(),
+                         p.fallback.get<bool>() ? QString("yes") : QString("no"));
                 break;
             }
             default: {  // colours, points, directions: three boxes, key.x, key.y, key.z
                 auto* x = w.panel()->findChild<QDoubleSpinBox*>(name + ".x");
                 QVERIFY2(x, where.constData());
-                if (p.kind == ParamKind::Colour || p.kind == ParamKind::Albedo) QCOMPARE(x->minimum(), 0.0);
+                if (p.kind == ParamKind::Colour || p.kind == ParamKind::Albedo)
+                    QCOMPARE(x->minimum(), 0.0);
                 if (p.kind == ParamKind::Albedo) QCOMPARE(x->maximum(), 1.0);
                 break;
             }
@@ -124,7 +130,8 @@ private slots:
     void gather_radius_field_accepts_zero_auto() {
         QTemporaryDir dir;
         MainWindow w;
-        QVERIFY(w.open_file(write_bare_scene(dir, {{"integrator", "photon_map"}, {"radius", 0.05}})));
+        QVERIFY(
+            w.open_file(write_bare_scene(dir, {{"integrator", "photon_map"}, {"radius", 0.05}})));
         w.tree()->select_pointer("/render");
         auto* radius = w.panel()->findChild<QDoubleSpinBox*>("field:radius");
         QVERIFY(radius);

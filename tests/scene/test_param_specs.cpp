@@ -18,6 +18,9 @@
 
 #include "scene/camera_spec.h"
 #include "scene/json_reader.h"
+#include "scene/light_spec.h"
+#include "scene/material_spec.h"
+#include "scene/object_spec.h"
 #include "scene/param_spec.h"
 #include "scene/render_settings_spec.h"
 #include "scene/scene_json.h"
@@ -43,17 +46,17 @@ std::vector<std::string> cells(const std::string& row) {
     return out;
 }
 
-// The reference table under `heading` in docs/scene-format.md: key -> its cells
-// (key, type, default, range, meaning).
-std::map<std::string, std::vector<std::string>> docs_table(const std::string& heading) {
+// The reference table after the line `anchor` (a heading, or the sentence introducing it)
+// in docs/scene-format.md: key -> its cells (key, type, default, range, meaning).
+std::map<std::string, std::vector<std::string>> docs_table(const std::string& anchor) {
     std::ifstream docs(LENSLAB_SOURCE_DIR "/docs/scene-format.md");
     std::string line;
-    while (std::getline(docs, line) && line != heading) {
+    while (std::getline(docs, line) && line != anchor) {
     }
-    EXPECT_EQ(line, heading) << "no heading in docs/scene-format.md";
+    EXPECT_EQ(line, anchor) << "not in docs/scene-format.md";
     while (std::getline(docs, line) && line.rfind("| key |", 0) != 0) {
     }
-    EXPECT_EQ(line, "| key | type | default | range | meaning |") << "under " << heading;
+    EXPECT_EQ(line, "| key | type | default | range | meaning |") << "after " << anchor;
     std::getline(docs, line);  // | --- | ...
     std::map<std::string, std::vector<std::string>> rows;
     while (std::getline(docs, line) && line.rfind("|", 0) == 0) {
@@ -66,16 +69,53 @@ std::map<std::string, std::vector<std::string>> docs_table(const std::string& he
 
 struct Case {
     const ElementSpec& (*spec)();
-    const char* heading;
-    json scene;  // a valid scene; the element is at scene[spec().name]
+    const char* anchor;                  // the docs line its table follows
+    json scene;                          // a valid scene holding one such element ...
+    const char* pointer;                 // ... here
+    const char* path;                    // which messages call
+    std::vector<std::string> elsewhere;  // keys documented in another table
 };
 
 std::vector<Case> cases() {
     const json camera = {{"position", {0, 0, 5}}, {"look_at", {0, 0, 0}}};
-    // time > 0, so passes 0 alone is not what refuses a value.
+    const json sphere = {
+        {"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 1}, {"material", "m"}};
+    const json scene = {{"camera", camera},
+                        {"render", {{"time", 1}}},  // so passes 0 alone is not what refuses a value
+                        {"materials", {{"m", {{"emission", {{"intensity", 1}}}}}}},
+                        {"objects", {sphere}},
+                        {"lights", {{{"type", "point"}, {"position", {0, 2, 0}}, {"power", 1}}}}};
+    json with_beam = scene;
+    with_beam["lights"] = {{{"type", "beam"},
+                            {"origin", {0, 2, 0}},
+                            {"direction", {0, -1, 0}},
+                            {"radius", 0.1},
+                            {"power", 1}}};
+    std::vector<std::string> common = lenslab::object_common_spec().keys();
     return {
-        {lenslab::render_settings_spec, "## Render", {{"camera", camera}, {"render", {{"time", 1}}}}},
-        {lenslab::camera_spec, "## Camera", {{"camera", camera}}},
+        {lenslab::render_settings_spec, "## Render", scene, "/render", "render", {}},
+        {lenslab::camera_spec, "## Camera", scene, "/camera", "camera", {}},
+        {lenslab::material_spec, "## Materials", scene, "/materials/m", "materials.m", {}},
+        {lenslab::emission_spec,
+         "`emission` has three keys:",
+         scene,
+         "/materials/m/emission",
+         "materials.m.emission",
+         {}},
+        {lenslab::point_light_spec,
+         "A point light (`\"type\": \"point\"`):",
+         scene,
+         "/lights/0",
+         "lights[0]",
+         {}},
+        {lenslab::beam_spec,
+         "A beam (`\"type\": \"beam\"`):",
+         with_beam,
+         "/lights/0",
+         "lights[0]",
+         {}},
+        {lenslab::object_common_spec, "## Objects", scene, "/objects/0", "objects[0]", {}},
+        {lenslab::sphere_spec, "### Sphere", scene, "/objects/0", "objects[0]", common},
     };
 }
 
@@ -83,8 +123,10 @@ class DeclaredElement : public testing::TestWithParam<Case> {};
 
 TEST_P(DeclaredElement, DocsTableAgreesWithTheDeclaration) {
     const ElementSpec& spec = GetParam().spec();
-    auto rows = docs_table(GetParam().heading);
+    auto rows = docs_table(GetParam().anchor);
     for (const ParamSpec& p : spec.params) {
+        const auto& elsewhere = GetParam().elsewhere;
+        if (std::find(elsewhere.begin(), elsewhere.end(), p.key) != elsewhere.end()) continue;
         const auto it = rows.find(p.key);
         ASSERT_NE(it, rows.end()) << spec.name << "." << p.key << " is not in the docs table";
         const std::vector<std::string>& row = it->second;
@@ -97,10 +139,16 @@ TEST_P(DeclaredElement, DocsTableAgreesWithTheDeclaration) {
     for (const auto& [key, row] : rows) ADD_FAILURE() << "docs list " << key << ", not declared";
 }
 
-// Reads `scene` with the element's `key` set to `value`: "" when accepted, else the error.
+// Reads the case's scene with the element's `key` set to `value` (removed for null): "" when
+// accepted, else the error.
 std::string read_with(const Case& c, const std::string& key, const json& value) {
     json scene = c.scene;
-    scene[c.spec().name][key] = value;
+    json& element = scene[json::json_pointer(c.pointer)];
+    if (value.is_null()) {
+        element.erase(key);
+    } else {
+        element[key] = value;
+    }
     try {
         (void)lenslab::scene_from_json(scene);
         return "";
@@ -111,9 +159,9 @@ std::string read_with(const Case& c, const std::string& key, const json& value) 
 
 TEST_P(DeclaredElement, ReaderAcceptsDefaultsAndRefusesPastTheBounds) {
     const Case& c = GetParam();
-    const std::string name = c.spec().name;
     for (const ParamSpec& p : c.spec().params) {
-        const std::string path = name + "." + p.key + ": ";
+        const std::string path = std::string(c.path) + "." + p.key + ": ";
+        if (p.required) EXPECT_EQ(read_with(c, p.key, nullptr), path + "missing (required)");
         if (!p.fallback.is_null() && lenslab::fallback_in_range(p)) {
             EXPECT_EQ(read_with(c, p.key, p.fallback), "") << "the default of " << path;
         }
@@ -127,7 +175,8 @@ TEST_P(DeclaredElement, ReaderAcceptsDefaultsAndRefusesPastTheBounds) {
         }
         // Just past each end: the next whole number, or a small step for other numbers.
         const auto past = [&p](double bound, double direction) {
-            return bound + direction * (p.is_integer() ? 1.0 : 1e-9 * std::max(1.0, std::abs(bound)));
+            return bound +
+                   direction * (p.is_integer() ? 1.0 : 1e-9 * std::max(1.0, std::abs(bound)));
         };
         const auto check_end = [&](const lenslab::Bound& b, double outwards) {
             const double outside = b.exclusive ? b.value : past(b.value, outwards);
@@ -138,14 +187,20 @@ TEST_P(DeclaredElement, ReaderAcceptsDefaultsAndRefusesPastTheBounds) {
                 EXPECT_EQ(read_with(c, p.key, at), "") << path << "at the bound " << b.value;
             }
         };
+        // A fraction's [0, 1] holds whatever else it declares.
+        const bool fraction = p.kind == ParamKind::Fraction;
         if (p.min) check_end(*p.min, -1.0);
+        if (fraction && !p.min) check_end(lenslab::Bound{0.0}, -1.0);
         if (p.max) check_end(*p.max, 1.0);
+        if (fraction) check_end(lenslab::Bound{1.0}, 1.0);
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(Elements, DeclaredElement, testing::ValuesIn(cases()),
                          [](const testing::TestParamInfo<Case>& info) {
-                             return info.param.spec().name;
+                             std::string name = info.param.spec().name;
+                             std::replace(name.begin(), name.end(), ' ', '_');
+                             return name;
                          });
 
 std::string run_and_capture(const std::string& command) {
@@ -158,10 +213,15 @@ std::string run_and_capture(const std::string& command) {
 
 // The option names are a contract with scripts; the declaration generates exactly these.
 TEST(RenderOptions, AreTheDeclaredKeysWithTheirRangesInTheHelp) {
-    const std::vector<std::string> contract{
-        "--width", "--height", "--spp", "--max-depth", "--seed", "--integrator", "--photons",
-        "--caustic-photons", "--aim-photons", "--radius", "--filter", "--direct", "--filter-k",
-        "--max-photons-per-estimate", "--passes", "--time", "--pass-photons", "--initial-radius"};
+    const std::vector<std::string> contract{"--width",        "--height",
+                                            "--spp",          "--max-depth",
+                                            "--seed",         "--integrator",
+                                            "--photons",      "--caustic-photons",
+                                            "--aim-photons",  "--radius",
+                                            "--filter",       "--direct",
+                                            "--filter-k",     "--max-photons-per-estimate",
+                                            "--passes",       "--time",
+                                            "--pass-photons", "--initial-radius"};
     std::vector<std::string> declared;
     for (const ParamSpec& p : lenslab::render_settings_spec().params) {
         if (p.cli) declared.push_back(p.option_name());
