@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "scene/json_reader.h"
+#include "scene/render_settings_json.h"
 #include "scene/render_settings_spec.h"
 #include "scene/scene_json.h"
 
@@ -92,6 +93,15 @@ RenderOverrides::RenderOverrides(CLI::App& cmd, const std::vector<std::string>& 
 json RenderOverrides::patched_json(const std::string& path) const {
     json root = path.empty() ? parse_json_strict(default_scene_text(), "default scene")
                              : read_scene_json_file(path);
+    // The file's own values are checked first, so an option does not hide a bad one.
+    if (root.contains("render")) {
+        try {
+            (void)read_render_settings(root["render"]);
+        } catch (const SceneError& e) {
+            if (path.empty()) throw;
+            throw SceneError(path + ": " + e.path(), e.reason());
+        }
+    }
     // A `render` that is not an object is left for the reader to refuse.
     if (!root.contains("render")) root["render"] = json::object();
     if (root["render"].is_object()) {

@@ -63,8 +63,9 @@ struct ParamSpec {
     ParamSpec& because(std::string text) { return (why = std::move(text), *this); }
     ParamSpec& meaning_auto(std::string text) { return (auto_meaning = std::move(text), *this); }
     ParamSpec& describe(std::string text) { return (doc = std::move(text), *this); }
-    ParamSpec& in_editor(std::string text, int digits = 6) {
-        return (label = std::move(text), decimals = digits, *this);
+    // `digits` < 0 keeps the kind's own (none for whole numbers, else 6).
+    ParamSpec& in_editor(std::string text, int digits = -1) {
+        return (label = std::move(text), decimals = digits < 0 ? decimals : digits, *this);
     }
     ParamSpec& under(std::string heading) { return (group = std::move(heading), *this); }
     ParamSpec& on_command_line() { return (cli = true, *this); }

@@ -22,6 +22,7 @@
 #include "scene/object_spec.h"
 #include "scene/mesh_json.h"
 #include "scene/planar_json.h"
+#include "scene/render_settings_json.h"
 #include "scene/render_settings_spec.h"
 #include "scene/spectral_json.h"
 #include "scene/spec_reader.h"
@@ -457,6 +458,12 @@ Scene scene_from_file_json(const nlohmann::json& root, const std::string& path,
 
 Scene load_scene_file(const std::string& path, const SceneReadOptions& options) {
     return scene_from_file_json(read_scene_json_file(path), path, options);
+}
+
+RenderSettings read_render_settings(const nlohmann::json& render) {
+    RenderSettings s;
+    read_render(render, s);
+    return s;
 }
 
 Scene default_scene() { return parse_scene(default_scene_text(), "default scene"); }

@@ -161,11 +161,15 @@ TEST_P(DeclaredElement, ReaderAcceptsDefaultsAndRefusesPastTheBounds) {
     const Case& c = GetParam();
     for (const ParamSpec& p : c.spec().params) {
         const std::string path = std::string(c.path) + "." + p.key + ": ";
-        if (p.required) EXPECT_EQ(read_with(c, p.key, nullptr), path + "missing (required)");
+        if (p.required) {
+            EXPECT_EQ(read_with(c, p.key, nullptr), path + "missing (required)");
+        }
         if (!p.fallback.is_null() && lenslab::fallback_in_range(p)) {
             EXPECT_EQ(read_with(c, p.key, p.fallback), "") << "the default of " << path;
         }
-        for (const std::string& choice : p.choices) EXPECT_EQ(read_with(c, p.key, choice), "");
+        for (const std::string& choice : p.choices) {
+            EXPECT_EQ(read_with(c, p.key, choice), "");
+        }
         if (p.kind == ParamKind::Choice) {
             EXPECT_EQ(read_with(c, p.key, "bogus"), path + *lenslab::choice_problem(p, "bogus"));
         }
@@ -197,8 +201,8 @@ TEST_P(DeclaredElement, ReaderAcceptsDefaultsAndRefusesPastTheBounds) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Elements, DeclaredElement, testing::ValuesIn(cases()),
-                         [](const testing::TestParamInfo<Case>& info) {
-                             std::string name = info.param.spec().name;
+                         [](const testing::TestParamInfo<Case>& element) {
+                             std::string name = element.param.spec().name;
                              std::replace(name.begin(), name.end(), ' ', '_');
                              return name;
                          });
@@ -213,19 +217,21 @@ std::string run_and_capture(const std::string& command) {
 
 // The option names are a contract with scripts; the declaration generates exactly these.
 TEST(RenderOptions, AreTheDeclaredKeysWithTheirRangesInTheHelp) {
-    const std::vector<std::string> contract{"--width",        "--height",
-                                            "--spp",          "--max-depth",
-                                            "--seed",         "--integrator",
-                                            "--photons",      "--caustic-photons",
-                                            "--aim-photons",  "--radius",
-                                            "--filter",       "--direct",
-                                            "--filter-k",     "--max-photons-per-estimate",
-                                            "--passes",       "--time",
-                                            "--pass-photons", "--initial-radius"};
+    std::vector<std::string> contract{"--width",        "--height",
+                                      "--spp",          "--max-depth",
+                                      "--seed",         "--integrator",
+                                      "--photons",      "--caustic-photons",
+                                      "--aim-photons",  "--radius",
+                                      "--filter",       "--direct",
+                                      "--filter-k",     "--max-photons-per-estimate",
+                                      "--passes",       "--time",
+                                      "--pass-photons", "--initial-radius"};
     std::vector<std::string> declared;
     for (const ParamSpec& p : lenslab::render_settings_spec().params) {
         if (p.cli) declared.push_back(p.option_name());
     }
+    std::sort(declared.begin(), declared.end());
+    std::sort(contract.begin(), contract.end());
     EXPECT_EQ(declared, contract);
 
     const std::string help = run_and_capture(std::string(LENSLAB_BINARY) + " render --help");
