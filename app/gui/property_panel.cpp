@@ -586,11 +586,14 @@ void PropertyPanel::build_detector() {
 }
 
 void PropertyPanel::build_implicit() {
-    add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
-    add_formula(tr("f(x, y, z) <= 0"), "formula", "x^2 + y^2 + z^2 - 1", ImplicitSolid::check);
+    const ElementSpec& declared = implicit_spec();
+    add_param(declared.param("center"));
+    // The formula is checked as it is typed; the bounds are two corners.
+    add_formula(QString::fromStdString(declared.param("formula").label), "formula", "x^2 + y^2 + z^2 - 1",
+                ImplicitSolid::check);
     add_vec3(tr("Bounds, lower corner"), "bounds/0", json::array({-1, -1, -1}));
     add_vec3(tr("Bounds, upper corner"), "bounds/1", json::array({1, 1, 1}));
-    add_integer(tr("March steps"), "steps", ImplicitSolid::kDefaultSteps, 8, 1 << 16);
+    add_param(declared.param("steps"));
 }
 
 void PropertyPanel::build_light() {

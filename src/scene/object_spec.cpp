@@ -1,5 +1,7 @@
 #include "scene/object_spec.h"
 
+#include "geometry/implicit_solid.h"
+
 namespace lenslab {
 
 namespace {
@@ -27,14 +29,39 @@ ElementSpec declare_common() {
     return s;
 }
 
-ElementSpec declare_sphere() {
-    ElementSpec s{"sphere", "a sphere", {}};
+// The common keys every solid takes (a detector only lies on flat shapes).
+ElementSpec solid(std::string name, std::string phrase) {
+    ElementSpec s{std::move(name), std::move(phrase), {}};
     for (const ParamSpec& p : object_common_spec().params) {
         if (p.key != "detector") s.params.push_back(p);
     }
+    return s;
+}
+
+ElementSpec declare_sphere() {
+    ElementSpec s = solid("sphere", "a sphere");
     s.params.push_back(point_param("center").describe("centre").in_editor("Centre"));
     s.params.push_back(
         number_param("radius", 0).above(0).needed().describe("radius").in_editor("Radius"));
+    return s;
+}
+
+ElementSpec declare_implicit() {
+    ElementSpec s = solid("implicit", "an implicit");
+    s.params.push_back(string_param("formula", "")
+                           .needed()
+                           .describe("f(x, y, z); the inside is where it is <= 0")
+                           .in_editor("f(x, y, z) <= 0"));
+    s.params.push_back(nested_param(ParamKind::Array, "bounds")
+                           .needed()
+                           .as_written("two points")
+                           .describe("the box the solid is cut to"));
+    s.params.push_back(vector_param(ParamKind::Point, "center", nlohmann::json::array({0, 0, 0}))
+                           .describe("where the formula's origin lies in the scene")
+                           .in_editor("Centre"));
+    s.params.push_back(whole_param("steps", ImplicitSolid::kDefaultSteps, 8, 1 << 16)
+                           .describe("the march's resolution")
+                           .in_editor("March steps"));
     return s;
 }
 
@@ -47,6 +74,11 @@ const ElementSpec& object_common_spec() {
 
 const ElementSpec& sphere_spec() {
     static const ElementSpec spec = declare_sphere();
+    return spec;
+}
+
+const ElementSpec& implicit_spec() {
+    static const ElementSpec spec = declare_implicit();
     return spec;
 }
 

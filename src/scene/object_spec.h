@@ -1,6 +1,7 @@
 #pragma once
 // The declarations of what every object in `objects` takes, and of the shapes read through
-// them (so far the sphere; the other shapes still list their keys in their readers).
+// them (so far the sphere and the implicit solid; the other shapes still list their keys in
+// their readers).
 
 #include "scene/param_spec.h"
 
@@ -10,6 +11,7 @@ namespace lenslab {
 const ElementSpec& object_common_spec();
 // The common keys a sphere takes (not `detector`) and its own.
 const ElementSpec& sphere_spec();
+const ElementSpec& implicit_spec();
 
 // Whether `key` is one of the common keys (documented once, not under each shape).
 bool is_common_object_key(const std::string& key);

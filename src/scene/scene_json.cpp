@@ -231,8 +231,8 @@ std::shared_ptr<const Shape> read_triangle(JsonObjectReader& r) {
     return std::make_shared<Triangle>(p[0], p[1], p[2]);
 }
 
-std::shared_ptr<const Shape> read_implicit(JsonObjectReader& r) {
-    const std::string formula = r.string("formula");
+std::shared_ptr<const Shape> read_implicit(SpecReader& r) {
+    const std::string formula = r.text("formula");
     const nlohmann::json& b = r.require("bounds");
     const std::string bpath = r.child_path("bounds");
     if (!b.is_array() || b.size() != 2) {
@@ -248,8 +248,8 @@ std::shared_ptr<const Shape> read_implicit(JsonObjectReader& r) {
                                         " and " + format_number(box.hi[a]));
         }
     }
-    const int steps = static_cast<int>(r.integer("steps", ImplicitSolid::kDefaultSteps, 8, 1 << 16));
-    const Vec3 centre = r.has("center") ? r.vec3("center") : Vec3{};
+    const int steps = static_cast<int>(r.whole("steps"));
+    const Vec3 centre = r.point("center");
     std::shared_ptr<ImplicitSolid> solid;
     try {
         solid = std::make_shared<ImplicitSolid>(formula, box, steps, centre);
@@ -294,7 +294,6 @@ SceneObject read_object(const json& j, const std::string& path,
         keys.insert(keys.end(), more.begin(), more.end());
     } else if (type == "implicit") {
         o.type = ObjectType::Implicit;
-        keys.insert(keys.end(), {"center", "formula", "bounds", "steps"});
     } else {
         throw SceneError(path + ".type", "unknown object type '" + type +
                                              "' (known: sphere, triangle, disc, rectangle, lens, lens_group, mesh, prism, implicit)");
@@ -303,10 +302,12 @@ SceneObject read_object(const json& j, const std::string& path,
         check_detector_allowed(j, path, type);
     }
     // Declared shapes read through their declaration; the others list their keys above.
+    const ElementSpec* declared = o.type == ObjectType::Sphere     ? &sphere_spec()
+                                  : o.type == ObjectType::Implicit ? &implicit_spec()
+                                                                   : nullptr;
     const std::unique_ptr<JsonObjectReader> reader =
-        o.type == ObjectType::Sphere
-            ? std::make_unique<SpecReader>(j, path, sphere_spec())
-            : std::make_unique<JsonObjectReader>(j, path, keys, (type == "implicit" ? "an " : "a ") + type);
+        declared ? std::make_unique<SpecReader>(j, path, *declared)
+                 : std::make_unique<JsonObjectReader>(j, path, keys, "a " + type);
     JsonObjectReader& r = *reader;
     o.name = r.string("name", path);
     o.photon_target = r.boolean("photon_target");
@@ -321,7 +322,7 @@ SceneObject read_object(const json& j, const std::string& path,
         case ObjectType::Mesh:
             o.shape = type == "mesh" ? read_mesh(r, base_dir) : read_prism(r);
             break;
-        case ObjectType::Implicit: o.shape = read_implicit(r); break;
+        case ObjectType::Implicit: o.shape = read_implicit(static_cast<SpecReader&>(r)); break;
         case ObjectType::Disc: o.shape = read_disc(r); break;
         case ObjectType::Rectangle: o.shape = read_rectangle(r); break;
     }

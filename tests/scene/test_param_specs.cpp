@@ -91,6 +91,11 @@ std::vector<Case> cases() {
                             {"direction", {0, -1, 0}},
                             {"radius", 0.1},
                             {"power", 1}}};
+    json with_implicit = scene;
+    with_implicit["objects"] = {{{"type", "implicit"},
+                                 {"formula", "x^2 + y^2 + z^2 - 0.25"},
+                                 {"bounds", {{-1, -1, -1}, {1, 1, 1}}},
+                                 {"material", {{"color", 0.5}}}}};
     std::vector<std::string> common = lenslab::object_common_spec().keys();
     return {
         {lenslab::render_settings_spec, "## Render", scene, "/render", "render", {}},
@@ -116,6 +121,8 @@ std::vector<Case> cases() {
          {}},
         {lenslab::object_common_spec, "## Objects", scene, "/objects/0", "objects[0]", {}},
         {lenslab::sphere_spec, "### Sphere", scene, "/objects/0", "objects[0]", common},
+        {lenslab::implicit_spec, "### Implicit solid", with_implicit, "/objects/0", "objects[0]",
+         common},
     };
 }
 
