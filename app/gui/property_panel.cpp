@@ -19,6 +19,7 @@
 #include "scene/light_spec.h"
 #include "scene/material_spec.h"
 #include "scene/object_spec.h"
+#include "scene/planar_json.h"
 #include "scene/material.h"
 #include "scene/render_settings_spec.h"
 #include "scene/surface_json.h"
@@ -543,16 +544,17 @@ void PropertyPanel::build_surface(const QString& label, const std::string& key) 
 }
 
 void PropertyPanel::build_flat(const std::string& type) {
-    add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
-    add_vec3(tr("Normal (front)"), "normal", json::array({0, 0, 1}));
+    const ElementSpec& declared = type == "disc" ? disc_spec() : rectangle_spec();
+    add_param(declared.param("center"));
+    add_param(declared.param("normal"));
     if (type == "disc") {
-        add_number(tr("Radius"), "radius", 1.0, 1e-9, 1e6);
+        add_param(declared.param("radius"));
     } else {
         add_number(tr("Width (along u)"), "size/0", 1.0, 1e-9, 1e6);
         add_number(tr("Height (along v)"), "size/1", 1.0, 1e-9, 1e6);
     }
     // Left out, up is [0, 1, 0] (or [0, 0, -1] for a vertical normal); shown as given.
-    add_vec3(tr("Up (orients u, v)"), "up", json::array({0, 1, 0}));
+    add_vec3(QString::fromStdString(declared.param("up").label), "up", json::array({0, 1, 0}));
 }
 
 void PropertyPanel::build_detector() {

@@ -29,17 +29,8 @@ ElementSpec declare_common() {
     return s;
 }
 
-// The common keys every solid takes (a detector only lies on flat shapes).
-ElementSpec solid(std::string name, std::string phrase) {
-    ElementSpec s{std::move(name), std::move(phrase), {}};
-    for (const ParamSpec& p : object_common_spec().params) {
-        if (p.key != "detector") s.params.push_back(p);
-    }
-    return s;
-}
-
 ElementSpec declare_sphere() {
-    ElementSpec s = solid("sphere", "a sphere");
+    ElementSpec s = shape_spec("sphere", "a sphere", false);
     s.params.push_back(point_param("center").describe("centre").in_editor("Centre"));
     s.params.push_back(
         number_param("radius", 0).above(0).needed().describe("radius").in_editor("Radius"));
@@ -47,7 +38,7 @@ ElementSpec declare_sphere() {
 }
 
 ElementSpec declare_implicit() {
-    ElementSpec s = solid("implicit", "an implicit");
+    ElementSpec s = shape_spec("implicit", "an implicit", false);
     s.params.push_back(string_param("formula", "")
                            .needed()
                            .describe("f(x, y, z); the inside is where it is <= 0")
@@ -80,6 +71,14 @@ const ElementSpec& sphere_spec() {
 const ElementSpec& implicit_spec() {
     static const ElementSpec spec = declare_implicit();
     return spec;
+}
+
+ElementSpec shape_spec(std::string name, std::string phrase, bool takes_detector) {
+    ElementSpec s{std::move(name), std::move(phrase), {}};
+    for (const ParamSpec& p : object_common_spec().params) {
+        if (takes_detector || p.key != "detector") s.params.push_back(p);
+    }
+    return s;
 }
 
 bool is_common_object_key(const std::string& key) {

@@ -1,7 +1,7 @@
 #pragma once
 // The declarations of what every object in `objects` takes, and of the shapes read through
-// them (so far the sphere and the implicit solid; the other shapes still list their keys in
-// their readers).
+// them (the sphere and the implicit solid here; the disc and the rectangle in planar_json.h;
+// the other shapes still list their keys in their readers).
 
 #include "scene/param_spec.h"
 
@@ -12,6 +12,10 @@ const ElementSpec& object_common_spec();
 // The common keys a sphere takes (not `detector`) and its own.
 const ElementSpec& sphere_spec();
 const ElementSpec& implicit_spec();
+
+// A shape's declaration to add its own keys to: the common ones (`detector` only for the
+// flat shapes, which can measure light).
+ElementSpec shape_spec(std::string name, std::string phrase, bool takes_detector);
 
 // Whether `key` is one of the common keys (documented once, not under each shape).
 bool is_common_object_key(const std::string& key);

@@ -280,10 +280,8 @@ SceneObject read_object(const json& j, const std::string& path,
         keys.insert(keys.end(), {"vertices", "detector"});
     } else if (type == "disc") {
         o.type = ObjectType::Disc;
-        keys.insert(keys.end(), disc_keys().begin(), disc_keys().end());
     } else if (type == "rectangle") {
         o.type = ObjectType::Rectangle;
-        keys.insert(keys.end(), rectangle_keys().begin(), rectangle_keys().end());
     } else if (type == "lens") {
         o.type = ObjectType::Lens;
         keys.insert(keys.end(), {"center", "axis", "curvature_radius", "aperture_radius",
@@ -302,9 +300,11 @@ SceneObject read_object(const json& j, const std::string& path,
         check_detector_allowed(j, path, type);
     }
     // Declared shapes read through their declaration; the others list their keys above.
-    const ElementSpec* declared = o.type == ObjectType::Sphere     ? &sphere_spec()
-                                  : o.type == ObjectType::Implicit ? &implicit_spec()
-                                                                   : nullptr;
+    const ElementSpec* declared = o.type == ObjectType::Sphere      ? &sphere_spec()
+                                  : o.type == ObjectType::Implicit  ? &implicit_spec()
+                                  : o.type == ObjectType::Disc      ? &disc_spec()
+                                  : o.type == ObjectType::Rectangle ? &rectangle_spec()
+                                                                    : nullptr;
     const std::unique_ptr<JsonObjectReader> reader =
         declared ? std::make_unique<SpecReader>(j, path, *declared)
                  : std::make_unique<JsonObjectReader>(j, path, keys, "a " + type);
@@ -323,8 +323,8 @@ SceneObject read_object(const json& j, const std::string& path,
             o.shape = type == "mesh" ? read_mesh(r, base_dir) : read_prism(r);
             break;
         case ObjectType::Implicit: o.shape = read_implicit(static_cast<SpecReader&>(r)); break;
-        case ObjectType::Disc: o.shape = read_disc(r); break;
-        case ObjectType::Rectangle: o.shape = read_rectangle(r); break;
+        case ObjectType::Disc: o.shape = read_disc(static_cast<SpecReader&>(r)); break;
+        case ObjectType::Rectangle: o.shape = read_rectangle(static_cast<SpecReader&>(r)); break;
     }
     if (o.type == ObjectType::Triangle || o.type == ObjectType::Disc || o.type == ObjectType::Rectangle) {
         o.detector = read_detector(r);
