@@ -22,6 +22,7 @@
 #include "scene/material_spec.h"
 #include "scene/object_spec.h"
 #include "scene/param_spec.h"
+#include "scene/planar_json.h"
 #include "scene/render_settings_spec.h"
 #include "scene/scene_json.h"
 
@@ -122,6 +123,9 @@ std::vector<Case> cases() {
         {lenslab::object_common_spec, "## Objects", scene, "/objects/0", "objects[0]", {}},
         {lenslab::sphere_spec, "### Sphere", scene, "/objects/0", "objects[0]", common},
         {lenslab::implicit_spec, "### Implicit solid", with_implicit, "/objects/0", "objects[0]",
+         common},
+        {lenslab::disc_spec, "### Disc", with_disc, "/objects/0", "objects[0]", common},
+        {lenslab::rectangle_spec, "### Rectangle", with_rectangle, "/objects/0", "objects[0]",
          common},
     };
 }
