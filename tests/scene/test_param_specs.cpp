@@ -97,6 +97,16 @@ std::vector<Case> cases() {
                                  {"formula", "x^2 + y^2 + z^2 - 0.25"},
                                  {"bounds", {{-1, -1, -1}, {1, 1, 1}}},
                                  {"material", {{"color", 0.5}}}}};
+    json with_disc = scene;
+    with_disc["objects"] = {{{"type", "disc"},
+                             {"center", {0, 0, 0}},
+                             {"normal", {0, 0, 1}},
+                             {"radius", 1},
+                             {"material", {{"color", 0.5}}}}};
+    json with_rectangle = with_disc;
+    with_rectangle["objects"][0].erase("radius");
+    with_rectangle["objects"][0]["type"] = "rectangle";
+    with_rectangle["objects"][0]["size"] = {1, 2};
     std::vector<std::string> common = lenslab::object_common_spec().keys();
     return {
         {lenslab::render_settings_spec, "## Render", scene, "/render", "render", {}},
