@@ -37,6 +37,15 @@ ElementSpec declare_sphere() {
     return s;
 }
 
+ElementSpec declare_triangle() {
+    ElementSpec s = shape_spec("triangle", "a triangle", true);
+    s.params.push_back(nested_param(ParamKind::Array, "vertices")
+                           .needed()
+                           .as_written("array of 3 points")
+                           .describe("the corners; they must not be collinear"));
+    return s;
+}
+
 ElementSpec declare_implicit() {
     ElementSpec s = shape_spec("implicit", "an implicit", false);
     s.params.push_back(string_param("formula", "")
@@ -65,6 +74,11 @@ const ElementSpec& object_common_spec() {
 
 const ElementSpec& sphere_spec() {
     static const ElementSpec spec = declare_sphere();
+    return spec;
+}
+
+const ElementSpec& triangle_spec() {
+    static const ElementSpec spec = declare_triangle();
     return spec;
 }
 

@@ -277,7 +277,6 @@ SceneObject read_object(const json& j, const std::string& path,
         o.type = ObjectType::Sphere;
     } else if (type == "triangle") {
         o.type = ObjectType::Triangle;
-        keys.insert(keys.end(), {"vertices", "detector"});
     } else if (type == "disc") {
         o.type = ObjectType::Disc;
     } else if (type == "rectangle") {
@@ -301,6 +300,7 @@ SceneObject read_object(const json& j, const std::string& path,
     }
     // Declared shapes read through their declaration; the others list their keys above.
     const ElementSpec* declared = o.type == ObjectType::Sphere      ? &sphere_spec()
+                                  : o.type == ObjectType::Triangle  ? &triangle_spec()
                                   : o.type == ObjectType::Implicit  ? &implicit_spec()
                                   : o.type == ObjectType::Disc      ? &disc_spec()
                                   : o.type == ObjectType::Rectangle ? &rectangle_spec()

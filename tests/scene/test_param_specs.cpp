@@ -103,6 +103,10 @@ std::vector<Case> cases() {
                              {"normal", {0, 0, 1}},
                              {"radius", 1},
                              {"material", {{"color", 0.5}}}}};
+    json with_triangle = with_disc;
+    with_triangle["objects"][0] = {{"type", "triangle"},
+                                   {"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}},
+                                   {"material", {{"color", 0.5}}}};
     json with_rectangle = with_disc;
     with_rectangle["objects"][0].erase("radius");
     with_rectangle["objects"][0]["type"] = "rectangle";
@@ -134,6 +138,7 @@ std::vector<Case> cases() {
         {lenslab::sphere_spec, "### Sphere", scene, "/objects/0", "objects[0]", common},
         {lenslab::implicit_spec, "### Implicit solid", with_implicit, "/objects/0", "objects[0]",
          common},
+        {lenslab::triangle_spec, "### Triangle", with_triangle, "/objects/0", "objects[0]", common},
         {lenslab::disc_spec, "### Disc", with_disc, "/objects/0", "objects[0]", common},
         {lenslab::rectangle_spec, "### Rectangle", with_rectangle, "/objects/0", "objects[0]",
          common},
