@@ -12,6 +12,7 @@
 #include "analysis/detector.h"
 #include "analysis/detector_files.h"
 #include "commands.h"
+#include "render_overrides.h"
 #include "render/photon_tracer.h"
 #include "scene/scene_json.h"
 
@@ -22,10 +23,7 @@ namespace {
 struct DetectArgs {
     std::string scene;
     std::string output = "detectors";
-    int64_t photons = 0, caustic_photons = 0;
-    std::string aim_photons;
-    int64_t seed = -1;
-    int threads = 0, max_depth = -1;
+    int threads = 0;
     bool json = false, quiet = false, log = false;
 };
 
@@ -35,8 +33,8 @@ extern "C" void on_detect_interrupt(int) {
     if (g_control) g_control->cancel();  // an atomic store: safe in a signal handler
 }
 
-int run(const DetectArgs& a) {
-    const Scene scene = load_scene_file(a.scene);
+int run(const DetectArgs& a, const RenderOverrides& overrides) {
+    const Scene scene = overrides.load(a.scene);
     if (detector_objects(scene).empty()) {
         std::cerr << "lenslab: error: " << a.scene
                   << ": no detector in the scene (mark a triangle, disc or rectangle with \"detector\": true)\n";
@@ -48,11 +46,11 @@ int run(const DetectArgs& a) {
         return 1;
     }
     DetectionSettings settings;
-    settings.photons_per_light = a.photons > 0 ? a.photons : scene.render.photons;
-    settings.caustic_photons_per_light = a.caustic_photons > 0 ? a.caustic_photons : scene.render.caustic_photons;
-    settings.aim = a.aim_photons.empty() ? scene.render.aim_photons : a.aim_photons == "on";
-    settings.seed = a.seed >= 0 ? static_cast<uint64_t>(a.seed) : scene.render.seed;
-    settings.max_depth = a.max_depth >= 0 ? a.max_depth : scene.render.max_depth;
+    settings.photons_per_light = scene.render.photons;
+    settings.caustic_photons_per_light = scene.render.caustic_photons;
+    settings.aim = scene.render.aim_photons;
+    settings.seed = scene.render.seed;
+    settings.max_depth = scene.render.max_depth;
     settings.threads = a.threads;
 
     int last = -1;
@@ -114,23 +112,15 @@ Action add_detect_command(CLI::App& app) {
         "detect", "Measure the irradiance on the scene's detectors (CSV, EXR and false-colour PNG per detector)");
     cmd->add_option("scene", args->scene, "Scene file (JSON) with at least one detector")->required();
     cmd->add_option("-o,--output", args->output, "Folder for <detector>.csv, .exr and .png")->capture_default_str();
-    cmd->add_option("--photons", args->photons, "Photons emitted per light (default: the scene's render.photons)")
-        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
-    cmd->add_option("--caustic-photons", args->caustic_photons,
-                    "Photons aimed at the glass and mirrors, per light (default: render.caustic_photons)")
-        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 40));
-    cmd->add_option("--aim-photons", args->aim_photons, "on: aim photons at the glass and mirrors; off: uniform")
-        ->check(CLI::IsMember({"on", "off"}));
-    cmd->add_option("--seed", args->seed, "Random seed (default: the scene's render.seed)")
-        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{0}, int64_t{2147483647}));
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
         ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
-    cmd->add_option("--max-depth", args->max_depth, "Longest specular chain followed (default: render.max_depth)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, 1000));
     cmd->add_flag("--log", args->log, "Colour the PNG on a log scale (4 decades below the peak)");
     cmd->add_flag("--json", args->json, "Print the summary as JSON");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
-    return [args] { return run(*args); };
+    // The render block's keys the photon tracer uses, as `lenslab render` overrides them.
+    auto overrides = std::make_shared<RenderOverrides>(
+        *cmd, std::vector<std::string>{"photons", "caustic_photons", "aim_photons", "seed", "max_depth"});
+    return [args, overrides] { return run(*args, *overrides); };
 }
 
 }  // namespace lenslab::cli

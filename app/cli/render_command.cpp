@@ -10,10 +10,10 @@
 #include <tbb/info.h>
 
 #include "commands.h"
+#include "render_overrides.h"
 #include "render/image_io.h"
 #include "render/render_session.h"
-#include "scene/limits.h"
-#include "scene/scene_json.h"
+#include "scene/render_settings.h"
 
 namespace lenslab::cli {
 
@@ -22,17 +22,7 @@ namespace {
 struct RenderArgs {
     std::string scene;
     std::string output = "lenslab.png";
-    int width = 0, height = 0, spp = 0, max_depth = -1, threads = 0;
-    int64_t seed = -1;
-    std::string integrator, filter, direct;
-    int64_t photons = 0, caustic_photons = 0;
-    std::string aim_photons;
-    double radius = 0, filter_k = 0;
-    int max_photons_per_estimate = 0;
-    int passes = -1;
-    double time = -1;
-    int64_t pass_photons = 0;
-    double initial_radius = 0;
+    int threads = 0;
     double exposure = 0.0;
     bool quiet = false;
 };
@@ -68,7 +58,19 @@ private:
     int m_last = -1;
 };
 
-int run(const RenderArgs& a) {
+// `--passes 0` (or `--time 0` leaving no limit) with no time budget anywhere: refused as an
+// option error before any work, naming the options rather than the file's keys.
+bool unbounded_passes(const RenderOverrides& overrides, const nlohmann::json& root) {
+    if (!overrides.given("passes") && !overrides.given("time")) return false;
+    const nlohmann::json& r = root["render"];
+    const RenderSettings d;
+    const auto number = [&r](const char* key, double fallback) {
+        return r.is_object() && r.contains(key) && r[key].is_number() ? r[key].get<double>() : fallback;
+    };
+    return number("passes", d.passes) == 0 && number("time", d.time) == 0;
+}
+
+int run(const RenderArgs& a, const RenderOverrides& overrides) {
     if (!is_supported_image_path(a.output)) {
         std::cerr << "lenslab: error: --output '" << a.output
                   << "': unknown image type (use a .png or .exr file name)\n";
@@ -78,33 +80,13 @@ int run(const RenderArgs& a) {
         std::cerr << "lenslab: error: --exposure: must be a number of stops between -64 and 64\n";
         return 2;
     }
-    Scene scene = a.scene.empty() ? default_scene() : load_scene_file(a.scene);
-    RenderSettings& s = scene.render;
-    if (a.width > 0) s.width = a.width;
-    if (a.height > 0) s.height = a.height;
-    if (a.spp > 0) s.spp = a.spp;
-    if (a.max_depth >= 0) s.max_depth = a.max_depth;
-    if (a.seed >= 0) s.seed = static_cast<uint64_t>(a.seed);
-    if (!a.integrator.empty()) s.integrator = a.integrator;
-    if (a.photons > 0) s.photons = a.photons;
-    if (a.caustic_photons > 0) s.caustic_photons = a.caustic_photons;
-    if (!a.aim_photons.empty()) s.aim_photons = a.aim_photons == "on";
-    if (a.radius > 0) s.radius = a.radius;
-    if (!a.filter.empty()) s.filter = a.filter;
-    if (!a.direct.empty()) s.direct = a.direct;
-    if (a.filter_k > 0) s.filter_k = a.filter_k;
-    if (a.max_photons_per_estimate > 0) s.max_photons_per_estimate = a.max_photons_per_estimate;
-    if (a.time >= 0) {
-        s.time = a.time;
-        if (a.passes < 0) s.passes = 0;  // a time budget alone: as many passes as fit
-    }
-    if (a.passes >= 0) s.passes = a.passes;
-    if (a.pass_photons > 0) s.pass_photons = a.pass_photons;
-    if (a.initial_radius > 0) s.initial_radius = a.initial_radius;
-    if (s.passes == 0 && s.time == 0) {
+    const nlohmann::json root = overrides.patched_json(a.scene);
+    if (unbounded_passes(overrides, root)) {
         std::cerr << "lenslab: error: --passes 0 means no pass limit, which needs a time budget (--time)\n";
         return 2;
     }
+    const Scene scene = overrides.scene_from(root, a.scene);
+    const RenderSettings& s = scene.render;
 
     const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
     const bool progressive = integrator_info(s.integrator).progressive;
@@ -174,51 +156,14 @@ Action add_render_command(CLI::App& app) {
     cmd->add_option("scene", args->scene, "Scene file (JSON); omit for the built-in default scene");
     cmd->add_option("-o,--output", args->output, "Output image: .png (sRGB) or .exr (linear)")
         ->capture_default_str();
-    cmd->add_option("--width", args->width, "Image width in pixels (overrides the scene)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxImageSide));
-    cmd->add_option("--height", args->height, "Image height in pixels (overrides the scene)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxImageSide));
-    cmd->add_option("--spp", args->spp, "Samples per pixel (overrides the scene)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxSpp));
-    cmd->add_option("--max-depth", args->max_depth, "Longest specular chain (overrides the scene)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, kMaxDepth));
-    cmd->add_option("--seed", args->seed, "Random seed (overrides the scene)")
-        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{0}, int64_t{2147483647}));
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
         ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
     cmd->add_option("--exposure", args->exposure, "Exposure in stops applied before writing")
         ->capture_default_str()->check(CLI::Range(-64.0, 64.0));
     cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
-    cmd->add_option("--integrator", args->integrator, "whitted, photon_map, sppm or path (overrides the scene)")
-        ->check(CLI::IsMember(kIntegratorNames));
-    cmd->add_option("--photons", args->photons, "Photons emitted per light (photon_map)")
-        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, kMaxPhotonsPerLight));
-    cmd->add_option("--caustic-photons", args->caustic_photons,
-                    "Photons aimed at the glass and mirrors, per light (photon_map; sppm: per pass)")
-        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, kMaxPhotonsPerLight));
-    cmd->add_option("--aim-photons", args->aim_photons,
-                    "on: aim caustic photons at the glass and mirrors (default); off: emit all uniformly")
-        ->check(CLI::IsMember({"on", "off"}));
-    cmd->add_option("--radius", args->radius, "Photon gather radius (photon_map)")
-        ->check(CLI::PositiveNumber);
-    cmd->add_option("--filter", args->filter, "Photon filter: cone, gaussian or box")
-        ->check(CLI::IsMember(kPhotonFilterNames));
-    cmd->add_option("--direct", args->direct, "Direct light from shadow_rays or the photon_map")
-        ->check(CLI::IsMember(kDirectLightNames));
-    cmd->add_option("--filter-k", args->filter_k, "Cone filter constant k >= 1")
-        ->check(CLI::Range(1.0, 1e9));
-    cmd->add_option("--max-photons-per-estimate", args->max_photons_per_estimate,
-                    "Cap on the photons one radiance estimate gathers")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1000000));
-    cmd->add_option("--passes", args->passes, "sppm: passes to run (0: no limit, needs --time)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, 1 << 24));
-    cmd->add_option("--time", args->time, "sppm: time budget in seconds (passes run until it is spent)")
-        ->check(CLI::Range(0.0, 1e9));
-    cmd->add_option("--pass-photons", args->pass_photons, "sppm: photons emitted per light in each pass")
-        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 30));
-    cmd->add_option("--initial-radius", args->initial_radius, "sppm: initial gather radius (default: auto)")
-        ->check(CLI::PositiveNumber);
-    return [args] { return run(*args); };
+    // --width ... --initial-radius: generated from the render block's declaration.
+    auto overrides = std::make_shared<RenderOverrides>(*cmd);
+    return [args, overrides] { return run(*args, *overrides); };
 }
 
 }  // namespace lenslab::cli

@@ -8,13 +8,21 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include <algorithm>
+#include <cmath>
+
 #include "geometry/implicit_solid.h"
 #include "geometry/lens/sag_formula_surface.h"
 #include "json_pointer.h"
 #include "optics/spectrum.h"
+#include "scene/camera_spec.h"
 #include "scene/json_reader.h"
+#include "scene/light_spec.h"
+#include "scene/material_spec.h"
+#include "scene/object_spec.h"
+#include "scene/planar_json.h"
 #include "scene/material.h"
-#include "scene/render_settings.h"
+#include "scene/render_settings_spec.h"
 #include "scene/surface_json.h"
 #include "scene_document.h"
 
@@ -41,8 +49,6 @@ QDoubleSpinBox* make_spin_box(QWidget* parent, const std::string& name, int deci
     box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     return box;
 }
-
-json rgb_json(const Rgb& c) { return json::array({c.r, c.g, c.b}); }
 
 // A colour given as one number means grey; the form always edits three components.
 json as_triple(const json& v) {
@@ -338,49 +344,71 @@ void PropertyPanel::add_number_list(const QString& label, const std::string& key
     m_form->addRow(label, box);
 }
 
+void PropertyPanel::add_param(const ParamSpec& p, const std::string& prefix) {
+    const QString label = QString::fromStdString(p.label);
+    const std::string key = prefix + p.key;
+    // The declared range; an exclusive end moves in by the field's last digit, and an open
+    // end stops where every scene number does.
+    constexpr double kOpenEnd = kMaxSceneNumber;
+    const double step = std::pow(10.0, -p.decimals);
+    const double low = p.min ? p.min->value + (p.min->exclusive ? step : 0.0)
+                             : (p.kind == ParamKind::Fraction ? 0.0 : -kOpenEnd);
+    const double high = p.max ? p.max->value - (p.max->exclusive ? step : 0.0)
+                              : (p.kind == ParamKind::Fraction ? 1.0 : kOpenEnd);
+    const json& d = p.fallback;
+    switch (p.kind) {
+        case ParamKind::WholeNumber:
+            add_integer(label, key, d.get<long long>(), static_cast<long long>(low),
+                        static_cast<long long>(high));
+            break;
+        case ParamKind::Number:
+        case ParamKind::Fraction:
+            add_number(label, key, d.is_number() ? d.get<double>() : 0.0, low, high, p.decimals);
+            break;
+        case ParamKind::Boolean:
+            add_flag(label, key, d.is_boolean() && d.get<bool>() ? tr("yes") : tr("no"));
+            break;
+        case ParamKind::Choice:
+            add_choice(label, key, d.get<std::string>(), to_qt(p.choices));
+            break;
+        case ParamKind::String: add_text(label, key, d.is_string() ? d.get<std::string>() : ""); break;
+        case ParamKind::Colour: add_vec3(label, key, as_triple(d), 0, 1e6); break;
+        case ParamKind::Albedo: add_vec3(label, key, as_triple(d), 0, 1); break;
+        case ParamKind::Point: add_vec3(label, key, d.is_null() ? json::array({0, 0, 0}) : d); break;
+        case ParamKind::Direction:
+            add_vec3(label, key, d.is_null() ? json::array({0, 0, -1}) : d);
+            break;
+        case ParamKind::Object:
+        case ParamKind::Array: break;  // nested things have forms of their own
+    }
+}
+
+void PropertyPanel::build_declared(const ElementSpec& spec, const std::vector<std::string>& skip) {
+    std::string group;
+    for (const ParamSpec& p : spec.params) {
+        if (p.label.empty() || std::find(skip.begin(), skip.end(), p.key) != skip.end()) continue;
+        if (p.group != group) {
+            group = p.group;
+            add_heading(QString::fromStdString(group));
+        }
+        add_param(p);
+    }
+}
+
 void PropertyPanel::build_camera() {
     add_heading(tr("Camera"));
-    add_vec3(tr("Position"), "position", json::array({0, 0, 5}));
-    if (value_at("look_at")) {
-        add_vec3(tr("Look at"), "look_at", json::array({0, 0, 0}));
-    } else {
-        add_vec3(tr("Direction"), "direction", json::array({0, 0, -1}), -1e6, 1e6);
-    }
-    add_vec3(tr("Up"), "up", json::array({0, 1, 0}));
-    add_number(tr("Field of view (deg)"), "fov", 40.0, 0.1, 179.9, 2);
+    // The camera takes look_at or direction; the form edits the one the file gives.
+    build_declared(camera_spec(), {value_at("look_at") ? "direction" : "look_at"});
 }
 
 void PropertyPanel::build_render() {
-    const RenderSettings d;
     add_heading(tr("Render settings"));
-    add_integer(tr("Width"), "width", d.width, 1, 16384);
-    add_integer(tr("Height"), "height", d.height, 1, 16384);
-    add_integer(tr("Samples per pixel"), "spp", d.spp, 1, 1 << 20);
-    add_integer(tr("Max depth"), "max_depth", d.max_depth, 0, 1000);
-    add_integer(tr("Seed"), "seed", static_cast<long long>(d.seed), 0, 2147483647);
-    add_vec3(tr("Ambient"), "ambient", rgb_json(d.ambient), 0, 1e6);
-    add_vec3(tr("Background"), "background", rgb_json(d.background), 0, 1e6);
-    add_choice(tr("Integrator"), "integrator", d.integrator, to_qt(kIntegratorNames));
-    add_heading(tr("Photon map"));
-    add_integer(tr("Photons per light"), "photons", d.photons, 1, 1LL << 40);
-    add_number(tr("Gather radius"), "radius", 0.05, 1e-6, 1e6, 5);
-    add_choice(tr("Filter"), "filter", d.filter, to_qt(kPhotonFilterNames));
-    add_number(tr("Filter constant k"), "filter_k", d.filter_k, 1.0, 1e6, 3);
-    add_integer(tr("Max photons per estimate"), "max_photons_per_estimate", d.max_photons_per_estimate, 1, 1000000);
-    add_choice(tr("Direct light"), "direct", d.direct, to_qt(kDirectLightNames));
-    add_integer(tr("Caustic photons per light (0 = as many)"), "caustic_photons", d.caustic_photons, 0, 1LL << 40);
-    add_flag(tr("Aim photons at glass and mirrors"), "aim_photons", d.aim_photons ? tr("yes") : tr("no"));
-    add_heading(tr("Progressive photon map (sppm, the view)"));
-    add_integer(tr("Photons per light per pass (0 = auto)"), "pass_photons", d.pass_photons, 0, 1LL << 30);
-    add_integer(tr("Passes (lenslab render)"), "passes", d.passes, 0, 1 << 24);
-    add_number(tr("Time budget (s, 0 = none)"), "time", d.time, 0, 1e9, 1);
+    build_declared(render_settings_spec());
 }
 
 void PropertyPanel::build_material(const std::string& prefix) {
-    const Material d;
-    add_vec3(tr("Colour (albedo)"), prefix + "color", rgb_json(d.color), 0, 1);
-    add_number(tr("Transparency"), prefix + "transparency", d.transparency, 0, 1);
-    add_number(tr("Specular (mirror)"), prefix + "specular", d.specular, 0, 1);
+    const ElementSpec& declared = material_spec();
+    for (const char* key : {"color", "transparency", "specular"}) add_param(declared.param(key), prefix);
     // Glass picker: a catalogue glass, or a constant index typed in.
     QStringList glasses{tr("constant index")};
     for (const Glass& g : glass_catalogue()) glasses << QString::fromStdString(g.name);
@@ -400,15 +428,19 @@ void PropertyPanel::build_material(const std::string& prefix) {
                });
     const json* ior = value_at(prefix + "ior");
     if (!glass && (!ior || ior->is_number())) {
-        add_number(tr("Refractive index"), prefix + "ior", d.ior(kLineD), 0.01, 100);
+        add_param(declared.param("ior"), prefix);
     } else if (!glass) {
         m_form->addRow(tr("Refractive index"), new QLabel(tr("dispersion model (edit the file)"), m_form_widget));
     }
-    add_number(tr("Emission intensity"), prefix + "emission/intensity", d.emission_intensity, 0, 1e12);
-    if (value_at(prefix + "emission")) {
+    // Shown as 0 while there is no emission (the intensity an emission block defaults to is 1).
+    const json* emission = value_at(prefix + "emission");
+    ParamSpec intensity = emission_spec().param("intensity");
+    if (!emission) intensity.fallback = 0.0;
+    add_param(intensity, prefix + "emission/");
+    if (emission) {
         build_spectrum(prefix + "emission/");
     } else {
-        add_vec3(tr("Emission colour"), prefix + "emission/color", rgb_json(d.emission_color), 0, 1e6);
+        add_param(emission_spec().param("color"), prefix + "emission/");
     }
 }
 
@@ -418,8 +450,8 @@ void PropertyPanel::build_object() {
     add_heading(QString::fromStdString(type));
     add_text(tr("Name"), "name", "");
     if (type == "sphere") {
-        add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
-        add_number(tr("Radius"), "radius", 1.0, 1e-6, 1e6);
+        add_param(sphere_spec().param("center"));
+        add_param(sphere_spec().param("radius"));
     } else if (type == "triangle") {
         for (int i = 0; i < 3; ++i) {
             add_vec3(tr("Vertex %1").arg(i + 1), "vertices/" + std::to_string(i), json::array({0, 0, 0}));
@@ -514,16 +546,17 @@ void PropertyPanel::build_surface(const QString& label, const std::string& key) 
 }
 
 void PropertyPanel::build_flat(const std::string& type) {
-    add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
-    add_vec3(tr("Normal (front)"), "normal", json::array({0, 0, 1}));
+    const ElementSpec& declared = type == "disc" ? disc_spec() : rectangle_spec();
+    add_param(declared.param("center"));
+    add_param(declared.param("normal"));
     if (type == "disc") {
-        add_number(tr("Radius"), "radius", 1.0, 1e-9, 1e6);
+        add_param(declared.param("radius"));
     } else {
         add_number(tr("Width (along u)"), "size/0", 1.0, 1e-9, 1e6);
         add_number(tr("Height (along v)"), "size/1", 1.0, 1e-9, 1e6);
     }
     // Left out, up is [0, 1, 0] (or [0, 0, -1] for a vertical normal); shown as given.
-    add_vec3(tr("Up (orients u, v)"), "up", json::array({0, 1, 0}));
+    add_vec3(QString::fromStdString(declared.param("up").label), "up", json::array({0, 1, 0}));
 }
 
 void PropertyPanel::build_detector() {
@@ -557,25 +590,22 @@ void PropertyPanel::build_detector() {
 }
 
 void PropertyPanel::build_implicit() {
-    add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
-    add_formula(tr("f(x, y, z) <= 0"), "formula", "x^2 + y^2 + z^2 - 1", ImplicitSolid::check);
+    const ElementSpec& declared = implicit_spec();
+    add_param(declared.param("center"));
+    // The formula is checked as it is typed; the bounds are two corners.
+    add_formula(QString::fromStdString(declared.param("formula").label), "formula", "x^2 + y^2 + z^2 - 1",
+                ImplicitSolid::check);
     add_vec3(tr("Bounds, lower corner"), "bounds/0", json::array({-1, -1, -1}));
     add_vec3(tr("Bounds, upper corner"), "bounds/1", json::array({1, 1, 1}));
-    add_integer(tr("March steps"), "steps", ImplicitSolid::kDefaultSteps, 8, 1 << 16);
+    add_param(declared.param("steps"));
 }
 
 void PropertyPanel::build_light() {
     const json& l = *value_at("");
     const std::string type = l.value("type", "");
     add_heading(QString::fromStdString(type) + tr(" light"));
-    if (type == "point") {
-        add_vec3(tr("Position"), "position", json::array({0, 0, 0}));
-    } else {
-        add_vec3(tr("Origin"), "origin", json::array({0, 0, 0}));
-        add_vec3(tr("Direction"), "direction", json::array({0, 0, -1}));
-        add_number(tr("Beam radius"), "radius", 1.0, 1e-6, 1e6);
-    }
-    add_number(tr("Power (W)"), "power", 1.0, 1e-6, 1e15);
+    // The colour is one of the spectrum's forms, edited with it.
+    build_declared(type == "point" ? point_light_spec() : beam_spec(), {"color"});
     build_spectrum("");
 }
 

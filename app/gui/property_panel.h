@@ -15,8 +15,11 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "scene/param_spec.h"
 
 class QFormLayout;
 
@@ -67,6 +70,11 @@ private:
     void add_number_list(const QString& label, const std::string& key, const nlohmann::json& fallback,
                          size_t max_count);
     void add_heading(const QString& text);
+    // A declared parameter's field (param_spec.h): its label, fallback, range and choices.
+    void add_param(const ParamSpec& p, const std::string& prefix = "");
+    // Every parameter of `spec` the editor shows (those with a label) but `skip`, under the
+    // declared headings.
+    void build_declared(const ElementSpec& spec, const std::vector<std::string>& skip = {});
 
     void build_camera();
     void build_render();

@@ -74,26 +74,16 @@ void read_bands(const json& v, const std::string& path, DetectorSettings& d) {
 
 }  // namespace
 
-const std::vector<std::string>& disc_keys() {
-    static const std::vector<std::string> keys{"center", "normal", "radius", "up", "detector"};
-    return keys;
-}
-
-const std::vector<std::string>& rectangle_keys() {
-    static const std::vector<std::string> keys{"center", "normal", "size", "up", "detector"};
-    return keys;
-}
-
-std::shared_ptr<const Shape> read_disc(JsonObjectReader& r) {
-    const Vec3 centre = r.vec3("center");
-    const Vec3 normal = r.direction("normal");
-    const double radius = r.positive("radius");
+std::shared_ptr<const Shape> read_disc(SpecReader& r) {
+    const Vec3 centre = r.point("center");
+    const Vec3 normal = r.unit_vector("normal");
+    const double radius = r.real("radius");
     return std::make_shared<Disc>(centre, normal, radius, read_up(r, normal));
 }
 
-std::shared_ptr<const Shape> read_rectangle(JsonObjectReader& r) {
-    const Vec3 centre = r.vec3("center");
-    const Vec3 normal = r.direction("normal");
+std::shared_ptr<const Shape> read_rectangle(SpecReader& r) {
+    const Vec3 centre = r.point("center");
+    const Vec3 normal = r.unit_vector("normal");
     const json& size = r.require("size");
     const std::string path = r.child_path("size");
     if (!size.is_array() || size.size() != 2) throw SceneError(path, "must be [width, height]");

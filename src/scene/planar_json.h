@@ -2,39 +2,34 @@
 // Flat open surfaces and detectors in scene files (docs/scene-format.md, "Disc",
 // "Rectangle" and "Detectors"):
 //
-// disc      | center    | point, required        | centre
-//           | normal    | direction, required    | the front side
-//           | radius    | number > 0, required   | radius
-//           | up        | direction, optional    | orients (u, v): default [0, 1, 0] ([0, 0, -1] when the normal is vertical)
-// rectangle | center, normal, up as for a disc
-//           | size      | [width, height] > 0    | width along u = up x normal, height along v
-// any of triangle, disc, rectangle:
-//           | detector  | true, false or object  | {"resolution", "bands", "side", "unit"}
+// Their keys are declared in planar_spec.cpp.
 
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "geometry/shape.h"
 #include "scene/detector_settings.h"
 #include "scene/json_reader.h"
+#include "scene/spec_reader.h"
 
 namespace lenslab {
 
-// Keys of each type besides type, name, material and detector.
-const std::vector<std::string>& disc_keys();
-const std::vector<std::string>& rectangle_keys();
+// Their declarations (planar_spec.cpp): the common object keys, detector included, and their own.
+const ElementSpec& disc_spec();
+const ElementSpec& rectangle_spec();
 
-std::shared_ptr<const Shape> read_disc(JsonObjectReader& r);
-std::shared_ptr<const Shape> read_rectangle(JsonObjectReader& r);
+// `r` reads through disc_spec() or rectangle_spec().
+std::shared_ptr<const Shape> read_disc(SpecReader& r);
+std::shared_ptr<const Shape> read_rectangle(SpecReader& r);
 
 // The object's `detector` key: nothing when absent or false.
 std::optional<DetectorSettings> read_detector(JsonObjectReader& r);
 
 // Refuses `detector` on an object that is not flat (`type` names it in the message).
-void check_detector_allowed(const nlohmann::json& object, const std::string& path, const std::string& type);
+void check_detector_allowed(const nlohmann::json& object, const std::string& path,
+                            const std::string& type);
 
 }  // namespace lenslab

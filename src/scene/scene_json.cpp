@@ -6,18 +6,26 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include "geometry/implicit_solid.h"
 #include "geometry/lens/lens_solid.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
+#include "scene/camera_spec.h"
 #include "scene/json_reader.h"
 #include "scene/lens_group_json.h"
+#include "scene/light_spec.h"
 #include "scene/limits.h"
+#include "scene/material_spec.h"
+#include "scene/object_spec.h"
 #include "scene/mesh_json.h"
 #include "scene/planar_json.h"
+#include "scene/render_settings_json.h"
+#include "scene/render_settings_spec.h"
 #include "scene/spectral_json.h"
+#include "scene/spec_reader.h"
 #include "scene/surface_json.h"
 
 namespace lenslab {
@@ -31,8 +39,8 @@ std::string index_path(const std::string& base, size_t i) {
 }
 
 void read_camera(const json& j, CameraSettings& cam) {
-    JsonObjectReader r(j, "camera", {"position", "look_at", "direction", "up", "fov"});
-    cam.position = r.vec3("position");
+    SpecReader r(j, "camera", camera_spec());
+    cam.position = r.point("position");
     if (!r.has("look_at") && !r.has("direction")) {
         throw SceneError("camera", "give look_at (a point) or direction (a vector)");
     }
@@ -40,82 +48,62 @@ void read_camera(const json& j, CameraSettings& cam) {
         throw SceneError("camera.direction", "give either look_at or direction, not both");
     }
     if (r.has("look_at")) {
-        const Vec3 d = r.vec3("look_at") - cam.position;
+        const Vec3 d = r.point("look_at") - cam.position;
         if (!(length(d) > 1e-12)) throw SceneError("camera.look_at", "must differ from position");
         cam.direction = normalize(d);
     } else {
-        cam.direction = r.direction("direction");
+        cam.direction = r.unit_vector("direction");
     }
     const bool up_given = r.has("up");
-    cam.up = r.direction("up", {0, 1, 0});
+    cam.up = r.unit_vector("up");
     if (length(cross(cam.up, cam.direction)) < 1e-9) {
         throw SceneError("camera.up", up_given ? "must not be parallel to the view direction"
                                                : "the default up [0, 1, 0] is parallel to the view "
                                                  "direction; give camera.up");
     }
-    cam.fov_deg = r.number("fov", cam.fov_deg);
-    if (!(cam.fov_deg > 0 && cam.fov_deg < 180)) {
-        throw SceneError("camera.fov", "must be between 0 and 180 degrees (exclusive), got " +
-                                           format_number(cam.fov_deg));
-    }
+    cam.fov_deg = r.real("fov");
 }
 
+// Keys, defaults and ranges come from render_settings_spec(); what stays here are the
+// rules between fields.
 void read_render(const json& j, RenderSettings& s) {
-    JsonObjectReader r(j, "render",
-                       {"width", "height", "spp", "max_depth", "seed", "ambient", "background",
-                        "light_samples", "min_weight", "integrator", "photons", "radius",
-                        "filter", "filter_k", "max_photons_per_estimate", "direct", "passes", "time",
-                        "pass_photons", "initial_radius", "alpha", "caustic_photons", "aim_photons"});
-    s.width = static_cast<int>(r.integer("width", s.width, 1, kMaxImageSide));
-    s.height = static_cast<int>(r.integer("height", s.height, 1, kMaxImageSide));
+    SpecReader r(j, "render", render_settings_spec());
+    s.width = static_cast<int>(r.whole("width"));
+    s.height = static_cast<int>(r.whole("height"));
     if (auto problem = image_size_problem(s.width, s.height)) throw SceneError("render", *problem);
-    s.spp = static_cast<int>(r.integer("spp", s.spp, 1, kMaxSpp));
-    s.max_depth = static_cast<int>(r.integer("max_depth", s.max_depth, 0, kMaxDepth));
-    s.seed = static_cast<uint64_t>(r.integer("seed", static_cast<int64_t>(s.seed), 0, 2147483647));
-    s.ambient = r.color("ambient", s.ambient);
-    s.background = r.color("background", s.background);
-    s.light_samples = static_cast<int>(r.integer("light_samples", s.light_samples, 1, 4096));
-    s.min_weight = r.fraction("min_weight", s.min_weight);
-    if (s.min_weight < kMinBranchWeight) {
-        throw SceneError("render.min_weight",
-                         "must be at least 1e-06 (each camera ray then spawns at most about "
-                         "a million rays), got " + format_number(s.min_weight));
-    }
-    s.integrator = r.choice("integrator", s.integrator, kIntegratorNames);
-    s.photons = r.integer("photons", s.photons, 1, kMaxPhotonsPerLight);
-    s.radius = r.positive("radius", s.radius);
-    s.filter = r.choice("filter", s.filter, kPhotonFilterNames);
-    s.filter_k = r.number("filter_k", s.filter_k);
-    if (!(s.filter_k >= 1.0)) {
-        throw SceneError("render.filter_k", "must be >= 1 (the cone reaches zero at k r), got " +
-                                                format_number(s.filter_k));
-    }
-    s.max_photons_per_estimate = static_cast<int>(
-        r.integer("max_photons_per_estimate", s.max_photons_per_estimate, 1, 1000000));
-    s.direct = r.choice("direct", s.direct, kDirectLightNames);
-    s.passes = static_cast<int>(r.integer("passes", s.passes, 0, 1 << 24));
-    s.time = r.number("time", s.time);
-    if (!(s.time >= 0.0)) throw SceneError("render.time", "must be >= 0 seconds (0: no time limit), got " + format_number(s.time));
+    s.spp = static_cast<int>(r.whole("spp"));
+    s.max_depth = static_cast<int>(r.whole("max_depth"));
+    s.seed = static_cast<uint64_t>(r.whole("seed"));
+    s.ambient = r.colour("ambient");
+    s.background = r.colour("background");
+    s.light_samples = static_cast<int>(r.whole("light_samples"));
+    s.min_weight = r.real("min_weight");
+    s.integrator = r.text("integrator");
+    s.photons = r.whole("photons");
+    s.radius = r.real("radius");
+    s.filter = r.text("filter");
+    s.filter_k = r.real("filter_k");
+    s.max_photons_per_estimate = static_cast<int>(r.whole("max_photons_per_estimate"));
+    s.direct = r.text("direct");
+    s.passes = static_cast<int>(r.whole("passes"));
+    s.time = r.real("time");
     if (s.passes == 0 && s.time == 0.0) {
         throw SceneError("render.passes", "0 means no pass limit, which needs a time budget: give render.time > 0");
     }
-    s.pass_photons = r.integer("pass_photons", s.pass_photons, 0, int64_t{1} << 30);
-    s.caustic_photons = r.integer("caustic_photons", s.caustic_photons, 0, kMaxPhotonsPerLight);
-    s.aim_photons = r.boolean("aim_photons").value_or(s.aim_photons);
-    s.initial_radius = r.positive("initial_radius", s.initial_radius);
-    s.alpha = r.number("alpha", s.alpha);
-    if (!(s.alpha > 0.0 && s.alpha < 1.0)) {
-        throw SceneError("render.alpha", "must be between 0 and 1 (exclusive), got " + format_number(s.alpha));
-    }
+    s.pass_photons = r.whole("pass_photons");
+    s.caustic_photons = r.whole("caustic_photons");
+    s.aim_photons = r.flag("aim_photons");
+    s.initial_radius = r.real("initial_radius");
+    s.alpha = r.real("alpha");
 }
 
 Material read_material(const json& j, const std::string& path, const std::string& name) {
-    JsonObjectReader r(j, path, {"color", "transparency", "specular", "ior", "glass", "emission"});
+    SpecReader r(j, path, material_spec());
     Material m;
     m.name = name;
-    m.color = r.albedo("color", m.color);
-    m.transparency = r.fraction("transparency", m.transparency);
-    m.specular = r.fraction("specular", m.specular);
+    m.color = r.colour("color");
+    m.transparency = r.real("transparency");
+    m.specular = r.real("specular");
     if (m.transparency + m.specular > 1.0 + 1e-12) {
         throw SceneError(r.child_path("specular"),
                          "transparency + specular must be at most 1, got " +
@@ -129,20 +117,16 @@ Material read_material(const json& j, const std::string& path, const std::string
         m.index = glass.model;
         m.glass = glass.name;
     } else if (const json* n = r.find("ior")) {
-        m.index = read_index_model(*n, r.child_path("ior"));
+        m.index = n->is_number() ? constant_index(r.real("ior")) : read_index_model(*n, r.child_path("ior"));
     }
     if (const json* e = r.find("emission")) {
-        JsonObjectReader er(*e, r.child_path("emission"), {"color", "intensity", "spectrum"});
+        SpecReader er(*e, r.child_path("emission"), emission_spec());
         if (const json* s = er.find("spectrum")) {
             if (er.has("color")) throw SceneError(er.child_path("color"), "give either color or spectrum, not both");
             m.emission_spectrum = read_spectrum(*s, er.child_path("spectrum"));
         }
-        m.emission_color = er.color("color", m.emission_color);
-        m.emission_intensity = er.number("intensity", 1.0);
-        if (m.emission_intensity < 0) {
-            throw SceneError(er.child_path("intensity"),
-                             "must be >= 0, got " + format_number(m.emission_intensity));
-        }
+        m.emission_color = er.colour("color");
+        m.emission_intensity = er.real("intensity");
     }
     m.finish();
     return m;
@@ -247,8 +231,8 @@ std::shared_ptr<const Shape> read_triangle(JsonObjectReader& r) {
     return std::make_shared<Triangle>(p[0], p[1], p[2]);
 }
 
-std::shared_ptr<const Shape> read_implicit(JsonObjectReader& r) {
-    const std::string formula = r.string("formula");
+std::shared_ptr<const Shape> read_implicit(SpecReader& r) {
+    const std::string formula = r.text("formula");
     const nlohmann::json& b = r.require("bounds");
     const std::string bpath = r.child_path("bounds");
     if (!b.is_array() || b.size() != 2) {
@@ -264,8 +248,8 @@ std::shared_ptr<const Shape> read_implicit(JsonObjectReader& r) {
                                         " and " + format_number(box.hi[a]));
         }
     }
-    const int steps = static_cast<int>(r.integer("steps", ImplicitSolid::kDefaultSteps, 8, 1 << 16));
-    const Vec3 centre = r.has("center") ? r.vec3("center") : Vec3{};
+    const int steps = static_cast<int>(r.whole("steps"));
+    const Vec3 centre = r.point("center");
     std::shared_ptr<ImplicitSolid> solid;
     try {
         solid = std::make_shared<ImplicitSolid>(formula, box, steps, centre);
@@ -291,16 +275,12 @@ SceneObject read_object(const json& j, const std::string& path,
     SceneObject o;
     if (type == "sphere") {
         o.type = ObjectType::Sphere;
-        keys.insert(keys.end(), {"center", "radius"});
     } else if (type == "triangle") {
         o.type = ObjectType::Triangle;
-        keys.insert(keys.end(), {"vertices", "detector"});
     } else if (type == "disc") {
         o.type = ObjectType::Disc;
-        keys.insert(keys.end(), disc_keys().begin(), disc_keys().end());
     } else if (type == "rectangle") {
         o.type = ObjectType::Rectangle;
-        keys.insert(keys.end(), rectangle_keys().begin(), rectangle_keys().end());
     } else if (type == "lens") {
         o.type = ObjectType::Lens;
         keys.insert(keys.end(), {"center", "axis", "curvature_radius", "aperture_radius",
@@ -311,7 +291,6 @@ SceneObject read_object(const json& j, const std::string& path,
         keys.insert(keys.end(), more.begin(), more.end());
     } else if (type == "implicit") {
         o.type = ObjectType::Implicit;
-        keys.insert(keys.end(), {"center", "formula", "bounds", "steps"});
     } else {
         throw SceneError(path + ".type", "unknown object type '" + type +
                                              "' (known: sphere, triangle, disc, rectangle, lens, lens_group, mesh, prism, implicit)");
@@ -319,21 +298,33 @@ SceneObject read_object(const json& j, const std::string& path,
     if (o.type != ObjectType::Triangle && o.type != ObjectType::Disc && o.type != ObjectType::Rectangle) {
         check_detector_allowed(j, path, type);
     }
-    JsonObjectReader r(j, path, keys, (type == "implicit" ? "an " : "a ") + type);
+    // Declared shapes read through their declaration; the others list their keys above.
+    const ElementSpec* declared = o.type == ObjectType::Sphere      ? &sphere_spec()
+                                  : o.type == ObjectType::Triangle  ? &triangle_spec()
+                                  : o.type == ObjectType::Implicit  ? &implicit_spec()
+                                  : o.type == ObjectType::Disc      ? &disc_spec()
+                                  : o.type == ObjectType::Rectangle ? &rectangle_spec()
+                                                                    : nullptr;
+    const std::unique_ptr<JsonObjectReader> reader =
+        declared ? std::make_unique<SpecReader>(j, path, *declared)
+                 : std::make_unique<JsonObjectReader>(j, path, keys, "a " + type);
+    JsonObjectReader& r = *reader;
     o.name = r.string("name", path);
     o.photon_target = r.boolean("photon_target");
     switch (o.type) {
-        case ObjectType::Sphere:
-            o.shape = std::make_shared<Sphere>(r.vec3("center"), r.positive("radius"));
+        case ObjectType::Sphere: {
+            SpecReader& sphere = static_cast<SpecReader&>(r);
+            o.shape = std::make_shared<Sphere>(sphere.point("center"), sphere.real("radius"));
             break;
+        }
         case ObjectType::Triangle: o.shape = read_triangle(r); break;
         case ObjectType::Lens: o.shape = read_lens(r); break;
         case ObjectType::Mesh:
             o.shape = type == "mesh" ? read_mesh(r, base_dir) : read_prism(r);
             break;
-        case ObjectType::Implicit: o.shape = read_implicit(r); break;
-        case ObjectType::Disc: o.shape = read_disc(r); break;
-        case ObjectType::Rectangle: o.shape = read_rectangle(r); break;
+        case ObjectType::Implicit: o.shape = read_implicit(static_cast<SpecReader&>(r)); break;
+        case ObjectType::Disc: o.shape = read_disc(static_cast<SpecReader&>(r)); break;
+        case ObjectType::Rectangle: o.shape = read_rectangle(static_cast<SpecReader&>(r)); break;
     }
     if (o.type == ObjectType::Triangle || o.type == ObjectType::Disc || o.type == ObjectType::Rectangle) {
         o.detector = read_detector(r);
@@ -347,20 +338,19 @@ SceneObject read_object(const json& j, const std::string& path,
 void read_light(const json& j, const std::string& path, Scene& scene) {
     const std::string type = peek_type(j, path);
     if (type == "point") {
-        JsonObjectReader r(j, path, {"type", "position", "color", "spectrum", "power"}, "a point light");
+        SpecReader r(j, path, point_light_spec());
         PointLight l;
-        l.position = r.vec3("position");
-        l.power = r.positive("power");
+        l.position = r.point("position");
+        l.power = r.real("power");
         l.spectrum = light_spectrum(r, l.color, l.power);
         scene.point_lights.push_back(l);
     } else if (type == "beam") {
-        JsonObjectReader r(j, path, {"type", "origin", "direction", "radius", "color", "spectrum", "power"},
-                           "a beam");
+        SpecReader r(j, path, beam_spec());
         BeamLight b;
-        b.origin = r.vec3("origin");
-        b.direction = r.direction("direction");
-        b.radius = r.positive("radius");
-        b.power = r.positive("power");
+        b.origin = r.point("origin");
+        b.direction = r.unit_vector("direction");
+        b.radius = r.real("radius");
+        b.power = r.real("power");
         b.spectrum = light_spectrum(r, b.color, b.power);
         scene.beams.push_back(b);
     } else {
@@ -429,7 +419,22 @@ CameraSettings camera_from_json(const nlohmann::json& camera) {
     return settings;
 }
 
-Scene load_scene_file(const std::string& path, const SceneReadOptions& options) {
+namespace {
+
+// Prefixes the file name so a message says where, whatever the JSON path.
+template <typename Fn>
+auto naming_file(const std::string& path, Fn&& fn) {
+    try {
+        return fn();
+    } catch (const SceneError& e) {
+        if (e.path() == path || e.path().empty()) throw SceneError(path, e.reason());
+        throw SceneError(path + ": " + e.path(), e.reason());
+    }
+}
+
+}  // namespace
+
+nlohmann::json read_scene_json_file(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         throw SceneError(path, "is a directory, not a scene file");
@@ -443,15 +448,29 @@ Scene load_scene_file(const std::string& path, const SceneReadOptions& options) 
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) throw SceneError(path, "cannot read scene file");
-    try {
-        // Files a scene names (OBJ meshes) are found next to it.
-        return parse_scene(text.str(), path, std::filesystem::path(path).parent_path().string(),
-                           options);
-    } catch (const SceneError& e) {
-        // Prefix the file name so the message says where, whatever the JSON path.
-        if (e.path() == path || e.path().empty()) throw SceneError(path, e.reason());
-        throw SceneError(path + ": " + e.path(), e.reason());
-    }
+    return naming_file(path, [&] {
+        json root = parse_json_strict(text.str(), path);
+        if (!root.is_object()) throw SceneError(path, "the top level must be a JSON object { ... }");
+        return root;
+    });
+}
+
+Scene scene_from_file_json(const nlohmann::json& root, const std::string& path,
+                           const SceneReadOptions& options) {
+    // Files a scene names (OBJ meshes) are found next to it.
+    return naming_file(path, [&] {
+        return scene_from_json(root, std::filesystem::path(path).parent_path().string(), options);
+    });
+}
+
+Scene load_scene_file(const std::string& path, const SceneReadOptions& options) {
+    return scene_from_file_json(read_scene_json_file(path), path, options);
+}
+
+RenderSettings read_render_settings(const nlohmann::json& render) {
+    RenderSettings s;
+    read_render(render, s);
+    return s;
 }
 
 Scene default_scene() { return parse_scene(default_scene_text(), "default scene"); }

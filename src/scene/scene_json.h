@@ -35,6 +35,13 @@ CameraSettings camera_from_json(const nlohmann::json& camera);
 // Throws SceneError (unreadable file, syntax, content).
 Scene load_scene_file(const std::string& path, const SceneReadOptions& options = {});
 
+// load_scene_file in two steps, for a caller that changes the JSON in between (the command
+// line's overrides): the file's JSON (syntax checked, errors naming the file), then the scene
+// it describes (relative paths resolved against the file's folder, errors naming the file).
+nlohmann::json read_scene_json_file(const std::string& path);
+Scene scene_from_file_json(const nlohmann::json& root, const std::string& path,
+                           const SceneReadOptions& options = {});
+
 // The built-in default scene (scenes/default.json, compiled in).
 const std::string& default_scene_text();
 Scene default_scene();

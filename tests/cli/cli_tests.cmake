@@ -274,3 +274,17 @@ lenslab_cli_test(NAME bench.povray.small_run
 if(NOT LENSLAB_POVRAY)
     set_tests_properties(cli.bench.povray.small_run PROPERTIES DISABLED ON)
 endif()
+
+# The render overrides are generated from the render block's declaration: an option is
+# refused in the reader's words, and --radius takes 0, the declared "auto".
+set(seed_range_out ${LENSLAB_CLI_OUT}/seed_range.png)
+lenslab_cli_test(NAME render.option_out_of_declared_range
+    ARGS render -o ${seed_range_out} --seed 3000000000
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_CONTAINS=--seed: must be between 0 and 2147483647, got 3000000000"
+           -DOUTPUT=${seed_range_out} -DOUTPUT_CREATED=OFF)
+set(radius_auto_out ${LENSLAB_CLI_OUT}/radius_auto.png)
+lenslab_cli_test(NAME render.radius_zero_is_auto
+    ARGS render scenes/default.json --integrator photon_map -o ${radius_auto_out} --width 16 --height 12 --spp 1
+         --photons 2000 --radius 0 -q
+    CHECKS -DEXPECT_EXIT=zero -DOUTPUT=${radius_auto_out} -DOUTPUT_CREATED=ON)

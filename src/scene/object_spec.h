@@ -1,0 +1,24 @@
+#pragma once
+// The declarations of what every object in `objects` takes, and of the shapes read through
+// them (the sphere, the triangle and the implicit solid here; the disc and the rectangle in
+// planar_json.h; the other shapes still list their keys in their readers).
+
+#include "scene/param_spec.h"
+
+namespace lenslab {
+
+// type, name, material, detector, photon_target: the docs' "Objects" table.
+const ElementSpec& object_common_spec();
+// The common keys a sphere takes (not `detector`) and its own.
+const ElementSpec& sphere_spec();
+const ElementSpec& implicit_spec();
+const ElementSpec& triangle_spec();
+
+// A shape's declaration to add its own keys to: the common ones (`detector` only for the
+// flat shapes, which can measure light).
+ElementSpec shape_spec(std::string name, std::string phrase, bool takes_detector);
+
+// Whether `key` is one of the common keys (documented once, not under each shape).
+bool is_common_object_key(const std::string& key);
+
+}  // namespace lenslab

@@ -1,0 +1,269 @@
+#include "scene/param_spec.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "scene/json_reader.h"
+
+namespace lenslab {
+
+namespace {
+
+using nlohmann::json;
+
+ParamSpec make(std::string key, ParamKind kind, json fallback) {
+    ParamSpec p;
+    p.key = std::move(key);
+    p.kind = kind;
+    p.fallback = std::move(fallback);
+    return p;
+}
+
+// A grey colour is written as one number, as the docs and most scenes do.
+json colour_json(const Rgb& c) {
+    if (c.r == c.g && c.g == c.b) return c.r;
+    return json::array({c.r, c.g, c.b});
+}
+
+std::string suffix(const ParamSpec& p) {
+    return (p.unit.empty() ? "" : " " + p.unit) + (p.why.empty() ? "" : " (" + p.why + ")");
+}
+
+// Large powers of two read better as such: 2^40 rather than 1099511627776.
+std::string whole_text(double v) {
+    const int exponent = std::ilogb(v);
+    if (v >= std::ldexp(1.0, 30) && v == std::ldexp(1.0, exponent)) {
+        return "2^" + std::to_string(exponent);
+    }
+    return format_number(v);
+}
+
+std::string value_text(const json& v) {
+    if (v.is_number()) return format_number(v.get<double>());
+    if (v.is_array()) {
+        std::string out = "[";
+        for (size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + value_text(v[i]);
+        return out + "]";
+    }
+    return v.dump();
+}
+
+}  // namespace
+
+std::string ParamSpec::option_name() const {
+    std::string name = "--" + key;
+    for (char& c : name) c = c == '_' ? '-' : c;
+    return name;
+}
+
+ParamSpec number_param(std::string key, double fallback) {
+    return make(std::move(key), ParamKind::Number, fallback);
+}
+
+ParamSpec whole_param(std::string key, int64_t fallback, int64_t min, int64_t max) {
+    ParamSpec p = make(std::move(key), ParamKind::WholeNumber, fallback);
+    p.min = Bound{double(min)};
+    p.max = Bound{double(max)};
+    p.decimals = 0;
+    return p;
+}
+
+ParamSpec fraction_param(std::string key, double fallback) {
+    return make(std::move(key), ParamKind::Fraction, fallback);
+}
+
+ParamSpec flag_param(std::string key, bool fallback) {
+    return make(std::move(key), ParamKind::Boolean, fallback);
+}
+
+ParamSpec choice_param(std::string key, std::string fallback, std::vector<std::string> choices) {
+    ParamSpec p = make(std::move(key), ParamKind::Choice, std::move(fallback));
+    p.choices = std::move(choices);
+    return p;
+}
+
+ParamSpec string_param(std::string key, std::string fallback) {
+    return make(std::move(key), ParamKind::String, std::move(fallback));
+}
+
+ParamSpec colour_param(std::string key, const Rgb& fallback) {
+    return make(std::move(key), ParamKind::Colour, colour_json(fallback));
+}
+
+ParamSpec albedo_param(std::string key, const Rgb& fallback) {
+    return make(std::move(key), ParamKind::Albedo, colour_json(fallback));
+}
+
+ParamSpec point_param(std::string key) {
+    ParamSpec p = make(std::move(key), ParamKind::Point, nullptr);
+    p.required = true;
+    return p;
+}
+
+ParamSpec direction_param(std::string key) {
+    ParamSpec p = make(std::move(key), ParamKind::Direction, nullptr);
+    p.required = true;
+    return p;
+}
+
+ParamSpec vector_param(ParamKind kind, std::string key, const json& fallback) {
+    return make(std::move(key), kind, fallback);
+}
+
+ParamSpec nested_param(ParamKind kind, std::string key) {
+    return make(std::move(key), kind, nullptr);
+}
+
+const ParamSpec* ElementSpec::find(const std::string& key) const {
+    for (const ParamSpec& p : params) {
+        if (p.key == key) return &p;
+    }
+    return nullptr;
+}
+
+const ParamSpec& ElementSpec::param(const std::string& key) const {
+    if (const ParamSpec* p = find(key)) return *p;
+    throw std::logic_error("ElementSpec " + name + ": no parameter " + key);
+}
+
+std::vector<std::string> ElementSpec::keys() const {
+    std::vector<std::string> out;
+    for (const ParamSpec& p : params) out.push_back(p.key);
+    return out;
+}
+
+std::optional<std::string> range_problem(const ParamSpec& p, double v) {
+    const std::string got = ", got " + format_number(v);
+    if (p.kind == ParamKind::WholeNumber) {
+        if (!(v >= p.min->value && v <= p.max->value)) {
+            return "must be between " + std::to_string(int64_t(p.min->value)) + " and " +
+                   std::to_string(int64_t(p.max->value)) + got;
+        }
+        return std::nullopt;
+    }
+    if (p.kind == ParamKind::Fraction) {
+        if (!(v >= 0 && v <= 1)) return "must be between 0 and 1" + got;
+        // A fraction's floor is a second, separate rule with its own reason.
+        if (p.min && !(v >= p.min->value)) {
+            return "must be at least " + format_number(p.min->value) + suffix(p) + got;
+        }
+        return std::nullopt;
+    }
+    const bool low = p.min && !(p.min->exclusive ? v > p.min->value : v >= p.min->value);
+    const bool high = p.max && !(p.max->exclusive ? v < p.max->value : v <= p.max->value);
+    if (!low && !high && !std::isnan(v)) return std::nullopt;
+    if (p.min && p.max) {
+        const bool exclusive = p.min->exclusive && p.max->exclusive;
+        return "must be between " + format_number(p.min->value) + " and " +
+               format_number(p.max->value) + (p.unit.empty() ? "" : " " + p.unit) +
+               (exclusive ? " (exclusive)" : "") + (p.why.empty() ? "" : " (" + p.why + ")") + got;
+    }
+    if (p.min) {
+        return std::string("must be ") + (p.min->exclusive ? "> " : ">= ") +
+               format_number(p.min->value) + suffix(p) + got;
+    }
+    if (p.max) {
+        return std::string("must be ") + (p.max->exclusive ? "< " : "<= ") +
+               format_number(p.max->value) + suffix(p) + got;
+    }
+    return "must be a number" + got;  // NaN, from a command line
+}
+
+std::optional<std::string> choice_problem(const ParamSpec& p, const std::string& v) {
+    std::string known;
+    for (const std::string& c : p.choices) {
+        if (v == c) return std::nullopt;
+        known += (known.empty() ? "" : ", ") + c;
+    }
+    return "unknown " + p.key + " '" + v + "' (known: " + known + ")";
+}
+
+bool fallback_in_range(const ParamSpec& p) {
+    if (!p.fallback.is_number()) return true;
+    return !range_problem(p, p.fallback.get<double>());
+}
+
+std::string kind_text(const ParamSpec& p) {
+    if (!p.written_as.empty()) return p.written_as;
+    std::string text;
+    switch (p.kind) {
+        case ParamKind::Number:
+            text = "number";
+            break;
+        case ParamKind::WholeNumber:
+            text = "whole number";
+            break;
+        case ParamKind::Boolean:
+            text = "`true` or `false`";
+            break;
+        case ParamKind::Choice:
+            text = "string";
+            break;
+        case ParamKind::String:
+            text = "string";
+            break;
+        case ParamKind::Point:
+            text = "point";
+            break;
+        case ParamKind::Direction:
+            text = "direction";
+            break;
+        case ParamKind::Colour:
+            text = "colour";
+            break;
+        case ParamKind::Albedo:
+            text = "colour, each component in [0, 1]";
+            break;
+        case ParamKind::Fraction:
+            text = "fraction";
+            break;
+        case ParamKind::Object:
+            text = "object";
+            break;
+        case ParamKind::Array:
+            text = "array";
+            break;
+    }
+    return p.unit.empty() ? text : text + ", " + p.unit;
+}
+
+std::string default_text(const ParamSpec& p) {
+    if (p.required) return "**required**";
+    if (p.fallback.is_null()) return p.auto_meaning.empty() ? "—" : p.auto_meaning;
+    if (!fallback_in_range(p) && !p.auto_meaning.empty()) return p.auto_meaning;
+    const std::string value = "`" + value_text(p.fallback) + "`";
+    return p.auto_meaning.empty() ? value : value + " (" + p.auto_meaning + ")";
+}
+
+std::string range_text(const ParamSpec& p) {
+    switch (p.kind) {
+        case ParamKind::WholeNumber:
+            return whole_text(p.min->value) + " – " + whole_text(p.max->value);
+        case ParamKind::Fraction:
+            return p.min ? "[" + format_number(p.min->value) + ", 1]" : "[0, 1]";
+        case ParamKind::Colour:
+            return "`>= 0`";
+        case ParamKind::Choice: {
+            std::string out;
+            for (const std::string& c : p.choices)
+                out += (out.empty() ? "`\"" : ", `\"") + c + "\"`";
+            return out;
+        }
+        case ParamKind::Number:
+            if (p.min && p.max) {
+                return (p.min->exclusive ? "(" : "[") + format_number(p.min->value) + ", " +
+                       format_number(p.max->value) + (p.max->exclusive ? ")" : "]");
+            }
+            if (p.min)
+                return std::string("`") + (p.min->exclusive ? "> " : ">= ") +
+                       format_number(p.min->value) + "`";
+            if (p.max)
+                return std::string("`") + (p.max->exclusive ? "< " : "<= ") +
+                       format_number(p.max->value) + "`";
+            return "";
+        default:
+            return "";
+    }
+}
+
+}  // namespace lenslab

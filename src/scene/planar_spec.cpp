@@ -1,0 +1,56 @@
+// The declarations of the flat shapes (planar_json.h), next to their reader.
+
+#include "scene/object_spec.h"
+#include "scene/planar_json.h"
+
+namespace lenslab {
+
+namespace {
+
+// Where a flat shape lies and which way it faces; the rectangle takes the same.
+void add_frame(ElementSpec& s, const std::string& normal_doc) {
+    s.params.push_back(point_param("center").describe("centre").in_editor("Centre"));
+    s.params.push_back(direction_param("normal").describe(normal_doc).in_editor("Normal (front)"));
+}
+
+// The default up depends on the normal, so it is described rather than given.
+ParamSpec up_param(const std::string& doc) {
+    return vector_param(ParamKind::Direction, "up", nullptr)
+        .meaning_auto("`[0, 1, 0]`, or `[0, 0, -1]` when the normal is vertical")
+        .describe(doc)
+        .in_editor("Up (orients u, v)");
+}
+
+ElementSpec declare_disc() {
+    ElementSpec s = shape_spec("disc", "a disc", true);
+    add_frame(s, "the side the disc faces: its front");
+    s.params.push_back(
+        number_param("radius", 0).above(0).needed().describe("radius").in_editor("Radius", 9));
+    s.params.push_back(up_param("orients the disc's own coordinates (u, v)"));
+    return s;
+}
+
+ElementSpec declare_rectangle() {
+    ElementSpec s = shape_spec("rectangle", "a rectangle", true);
+    add_frame(s, "the side it faces (its front)");
+    s.params.push_back(nested_param(ParamKind::Array, "size")
+                           .needed()
+                           .as_written("`[width, height]`, each `> 0`")
+                           .describe("width along u, height along v"));
+    s.params.push_back(up_param("which way the height runs"));
+    return s;
+}
+
+}  // namespace
+
+const ElementSpec& disc_spec() {
+    static const ElementSpec spec = declare_disc();
+    return spec;
+}
+
+const ElementSpec& rectangle_spec() {
+    static const ElementSpec spec = declare_rectangle();
+    return spec;
+}
+
+}  // namespace lenslab

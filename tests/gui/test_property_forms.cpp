@@ -1,0 +1,175 @@
+// The editor's forms against the declarations they are generated from (param_spec.h): each
+// declared field is there (named "field:KEY"), shows the declared default, and takes exactly
+// the declared range and choices. And the gather radius takes 0, its "auto".
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QLineEdit>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "main_window.h"
+#include "property_panel.h"
+#include "scene/camera_spec.h"
+#include "scene/light_spec.h"
+#include "scene/material_spec.h"
+#include "scene/object_spec.h"
+#include "scene/render_settings_spec.h"
+#include "scene_document.h"
+#include "scene_tree.h"
+
+using lenslab::ElementSpec;
+using lenslab::ParamKind;
+using lenslab::ParamSpec;
+using lenslab::gui::MainWindow;
+using nlohmann::json;
+
+namespace {
+
+// A scene whose camera and render block leave every optional key out, so each field shows
+// its default.
+QString write_bare_scene(QTemporaryDir& dir, const json& render) {
+    const QString path = dir.filePath("bare.json");
+    QFile file(path);
+    file.open(QIODevice::WriteOnly);
+    const json scene = {
+        {"camera", {{"position", {0, 1, 4}}, {"look_at", {0, 0, 0}}}},
+        {"render", render},
+        {"materials", {{"grey", {{"color", 0.5}}}}},
+        {"objects",
+         {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 0.5}, {"material", "grey"}}}},
+        {"lights", {{{"type", "point"}, {"position", {1, 3, 2}}, {"power", 100}}}}};
+    file.write(QByteArray::fromStdString(scene.dump(2)));
+    return path;
+}
+
+// Every labelled parameter of `spec` (but `skip`) against the form now shown.
+void check_form(MainWindow& w, const ElementSpec& spec, const std::vector<std::string>& skip) {
+    for (const ParamSpec& p : spec.params) {
+        if (p.label.empty() || std::find(skip.begin(), skip.end(), p.key) != skip.end()) continue;
+        const QString name = QString::fromStdString("field:" + p.key);
+        const QByteArray where = QByteArray::fromStdString(spec.name + "." + p.key);
+        switch (p.kind) {
+            case ParamKind::WholeNumber:
+            case ParamKind::Number:
+            case ParamKind::Fraction: {
+                auto* box = w.panel()->findChild<QDoubleSpinBox*>(name);
+                QVERIFY2(box, where.constData());
+                const double step = std::pow(10.0, -box->decimals());
+                // Shown to the field's digits (alpha's 2/3 as 0.6667); a required key is in
+                // the file, with no default to show.
+                if (p.fallback.is_number()) {
+                    QVERIFY2(std::abs(box->value() - p.fallback.get<double>()) <= 0.5 * step,
+                             where.constData());
+                }
+                QCOMPARE(box->decimals(), p.decimals);
+                if (p.min) {
+                    // An exclusive end sits one shown digit inside.
+                    QVERIFY2(std::abs(box->minimum() -
+                                      (p.min->value + (p.min->exclusive ? step : 0))) < 1e-12,
+                             where.constData());
+                }
+                if (p.max) {
+                    QVERIFY2(std::abs(box->maximum() -
+                                      (p.max->value - (p.max->exclusive ? step : 0))) < 1e-12,
+                             where.constData());
+                }
+                if (p.kind == ParamKind::Fraction && !p.min) QCOMPARE(box->minimum(), 0.0);
+                if (p.kind == ParamKind::Fraction) QCOMPARE(box->maximum(), 1.0);
+                break;
+            }
+            case ParamKind::Choice: {
+                auto* box = w.panel()->findChild<QComboBox*>(name);
+                QVERIFY2(box, where.constData());
+                QStringList choices;
+                for (const std::string& c : p.choices) choices << QString::fromStdString(c);
+                QStringList shown;
+                for (int i = 0; i < box->count(); ++i) shown << box->itemText(i);
+                QCOMPARE(shown, choices);
+                QCOMPARE(box->currentText(), QString::fromStdString(p.fallback.get<std::string>()));
+                break;
+            }
+            case ParamKind::Boolean: {
+                auto* box = w.panel()->findChild<QComboBox*>(name);
+                QVERIFY2(box, where.constData());
+                const QString shown = !p.fallback.is_boolean() ? QString("auto")
+                                      : p.fallback.get<bool>() ? QString("yes")
+                                                               : QString("no");
+                QCOMPARE(box->currentText(), shown);
+                break;
+            }
+            case ParamKind::String:
+                QVERIFY2(w.panel()->findChild<QLineEdit*>(name), where.constData());
+                break;
+            default: {  // colours, points, directions: three boxes, key.x, key.y, key.z
+                auto* x = w.panel()->findChild<QDoubleSpinBox*>(name + ".x");
+                QVERIFY2(x, where.constData());
+                if (p.kind == ParamKind::Colour || p.kind == ParamKind::Albedo)
+                    QCOMPARE(x->minimum(), 0.0);
+                if (p.kind == ParamKind::Albedo) QCOMPARE(x->maximum(), 1.0);
+                break;
+            }
+        }
+    }
+}
+
+}  // namespace
+
+class TestPropertyForms : public QObject {
+    Q_OBJECT
+
+private slots:
+    void render_form_follows_the_declaration() {
+        QTemporaryDir dir;
+        MainWindow w;
+        QString error;
+        QVERIFY2(w.open_file(write_bare_scene(dir, json::object()), &error), qPrintable(error));
+        w.tree()->select_pointer("/render");
+        check_form(w, lenslab::render_settings_spec(), {});
+    }
+
+    void camera_form_follows_the_declaration() {
+        QTemporaryDir dir;
+        MainWindow w;
+        QVERIFY(w.open_file(write_bare_scene(dir, json::object())));
+        w.tree()->select_pointer("/camera");
+        check_form(w, lenslab::camera_spec(), {"direction"});  // the file gives look_at
+    }
+
+    void light_sphere_and_material_forms_follow_their_declarations() {
+        QTemporaryDir dir;
+        MainWindow w;
+        QVERIFY(w.open_file(write_bare_scene(dir, json::object())));
+        w.tree()->select_pointer("/lights/0");
+        check_form(w, lenslab::point_light_spec(), {"color"});  // the spectrum's choice shows it
+        w.tree()->select_pointer("/objects/0");
+        check_form(w, lenslab::sphere_spec(), {});
+        w.tree()->select_pointer("/materials/grey");
+        check_form(w, lenslab::material_spec(), {});
+    }
+
+    // Must-show: 0 means "auto" for the gather radius, and the field can be set to it.
+    void gather_radius_field_accepts_zero_auto() {
+        QTemporaryDir dir;
+        MainWindow w;
+        QVERIFY(
+            w.open_file(write_bare_scene(dir, {{"integrator", "photon_map"}, {"radius", 0.05}})));
+        w.tree()->select_pointer("/render");
+        auto* radius = w.panel()->findChild<QDoubleSpinBox*>("field:radius");
+        QVERIFY(radius);
+        QCOMPARE(radius->value(), 0.05);
+        QCOMPARE(radius->minimum(), 0.0);
+        radius->setValue(0.0);
+        emit radius->editingFinished();
+        QVERIFY2(w.panel()->error_text().isEmpty(), qPrintable(w.panel()->error_text()));
+        QCOMPARE(w.document()->json()["render"]["radius"].get<double>(), 0.0);
+        QCOMPARE(w.document()->scene().render.radius, 0.0);
+    }
+};
+
+QTEST_MAIN(TestPropertyForms)
+#include "test_property_forms.moc"

@@ -1,0 +1,278 @@
+// Each element type's declaration (param_spec.h) against everything that repeats it: the
+// reference table in docs/scene-format.md, the scene reader's defaults and bounds, and the
+// help of `lenslab render`'s generated options. A docs default or range edited by hand, or a
+// reader check that drifts from the declaration, fails here.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "scene/camera_spec.h"
+#include "scene/json_reader.h"
+#include "scene/light_spec.h"
+#include "scene/material_spec.h"
+#include "scene/object_spec.h"
+#include "scene/param_spec.h"
+#include "scene/planar_json.h"
+#include "scene/render_settings_spec.h"
+#include "scene/scene_json.h"
+
+namespace {
+
+using lenslab::ElementSpec;
+using lenslab::ParamKind;
+using lenslab::ParamSpec;
+using nlohmann::json;
+
+std::string trim(const std::string& s) {
+    const size_t a = s.find_first_not_of(' ');
+    const size_t b = s.find_last_not_of(' ');
+    return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+std::vector<std::string> cells(const std::string& row) {
+    std::vector<std::string> out;
+    std::stringstream in(row.substr(1));  // after the leading '|'
+    std::string cell;
+    while (std::getline(in, cell, '|')) out.push_back(trim(cell));
+    return out;
+}
+
+// The reference table after the line `anchor` (a heading, or the sentence introducing it)
+// in docs/scene-format.md: key -> its cells (key, type, default, range, meaning).
+std::map<std::string, std::vector<std::string>> docs_table(const std::string& anchor) {
+    std::ifstream docs(LENSLAB_SOURCE_DIR "/docs/scene-format.md");
+    std::string line;
+    while (std::getline(docs, line) && line != anchor) {
+    }
+    EXPECT_EQ(line, anchor) << "not in docs/scene-format.md";
+    while (std::getline(docs, line) && line.rfind("| key |", 0) != 0) {
+    }
+    EXPECT_EQ(line, "| key | type | default | range | meaning |") << "after " << anchor;
+    std::getline(docs, line);  // | --- | ...
+    std::map<std::string, std::vector<std::string>> rows;
+    while (std::getline(docs, line) && line.rfind("|", 0) == 0) {
+        std::vector<std::string> row = cells(line);
+        const std::string key = row.at(0).substr(1, row.at(0).size() - 2);  // `key`
+        rows[key] = row;
+    }
+    return rows;
+}
+
+struct Case {
+    const ElementSpec& (*spec)();
+    const char* anchor;                  // the docs line its table follows
+    json scene;                          // a valid scene holding one such element ...
+    const char* pointer;                 // ... here
+    const char* path;                    // which messages call
+    std::vector<std::string> elsewhere;  // keys documented in another table
+};
+
+std::vector<Case> cases() {
+    const json camera = {{"position", {0, 0, 5}}, {"look_at", {0, 0, 0}}};
+    const json sphere = {
+        {"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 1}, {"material", "m"}};
+    const json scene = {{"camera", camera},
+                        {"render", {{"time", 1}}},  // so passes 0 alone is not what refuses a value
+                        {"materials", {{"m", {{"emission", {{"intensity", 1}}}}}}},
+                        {"objects", {sphere}},
+                        {"lights", {{{"type", "point"}, {"position", {0, 2, 0}}, {"power", 1}}}}};
+    json with_beam = scene;
+    with_beam["lights"] = {{{"type", "beam"},
+                            {"origin", {0, 2, 0}},
+                            {"direction", {0, -1, 0}},
+                            {"radius", 0.1},
+                            {"power", 1}}};
+    json with_implicit = scene;
+    with_implicit["objects"] = {{{"type", "implicit"},
+                                 {"formula", "x^2 + y^2 + z^2 - 0.25"},
+                                 {"bounds", {{-1, -1, -1}, {1, 1, 1}}},
+                                 {"material", {{"color", 0.5}}}}};
+    json with_disc = scene;
+    with_disc["objects"] = {{{"type", "disc"},
+                             {"center", {0, 0, 0}},
+                             {"normal", {0, 0, 1}},
+                             {"radius", 1},
+                             {"material", {{"color", 0.5}}}}};
+    json with_triangle = with_disc;
+    with_triangle["objects"][0] = {{"type", "triangle"},
+                                   {"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}},
+                                   {"material", {{"color", 0.5}}}};
+    json with_rectangle = with_disc;
+    with_rectangle["objects"][0].erase("radius");
+    with_rectangle["objects"][0]["type"] = "rectangle";
+    with_rectangle["objects"][0]["size"] = {1, 2};
+    std::vector<std::string> common = lenslab::object_common_spec().keys();
+    return {
+        {lenslab::render_settings_spec, "## Render", scene, "/render", "render", {}},
+        {lenslab::camera_spec, "## Camera", scene, "/camera", "camera", {}},
+        {lenslab::material_spec, "## Materials", scene, "/materials/m", "materials.m", {}},
+        {lenslab::emission_spec,
+         "`emission` has three keys:",
+         scene,
+         "/materials/m/emission",
+         "materials.m.emission",
+         {}},
+        {lenslab::point_light_spec,
+         "A point light (`\"type\": \"point\"`):",
+         scene,
+         "/lights/0",
+         "lights[0]",
+         {}},
+        {lenslab::beam_spec,
+         "A beam (`\"type\": \"beam\"`):",
+         with_beam,
+         "/lights/0",
+         "lights[0]",
+         {}},
+        {lenslab::object_common_spec, "## Objects", scene, "/objects/0", "objects[0]", {}},
+        {lenslab::sphere_spec, "### Sphere", scene, "/objects/0", "objects[0]", common},
+        {lenslab::implicit_spec, "### Implicit solid", with_implicit, "/objects/0", "objects[0]",
+         common},
+        {lenslab::triangle_spec, "### Triangle", with_triangle, "/objects/0", "objects[0]", common},
+        {lenslab::disc_spec, "### Disc", with_disc, "/objects/0", "objects[0]", common},
+        {lenslab::rectangle_spec, "### Rectangle", with_rectangle, "/objects/0", "objects[0]",
+         common},
+    };
+}
+
+class DeclaredElement : public testing::TestWithParam<Case> {};
+
+TEST_P(DeclaredElement, DocsTableAgreesWithTheDeclaration) {
+    const ElementSpec& spec = GetParam().spec();
+    auto rows = docs_table(GetParam().anchor);
+    for (const ParamSpec& p : spec.params) {
+        const auto& elsewhere = GetParam().elsewhere;
+        if (std::find(elsewhere.begin(), elsewhere.end(), p.key) != elsewhere.end()) continue;
+        const auto it = rows.find(p.key);
+        ASSERT_NE(it, rows.end()) << spec.name << "." << p.key << " is not in the docs table";
+        const std::vector<std::string>& row = it->second;
+        ASSERT_GE(row.size(), 5u) << spec.name << "." << p.key;
+        EXPECT_EQ(row[1], lenslab::kind_text(p)) << spec.name << "." << p.key << ": type";
+        EXPECT_EQ(row[2], lenslab::default_text(p)) << spec.name << "." << p.key << ": default";
+        EXPECT_EQ(row[3], lenslab::range_text(p)) << spec.name << "." << p.key << ": range";
+        rows.erase(it);
+    }
+    for (const auto& [key, row] : rows) ADD_FAILURE() << "docs list " << key << ", not declared";
+}
+
+// Reads the case's scene with the element's `key` set to `value` (removed for null): "" when
+// accepted, else the error.
+std::string read_with(const Case& c, const std::string& key, const json& value) {
+    json scene = c.scene;
+    json& element = scene[json::json_pointer(c.pointer)];
+    if (value.is_null()) {
+        element.erase(key);
+    } else {
+        element[key] = value;
+    }
+    try {
+        (void)lenslab::scene_from_json(scene);
+        return "";
+    } catch (const lenslab::SceneError& e) {
+        return e.what();
+    }
+}
+
+TEST_P(DeclaredElement, ReaderAcceptsDefaultsAndRefusesPastTheBounds) {
+    const Case& c = GetParam();
+    for (const ParamSpec& p : c.spec().params) {
+        const std::string path = std::string(c.path) + "." + p.key + ": ";
+        if (p.required) {
+            EXPECT_EQ(read_with(c, p.key, nullptr), path + "missing (required)");
+        }
+        if (!p.fallback.is_null() && lenslab::fallback_in_range(p)) {
+            EXPECT_EQ(read_with(c, p.key, p.fallback), "") << "the default of " << path;
+        }
+        for (const std::string& choice : p.choices) {
+            EXPECT_EQ(read_with(c, p.key, choice), "");
+        }
+        if (p.kind == ParamKind::Choice) {
+            EXPECT_EQ(read_with(c, p.key, "bogus"), path + *lenslab::choice_problem(p, "bogus"));
+        }
+        if (p.kind != ParamKind::Number && p.kind != ParamKind::WholeNumber &&
+            p.kind != ParamKind::Fraction) {
+            continue;
+        }
+        // Just past each end: the next whole number, or a small step for other numbers.
+        const auto past = [&p](double bound, double direction) {
+            return bound +
+                   direction * (p.is_integer() ? 1.0 : 1e-9 * std::max(1.0, std::abs(bound)));
+        };
+        const auto check_end = [&](const lenslab::Bound& b, double outwards) {
+            const double outside = b.exclusive ? b.value : past(b.value, outwards);
+            const json written = p.is_integer() ? json(int64_t(outside)) : json(outside);
+            EXPECT_EQ(read_with(c, p.key, written), path + *lenslab::range_problem(p, outside));
+            if (!b.exclusive) {
+                const json at = p.is_integer() ? json(int64_t(b.value)) : json(b.value);
+                EXPECT_EQ(read_with(c, p.key, at), "") << path << "at the bound " << b.value;
+            }
+        };
+        // A fraction's [0, 1] holds whatever else it declares.
+        const bool fraction = p.kind == ParamKind::Fraction;
+        if (p.min) check_end(*p.min, -1.0);
+        if (fraction && !p.min) check_end(lenslab::Bound{0.0}, -1.0);
+        if (p.max) check_end(*p.max, 1.0);
+        if (fraction) check_end(lenslab::Bound{1.0}, 1.0);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Elements, DeclaredElement, testing::ValuesIn(cases()),
+                         [](const testing::TestParamInfo<Case>& element) {
+                             std::string name = element.param.spec().name;
+                             std::replace(name.begin(), name.end(), ' ', '_');
+                             return name;
+                         });
+
+std::string run_and_capture(const std::string& command) {
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+    std::string out;
+    std::array<char, 4096> buffer{};
+    while (pipe && fgets(buffer.data(), buffer.size(), pipe.get())) out += buffer.data();
+    return out;
+}
+
+// The option names are a contract with scripts; the declaration generates exactly these.
+TEST(RenderOptions, AreTheDeclaredKeysWithTheirRangesInTheHelp) {
+    std::vector<std::string> contract{"--width",        "--height",
+                                      "--spp",          "--max-depth",
+                                      "--seed",         "--integrator",
+                                      "--photons",      "--caustic-photons",
+                                      "--aim-photons",  "--radius",
+                                      "--filter",       "--direct",
+                                      "--filter-k",     "--max-photons-per-estimate",
+                                      "--passes",       "--time",
+                                      "--pass-photons", "--initial-radius"};
+    std::vector<std::string> declared;
+    for (const ParamSpec& p : lenslab::render_settings_spec().params) {
+        if (p.cli) declared.push_back(p.option_name());
+    }
+    std::sort(declared.begin(), declared.end());
+    std::sort(contract.begin(), contract.end());
+    EXPECT_EQ(declared, contract);
+
+    const std::string help = run_and_capture(std::string(LENSLAB_BINARY) + " render --help");
+    ASSERT_NE(help.find("--seed"), std::string::npos) << help;
+    for (const ParamSpec& p : lenslab::render_settings_spec().params) {
+        if (!p.cli) continue;
+        // CLI11 may wrap a long description: the option's text runs to the next option.
+        const size_t at = help.find("  " + p.option_name() + " ");
+        ASSERT_NE(at, std::string::npos) << p.option_name() << " not in\n" << help;
+        const std::string entry = help.substr(at, help.find("\n  --", at + 1) - at);
+        std::string range = p.kind == ParamKind::Boolean ? "on or off" : lenslab::range_text(p);
+        range.erase(std::remove(range.begin(), range.end(), '`'), range.end());
+        EXPECT_NE(entry.find(range), std::string::npos) << p.option_name() << ": " << entry;
+        EXPECT_NE(entry.find(p.doc), std::string::npos) << p.option_name() << ": " << entry;
+    }
+}
+
+}  // namespace
