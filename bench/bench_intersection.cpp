@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "accel/bvh.h"
 #include "geometry/implicit_solid.h"
 #include "geometry/lens/asphere_surface.h"
 #include "geometry/lens/conic_surface.h"
@@ -14,10 +15,9 @@
 #include "geometry/lens/sag_formula_surface.h"
 #include "geometry/lens/spherical_surface.h"
 #include "geometry/mesh_shapes.h"
-#include "geometry/triangle_mesh.h"
-#include "accel/bvh.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
+#include "geometry/triangle_mesh.h"
 #include "math/rng.h"
 #include "math/sampling.h"
 #include "scene/scene_json.h"
@@ -50,9 +50,12 @@ void run(benchmark::State& state, const Shape& shape) {
 }
 
 void BM_Sphere(benchmark::State& state) { run(state, Sphere({0, 0, 0}, 0.5)); }
-void BM_Triangle(benchmark::State& state) { run(state, Triangle({-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0, 0.5, 0})); }
+void BM_Triangle(benchmark::State& state) {
+    run(state, Triangle({-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0, 0.5, 0}));
+}
 void BM_Lens(benchmark::State& state) {
-    run(state, LensSolid(LensSolid::symmetric_biconvex({0, 0, 0}, normalize(Vec3{1, 1, 0}), 1.0, 0.5)));
+    run(state,
+        LensSolid(LensSolid::symmetric_biconvex({0, 0, 0}, normalize(Vec3{1, 1, 0}), 1.0, 0.5)));
 }
 
 // A UV sphere of radius 0.5 with 250 x 201 bands: 100,000 triangles.
@@ -121,7 +124,8 @@ void BM_Mesh100kBuild(benchmark::State& state) {
 // (docs/performance.md, "Equation-defined surfaces").
 LensPrescription report_lens_with(std::shared_ptr<const LensSurface> front,
                                   std::shared_ptr<const LensSurface> back) {
-    LensPrescription p = LensSolid::symmetric_biconvex({0, 0, 0}, normalize(Vec3{1, 1, 0}), 1.0, 0.5);
+    LensPrescription p =
+        LensSolid::symmetric_biconvex({0, 0, 0}, normalize(Vec3{1, 1, 0}), 1.0, 0.5);
     p.front = std::move(front);
     p.back = std::move(back);
     return p;
@@ -131,16 +135,19 @@ void BM_LensConic(benchmark::State& state) {
                                           std::make_shared<ConicSurface>(-1.0, 0.0))));
 }
 void BM_LensAsphere(benchmark::State& state) {
-    run(state, LensSolid(report_lens_with(std::make_shared<AsphereSurface>(1.0, 0.0, std::vector<double>{0.0}),
-                                          std::make_shared<AsphereSurface>(-1.0, 0.0, std::vector<double>{0.0}))));
+    run(state, LensSolid(report_lens_with(
+                   std::make_shared<AsphereSurface>(1.0, 0.0, std::vector<double>{0.0}),
+                   std::make_shared<AsphereSurface>(-1.0, 0.0, std::vector<double>{0.0}))));
 }
 void BM_LensSagFormula(benchmark::State& state) {
-    run(state, LensSolid(report_lens_with(std::make_shared<SagFormulaSurface>("1 - sqrt(1 - r^2)", 0.5),
-                                          std::make_shared<SagFormulaSurface>("sqrt(1 - r^2) - 1", 0.5))));
+    run(state,
+        LensSolid(report_lens_with(std::make_shared<SagFormulaSurface>("1 - sqrt(1 - r^2)", 0.5),
+                                   std::make_shared<SagFormulaSurface>("sqrt(1 - r^2) - 1", 0.5))));
 }
 // A sphere of radius 0.5 written as an implicit equation, against BM_Sphere.
 void BM_ImplicitSphere(benchmark::State& state) {
-    run(state, ImplicitSolid("x^2 + y^2 + z^2 - 0.25", {{-0.55, -0.55, -0.55}, {0.55, 0.55, 0.55}}));
+    run(state,
+        ImplicitSolid("x^2 + y^2 + z^2 - 0.25", {{-0.55, -0.55, -0.55}, {0.55, 0.55, 0.55}}));
 }
 
 void BM_DefaultSceneBvh(benchmark::State& state) {

@@ -4,7 +4,6 @@
 #include <benchmark/benchmark.h>
 
 #include <nanoflann.hpp>
-
 #include <vector>
 
 #include "accel/photon_kdtree.h"
@@ -39,9 +38,13 @@ struct Cloud {
     const std::vector<Photon>& pts;
     size_t kdtree_get_point_count() const { return pts.size(); }
     float kdtree_get_pt(size_t i, size_t dim) const { return pts[i].position[dim]; }
-    template <class B> bool kdtree_get_bbox(B&) const { return false; }
+    template <class B>
+    bool kdtree_get_bbox(B&) const {
+        return false;
+    }
 };
-using NanoTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, Cloud>, Cloud, 3>;
+using NanoTree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, Cloud>, Cloud, 3>;
 
 constexpr size_t kPhotons = 1000000;
 constexpr double kRadius = 0.05;

@@ -44,8 +44,8 @@ void BM_SppmPassDefaultScene(benchmark::State& state) {
     RenderControl control;
     for (auto _ : state) render.add_pass(control);
     state.SetItemsProcessed(state.iterations() * scene.render.width * scene.render.height);
-    state.counters["photons/s"] = benchmark::Counter(
-        static_cast<double>(render.stats(0).photons), benchmark::Counter::kIsRate);
+    state.counters["photons/s"] = benchmark::Counter(static_cast<double>(render.stats(0).photons),
+                                                     benchmark::Counter::kIsRate);
 }
 
 BENCHMARK(BM_SppmPassDefaultScene)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -42,7 +42,8 @@ void read_scene_input(std::string_view data, const std::string& base_dir) {
 
 void parse_formula_input(std::string_view data) {
     if (data.empty()) return;
-    static const std::vector<std::string> kVariableSets[] = {{"r"}, {"x", "y", "r"}, {"x", "y", "z"}};
+    static const std::vector<std::string> kVariableSets[] = {
+        {"r"}, {"x", "y", "r"}, {"x", "y", "z"}};
     const std::vector<std::string>& names = kVariableSets[static_cast<unsigned char>(data[0]) % 3];
     std::string text(data.substr(1));
     try {

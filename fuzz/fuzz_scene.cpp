@@ -10,6 +10,6 @@
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     // OBJ files a fuzzed scene names are looked up next to the example scenes (wedge.obj).
     lenslab::fuzz::read_scene_input(std::string_view(reinterpret_cast<const char*>(data), size),
-                                     LENSLAB_SCENES_DIR);
+                                    LENSLAB_SCENES_DIR);
     return 0;
 }

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The whole test suite, as CI runs it (README, second command; .ci/run):
+# The whole test suite, as CI runs it (README, second command; .ci/run): first the C++
+# files' formatting (scripts/check-format.sh, seconds), then
 #   1. release build + every test;
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: no editor, no
 #      benchmarks) + every test but the 20M-photon convergence test (too slow sanitized);
@@ -26,6 +27,8 @@ finished() {
 # UBSan: stop at the first report and say where; ASan: also report leaks.
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0"
+
+scripts/check-format.sh
 
 banner "stage 1/3: release build and tests"
 cmake --preset release

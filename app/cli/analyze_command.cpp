@@ -10,9 +10,9 @@
 #include "analysis/ray_diagram.h"
 #include "analysis/ray_diagram_svg.h"
 #include "commands.h"
-#include "util/atomic_file.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
+#include "util/atomic_file.h"
 
 namespace lenslab::cli {
 
@@ -38,8 +38,10 @@ std::optional<int> find_lens(const Scene& scene, const std::string& name, std::s
         const SceneObject& o = scene.objects[i];
         if (o.type != ObjectType::Lens) continue;
         // A lens group's elements answer to the group's name too.
-        known += (known.empty() ? "" : ", ") + o.name + (o.group.empty() ? "" : " [" + o.group + "]");
-        if (o.name == name || o.group == name || "objects[" + std::to_string(o.source) + "]" == name) {
+        known +=
+            (known.empty() ? "" : ", ") + o.name + (o.group.empty() ? "" : " [" + o.group + "]");
+        if (o.name == name || o.group == name ||
+            "objects[" + std::to_string(o.source) + "]" == name) {
             return i;
         }
     }
@@ -112,18 +114,21 @@ int run(const AnalyzeArgs& a) {
 Action add_analyze_command(CLI::App& app) {
     auto args = std::make_shared<AnalyzeArgs>();
     CLI::App* cmd = app.add_subcommand(
-        "analyze", "Optical bench: focal lengths, aberrations and a ray diagram of the lenses on one axis");
+        "analyze",
+        "Optical bench: focal lengths, aberrations and a ray diagram of the lenses on one axis");
     cmd->add_option("scene", args->scene, "Scene file (JSON); a camera is not needed")->required();
     cmd->add_option("-w,--wavelength", args->wavelength_nm,
                     "Vacuum wavelength in nm for the figures (default: the d line, 587.56 nm)")
         ->check(CLI::PositiveNumber);
     cmd->add_flag("--json", args->json, "Print the figures as JSON");
     cmd->add_option("--svg", args->svg, "Write a ray diagram (SVG) to this file");
-    cmd->add_option("--aperture", args->aperture,
-                    "Diameter of the collimated beam, in the scene's unit (default: all the lens passes)")
+    cmd->add_option(
+           "--aperture", args->aperture,
+           "Diameter of the collimated beam, in the scene's unit (default: all the lens passes)")
         ->check(CLI::PositiveNumber);
-    cmd->add_option("--lens", args->lens,
-                    "Measure this lens (name or objects[i]) and the lenses on its axis; others are ignored");
+    cmd->add_option(
+        "--lens", args->lens,
+        "Measure this lens (name or objects[i]) and the lenses on its axis; others are ignored");
     return [args] { return run(*args); };
 }
 

@@ -3,18 +3,18 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "bench/report_benchmark.h"
 #include "bench/sppm_convergence.h"
 #include "commands.h"
-#include "util/atomic_file.h"
 #include "render/image_io.h"
 #include "render/integrator_names.h"
 #include "scene/limits.h"
 #include "scene/scene_json.h"
+#include "util/atomic_file.h"
 
 namespace lenslab::cli {
 
@@ -44,7 +44,9 @@ bool plot_convergence(const std::filesystem::path& dir, const ConvergenceResult&
     for (const std::string_view integrator : {integrators::kSppm, integrators::kPath}) {
         dat << "# " << integrator << ": amount seconds block_error rms_error\n";
         for (const ConvergencePoint& p : r.points) {
-            if (p.integrator == integrator) dat << p.amount << " " << p.seconds << " " << p.block_error << " " << p.rms_error << "\n";
+            if (p.integrator == integrator)
+                dat << p.amount << " " << p.seconds << " " << p.block_error << " " << p.rms_error
+                    << "\n";
         }
         dat << "\n\n";
     }
@@ -54,16 +56,23 @@ bool plot_convergence(const std::filesystem::path& dir, const ConvergenceResult&
     std::ofstream gp(script);
     gp << "set terminal pngcairo size 900,600\nset key top right\nset grid\nset logscale xy\n"
           "set ylabel 'error against the path-traced reference'\n"
-          "set output '" << (dir / "convergence_time.png").string() << "'\n"
-          "set title 'Error against rendering time (mean over 8x8-pixel blocks of the relative error)'\n"
+          "set output '"
+       << (dir / "convergence_time.png").string()
+       << "'\n"
+          "set title 'Error against rendering time (mean over 8x8-pixel blocks of the relative "
+          "error)'\n"
           "set xlabel 'seconds'\n"
-          "plot " << d << " index 0 using 2:3 with linespoints lw 2 title 'sppm (passes)', " << d
+          "plot "
+       << d << " index 0 using 2:3 with linespoints lw 2 title 'sppm (passes)', " << d
        << " index 1 using 2:3 with linespoints lw 2 title 'path (samples per pixel)', " << d
        << " index 0 using 2:4 with linespoints dt 2 lc 1 title 'sppm, RMS per pixel', " << d
        << " index 1 using 2:4 with linespoints dt 2 lc 2 title 'path, RMS per pixel'\n"
-          "set output '" << (dir / "convergence_passes.png").string() << "'\n"
+          "set output '"
+       << (dir / "convergence_passes.png").string()
+       << "'\n"
           "set title 'sppm: error against passes'\nset xlabel 'passes'\n"
-          "plot " << d << " index 0 using 1:3 with linespoints lw 2 title 'mean block error', " << d
+          "plot "
+       << d << " index 0 using 1:3 with linespoints lw 2 title 'mean block error', " << d
        << " index 0 using 1:4 with linespoints lw 2 title 'RMS per pixel'\n";
     gp.close();
     if (!have_gnuplot()) return false;
@@ -78,8 +87,8 @@ int run_convergence_bench(const ConvergenceArgs& a) {
     std::copy(a.region.begin(), a.region.end(), settings.region);
     const std::filesystem::path dir(a.out_dir);
     std::filesystem::create_directories(dir);
-    const ConvergenceResult r =
-        run_convergence(scene, settings, [](const std::string& line) { std::cerr << line << "\n"; });
+    const ConvergenceResult r = run_convergence(
+        scene, settings, [](const std::string& line) { std::cerr << line << "\n"; });
     std::ofstream(dir / "convergence.csv") << convergence_csv(r);
     write_image(r.reference, (dir / "reference.png").string());
     write_image(r.sppm_last, (dir / "sppm.png").string());
@@ -119,17 +128,24 @@ bool plot(const std::filesystem::path& dir, const ReportBenchmarkSettings& s,
     std::ostringstream gp;
     gp << "set terminal pngcairo size 900,600\nset key top left\nset grid\nset logscale y\n"
           "set xlabel 'photons per light'\nset ylabel 'seconds'\n"
-          "set output '" << build_tmp << "'\n"
+          "set output '"
+       << build_tmp
+       << "'\n"
           "set title 'Photon tracing + map build time (report Table 4.1, Figure 4.2)'\n"
-          "plot " << d << " index 0 using 1:2 with linespoints lw 2 title 'lenslab', " << d
+          "plot "
+       << d << " index 0 using 1:2 with linespoints lw 2 title 'lenslab', " << d
        << " index 0 using 1:3 with linespoints dt 2 title 'report'\n"
-          "set output '" << render_tmp << "'\n"
-          "set title 'Render time against photons per light, per gather radius (report Table 4.2, Figure 4.3)'\n"
+          "set output '"
+       << render_tmp
+       << "'\n"
+          "set title 'Render time against photons per light, per gather radius (report Table 4.2, "
+          "Figure 4.3)'\n"
           "plot ";
     for (size_t i = 0; i < s.radii.size(); ++i) {
-        gp << (i ? ", " : "") << d << " index " << i << " using 1:4 with linespoints lw 2 lc " << i + 1
-           << " title 'lenslab r=" << s.radii[i] << "', " << d << " index " << i
-           << " using 1:5 with linespoints dt 2 lc " << i + 1 << " title 'report r=" << s.radii[i] << "'";
+        gp << (i ? ", " : "") << d << " index " << i << " using 1:4 with linespoints lw 2 lc "
+           << i + 1 << " title 'lenslab r=" << s.radii[i] << "', " << d << " index " << i
+           << " using 1:5 with linespoints dt 2 lc " << i + 1 << " title 'report r=" << s.radii[i]
+           << "'";
     }
     gp << "\nunset output\n";
     write_text_atomically(script.string(), gp.str());
@@ -150,13 +166,15 @@ int run(const BenchArgs& a) {
     const Scene scene = a.scene.empty() ? default_scene() : load_scene_file(a.scene);
     const std::filesystem::path dir(a.out_dir);
     std::filesystem::create_directories(dir);
-    const ReportBenchmarkResult r =
-        run_report_benchmark(scene, a.settings, [](const std::string& line) { std::cerr << line << "\n"; });
+    const ReportBenchmarkResult r = run_report_benchmark(
+        scene, a.settings, [](const std::string& line) { std::cerr << line << "\n"; });
     write_text_atomically((dir / "report.csv").string(), report_benchmark_csv(r));
     write_image(r.grid, (dir / "grid.png").string());
     const bool plotted = plot(dir, a.settings, r);
     std::printf("wrote %s/report.csv, %s/grid.png%s\n", dir.c_str(), dir.c_str(),
-                plotted ? (", " + (dir / "build_time.png").string() + ", " + (dir / "render_time.png").string()).c_str()
+                plotted ? (", " + (dir / "build_time.png").string() + ", " +
+                           (dir / "render_time.png").string())
+                              .c_str()
                         : " (install gnuplot for the plots: plots.gp is written)");
     return 0;
 }
@@ -168,45 +186,90 @@ Action add_bench_command(CLI::App& app) {
     CLI::App* bench = app.add_subcommand("bench", "Measure lenslab's speed");
     bench->require_subcommand(1);
     CLI::App* report = bench->add_subcommand(
-        "report", "The course report's experiment: map build and render times against photons and radius");
+        "report",
+        "The course report's experiment: map build and render times against photons and radius");
     report->add_option("scene", args->scene, "Scene file (default: the built-in default scene)");
-    report->add_option("-o,--output", args->out_dir, "Folder for report.csv, the plots and grid.png")
+    report
+        ->add_option("-o,--output", args->out_dir, "Folder for report.csv, the plots and grid.png")
         ->capture_default_str();
     ReportBenchmarkSettings& s = args->settings;
     report->add_option("--photons", s.photons, "Photons per light to measure")
-        ->delimiter(',')->capture_default_str()->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 36));
+        ->delimiter(',')
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int64_t>())
+        ->check(CLI::Range(int64_t{1}, int64_t{1} << 36));
     report->add_option("--radii", s.radii, "Gather radii to measure")
-        ->delimiter(',')->capture_default_str()->check(CLI::PositiveNumber);
-    report->add_option("--width", s.width, "Image width")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxImageSide));
-    report->add_option("--height", s.height, "Image height")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, kMaxImageSide));
-    report->add_option("--spp", s.spp, "Samples per pixel")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 16));
+        ->delimiter(',')
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
+    report->add_option("--width", s.width, "Image width")
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, kMaxImageSide));
+    report->add_option("--height", s.height, "Image height")
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, kMaxImageSide));
+    report->add_option("--spp", s.spp, "Samples per pixel")
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, 1 << 16));
     report->add_option("--repeats", s.repeats, "Runs per timing (the median is kept)")
-        ->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 100));
-    report->add_option("--threads", s.threads, "Worker threads (default: all cores)")->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, 100));
+    report->add_option("--threads", s.threads, "Worker threads (default: all cores)")
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, 1024));
 
     auto conv = std::make_shared<ConvergenceArgs>();
     // Named after the integrator it measures.
-    CLI::App* sppm = bench->add_subcommand(
-        std::string(integrators::kSppm), "How sppm converges: its error against a long path-traced reference, against passes and time");
+    CLI::App* sppm = bench->add_subcommand(std::string(integrators::kSppm),
+                                           "How sppm converges: its error against a long "
+                                           "path-traced reference, against passes and time");
     sppm->add_option("scene", conv->scene, "Scene file (default: the built-in default scene)");
-    sppm->add_option("-o,--output", conv->out_dir, "Folder for convergence.csv, the plots and images")
+    sppm->add_option("-o,--output", conv->out_dir,
+                     "Folder for convergence.csv, the plots and images")
         ->capture_default_str();
     ConvergenceSettings& c = conv->settings;
-    sppm->add_option("--width", c.width, "Image width")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(8, 16384));
-    sppm->add_option("--height", c.height, "Image height")->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(8, 16384));
-    sppm->add_option("--reference-spp", c.reference_spp, "Samples per pixel of the path-traced reference")
-        ->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 24));
+    sppm->add_option("--width", c.width, "Image width")
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(8, 16384));
+    sppm->add_option("--height", c.height, "Image height")
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(8, 16384));
+    sppm->add_option("--reference-spp", c.reference_spp,
+                     "Samples per pixel of the path-traced reference")
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, 1 << 24));
     sppm->add_option("--passes", c.passes, "sppm pass counts to measure at")
-        ->delimiter(',')->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 20));
+        ->delimiter(',')
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, 1 << 20));
     sppm->add_option("--path-spp", c.path_spp, "Path-tracing sample counts to compare with")
-        ->delimiter(',')->capture_default_str()->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1 << 20));
-    sppm->add_option("--pass-photons", conv->pass_photons, "Photons per light in each sppm pass (default: the scene's)")
-        ->check(CLI::TypeValidator<int64_t>())->check(CLI::Range(int64_t{1}, int64_t{1} << 30));
-    sppm->add_option("--threads", c.threads, "Worker threads (default: all cores)")->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
-    sppm->add_option("--aim-photons", conv->aim_photons, "on: aim caustic photons at the glass (default: the scene's); off: uniform")
+        ->delimiter(',')
+        ->capture_default_str()
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, 1 << 20));
+    sppm->add_option("--pass-photons", conv->pass_photons,
+                     "Photons per light in each sppm pass (default: the scene's)")
+        ->check(CLI::TypeValidator<int64_t>())
+        ->check(CLI::Range(int64_t{1}, int64_t{1} << 30));
+    sppm->add_option("--threads", c.threads, "Worker threads (default: all cores)")
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, 1024));
+    sppm->add_option("--aim-photons", conv->aim_photons,
+                     "on: aim caustic photons at the glass (default: the scene's); off: uniform")
         ->check(CLI::IsMember({"on", "off"}));
-    sppm->add_option("--region", conv->region, "Also measure the error in the pixels X0,Y0,X1,Y1 (a caustic, say)")
-        ->delimiter(',')->expected(4)->check(CLI::Range(0, 16384));
+    sppm->add_option("--region", conv->region,
+                     "Also measure the error in the pixels X0,Y0,X1,Y1 (a caustic, say)")
+        ->delimiter(',')
+        ->expected(4)
+        ->check(CLI::Range(0, 16384));
 
     const Action povray = add_bench_povray_command(*bench);
     CLI::App* povray_cmd = bench->get_subcommand("povray");

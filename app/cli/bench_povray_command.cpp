@@ -19,11 +19,11 @@
 
 #include "child_process.h"
 #include "commands.h"
-#include "util/atomic_file.h"
-#include "util/bitmap_font.h"
 #include "render/image_io.h"
 #include "render/integrator_names.h"
 #include "scene/limits.h"
+#include "util/atomic_file.h"
+#include "util/bitmap_font.h"
 #include "util/error.h"
 
 namespace lenslab::cli {

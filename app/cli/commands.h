@@ -2,9 +2,8 @@
 // The `lenslab` subcommands. Each registers its options and returns the action to run
 // when it is chosen; the action returns the process exit code.
 
-#include <functional>
-
 #include <CLI/CLI.hpp>
+#include <functional>
 
 namespace lenslab::cli {
 
@@ -18,6 +17,5 @@ Action add_bench_povray_command(CLI::App& bench);
 Action add_glass_command(CLI::App& app);
 Action add_analyze_command(CLI::App& app);
 Action add_detect_command(CLI::App& app);
-
 
 }  // namespace lenslab::cli

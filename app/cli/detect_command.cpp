@@ -1,19 +1,19 @@
 // `lenslab detect SCENE -o DIR`: measure the irradiance on every detector in a scene.
 
+#include <unistd.h>
+
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
 
 #include "analysis/detector.h"
 #include "analysis/detector_files.h"
 #include "commands.h"
-#include "render_overrides.h"
 #include "render/photon_tracer.h"
+#include "render_overrides.h"
 #include "scene/scene_json.h"
 
 namespace lenslab::cli {
@@ -37,7 +37,8 @@ int run(const DetectArgs& a, const RenderOverrides& overrides) {
     const Scene scene = overrides.load(a.scene);
     if (detector_objects(scene).empty()) {
         std::cerr << "lenslab: error: " << a.scene
-                  << ": no detector in the scene (mark a triangle, disc or rectangle with \"detector\": true)\n";
+                  << ": no detector in the scene (mark a triangle, disc or rectangle with "
+                     "\"detector\": true)\n";
         return 1;
     }
     if (photon_light_count(scene) == 0) {
@@ -54,12 +55,13 @@ int run(const DetectArgs& a, const RenderOverrides& overrides) {
     settings.threads = a.threads;
 
     int last = -1;
-    RenderControl control(a.quiet ? RenderControl::ProgressFn{} : RenderControl::ProgressFn{[&last](double f) {
-        const int percent = static_cast<int>(f * 100.0);
-        if (percent / 10 == last / 10) return;
-        last = percent;
-        std::fprintf(stderr, "detecting %3d%%\n", percent);
-    }});
+    RenderControl control(a.quiet ? RenderControl::ProgressFn{}
+                                  : RenderControl::ProgressFn{[&last](double f) {
+                                        const int percent = static_cast<int>(f * 100.0);
+                                        if (percent / 10 == last / 10) return;
+                                        last = percent;
+                                        std::fprintf(stderr, "detecting %3d%%\n", percent);
+                                    }});
     g_control = &control;
     struct sigaction action {};
     action.sa_handler = on_detect_interrupt;
@@ -84,22 +86,25 @@ int run(const DetectArgs& a, const RenderOverrides& overrides) {
                        {"detectors", nlohmann::json::array()}};
     for (size_t i = 0; i < result.detectors.size(); ++i) {
         const DetectorMeasurement& m = result.detectors[i];
-        write_detector_files(m, settings, a.output, stems[i], a.log ? ColourScale::Log : ColourScale::Linear);
+        write_detector_files(m, settings, a.output, stems[i],
+                             a.log ? ColourScale::Log : ColourScale::Linear);
         nlohmann::json d = detector_summary_json(m);
         const std::string base = (std::filesystem::path(a.output) / stems[i]).string();
         d["files"] = {{"csv", base + ".csv"}, {"exr", base + ".exr"}, {"png", base + ".png"}};
         doc["detectors"].push_back(d);
         if (!a.json) {
-            std::cout << detector_summary_text(m) << "  wrote " << base << ".csv, " << base << ".exr, " << base
-                      << ".png\n";
+            std::cout << detector_summary_text(m) << "  wrote " << base << ".csv, " << base
+                      << ".exr, " << base << ".png\n";
         }
     }
     if (a.json) {
         std::cout << doc.dump(2) << "\n";
     } else {
-        std::printf("%lld photons per light, %lld in all (%lld aimed at the glass and mirrors), %.2f s\n",
-                    static_cast<long long>(settings.photons_per_light), static_cast<long long>(result.photons_emitted),
-                    static_cast<long long>(result.photons_aimed), result.seconds);
+        std::printf(
+            "%lld photons per light, %lld in all (%lld aimed at the glass and mirrors), %.2f s\n",
+            static_cast<long long>(settings.photons_per_light),
+            static_cast<long long>(result.photons_emitted),
+            static_cast<long long>(result.photons_aimed), result.seconds);
     }
     return 0;
 }
@@ -108,18 +113,23 @@ int run(const DetectArgs& a, const RenderOverrides& overrides) {
 
 Action add_detect_command(CLI::App& app) {
     auto args = std::make_shared<DetectArgs>();
-    CLI::App* cmd = app.add_subcommand(
-        "detect", "Measure the irradiance on the scene's detectors (CSV, EXR and false-colour PNG per detector)");
-    cmd->add_option("scene", args->scene, "Scene file (JSON) with at least one detector")->required();
-    cmd->add_option("-o,--output", args->output, "Folder for <detector>.csv, .exr and .png")->capture_default_str();
+    CLI::App* cmd = app.add_subcommand("detect",
+                                       "Measure the irradiance on the scene's detectors (CSV, EXR "
+                                       "and false-colour PNG per detector)");
+    cmd->add_option("scene", args->scene, "Scene file (JSON) with at least one detector")
+        ->required();
+    cmd->add_option("-o,--output", args->output, "Folder for <detector>.csv, .exr and .png")
+        ->capture_default_str();
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, 1024));
     cmd->add_flag("--log", args->log, "Colour the PNG on a log scale (4 decades below the peak)");
     cmd->add_flag("--json", args->json, "Print the summary as JSON");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
     // The render block's keys the photon tracer uses, as `lenslab render` overrides them.
     auto overrides = std::make_shared<RenderOverrides>(
-        *cmd, std::vector<std::string>{"photons", "caustic_photons", "aim_photons", "seed", "max_depth"});
+        *cmd,
+        std::vector<std::string>{"photons", "caustic_photons", "aim_photons", "seed", "max_depth"});
     return [args, overrides] { return run(*args, *overrides); };
 }
 

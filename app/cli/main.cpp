@@ -6,7 +6,8 @@
 #include "util/error.h"
 
 int main(int argc, char** argv) {
-    CLI::App app{"lenslab: physically based rendering of light through lenses, and an optical bench"};
+    CLI::App app{
+        "lenslab: physically based rendering of light through lenses, and an optical bench"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "lenslab 0.1.0");
     const auto render = lenslab::cli::add_render_command(app);

@@ -1,18 +1,18 @@
 // `lenslab render [SCENE] -o OUT`: render a scene file, or the built-in default scene.
 
+#include <tbb/info.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <unistd.h>
-
-#include <tbb/info.h>
 
 #include "commands.h"
-#include "render_overrides.h"
 #include "render/image_io.h"
 #include "render/render_session.h"
+#include "render_overrides.h"
 #include "scene/render_settings.h"
 
 namespace lenslab::cli {
@@ -65,7 +65,8 @@ bool unbounded_passes(const RenderOverrides& overrides, const nlohmann::json& ro
     const nlohmann::json& r = root["render"];
     const RenderSettings d;
     const auto number = [&r](const char* key, double fallback) {
-        return r.is_object() && r.contains(key) && r[key].is_number() ? r[key].get<double>() : fallback;
+        return r.is_object() && r.contains(key) && r[key].is_number() ? r[key].get<double>()
+                                                                      : fallback;
     };
     return number("passes", d.passes) == 0 && number("time", d.time) == 0;
 }
@@ -82,7 +83,8 @@ int run(const RenderArgs& a, const RenderOverrides& overrides) {
     }
     const nlohmann::json root = overrides.patched_json(a.scene);
     if (unbounded_passes(overrides, root)) {
-        std::cerr << "lenslab: error: --passes 0 means no pass limit, which needs a time budget (--time)\n";
+        std::cerr << "lenslab: error: --passes 0 means no pass limit, which needs a time budget "
+                     "(--time)\n";
         return 2;
     }
     const Scene scene = overrides.scene_from(root, a.scene);
@@ -95,11 +97,13 @@ int run(const RenderArgs& a, const RenderOverrides& overrides) {
         amount = s.passes > 0 ? std::to_string(s.passes) + " passes" : "";
         if (s.time > 0) amount += (amount.empty() ? "" : " or ") + format_seconds(s.time);
     }
-    const std::string label = "rendering " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", " +
-                              s.integrator + ", " + amount + ", " + std::to_string(threads) + " thread" +
+    const std::string label = "rendering " + std::to_string(s.width) + "x" +
+                              std::to_string(s.height) + ", " + s.integrator + ", " + amount +
+                              ", " + std::to_string(threads) + " thread" +
                               (threads > 1 ? "s" : "") + ":";
     ProgressPrinter printer(label);
-    RenderControl control(a.quiet ? RenderControl::ProgressFn{} : RenderControl::ProgressFn{std::ref(printer)});
+    RenderControl control(a.quiet ? RenderControl::ProgressFn{}
+                                  : RenderControl::ProgressFn{std::ref(printer)});
     g_control = &control;
     // The first Ctrl-C asks the render to stop; SA_RESETHAND makes a second one end the
     // process at once.
@@ -114,7 +118,8 @@ int run(const RenderArgs& a, const RenderOverrides& overrides) {
         std::cerr << "\nlenslab: render cancelled; nothing written\n";
         return 130;
     }
-    if (!result.stats.summary.empty() && !a.quiet) std::fprintf(stderr, "%s\n", result.stats.summary.c_str());
+    if (!result.stats.summary.empty() && !a.quiet)
+        std::fprintf(stderr, "%s\n", result.stats.summary.c_str());
     if (control.non_finite_samples() > 0) {
         std::fprintf(stderr,
                      "lenslab: warning: %lld samples came out NaN or infinite and were left out of "
@@ -139,11 +144,11 @@ int run(const RenderArgs& a, const RenderOverrides& overrides) {
     }
     sigprocmask(SIG_SETMASK, &previous, nullptr);
     if (result.stats.passes > 0) {
-        std::printf("wrote %s (%dx%d, %d passes, %.2f s)\n", a.output.c_str(), s.width, s.height, result.stats.passes,
-                    result.seconds);
+        std::printf("wrote %s (%dx%d, %d passes, %.2f s)\n", a.output.c_str(), s.width, s.height,
+                    result.stats.passes, result.seconds);
     } else {
-        std::printf("wrote %s (%dx%d, %d spp, %.2f s)\n", a.output.c_str(), s.width, s.height, s.spp,
-                    result.seconds);
+        std::printf("wrote %s (%dx%d, %d spp, %.2f s)\n", a.output.c_str(), s.width, s.height,
+                    s.spp, result.seconds);
     }
     return 0;
 }
@@ -157,9 +162,11 @@ Action add_render_command(CLI::App& app) {
     cmd->add_option("-o,--output", args->output, "Output image: .png (sRGB) or .exr (linear)")
         ->capture_default_str();
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(1, 1024));
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(1, 1024));
     cmd->add_option("--exposure", args->exposure, "Exposure in stops applied before writing")
-        ->capture_default_str()->check(CLI::Range(-64.0, 64.0));
+        ->capture_default_str()
+        ->check(CLI::Range(-64.0, 64.0));
     cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
     // --width ... --initial-radius: generated from the render block's declaration.
     auto overrides = std::make_shared<RenderOverrides>(*cmd);

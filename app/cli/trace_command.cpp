@@ -42,20 +42,30 @@ int run(const TraceArgs& a) {
 
 Action add_trace_command(CLI::App& app) {
     auto args = std::make_shared<TraceArgs>();
-    CLI::App* cmd = app.add_subcommand("trace", "Trace one ray and print the tree of its paths as JSON");
+    CLI::App* cmd =
+        app.add_subcommand("trace", "Trace one ray and print the tree of its paths as JSON");
     cmd->add_option("scene", args->scene, "Scene file (JSON)")->required();
     cmd->add_option("--origin", args->origin, "Ray origin x,y,z")
-        ->required()->delimiter(',')->expected(3);
+        ->required()
+        ->delimiter(',')
+        ->expected(3);
     cmd->add_option("--direction", args->direction, "Ray direction x,y,z (need not be unit length)")
-        ->required()->delimiter(',')->expected(3);
-    cmd->add_option("--max-depth", args->options.max_depth, "Specular bounces followed along any one path")
-        ->check(CLI::TypeValidator<int>())->check(CLI::Range(0, 1000))->capture_default_str();
+        ->required()
+        ->delimiter(',')
+        ->expected(3);
+    cmd->add_option("--max-depth", args->options.max_depth,
+                    "Specular bounces followed along any one path")
+        ->check(CLI::TypeValidator<int>())
+        ->check(CLI::Range(0, 1000))
+        ->capture_default_str();
     cmd->add_option("--min-weight", args->options.min_weight,
                     "Branches carrying less of the ray's power are dropped")
-        ->check(CLI::Range(kMinBranchWeight, 1.0))->capture_default_str();
+        ->check(CLI::Range(kMinBranchWeight, 1.0))
+        ->capture_default_str();
     cmd->add_option("-w,--wavelength", args->options.wavelength_nm,
                     "Vacuum wavelength in nm for dispersive materials (default: the d line)")
-        ->check(CLI::Range(kLambdaMinNm, 2500.0))->capture_default_str();
+        ->check(CLI::Range(kLambdaMinNm, 2500.0))
+        ->capture_default_str();
     return [args] { return run(*args); };
 }
 

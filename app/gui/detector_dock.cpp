@@ -5,7 +5,6 @@
 #include <QPixmap>
 #include <QScrollArea>
 #include <QVBoxLayout>
-
 #include <algorithm>
 
 #include "analysis/detector_files.h"
@@ -72,10 +71,12 @@ DetectorDock::DetectorDock(SceneDocument* document, QWidget* parent)
         // An edit makes the last measurement stale; the photon count follows the scene.
         stop_worker();
         m_result.reset();
-        m_photons->setValue(static_cast<int>(std::min<int64_t>(m_document->scene().render.photons, m_photons->maximum())));
+        m_photons->setValue(static_cast<int>(
+            std::min<int64_t>(m_document->scene().render.photons, m_photons->maximum())));
         refresh();
     });
-    m_photons->setValue(static_cast<int>(std::min<int64_t>(m_document->scene().render.photons, m_photons->maximum())));
+    m_photons->setValue(static_cast<int>(
+        std::min<int64_t>(m_document->scene().render.photons, m_photons->maximum())));
     refresh();
 }
 
@@ -131,9 +132,12 @@ void DetectorDock::measure() {
     // The worker reads its own copy of the scene; the result comes back queued to this
     // object (dropped if the dock is gone; the destructor joins first).
     const int generation = ++m_generation;
-    m_worker = std::thread([this, scene = m_document->scene(), settings, control = m_control.get(), generation] {
-        auto result = std::make_shared<DetectionResult>(measure_detectors(scene, settings, *control));
-        QMetaObject::invokeMethod(this, [this, result, generation] { finish(result, generation); }, Qt::QueuedConnection);
+    m_worker = std::thread([this, scene = m_document->scene(), settings, control = m_control.get(),
+                            generation] {
+        auto result =
+            std::make_shared<DetectionResult>(measure_detectors(scene, settings, *control));
+        QMetaObject::invokeMethod(
+            this, [this, result, generation] { finish(result, generation); }, Qt::QueuedConnection);
     });
 }
 
@@ -158,29 +162,35 @@ void DetectorDock::refresh() {
     }
     m_measure->setEnabled(!detectors.empty());
     if (m_object < 0) {
-        m_title->setText(tr("No detector in this scene: mark a triangle, disc or rectangle as a detector."));
+        m_title->setText(
+            tr("No detector in this scene: mark a triangle, disc or rectangle as a detector."));
         m_image = QImage();
         m_picture->clear();
         m_summary->clear();
         return;
     }
-    m_title->setText(tr("<b>%1</b>").arg(QString::fromStdString(scene.objects[size_t(m_object)].name).toHtmlEscaped()));
+    m_title->setText(
+        tr("<b>%1</b>")
+            .arg(QString::fromStdString(scene.objects[size_t(m_object)].name).toHtmlEscaped()));
     const DetectorMeasurement* m = shown_measurement();
     if (!m) {
         m_image = QImage();
         m_picture->clear();
-        if (!m_worker.joinable()) m_summary->setText(tr("Press Measure to trace photons onto the detectors."));
+        if (!m_worker.joinable())
+            m_summary->setText(tr("Press Measure to trace photons onto the detectors."));
         return;
     }
-    m_image = to_qimage(detector_image(*m, m_log->isChecked() ? ColourScale::Log : ColourScale::Linear));
+    m_image =
+        to_qimage(detector_image(*m, m_log->isChecked() ? ColourScale::Log : ColourScale::Linear));
     show_image();
     m_summary->setText(QString::fromStdString(detector_summary_text(*m)).trimmed());
 }
 
 void DetectorDock::show_image() {
     if (m_image.isNull()) return;
-    m_picture->setPixmap(QPixmap::fromImage(m_image).scaled(m_picture->size().expandedTo(QSize(160, 120)),
-                                                            Qt::KeepAspectRatio, Qt::SmoothTransformation));
+    m_picture->setPixmap(
+        QPixmap::fromImage(m_image).scaled(m_picture->size().expandedTo(QSize(160, 120)),
+                                           Qt::KeepAspectRatio, Qt::SmoothTransformation));
 }
 
 void DetectorDock::resizeEvent(QResizeEvent* event) {

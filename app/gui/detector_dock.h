@@ -5,12 +5,11 @@
 // that one. The picture is the one `lenslab detect` writes as <name>.png.
 
 #include <QCheckBox>
-#include <QImage>
 #include <QDockWidget>
+#include <QImage>
 #include <QLabel>
 #include <QPushButton>
 #include <QSpinBox>
-
 #include <atomic>
 #include <memory>
 #include <optional>
@@ -67,7 +66,7 @@ private:
     int m_object = -1;                          // the detector shown (index in objects)
     std::shared_ptr<DetectionResult> m_result;  // the last measurement, of the scene as it is
     QImage m_image;                             // its picture, unscaled
-    int m_generation = 0;                       // a measurement's result counts only if still current
+    int m_generation = 0;  // a measurement's result counts only if still current
     std::thread m_worker;
     std::unique_ptr<RenderControl> m_control;
 };

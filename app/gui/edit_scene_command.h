@@ -5,9 +5,7 @@
 // same pointer and description) merge into one step, as spin box steps should.
 
 #include <QUndoCommand>
-
 #include <nlohmann/json.hpp>
-
 #include <optional>
 #include <string>
 

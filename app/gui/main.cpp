@@ -8,7 +8,6 @@
 #include <QFileInfo>
 #include <QSaveFile>
 #include <QTimer>
-
 #include <cstdio>
 
 #include "detector_dock.h"
@@ -23,13 +22,19 @@ int main(int argc, char** argv) {
     QCommandLineParser parser;
     parser.setApplicationDescription("lenslab: edit a scene and watch light go through lenses");
     parser.addHelpOption();
-    parser.addPositionalArgument("scene", "Scene file to open (default: the built-in default scene)");
-    QCommandLineOption screenshot("screenshot", "Render, save a grab of the window to FILE and exit.", "FILE");
-    QCommandLineOption passes("passes", "Passes to render before --screenshot grabs (default 8).", "N", "8");
-    QCommandLineOption select("select", "Select an element first, by JSON pointer (e.g. /objects/1).", "POINTER");
+    parser.addPositionalArgument("scene",
+                                 "Scene file to open (default: the built-in default scene)");
+    QCommandLineOption screenshot("screenshot",
+                                  "Render, save a grab of the window to FILE and exit.", "FILE");
+    QCommandLineOption passes("passes", "Passes to render before --screenshot grabs (default 8).",
+                              "N", "8");
+    QCommandLineOption select(
+        "select", "Select an element first, by JSON pointer (e.g. /objects/1).", "POINTER");
     parser.addOption(screenshot);
     parser.addOption(passes);
-    QCommandLineOption measure("measure", "Measure the detectors and show the detector dock (with --screenshot: before the grab).");
+    QCommandLineOption measure(
+        "measure",
+        "Measure the detectors and show the detector dock (with --screenshot: before the grab).");
     parser.addOption(select);
     parser.addOption(measure);
     parser.process(app);
@@ -48,7 +53,8 @@ int main(int argc, char** argv) {
     bool measuring = parser.isSet(measure);
     if (measuring) {
         window.detector_dock()->raise();
-        QObject::connect(window.detector_dock(), &lenslab::gui::DetectorDock::measured, &window, [&] { measuring = false; });
+        QObject::connect(window.detector_dock(), &lenslab::gui::DetectorDock::measured, &window,
+                         [&] { measuring = false; });
         window.detector_dock()->measure();
         if (!window.detector_dock()->is_measuring()) measuring = false;  // no detector
     }
@@ -61,21 +67,24 @@ int main(int argc, char** argv) {
             return 2;
         }
         const QString file = parser.value(screenshot);
-        QObject::connect(window.renderer(), &lenslab::gui::RenderController::frame_ready, &window,
-                         [&](const QImage&, int done) {
-                             if (done < wanted || measuring) return;
-                             // Let the frame reach the viewport and the status bar first.
-                             QTimer::singleShot(50, &window, [&] {
-                                 // Atomic, like every file lenslab writes.
-                                 QSaveFile out(file);
-                                 const bool saved = out.open(QIODevice::WriteOnly) &&
-                                                    window.grab().toImage().save(&out, QFileInfo(file).suffix().toLatin1().constData()) &&
-                                                    out.commit();
-                                 std::fprintf(saved ? stdout : stderr, saved ? "wrote %s\n" : "lenslab-gui: error: cannot write %s\n",
-                                              qPrintable(file));
-                                 QApplication::exit(saved ? 0 : 1);
-                             });
-                         });
+        QObject::connect(
+            window.renderer(), &lenslab::gui::RenderController::frame_ready, &window,
+            [&](const QImage&, int done) {
+                if (done < wanted || measuring) return;
+                // Let the frame reach the viewport and the status bar first.
+                QTimer::singleShot(50, &window, [&] {
+                    // Atomic, like every file lenslab writes.
+                    QSaveFile out(file);
+                    const bool saved = out.open(QIODevice::WriteOnly) &&
+                                       window.grab().toImage().save(
+                                           &out, QFileInfo(file).suffix().toLatin1().constData()) &&
+                                       out.commit();
+                    std::fprintf(saved ? stdout : stderr,
+                                 saved ? "wrote %s\n" : "lenslab-gui: error: cannot write %s\n",
+                                 qPrintable(file));
+                    QApplication::exit(saved ? 0 : 1);
+                });
+            });
         QTimer::singleShot(600000, &app, [] {
             std::fprintf(stderr, "lenslab-gui: error: --screenshot timed out\n");
             QApplication::exit(1);

@@ -35,40 +35,59 @@ constexpr int kMaxRecent = 8;
 // A new element of each kind, placed where the camera looks.
 json new_element(const QString& kind, const json& at) {
     if (kind == "sphere") {
-        return {{"type", "sphere"}, {"name", "sphere"}, {"center", at}, {"radius", 0.4},
+        return {{"type", "sphere"},
+                {"name", "sphere"},
+                {"center", at},
+                {"radius", 0.4},
                 {"material", {{"color", {0.7, 0.7, 0.7}}}}};
     }
     if (kind == "triangle") {
         const double x = at[0], y = at[1], z = at[2];
-        return {{"type", "triangle"}, {"name", "triangle"},
+        return {{"type", "triangle"},
+                {"name", "triangle"},
                 {"vertices", {{x - 0.5, y - 0.5, z}, {x + 0.5, y - 0.5, z}, {x, y + 0.5, z}}},
                 {"material", {{"color", {0.7, 0.7, 0.7}}}}};
     }
     if (kind == "disc" || kind == "rectangle") {
         // A screen facing +z, marked as a detector.
-        json screen{{"type", kind.toStdString()}, {"name", kind == "disc" ? "detector disc" : "detector screen"},
-                    {"center", at}, {"normal", {0, 0, 1}}, {"material", {{"color", {0.7, 0.7, 0.7}}}},
+        json screen{{"type", kind.toStdString()},
+                    {"name", kind == "disc" ? "detector disc" : "detector screen"},
+                    {"center", at},
+                    {"normal", {0, 0, 1}},
+                    {"material", {{"color", {0.7, 0.7, 0.7}}}},
                     {"detector", {{"resolution", 64}}}};
-        if (kind == "disc") screen["radius"] = 0.5;
-        else screen["size"] = {1.0, 1.0};
+        if (kind == "disc")
+            screen["radius"] = 0.5;
+        else
+            screen["size"] = {1.0, 1.0};
         return screen;
     }
     if (kind == "lens") {
-        return {{"type", "lens"}, {"name", "lens"}, {"center", at}, {"axis", {0, 0, 1}},
-                {"thickness", 0.3}, {"diameter", 1.0},
+        return {{"type", "lens"},
+                {"name", "lens"},
+                {"center", at},
+                {"axis", {0, 0, 1}},
+                {"thickness", 0.3},
+                {"diameter", 1.0},
                 {"front", {{"shape", "sphere"}, {"radius", 1.5}}},
                 {"back", {{"shape", "sphere"}, {"radius", -1.5}}},
                 {"material", {{"color", 1}, {"transparency", 1}, {"ior", 1.5}}}};
     }
     if (kind == "implicit") {
         // A glass torus around the vertical axis: (distance from the axis - 0.4)^2 + y^2 <= 0.15^2.
-        return {{"type", "implicit"}, {"name", "torus"}, {"center", at},
+        return {{"type", "implicit"},
+                {"name", "torus"},
+                {"center", at},
                 {"formula", "(sqrt(x^2 + z^2) - 0.4)^2 + y^2 - 0.15^2"},
                 {"bounds", {{-0.6, -0.2, -0.6}, {0.6, 0.2, 0.6}}},
                 {"material", {{"color", 1}, {"transparency", 1}, {"ior", 1.5}}}};
     }
     if (kind == "point") return {{"type", "point"}, {"position", {0, 4, 0}}, {"power", 100}};
-    return {{"type", "beam"}, {"origin", {0, 4, 0}}, {"direction", {0, -1, 0}}, {"radius", 0.3}, {"power", 10}};
+    return {{"type", "beam"},
+            {"origin", {0, 4, 0}},
+            {"direction", {0, -1, 0}},
+            {"radius", 0.3},
+            {"power", 10}};
 }
 
 }  // namespace
@@ -119,10 +138,14 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_document->undo_stack(), &QUndoStack::cleanChanged, this, &MainWindow::update_title);
     connect(m_document, &SceneDocument::path_changed, this, &MainWindow::update_title);
     connect(m_renderer, &RenderController::frame_ready, this,
-            [this](const QImage& image, int passes, qint64 photons, double seconds, const QString& integrator) {
+            [this](const QImage& image, int passes, qint64 photons, double seconds,
+                   const QString& integrator) {
                 m_viewport->set_image(image);
                 m_status->setText(tr("%1 · passes %2 · photons %3 · %4 s")
-                                      .arg(integrator).arg(passes).arg(photons).arg(seconds, 0, 'f', 1));
+                                      .arg(integrator)
+                                      .arg(passes)
+                                      .arg(photons)
+                                      .arg(seconds, 0, 'f', 1));
             });
     connect(m_renderer, &RenderController::render_failed, this, &MainWindow::show_message);
 
@@ -149,11 +172,13 @@ void MainWindow::build_menus() {
     });
     file->addAction(tr("&Open..."), QKeySequence::Open, this, [this] {
         if (!maybe_save()) return;
-        const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), QString(), tr("Scenes (*.json)"));
+        const QString path =
+            QFileDialog::getOpenFileName(this, tr("Open scene"), QString(), tr("Scenes (*.json)"));
         if (!path.isEmpty()) open_file(path);
     });
     QMenu* examples = file->addMenu(tr("Open &example"));
-    for (const QFileInfo& info : QDir(LENSLAB_SCENES_DIR).entryInfoList({"*.json"}, QDir::Files, QDir::Name)) {
+    for (const QFileInfo& info :
+         QDir(LENSLAB_SCENES_DIR).entryInfoList({"*.json"}, QDir::Files, QDir::Name)) {
         examples->addAction(info.baseName(), this, [this, path = info.absoluteFilePath()] {
             if (maybe_save()) open_file(path);
         });
@@ -177,21 +202,22 @@ void MainWindow::build_menus() {
     edit->addSeparator();
     QToolBar* tools = addToolBar(tr("Edit"));
     tools->setObjectName("edit_toolbar");
-    for (const auto& [kind, label] : {std::pair{"sphere", tr("Add sphere")}, std::pair{"triangle", tr("Add triangle")},
-                                      std::pair{"disc", tr("Add detector disc")},
-                                      std::pair{"rectangle", tr("Add detector rectangle")},
-                                      std::pair{"lens", tr("Add lens")},
-                                      std::pair{"implicit", tr("Add implicit solid")},
-                                      std::pair{"point", tr("Add point light")},
-                                      std::pair{"beam", tr("Add beam")}}) {
+    for (const auto& [kind, label] :
+         {std::pair{"sphere", tr("Add sphere")}, std::pair{"triangle", tr("Add triangle")},
+          std::pair{"disc", tr("Add detector disc")},
+          std::pair{"rectangle", tr("Add detector rectangle")}, std::pair{"lens", tr("Add lens")},
+          std::pair{"implicit", tr("Add implicit solid")},
+          std::pair{"point", tr("Add point light")}, std::pair{"beam", tr("Add beam")}}) {
         QAction* a = edit->addAction(label, this, [this, k = QString(kind)] { add_element(k); });
         tools->addAction(a);
     }
-    edit->addAction(tr("&Duplicate"), QKeySequence(tr("Ctrl+D")), this, &MainWindow::duplicate_selected);
+    edit->addAction(tr("&Duplicate"), QKeySequence(tr("Ctrl+D")), this,
+                    &MainWindow::duplicate_selected);
     edit->addAction(tr("De&lete"), QKeySequence::Delete, this, &MainWindow::delete_selected);
 
     QMenu* render = menuBar()->addMenu(tr("&Render"));
-    QAction* start = render->addAction(tr("&Start"), this, [this] { m_renderer->restart(m_document->scene(), 0); });
+    QAction* start = render->addAction(tr("&Start"), this,
+                                       [this] { m_renderer->restart(m_document->scene(), 0); });
     QAction* stop = render->addAction(tr("S&top"), this, [this] { m_renderer->stop_rendering(); });
     render->addSeparator();
     // The view renders with sppm, which converges to the full light transport; the scene's
@@ -210,7 +236,8 @@ void MainWindow::build_menus() {
 }
 
 void MainWindow::update_title() {
-    const QString name = m_document->path().isEmpty() ? tr("default scene") : QFileInfo(m_document->path()).fileName();
+    const QString name = m_document->path().isEmpty() ? tr("default scene")
+                                                      : QFileInfo(m_document->path()).fileName();
     setWindowTitle(QString("%1%2 — lenslab").arg(name, m_document->is_modified() ? " *" : ""));
 }
 
@@ -222,7 +249,8 @@ bool MainWindow::open_file(const QString& path, QString* error) {
         if (error) {
             *error = message;
         } else {
-            auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open scene"), message, QMessageBox::Ok, this);
+            auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open scene"), message,
+                                        QMessageBox::Ok, this);
             box->setAttribute(Qt::WA_DeleteOnClose);
             box->open();
         }
@@ -237,25 +265,31 @@ bool MainWindow::open_file(const QString& path, QString* error) {
 bool MainWindow::save_file(const QString& path, QString* error) {
     QString message;
     if (!m_document->save(path, &message)) {
-        if (error) *error = message;
-        else QMessageBox::warning(this, tr("Cannot save"), message);
+        if (error)
+            *error = message;
+        else
+            QMessageBox::warning(this, tr("Cannot save"), message);
         return false;
     }
     remember_recent(path);
     return true;
 }
 
-bool MainWindow::save() { return m_document->path().isEmpty() ? save_as() : save_file(m_document->path()); }
+bool MainWindow::save() {
+    return m_document->path().isEmpty() ? save_as() : save_file(m_document->path());
+}
 
 bool MainWindow::save_as() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save scene"), m_document->path(), tr("Scenes (*.json)"));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save scene"), m_document->path(),
+                                                      tr("Scenes (*.json)"));
     return !path.isEmpty() && save_file(path);
 }
 
 bool MainWindow::maybe_save() {
     if (!m_document->is_modified()) return true;
-    const auto answer = QMessageBox::question(this, tr("Unsaved changes"), tr("Save the changes to this scene?"),
-                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    const auto answer =
+        QMessageBox::question(this, tr("Unsaved changes"), tr("Save the changes to this scene?"),
+                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save) return save();
     return answer == QMessageBox::Discard;
 }
@@ -270,7 +304,8 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 }
 
 void MainWindow::export_image() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export image"), "lenslab.png", tr("Images (*.png *.exr)"));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export image"), "lenslab.png",
+                                                      tr("Images (*.png *.exr)"));
     if (!path.isEmpty()) export_image_to(path);
 }
 
@@ -278,8 +313,10 @@ bool MainWindow::export_image_to(const QString& path, QString* error) {
     try {
         write_image(m_renderer->last_film(), path.toStdString());
     } catch (const std::exception& e) {
-        if (error) *error = QString::fromStdString(e.what());
-        else QMessageBox::warning(this, tr("Cannot export"), QString::fromStdString(e.what()));
+        if (error)
+            *error = QString::fromStdString(e.what());
+        else
+            QMessageBox::warning(this, tr("Cannot export"), QString::fromStdString(e.what()));
         return false;
     }
     show_message(tr("wrote %1").arg(path));

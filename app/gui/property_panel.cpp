@@ -7,7 +7,6 @@
 #include <QLineEdit>
 #include <QSpinBox>
 #include <QVBoxLayout>
-
 #include <algorithm>
 #include <cmath>
 
@@ -18,10 +17,10 @@
 #include "scene/camera_spec.h"
 #include "scene/json_reader.h"
 #include "scene/light_spec.h"
+#include "scene/material.h"
 #include "scene/material_spec.h"
 #include "scene/object_spec.h"
 #include "scene/planar_json.h"
-#include "scene/material.h"
 #include "scene/render_settings_spec.h"
 #include "scene/surface_json.h"
 #include "scene_document.h"
@@ -39,7 +38,8 @@ QStringList to_qt(const std::vector<std::string>& names) {
 }
 
 // Spin boxes shrink with the panel instead of sizing themselves for their widest value.
-QDoubleSpinBox* make_spin_box(QWidget* parent, const std::string& name, int decimals, double min, double max) {
+QDoubleSpinBox* make_spin_box(QWidget* parent, const std::string& name, int decimals, double min,
+                              double max) {
     auto* box = new QDoubleSpinBox(parent);
     box->setObjectName(QString::fromStdString("field:" + name));
     box->setDecimals(decimals);
@@ -72,11 +72,13 @@ std::string sag_formula_of(const json& s) {
     if (!s.contains("radius")) return "0";
     const double radius = s.value("radius", 1.0), k = s.value("k", 0.0);
     const std::string q = k == 0 ? "" : term(1 + k) + "*";
-    std::string f = "r^2/(" + term(radius) + "*(1 + sqrt(1 - " + q + "r^2/" + term(radius) + "^2)))";
+    std::string f =
+        "r^2/(" + term(radius) + "*(1 + sqrt(1 - " + q + "r^2/" + term(radius) + "^2)))";
     if (s.contains("coefficients") && s["coefficients"].is_array()) {
         int power = 4;
         for (const json& a : s["coefficients"]) {
-            if (a.is_number() && a.get<double>() != 0) f += " + " + term(a.get<double>()) + "*r^" + std::to_string(power);
+            if (a.is_number() && a.get<double>() != 0)
+                f += " + " + term(a.get<double>()) + "*r^" + std::to_string(power);
             power += 2;
         }
     }
@@ -91,8 +93,11 @@ json surface_of_shape(const std::string& chosen, const json* current, double dia
     const double radius = old.contains("radius") ? old["radius"].get<double>() : 2.0 * diameter;
     if (chosen == "sphere" || chosen == "conic" || chosen == "asphere") s["radius"] = radius;
     if (chosen == "conic" || chosen == "asphere") s["k"] = old.value("k", 0.0);
-    if (chosen == "asphere") s["coefficients"] = old.contains("coefficients") ? old["coefficients"] : json::array({0.0});
-    if (chosen == "sag") s["formula"] = old.contains("formula") ? old["formula"].get<std::string>() : sag_formula_of(old);
+    if (chosen == "asphere")
+        s["coefficients"] = old.contains("coefficients") ? old["coefficients"] : json::array({0.0});
+    if (chosen == "sag")
+        s["formula"] =
+            old.contains("formula") ? old["formula"].get<std::string>() : sag_formula_of(old);
     return s;
 }
 
@@ -112,7 +117,8 @@ struct CheckedLineEdit {
     QLabel* problem;
 };
 
-CheckedLineEdit make_checked_line_edit(QWidget* parent, const std::string& key, const std::string& problem_name) {
+CheckedLineEdit make_checked_line_edit(QWidget* parent, const std::string& key,
+                                       const std::string& problem_name) {
     auto* box = new QWidget(parent);
     auto* v = new QVBoxLayout(box);
     v->setContentsMargins(0, 0, 0, 0);
@@ -185,11 +191,16 @@ void PropertyPanel::rebuild() {
     static_cast<QVBoxLayout*>(layout())->insertWidget(0, m_form_widget);
     const json& doc = m_document->json();
     if (m_pointer.isEmpty() || !doc.contains(json::json_pointer(m_pointer.toStdString()))) return;
-    if (m_pointer == "/camera") build_camera();
-    else if (m_pointer == "/render") build_render();
-    else if (m_pointer.startsWith("/materials/")) build_material("");
-    else if (m_pointer.startsWith("/objects/")) build_object();
-    else if (m_pointer.startsWith("/lights/")) build_light();
+    if (m_pointer == "/camera")
+        build_camera();
+    else if (m_pointer == "/render")
+        build_render();
+    else if (m_pointer.startsWith("/materials/"))
+        build_material("");
+    else if (m_pointer.startsWith("/objects/"))
+        build_object();
+    else if (m_pointer.startsWith("/lights/"))
+        build_light();
 }
 
 void PropertyPanel::add_heading(const QString& text) {
@@ -202,9 +213,8 @@ void PropertyPanel::add_number(const QString& label, const std::string& key, dou
     auto* box = make_spin_box(m_form_widget, key, decimals, min, max);
     const json* v = value_at(key);
     box->setValue(v && v->is_number() ? v->get<double>() : fallback);
-    connect(box, &QDoubleSpinBox::editingFinished, this, [this, box, key, label] {
-        commit(key, box->value(), label);
-    });
+    connect(box, &QDoubleSpinBox::editingFinished, this,
+            [this, box, key, label] { commit(key, box->value(), label); });
     m_form->addRow(label, box);
 }
 
@@ -214,9 +224,8 @@ void PropertyPanel::add_integer(const QString& label, const std::string& key, lo
     auto* box = make_spin_box(m_form_widget, key, 0, double(min), double(max));
     const json* v = value_at(key);
     box->setValue(v && v->is_number() ? v->get<double>() : double(fallback));
-    connect(box, &QDoubleSpinBox::editingFinished, this, [this, box, key, label] {
-        commit(key, static_cast<long long>(box->value()), label);
-    });
+    connect(box, &QDoubleSpinBox::editingFinished, this,
+            [this, box, key, label] { commit(key, static_cast<long long>(box->value()), label); });
     m_form->addRow(label, box);
 }
 
@@ -236,20 +245,22 @@ void PropertyPanel::add_vec3(const QString& label, const std::string& key, const
     }
     for (int i = 0; i < 3; ++i) {
         connect(boxes[i], &QDoubleSpinBox::editingFinished, this, [this, boxes, key, label] {
-            commit(key, json::array({boxes[0]->value(), boxes[1]->value(), boxes[2]->value()}), label);
+            commit(key, json::array({boxes[0]->value(), boxes[1]->value(), boxes[2]->value()}),
+                   label);
         });
     }
     m_form->addRow(label, row);
 }
 
-void PropertyPanel::add_choice(const QString& label, const std::string& key, const std::string& fallback,
-                               const QStringList& choices,
+void PropertyPanel::add_choice(const QString& label, const std::string& key,
+                               const std::string& fallback, const QStringList& choices,
                                const std::function<void(const std::string&)>& on_choose) {
     auto* box = new QComboBox(m_form_widget);
     box->setObjectName(QString::fromStdString("field:" + key));
     box->addItems(choices);
     const json* v = value_at(key);
-    box->setCurrentText(QString::fromStdString(v && v->is_string() ? v->get<std::string>() : fallback));
+    box->setCurrentText(
+        QString::fromStdString(v && v->is_string() ? v->get<std::string>() : fallback));
     connect(box, &QComboBox::activated, this, [this, box, key, label, on_choose] {
         const std::string chosen = box->currentText().toStdString();
         if (on_choose) {
@@ -261,39 +272,45 @@ void PropertyPanel::add_choice(const QString& label, const std::string& key, con
     m_form->addRow(label, box);
 }
 
-void PropertyPanel::add_flag(const QString& label, const std::string& key, const QString& when_absent) {
+void PropertyPanel::add_flag(const QString& label, const std::string& key,
+                             const QString& when_absent) {
     const json* v = value_at(key);
-    const QString current = v && v->is_boolean() ? (v->get<bool>() ? tr("yes") : tr("no")) : when_absent;
+    const QString current =
+        v && v->is_boolean() ? (v->get<bool>() ? tr("yes") : tr("no")) : when_absent;
     QStringList choices{tr("yes"), tr("no")};
     if (when_absent == tr("auto")) choices.prepend(when_absent);
-    add_choice(label, key, current.toStdString(), choices, [this, key, label](const std::string& chosen) {
-        const json* here = value_at("");
-        json element = here ? *here : json::object();
-        if (chosen == tr("auto").toStdString()) {
-            element.erase(key);
-        } else {
-            element[key] = chosen == tr("yes").toStdString();
-        }
-        commit("", element, label);
-    });
+    add_choice(label, key, current.toStdString(), choices,
+               [this, key, label](const std::string& chosen) {
+                   const json* here = value_at("");
+                   json element = here ? *here : json::object();
+                   if (chosen == tr("auto").toStdString()) {
+                       element.erase(key);
+                   } else {
+                       element[key] = chosen == tr("yes").toStdString();
+                   }
+                   commit("", element, label);
+               });
 }
 
-void PropertyPanel::add_text(const QString& label, const std::string& key, const std::string& fallback) {
+void PropertyPanel::add_text(const QString& label, const std::string& key,
+                             const std::string& fallback) {
     auto* edit = new QLineEdit(m_form_widget);
     edit->setObjectName(QString::fromStdString("field:" + key));
     const json* v = value_at(key);
     edit->setText(QString::fromStdString(v && v->is_string() ? v->get<std::string>() : fallback));
-    connect(edit, &QLineEdit::editingFinished, this, [this, edit, key, label] {
-        commit(key, edit->text().toStdString(), label);
-    });
+    connect(edit, &QLineEdit::editingFinished, this,
+            [this, edit, key, label] { commit(key, edit->text().toStdString(), label); });
     m_form->addRow(label, edit);
 }
 
-void PropertyPanel::add_formula(const QString& label, const std::string& key, const std::string& fallback,
-                                const std::function<std::optional<std::string>(const std::string&)>& check) {
-    const auto [box, edit, problem] = make_checked_line_edit(m_form_widget, key, "formula_error:" + key);
+void PropertyPanel::add_formula(
+    const QString& label, const std::string& key, const std::string& fallback,
+    const std::function<std::optional<std::string>(const std::string&)>& check) {
+    const auto [box, edit, problem] =
+        make_checked_line_edit(m_form_widget, key, "formula_error:" + key);
     const json* current = value_at(key);
-    edit->setText(QString::fromStdString(current && current->is_string() ? current->get<std::string>() : fallback));
+    edit->setText(QString::fromStdString(
+        current && current->is_string() ? current->get<std::string>() : fallback));
     // Checked on every keystroke (muparser parses a short formula in microseconds).
     auto validate = [edit, problem, check] {
         const auto reason = check(edit->text().toStdString());
@@ -308,9 +325,10 @@ void PropertyPanel::add_formula(const QString& label, const std::string& key, co
     m_form->addRow(label, box);
 }
 
-void PropertyPanel::add_number_list(const QString& label, const std::string& key, const json& fallback,
-                                    size_t max_count) {
-    const auto [box, edit, problem] = make_checked_line_edit(m_form_widget, key, "list_error:" + key);
+void PropertyPanel::add_number_list(const QString& label, const std::string& key,
+                                    const json& fallback, size_t max_count) {
+    const auto [box, edit, problem] =
+        make_checked_line_edit(m_form_widget, key, "list_error:" + key);
     const json* current = value_at(key);
     QStringList shown;
     for (const json& x : (current && current->is_array() ? *current : fallback)) {
@@ -371,15 +389,24 @@ void PropertyPanel::add_param(const ParamSpec& p, const std::string& prefix) {
         case ParamKind::Choice:
             add_choice(label, key, d.get<std::string>(), to_qt(p.choices));
             break;
-        case ParamKind::String: add_text(label, key, d.is_string() ? d.get<std::string>() : ""); break;
-        case ParamKind::Colour: add_vec3(label, key, as_triple(d), 0, 1e6); break;
-        case ParamKind::Albedo: add_vec3(label, key, as_triple(d), 0, 1); break;
-        case ParamKind::Point: add_vec3(label, key, d.is_null() ? json::array({0, 0, 0}) : d); break;
+        case ParamKind::String:
+            add_text(label, key, d.is_string() ? d.get<std::string>() : "");
+            break;
+        case ParamKind::Colour:
+            add_vec3(label, key, as_triple(d), 0, 1e6);
+            break;
+        case ParamKind::Albedo:
+            add_vec3(label, key, as_triple(d), 0, 1);
+            break;
+        case ParamKind::Point:
+            add_vec3(label, key, d.is_null() ? json::array({0, 0, 0}) : d);
+            break;
         case ParamKind::Direction:
             add_vec3(label, key, d.is_null() ? json::array({0, 0, -1}) : d);
             break;
         case ParamKind::Object:
-        case ParamKind::Array: break;  // nested things have forms of their own
+        case ParamKind::Array:
+            break;  // nested things have forms of their own
     }
 }
 
@@ -408,14 +435,15 @@ void PropertyPanel::build_render() {
 
 void PropertyPanel::build_material(const std::string& prefix) {
     const ElementSpec& declared = material_spec();
-    for (const char* key : {"color", "transparency", "specular"}) add_param(declared.param(key), prefix);
+    for (const char* key : {"color", "transparency", "specular"})
+        add_param(declared.param(key), prefix);
     // Glass picker: a catalogue glass, or a constant index typed in.
     QStringList glasses{tr("constant index")};
     for (const Glass& g : glass_catalogue()) glasses << QString::fromStdString(g.name);
     const json* glass = value_at(prefix + "glass");
     const std::string material_key = prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1);
-    add_choice(tr("Glass"), prefix + "glass", glass ? glass->get<std::string>() : "constant index", glasses,
-               [this, material_key](const std::string& chosen) {
+    add_choice(tr("Glass"), prefix + "glass", glass ? glass->get<std::string>() : "constant index",
+               glasses, [this, material_key](const std::string& chosen) {
                    json material = *value_at(material_key);
                    material.erase("glass");
                    material.erase("ior");
@@ -430,7 +458,8 @@ void PropertyPanel::build_material(const std::string& prefix) {
     if (!glass && (!ior || ior->is_number())) {
         add_param(declared.param("ior"), prefix);
     } else if (!glass) {
-        m_form->addRow(tr("Refractive index"), new QLabel(tr("dispersion model (edit the file)"), m_form_widget));
+        m_form->addRow(tr("Refractive index"),
+                       new QLabel(tr("dispersion model (edit the file)"), m_form_widget));
     }
     // Shown as 0 while there is no emission (the intensity an emission block defaults to is 1).
     const json* emission = value_at(prefix + "emission");
@@ -454,7 +483,8 @@ void PropertyPanel::build_object() {
         add_param(sphere_spec().param("radius"));
     } else if (type == "triangle") {
         for (int i = 0; i < 3; ++i) {
-            add_vec3(tr("Vertex %1").arg(i + 1), "vertices/" + std::to_string(i), json::array({0, 0, 0}));
+            add_vec3(tr("Vertex %1").arg(i + 1), "vertices/" + std::to_string(i),
+                     json::array({0, 0, 0}));
         }
     } else if (type == "disc" || type == "rectangle") {
         build_flat(type);
@@ -476,7 +506,8 @@ void PropertyPanel::build_object() {
 void PropertyPanel::build_material_ref(const QString& label, const std::string& key) {
     QStringList names;
     if (m_document->json().contains("materials")) {
-        for (const auto& [name, v] : m_document->json()["materials"].items()) names << QString::fromStdString(name);
+        for (const auto& [name, v] : m_document->json()["materials"].items())
+            names << QString::fromStdString(name);
     }
     const json* m = value_at(key);
     if (m && m->is_string()) {
@@ -528,9 +559,10 @@ void PropertyPanel::build_surface(const QString& label, const std::string& key) 
     const double diameter = value_at("diameter") ? value_at("diameter")->get<double>() : 1.0;
     QStringList shapes;
     for (const std::string& name : kSurfaceShapeNames) shapes << QString::fromStdString(name);
-    add_choice(label, key + "/shape", shape, shapes, [this, key, label, diameter](const std::string& chosen) {
-        commit(key, surface_of_shape(chosen, value_at(key), diameter), label);
-    });
+    add_choice(label, key + "/shape", shape, shapes,
+               [this, key, label, diameter](const std::string& chosen) {
+                   commit(key, surface_of_shape(chosen, value_at(key), diameter), label);
+               });
     if (shape == "sphere" || shape == "conic" || shape == "asphere") {
         add_number(label + tr(" radius (signed)"), key + "/radius", 2.0 * diameter, -1e6, 1e6);
     }
@@ -538,10 +570,12 @@ void PropertyPanel::build_surface(const QString& label, const std::string& key) 
         add_number(label + tr(" conic constant k"), key + "/k", 0.0, -1e6, 1e6);
     }
     if (shape == "asphere") {
-        add_number_list(label + tr(" A4, A6, ... A16"), key + "/coefficients", json::array({0.0}), 7);
+        add_number_list(label + tr(" A4, A6, ... A16"), key + "/coefficients", json::array({0.0}),
+                        7);
     }
     if (shape == "sag") {
-        add_formula(label + tr(" z(r) or z(x, y)"), key + "/formula", "r^2/100", SagFormulaSurface::check);
+        add_formula(label + tr(" z(r) or z(x, y)"), key + "/formula", "r^2/100",
+                    SagFormulaSurface::check);
     }
 }
 
@@ -563,12 +597,15 @@ void PropertyPanel::build_detector() {
     add_heading(tr("Detector"));
     const json* d = value_at("detector");
     const bool on = d && !(d->is_boolean() && !d->get<bool>());
-    add_choice(tr("Measures irradiance"), "detector", on ? "yes" : "no", {"no", "yes"}, [this](const std::string& chosen) {
-        json element = *value_at("");
-        if (chosen == "yes") element["detector"] = {{"resolution", 64}};
-        else element.erase("detector");
-        commit("", element, tr("detector"));
-    });
+    add_choice(tr("Measures irradiance"), "detector", on ? "yes" : "no", {"no", "yes"},
+               [this](const std::string& chosen) {
+                   json element = *value_at("");
+                   if (chosen == "yes")
+                       element["detector"] = {{"resolution", 64}};
+                   else
+                       element.erase("detector");
+                   commit("", element, tr("detector"));
+               });
     if (!on) return;
     const json* resolution = value_at("detector/resolution");
     if (resolution && resolution->is_array()) {
@@ -580,10 +617,12 @@ void PropertyPanel::build_detector() {
     add_choice(tr("Face counted"), "detector/side", "front", {"front", "back", "both"});
     // A number of bands shows as the edges it stands for (equal bands over 360-830 nm).
     json edges = json::array({360, 490, 585, 830});
-    if (const json* bands = value_at("detector/bands"); bands && bands->is_number_integer() && bands->get<int>() > 0) {
+    if (const json* bands = value_at("detector/bands");
+        bands && bands->is_number_integer() && bands->get<int>() > 0) {
         edges = json::array();
         const int n = bands->get<int>();
-        for (int i = 0; i <= n; ++i) edges.push_back(kLambdaMinNm + (kLambdaMaxNm - kLambdaMinNm) * i / n);
+        for (int i = 0; i <= n; ++i)
+            edges.push_back(kLambdaMinNm + (kLambdaMaxNm - kLambdaMinNm) * i / n);
     }
     add_number_list(tr("Band edges (nm)"), "detector/bands", edges, 17);
     add_text(tr("Length unit"), "detector/unit", "unit");
@@ -593,8 +632,8 @@ void PropertyPanel::build_implicit() {
     const ElementSpec& declared = implicit_spec();
     add_param(declared.param("center"));
     // The formula is checked as it is typed; the bounds are two corners.
-    add_formula(QString::fromStdString(declared.param("formula").label), "formula", "x^2 + y^2 + z^2 - 1",
-                ImplicitSolid::check);
+    add_formula(QString::fromStdString(declared.param("formula").label), "formula",
+                "x^2 + y^2 + z^2 - 1", ImplicitSolid::check);
     add_vec3(tr("Bounds, lower corner"), "bounds/0", json::array({-1, -1, -1}));
     add_vec3(tr("Bounds, upper corner"), "bounds/1", json::array({1, 1, 1}));
     add_param(declared.param("steps"));
@@ -614,7 +653,8 @@ void PropertyPanel::build_spectrum(const std::string& prefix) {
     const json* spectrum = value_at(prefix + "spectrum");
     std::string kind = "colour";
     if (spectrum && spectrum->is_string()) kind = "d65";
-    if (spectrum && spectrum->is_object()) kind = spectrum->contains("blackbody") ? "blackbody" : "line";
+    if (spectrum && spectrum->is_object())
+        kind = spectrum->contains("blackbody") ? "blackbody" : "line";
     const std::string owner = prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1);
     add_choice(tr("Spectrum"), prefix + "spectrum", kind, {"colour", "d65", "blackbody", "line"},
                [this, owner](const std::string& chosen) {
@@ -627,8 +667,10 @@ void PropertyPanel::build_spectrum(const std::string& prefix) {
                    commit(owner, element, tr("spectrum"));
                });
     if (kind == "colour") add_vec3(tr("Colour"), prefix + "color", json::array({1, 1, 1}), 0, 1e6);
-    if (kind == "blackbody") add_number(tr("Temperature (K)"), prefix + "spectrum/blackbody", 3000, 500, 100000, 0);
-    if (kind == "line") add_number(tr("Wavelength (nm)"), prefix + "spectrum/line", 532, 360, 830, 1);
+    if (kind == "blackbody")
+        add_number(tr("Temperature (K)"), prefix + "spectrum/blackbody", 3000, 500, 100000, 0);
+    if (kind == "line")
+        add_number(tr("Wavelength (nm)"), prefix + "spectrum/line", 532, 360, 830, 1);
 }
 
 }  // namespace lenslab::gui

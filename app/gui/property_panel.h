@@ -1,23 +1,21 @@
 #pragma once
 // Edits what is selected in the scene tree: a form of typed fields (numbers with their valid
 // ranges, vectors, colours, choices) built for the kind of element selected: camera, render
-// settings, material, sphere, triangle, disc, rectangle (and the detector flag of these three), lens (both forms, every surface shape: flat, sphere,
-// conic, asphere, typed sag formula), implicit solid, light. Formulas are checked as they
-// are typed: the reason one would be refused shows next to the field at once, and the
-// field commits only a formula that parses.
-// Each committed field is one undoable edit; a value the scene reader refuses is not
-// applied and the reason shows under the form.
+// settings, material, sphere, triangle, disc, rectangle (and the detector flag of these three),
+// lens (both forms, every surface shape: flat, sphere, conic, asphere, typed sag formula), implicit
+// solid, light. Formulas are checked as they are typed: the reason one would be refused shows next
+// to the field at once, and the field commits only a formula that parses. Each committed field is
+// one undoable edit; a value the scene reader refuses is not applied and the reason shows under the
+// form.
 
 #include <QLabel>
 #include <QPointer>
 #include <QWidget>
-
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "scene/param_spec.h"
 
@@ -67,8 +65,8 @@ private:
     void add_formula(const QString& label, const std::string& key, const std::string& fallback,
                      const std::function<std::optional<std::string>(const std::string&)>& check);
     // Comma-separated numbers committed as a JSON array (asphere coefficients).
-    void add_number_list(const QString& label, const std::string& key, const nlohmann::json& fallback,
-                         size_t max_count);
+    void add_number_list(const QString& label, const std::string& key,
+                         const nlohmann::json& fallback, size_t max_count);
     void add_heading(const QString& text);
     // A declared parameter's field (param_spec.h): its label, fallback, range and choices.
     void add_param(const ParamSpec& p, const std::string& prefix = "");

@@ -41,7 +41,8 @@ void RayDiagramView::paintEvent(QPaintEvent*) {
     const auto at = [&](const DiagramPoint& p) { return QPointF(v.x(p.z), v.y(p.y)); };
 
     // Rays leaving a diverging lens run out of the frame: clip them to the diagram's box.
-    painter.setClipRect(QRectF(QPointF(v.x(d.z_min), v.y(d.y_max)), QPointF(v.x(d.z_max), v.y(d.y_min))));
+    painter.setClipRect(
+        QRectF(QPointF(v.x(d.z_min), v.y(d.y_max)), QPointF(v.x(d.z_max), v.y(d.y_min))));
     for (const DiagramPath& p : d.paths) {
         QPolygonF polygon;
         for (const DiagramPoint& q : p.points) polygon << at(q);
@@ -144,12 +145,13 @@ void RayDiagramDock::refresh() {
         options.spot_rings = kSpotRings;
         const LensReport report = analyze_lens_system(system, options);
         m_view->set_diagram(make_ray_diagram(system, report));
-        m_message->setText(tr("%1 lens(es) · EFL %2 · BFL %3 · RMS spot %4 at best focus (%5 nm; scene units)")
-                               .arg(system.elements.size())
-                               .arg(report.paraxial.efl, 0, 'f', 3)
-                               .arg(report.paraxial.bfl, 0, 'f', 3)
-                               .arg(report.spot_best.rms_radius, 0, 'g', 3)
-                               .arg(report.wavelength_nm, 0, 'f', 2));
+        m_message->setText(
+            tr("%1 lens(es) · EFL %2 · BFL %3 · RMS spot %4 at best focus (%5 nm; scene units)")
+                .arg(system.elements.size())
+                .arg(report.paraxial.efl, 0, 'f', 3)
+                .arg(report.paraxial.bfl, 0, 'f', 3)
+                .arg(report.spot_best.rms_radius, 0, 'g', 3)
+                .arg(report.wavelength_nm, 0, 'f', 2));
     } catch (const SceneError& e) {
         m_view->set_diagram(std::nullopt);
         m_message->setText(tr("No ray diagram: %1").arg(QString::fromStdString(e.what())));

@@ -117,7 +117,8 @@ void RenderController::run() {
                     m_last = film;
                 }
                 const double seconds = clock.elapsed() / 1000.0;
-                emit frame_ready(to_qimage(film), render.passes(), qint64(render.stats(seconds).photons), seconds,
+                emit frame_ready(to_qimage(film), render.passes(),
+                                 qint64(render.stats(seconds).photons), seconds,
                                  QString::fromStdString(scene.render.integrator));
             }
         } catch (const std::exception& e) {

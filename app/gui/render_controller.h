@@ -1,9 +1,10 @@
 #pragma once
 // Renders the scene progressively on a worker thread: pass after pass, each frame sent back
 // through a queued signal. The view uses sppm, whose passes converge to the full solution
-// (caustics, interreflection), unless told to use the scene's own integrator. A new scene (after an edit) cancels the pass in flight and starts
-// again; restarts are debounced so a burst of edits costs one restart. The worker renders an
-// immutable copy of the scene; it never touches the document.
+// (caustics, interreflection), unless told to use the scene's own integrator. A new scene (after an
+// edit) cancels the pass in flight and starts again; restarts are debounced so a burst of edits
+// costs one restart. The worker renders an immutable copy of the scene; it never touches the
+// document.
 
 #include <QElapsedTimer>
 #include <QImage>
@@ -11,7 +12,6 @@
 #include <QThread>
 #include <QTimer>
 #include <QWaitCondition>
-
 #include <optional>
 
 #include "render/film.h"
@@ -45,7 +45,8 @@ public:
 signals:
     // `passes`: passes done; `photons`: photons emitted so far (sppm) or stored in the photon
     // maps (photon_map), else 0; `integrator`: the one rendering.
-    void frame_ready(const QImage& image, int passes, qint64 photons, double seconds, const QString& integrator);
+    void frame_ready(const QImage& image, int passes, qint64 photons, double seconds,
+                     const QString& integrator);
     void render_failed(const QString& message);
     void rendering_changed(bool rendering);
 
@@ -63,7 +64,7 @@ private:
 
     mutable QMutex m_mutex;
     QWaitCondition m_wake;
-    std::optional<Scene> m_job;     // handed to the worker
+    std::optional<Scene> m_job;          // handed to the worker
     RenderControl* m_control = nullptr;  // the pass in flight, to cancel it
     bool m_quit = false, m_stop = false, m_busy = false;
     Film m_last;

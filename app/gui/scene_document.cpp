@@ -72,11 +72,14 @@ bool SceneDocument::open(const QString& path, QString* error) {
     Scene scene;
     try {
         j = parse_json_strict(text, path.toStdString());
-        if (!j.is_object()) throw SceneError(path.toStdString(), "the top level must be a JSON object { ... }");
+        if (!j.is_object())
+            throw SceneError(path.toStdString(), "the top level must be a JSON object { ... }");
         scene = scene_from_json(j, folder_of(path));
     } catch (const SceneError& e) {
         if (error) {
-            const std::string where = e.path().rfind(path.toStdString(), 0) == 0 ? e.path() : path.toStdString() + ": " + e.path();
+            const std::string where = e.path().rfind(path.toStdString(), 0) == 0
+                                          ? e.path()
+                                          : path.toStdString() + ": " + e.path();
             *error = QString::fromStdString(where + ": " + e.reason());
         }
         return false;
@@ -93,8 +96,8 @@ bool SceneDocument::open(const QString& path, QString* error) {
 bool SceneDocument::save(const QString& path, QString* error) {
     QSaveFile file(path);
     const std::string text = m_json.dump(2) + "\n";
-    if (!file.open(QIODevice::WriteOnly) || file.write(text.data(), qint64(text.size())) != qint64(text.size()) ||
-        !file.commit()) {
+    if (!file.open(QIODevice::WriteOnly) ||
+        file.write(text.data(), qint64(text.size())) != qint64(text.size()) || !file.commit()) {
         if (error) *error = path + ": cannot save: " + file.errorString();
         return false;
     }
@@ -104,7 +107,8 @@ bool SceneDocument::save(const QString& path, QString* error) {
     return true;
 }
 
-bool SceneDocument::apply(const nlohmann::json& edited, const QString& description, QString* error) {
+bool SceneDocument::apply(const nlohmann::json& edited, const QString& description,
+                          QString* error) {
     return edit(edited, description, error, {});
 }
 
@@ -118,8 +122,9 @@ bool SceneDocument::edit(const nlohmann::json& edited, const QString& descriptio
     return true;
 }
 
-bool SceneDocument::set_value(const nlohmann::json::json_pointer& pointer, const nlohmann::json& value,
-                              const QString& description, QString* error) {
+bool SceneDocument::set_value(const nlohmann::json::json_pointer& pointer,
+                              const nlohmann::json& value, const QString& description,
+                              QString* error) {
     nlohmann::json edited = m_json;
     edited[pointer] = value;
     return edit(edited, description, error, pointer.to_string());

@@ -8,9 +8,7 @@
 #include <QObject>
 #include <QString>
 #include <QUndoStack>
-
 #include <nlohmann/json.hpp>
-
 #include <optional>
 #include <string>
 
@@ -63,8 +61,8 @@ public:
     void install(const nlohmann::json& json, SceneUpdate update);
 
 signals:
-    void changed();           // the document (and so the scene) changed
-    void path_changed();      // a new file name (open, save as)
+    void changed();       // the document (and so the scene) changed
+    void path_changed();  // a new file name (open, save as)
 
 private:
     // Reads `j` with the scene reader, only as far as it differs from the installed document

@@ -19,7 +19,8 @@ QTreeWidgetItem* add_item(QTreeWidgetItem* parent, const QString& text, const QS
 
 }  // namespace
 
-SceneTree::SceneTree(SceneDocument* document, QWidget* parent) : QTreeWidget(parent), m_document(document) {
+SceneTree::SceneTree(SceneDocument* document, QWidget* parent)
+    : QTreeWidget(parent), m_document(document) {
     setHeaderHidden(true);
     setObjectName("scene_tree");
     connect(document, &SceneDocument::changed, this, &SceneTree::rebuild);
@@ -63,8 +64,9 @@ void SceneTree::rebuild() {
         for (size_t i = 0; i < j["objects"].size(); ++i) {
             const auto& o = j["objects"][i];
             const QString type = QString::fromStdString(o.value("type", "?"));
-            const QString name = o.contains("name") ? QString::fromStdString(o["name"].get<std::string>())
-                                                    : QString("objects[%1]").arg(i);
+            const QString name = o.contains("name")
+                                     ? QString::fromStdString(o["name"].get<std::string>())
+                                     : QString("objects[%1]").arg(i);
             add_item(objects, QString("%1 (%2)").arg(name, type),
                      join_pointer("/objects", qsizetype(i)));
         }

@@ -3,7 +3,6 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QWheelEvent>
-
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -29,8 +28,9 @@ Vec3 rotate(const Vec3& v, const Vec3& k, double a) {
 // is look_at, or 5 units ahead when the file gives a direction.
 json moved_camera(const json& camera, const std::function<void(Vec3&, Vec3&)>& move) {
     Vec3 position = to_vec(camera["position"]);
-    Vec3 target = camera.contains("look_at") ? to_vec(camera["look_at"])
-                                             : position + normalize(to_vec(camera["direction"])) * 5.0;
+    Vec3 target = camera.contains("look_at")
+                      ? to_vec(camera["look_at"])
+                      : position + normalize(to_vec(camera["direction"])) * 5.0;
     move(position, target);
     json out = camera;
     out.erase("direction");
@@ -41,7 +41,8 @@ json moved_camera(const json& camera, const std::function<void(Vec3&, Vec3&)>& m
 
 }  // namespace
 
-Viewport::Viewport(SceneDocument* document, QWidget* parent) : QWidget(parent), m_document(document) {
+Viewport::Viewport(SceneDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document) {
     setMinimumSize(320, 240);
     setMouseTracking(false);
     setFocusPolicy(Qt::StrongFocus);
@@ -74,8 +75,11 @@ int Viewport::pick(const QPoint& pos) const {
     const double px = (pos.x() - r.left() + 0.5) * scene.render.width / double(r.width());
     const double py = (pos.y() - r.top() + 0.5) * scene.render.height / double(r.height());
     SceneHit hit;
-    if (!scene.intersect(camera.generate_ray(px, py), 0, std::numeric_limits<double>::infinity(), hit)) return -1;
-    return scene.objects[hit.object].source;  // the scene file's entry (a lens group's, for its elements)
+    if (!scene.intersect(camera.generate_ray(px, py), 0, std::numeric_limits<double>::infinity(),
+                         hit))
+        return -1;
+    return scene.objects[hit.object]
+        .source;  // the scene file's entry (a lens group's, for its elements)
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {

@@ -6,7 +6,6 @@
 #include <QImage>
 #include <QPoint>
 #include <QWidget>
-
 #include <nlohmann/json.hpp>
 
 namespace lenslab::gui {

@@ -33,16 +33,15 @@ bool Bvh::intersect(const Ray& ray, double t_min, double t_max, BvhHit& hit) con
 
 bool Bvh::occluded(const Ray& ray, double t_min, double t_max) const {
     SurfaceHit candidate;
-    return traverse_bvh(m_layout.nodes, ray, t_min, t_max, true,
-                        [&](int first, int count, double& t_far) {
-                            for (int i = first; i < first + count; ++i) {
-                                if (m_shapes[m_layout.order[i]]->intersect(ray, t_min, t_far,
-                                                                            candidate)) {
-                                    return true;
-                                }
-                            }
-                            return false;
-                        });
+    return traverse_bvh(
+        m_layout.nodes, ray, t_min, t_max, true, [&](int first, int count, double& t_far) {
+            for (int i = first; i < first + count; ++i) {
+                if (m_shapes[m_layout.order[i]]->intersect(ray, t_min, t_far, candidate)) {
+                    return true;
+                }
+            }
+            return false;
+        });
 }
 
 }  // namespace lenslab

@@ -104,10 +104,10 @@ private:
         }
         const int split =
             static_cast<int>(std::min_element(cost.begin(), cost.end()) - cost.begin());
-        const int mid = static_cast<int>(
-            std::partition(items.begin() + begin, items.begin() + end,
-                           [&](int item) { return bin_of(item) <= split; }) -
-            items.begin());
+        const int mid =
+            static_cast<int>(std::partition(items.begin() + begin, items.begin() + end,
+                                            [&](int item) { return bin_of(item) <= split; }) -
+                             items.begin());
         if (mid == begin || mid == end) return begin + (end - begin) / 2;  // all in one bin
         return mid;
     }

@@ -46,10 +46,10 @@ inline Vec3 decode_octahedral(const uint16_t in[2]) {
 
 struct Photon {
     float position[3];
-    float power[3];        // flux carried, W per RGB channel
-    uint16_t towards[2];   // unit direction back towards where the photon came from (octahedral)
+    float power[3];       // flux carried, W per RGB channel
+    uint16_t towards[2];  // unit direction back towards where the photon came from (octahedral)
     PhotonKind kind;
-    uint8_t split_axis;    // used by the kd-tree
+    uint8_t split_axis;  // used by the kd-tree
     uint8_t unused[2];
 
     Vec3 pos() const { return {position[0], position[1], position[2]}; }

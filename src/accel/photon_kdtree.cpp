@@ -1,9 +1,9 @@
 #include "accel/photon_kdtree.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <limits>
-
-#include <tbb/parallel_invoke.h>
 
 namespace lenslab {
 
@@ -39,8 +39,9 @@ void PhotonKdTree::build(size_t lo, size_t hi) {
         if (box_hi[a] - box_lo[a] > box_hi[axis] - box_lo[axis]) axis = a;
     }
     const size_t mid = lo + (hi - lo) / 2;
-    std::nth_element(m_photons + lo, m_photons + mid, m_photons + hi,
-                     [axis](const Photon& a, const Photon& b) { return a.position[axis] < b.position[axis]; });
+    std::nth_element(
+        m_photons + lo, m_photons + mid, m_photons + hi,
+        [axis](const Photon& a, const Photon& b) { return a.position[axis] < b.position[axis]; });
     m_photons[mid].split_axis = static_cast<uint8_t>(axis);
     if (hi - lo > kParallelBuildThreshold) {
         tbb::parallel_invoke([&] { build(lo, mid); }, [&] { build(mid + 1, hi); });
@@ -56,7 +57,9 @@ double PhotonKdTree::nearest(const Vec3& x, double radius, size_t max_count, con
     double r2 = radius * radius;
     if (m_count == 0 || max_count == 0) return r2;
     const float p[3] = {static_cast<float>(x.x), static_cast<float>(x.y), static_cast<float>(x.z)};
-    auto farther = [](const PhotonNeighbour& a, const PhotonNeighbour& b) { return a.dist2 < b.dist2; };
+    auto farther = [](const PhotonNeighbour& a, const PhotonNeighbour& b) {
+        return a.dist2 < b.dist2;
+    };
 
     // Explicit stack of ranges; each carries the squared distance from x to its half-space,
     // so a far half pushed early is skipped once the search radius has shrunk below it.
@@ -68,7 +71,8 @@ double PhotonKdTree::nearest(const Vec3& x, double radius, size_t max_count, con
     int top = 0;
     stack[top++] = {0, m_count, 0.0};
     auto consider = [&](const Photon& ph) {
-        const double dx = p[0] - ph.position[0], dy = p[1] - ph.position[1], dz = p[2] - ph.position[2];
+        const double dx = p[0] - ph.position[0], dy = p[1] - ph.position[1],
+                     dz = p[2] - ph.position[2];
         const double dist2 = dx * dx + dy * dy + dz * dz;
         if (dist2 >= r2) return;
         if (facing && dot(ph.incoming(), *facing) <= 0.0) return;

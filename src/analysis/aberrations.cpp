@@ -36,8 +36,8 @@ double usable_aperture_radius(const OpticalSystem& system, double nm) {
     return lo;
 }
 
-std::vector<ExitRay> trace_collimated_beam(const OpticalSystem& system, double nm,
-                                           double aperture, int rings, int* lost) {
+std::vector<ExitRay> trace_collimated_beam(const OpticalSystem& system, double nm, double aperture,
+                                           int rings, int* lost) {
     const double z0 = beam_start_z(system);
     std::vector<ExitRay> out;
     int missing = 0;
@@ -69,15 +69,14 @@ std::vector<LsaPoint> longitudinal_spherical_aberration(const OpticalSystem& sys
     std::vector<LsaPoint> out;
     for (int i = 1; i <= samples; ++i) {
         const double h = aperture * i / samples;
-        const RealRay r =
-            trace_real_ray(system, {{0, h, z0}, {0, 0, 1}}, paraxial.wavelength_nm);
+        const RealRay r = trace_real_ray(system, {{0, h, z0}, {0, 0, 1}}, paraxial.wavelength_nm);
         if (r.fate != RayFate::Passed || !(r.direction.z > 0)) continue;
         const Vec3& p = r.exit_point();
         const Vec3& d = r.direction;
         if (!(std::abs(d.y) > 1e-15)) continue;  // leaves parallel: crosses at infinity
         const double z_cross = p.z - p.y * d.z / d.y;
-        out.push_back({h, z_cross - paraxial.z_rear_focus,
-                       at_plane(p, d, paraxial.z_rear_focus).y});
+        out.push_back(
+            {h, z_cross - paraxial.z_rear_focus, at_plane(p, d, paraxial.z_rear_focus).y});
     }
     return out;
 }

@@ -22,7 +22,7 @@ struct SpotDiagram {
     double rms_radius = 0;        // RMS distance of the ray hits from their centroid
     double geometric_radius = 0;  // largest distance from the centroid
     double centroid_x = 0, centroid_y = 0;
-    std::vector<Vec3> points;     // the hits (z = the plane)
+    std::vector<Vec3> points;  // the hits (z = the plane)
 };
 
 // Rays that left the last surface, each a point on it and a unit direction.

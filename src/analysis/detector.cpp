@@ -1,14 +1,14 @@
 #include "analysis/detector.h"
 
-#include <algorithm>
-#include <chrono>
-#include <stdexcept>
-#include <cmath>
-#include <unordered_map>
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
 
 #include "optics/spectrum.h"
 #include "render/photon_tracer.h"
@@ -41,16 +41,20 @@ struct Arrival {
 bool counts(DetectorSide side, const Vec3& direction, const Vec3& normal) {
     const double c = dot(direction, normal);
     switch (side) {
-        case DetectorSide::Front: return c < 0;  // travelling against the normal: onto the front
-        case DetectorSide::Back: return c > 0;
-        case DetectorSide::Both: return true;
+        case DetectorSide::Front:
+            return c < 0;  // travelling against the normal: onto the front
+        case DetectorSide::Back:
+            return c > 0;
+        case DetectorSide::Both:
+            return true;
     }
     return false;
 }
 
 int band_of(const std::vector<double>& edges, double nm) {
     const auto it = std::upper_bound(edges.begin(), edges.end(), nm);
-    if (it == edges.begin() || it == edges.end()) return nm == edges.back() ? static_cast<int>(edges.size()) - 2 : -2;
+    if (it == edges.begin() || it == edges.end())
+        return nm == edges.back() ? static_cast<int>(edges.size()) - 2 : -2;
     return static_cast<int>(it - edges.begin()) - 1;
 }
 
@@ -68,7 +72,8 @@ void finish(DetectorMeasurement& m, double sum_u, double sum_v, double sum_r2) {
     if (m.total_power > 0) {
         m.centroid_u = sum_u / m.total_power;
         m.centroid_v = sum_v / m.total_power;
-        const double r2 = sum_r2 / m.total_power - m.centroid_u * m.centroid_u - m.centroid_v * m.centroid_v;
+        const double r2 =
+            sum_r2 / m.total_power - m.centroid_u * m.centroid_u - m.centroid_v * m.centroid_v;
         m.rms_radius = std::sqrt(std::max(0.0, r2));
     }
     m.centroid = g.frame().at(m.centroid_u, m.centroid_v);
@@ -94,7 +99,8 @@ std::vector<int> detector_objects(const Scene& scene) {
     return out;
 }
 
-DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& settings, RenderControl& control) {
+DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& settings,
+                                  RenderControl& control) {
     const auto t0 = std::chrono::steady_clock::now();
     DetectionResult result;
     std::vector<int> detector_of(scene.objects.size(), -1);
@@ -123,15 +129,17 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
         for (const Spectrum* s : spectra) {
             SpectrumWatts w;
             w.total = radiant_watts(*s);
-            for (size_t b = 0; b + 1 < edges.size(); ++b) w.band.push_back(radiant_watts(*s, edges[b], edges[b + 1]));
+            for (size_t b = 0; b + 1 < edges.size(); ++b)
+                w.band.push_back(radiant_watts(*s, edges[b], edges[b + 1]));
             watts[d][s] = w;
         }
     }
 
     PhotonTracingSettings tracing;
     tracing.photons_per_light = settings.photons_per_light;
-    tracing.caustic_photons_per_light =
-        settings.caustic_photons_per_light > 0 ? settings.caustic_photons_per_light : settings.photons_per_light;
+    tracing.caustic_photons_per_light = settings.caustic_photons_per_light > 0
+                                            ? settings.caustic_photons_per_light
+                                            : settings.photons_per_light;
     tracing.aim = settings.aim;
     tracing.seed = settings.seed;
     tracing.max_depth = settings.max_depth;
@@ -144,40 +152,48 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
         const int64_t last = std::min(total, first + kBatch);
         const int64_t chunks = (last - first + kChunk - 1) / kChunk;
         std::vector<std::vector<Arrival>> found(static_cast<size_t>(chunks));
-        arena.execute([&] { tbb::parallel_for(tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
-            for (int64_t chunk = r.begin(); chunk != r.end(); ++chunk) {
-                std::vector<Arrival>& out = found[static_cast<size_t>(chunk)];
-                const PhotonArrivalFn on_arrival = [&](const PhotonArrival& a) {
-                    const int d = detector_of[static_cast<size_t>(a.interaction->hit.object)];
-                    if (d < 0) return;
-                    const DetectorMeasurement& m = result.detectors[static_cast<size_t>(d)];
-                    if (!counts(m.settings.side, a.direction, m.grid.frame().n)) return;
-                    Arrival rec{};
-                    rec.detector = d;
-                    rec.u = m.grid.frame().u_of(a.interaction->point());
-                    rec.v = m.grid.frame().v_of(a.interaction->point());
-                    rec.cell = m.grid.cell_at(rec.u, rec.v);
-                    const auto& table = watts[static_cast<size_t>(d)];
-                    const auto it = table.find(a.spectrum);
-                    if (it == table.end()) throw std::logic_error("detector: a photon from an unknown light");
-                    if (a.lambda_nm > 0) {
-                        // Dispersed: its whole share of the light's power, at one wavelength.
-                        rec.band = band_of(m.settings.band_edges, a.lambda_nm);
-                        rec.watts = a.scale * it->second.total;
-                    } else {
-                        rec.band = -1;
-                        rec.spectrum = &it->second;
-                        rec.scale = a.scale;
-                        rec.watts = a.scale * it->second.total;
+        arena.execute([&] {
+            tbb::parallel_for(
+                tbb::blocked_range<int64_t>(0, chunks, 1),
+                [&](const tbb::blocked_range<int64_t>& r) {
+                    for (int64_t chunk = r.begin(); chunk != r.end(); ++chunk) {
+                        std::vector<Arrival>& out = found[static_cast<size_t>(chunk)];
+                        const PhotonArrivalFn on_arrival = [&](const PhotonArrival& a) {
+                            const int d =
+                                detector_of[static_cast<size_t>(a.interaction->hit.object)];
+                            if (d < 0) return;
+                            const DetectorMeasurement& m = result.detectors[static_cast<size_t>(d)];
+                            if (!counts(m.settings.side, a.direction, m.grid.frame().n)) return;
+                            Arrival rec{};
+                            rec.detector = d;
+                            rec.u = m.grid.frame().u_of(a.interaction->point());
+                            rec.v = m.grid.frame().v_of(a.interaction->point());
+                            rec.cell = m.grid.cell_at(rec.u, rec.v);
+                            const auto& table = watts[static_cast<size_t>(d)];
+                            const auto it = table.find(a.spectrum);
+                            if (it == table.end())
+                                throw std::logic_error("detector: a photon from an unknown light");
+                            if (a.lambda_nm > 0) {
+                                // Dispersed: its whole share of the light's power, at one
+                                // wavelength.
+                                rec.band = band_of(m.settings.band_edges, a.lambda_nm);
+                                rec.watts = a.scale * it->second.total;
+                            } else {
+                                rec.band = -1;
+                                rec.spectrum = &it->second;
+                                rec.scale = a.scale;
+                                rec.watts = a.scale * it->second.total;
+                            }
+                            out.push_back(rec);
+                        };
+                        const int64_t begin = first + (chunk * kChunk),
+                                      end = std::min(last, begin + kChunk);
+                        for (int64_t g = begin; g < end; ++g) {
+                            trace_photon_path(scene, tracing, plan, g, on_arrival);
+                        }
                     }
-                    out.push_back(rec);
-                };
-                const int64_t begin = first + (chunk * kChunk), end = std::min(last, begin + kChunk);
-                for (int64_t g = begin; g < end; ++g) {
-                    trace_photon_path(scene, tracing, plan, g, on_arrival);
-                }
-            }
-        }); });
+                });
+        });
         // Summed in photon order, so the result does not depend on the threads.
         for (const std::vector<Arrival>& chunk : found) {
             for (const Arrival& a : chunk) {
@@ -207,7 +223,8 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
     result.cancelled = control.cancelled();
     result.photons_emitted = total;
     result.photons_aimed = plan.aimed_total();
-    for (size_t d = 0; d < result.detectors.size(); ++d) finish(result.detectors[d], sum_u[d], sum_v[d], sum_r2[d]);
+    for (size_t d = 0; d < result.detectors.size(); ++d)
+        finish(result.detectors[d], sum_u[d], sum_v[d], sum_r2[d]);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return result;
 }

@@ -38,9 +38,9 @@ struct DetectorMeasurement {
     // Power (W) that arrived in each cell, in total and per band (band_power[b][cell]).
     std::vector<double> power;
     std::vector<std::vector<double>> band_power;
-    double total_power = 0;            // W
-    std::vector<double> band_total;    // W per band
-    int64_t arrivals = 0;              // photons counted
+    double total_power = 0;          // W
+    std::vector<double> band_total;  // W per band
+    int64_t arrivals = 0;            // photons counted
 
     double peak_irradiance = 0;  // W/unit², the brightest cell at least half on the surface
     int peak_cell = -1;
@@ -58,7 +58,7 @@ struct DetectorMeasurement {
 
 struct DetectionResult {
     std::vector<DetectorMeasurement> detectors;  // in the order of Scene::objects
-    int64_t photons_emitted = 0;  // both streams
+    int64_t photons_emitted = 0;                 // both streams
     int64_t photons_aimed = 0;
     bool cancelled = false;
     double seconds = 0;
@@ -71,6 +71,7 @@ std::vector<int> detector_objects(const Scene& scene);
 // result is the same for a given seed whatever the thread count (one random stream per
 // photon; arrivals are summed in photon order). Reports progress and stops early (with
 // `cancelled` set) through `control`.
-DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& settings, RenderControl& control);
+DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& settings,
+                                  RenderControl& control);
 
 }  // namespace lenslab

@@ -4,10 +4,9 @@
 // W/unit²) and <stem>.png (the false-colour picture), each written atomically; and the
 // summary every front end prints (text or JSON).
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "analysis/detector.h"
 #include "analysis/detector_image.h"
@@ -24,8 +23,9 @@ std::string band_channel_name(const DetectorMeasurement& m, int band);
 
 // Writes the three files of `m` into `dir` (which must exist) as <stem>.{csv,exr,png};
 // `scale` is the PNG's colour scale.
-void write_detector_files(const DetectorMeasurement& m, const DetectionSettings& settings, const std::string& dir,
-                          const std::string& stem, ColourScale scale = ColourScale::Linear);
+void write_detector_files(const DetectorMeasurement& m, const DetectionSettings& settings,
+                          const std::string& dir, const std::string& stem,
+                          ColourScale scale = ColourScale::Linear);
 
 // {"name", "object", "units": {...}, "total_power", "band_powers": [...], "peak_irradiance",
 //  "centroid": [x, y, z], "centroid_uv": [u, v], "rms_radius", "resolution", "arrivals"}

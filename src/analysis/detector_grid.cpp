@@ -57,7 +57,8 @@ void choose_cells(const DetectorSettings& d, double width, double height, int& n
 
 double rectangle_disc_overlap(double u0, double u1, double v0, double v1, double r) {
     // Wholly inside (every corner within r) or wholly outside (nearest point beyond r).
-    const double far_u = std::max(std::abs(u0), std::abs(u1)), far_v = std::max(std::abs(v0), std::abs(v1));
+    const double far_u = std::max(std::abs(u0), std::abs(u1)),
+                 far_v = std::max(std::abs(v0), std::abs(v1));
     if (far_u * far_u + far_v * far_v <= r * r) return (u1 - u0) * (v1 - v0);
     const double near_u = (u0 <= 0 && u1 >= 0) ? 0 : std::min(std::abs(u0), std::abs(u1));
     const double near_v = (v0 <= 0 && v1 >= 0) ? 0 : std::min(std::abs(v0), std::abs(v1));
@@ -76,7 +77,8 @@ double rectangle_disc_overlap(double u0, double u1, double v0, double v1, double
     return area * dphi;
 }
 
-double rectangle_triangle_overlap(double u0, double u1, double v0, double v1, const double (&tri)[3][2]) {
+double rectangle_triangle_overlap(double u0, double u1, double v0, double v1,
+                                  const double (&tri)[3][2]) {
     std::vector<Point2> p{{tri[0][0], tri[0][1]}, {tri[1][0], tri[1][1]}, {tri[2][0], tri[2][1]}};
     p = clip(p, 0, u0, -1);
     p = clip(p, 0, u1, +1);
@@ -113,7 +115,8 @@ DetectorGrid DetectorGrid::for_object(const SceneObject& object) {
         g.m_v0 = std::min({tri[0][1], tri[1][1], tri[2][1]});
         g.m_v1 = std::max({tri[0][1], tri[1][1], tri[2][1]});
     } else {
-        throw std::invalid_argument(object.name + ": only a triangle, disc or rectangle can be a detector");
+        throw std::invalid_argument(object.name +
+                                    ": only a triangle, disc or rectangle can be a detector");
     }
     choose_cells(d, g.m_u1 - g.m_u0, g.m_v1 - g.m_v0, g.m_nu, g.m_nv);
     g.m_area.resize(static_cast<size_t>(g.cell_count()));
@@ -136,7 +139,8 @@ DetectorGrid DetectorGrid::for_object(const SceneObject& object) {
 int DetectorGrid::cell_at(double u, double v) const {
     // A point on the rim may round to just outside the box: it belongs to the edge cell.
     const int iu = std::clamp(static_cast<int>(std::floor((u - m_u0) / cell_width())), 0, m_nu - 1);
-    const int iv = std::clamp(static_cast<int>(std::floor((v - m_v0) / cell_height())), 0, m_nv - 1);
+    const int iv =
+        std::clamp(static_cast<int>(std::floor((v - m_v0) / cell_height())), 0, m_nv - 1);
     return iv * m_nu + iu;
 }
 

@@ -48,6 +48,7 @@ private:
 // Area of the overlap of the rectangle [u0, u1] x [v0, v1] with the disc of radius r
 // about the origin, and with a triangle given by its (u, v) corners.
 double rectangle_disc_overlap(double u0, double u1, double v0, double v1, double r);
-double rectangle_triangle_overlap(double u0, double u1, double v0, double v1, const double (&tri)[3][2]);
+double rectangle_triangle_overlap(double u0, double u1, double v0, double v1,
+                                  const double (&tri)[3][2]);
 
 }  // namespace lenslab

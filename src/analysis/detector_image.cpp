@@ -52,15 +52,18 @@ Image8 detector_image(const DetectorMeasurement& m, ColourScale scale, int map_s
     const int map_h = std::max(1, static_cast<int>(std::lround(height * px_per_unit)));
     const std::string unit = m.settings.unit;
     const std::vector<std::string> footer{
-        "total " + number(m.total_power) + " W   peak " + number(m.peak_irradiance) + " " + irradiance_unit(m),
-        "centroid (u, v) = (" + number(m.centroid_u) + ", " + number(m.centroid_v) + ") " + unit + "   rms radius " +
-            number(m.rms_radius) + " " + unit,
-        "u " + number(g.u_min()) + " to " + number(g.u_max()) + " " + unit + " (right), v " + number(g.v_min()) +
-            " to " + number(g.v_max()) + " " + unit + " (up); all wavelengths " +
-            number(m.settings.band_edges.front()) + "-" + number(m.settings.band_edges.back()) + " nm",
+        "total " + number(m.total_power) + " W   peak " + number(m.peak_irradiance) + " " +
+            irradiance_unit(m),
+        "centroid (u, v) = (" + number(m.centroid_u) + ", " + number(m.centroid_v) + ") " + unit +
+            "   rms radius " + number(m.rms_radius) + " " + unit,
+        "u " + number(g.u_min()) + " to " + number(g.u_max()) + " " + unit + " (right), v " +
+            number(g.v_min()) + " to " + number(g.v_max()) + " " + unit +
+            " (up); all wavelengths " + number(m.settings.band_edges.front()) + "-" +
+            number(m.settings.band_edges.back()) + " nm",
     };
     const bool log = scale == ColourScale::Log;
-    const std::string title = m.name + ": irradiance (" + irradiance_unit(m) + (log ? ", log scale)" : ")");
+    const std::string title =
+        m.name + ": irradiance (" + irradiance_unit(m) + (log ? ", log scale)" : ")");
     // The colour bar's scale: the peak over cells at least half on the surface, so a
     // sliver of a rim cell cannot set it.
     const double top = m.peak_irradiance > 0 ? m.peak_irradiance : 1.0;
@@ -88,7 +91,8 @@ Image8 detector_image(const DetectorMeasurement& m, ColourScale scale, int map_s
     for (const std::string& f : footer) img_w = std::max(img_w, 2 * kMargin + text_width(f));
     const int img_h = map_y + map_h + 10 + static_cast<int>(footer.size()) * kLine + kMargin;
 
-    Image8 img{img_w, img_h, std::vector<unsigned char>(static_cast<size_t>(img_w) * img_h * 3, 255)};
+    Image8 img{img_w, img_h,
+               std::vector<unsigned char>(static_cast<size_t>(img_w) * img_h * 3, 255)};
     draw_text(img, kMargin, kMargin, title, kInk, 2);
 
     // The map: each pixel shows the cell under its centre; row 0 is the highest v.
@@ -107,8 +111,10 @@ Image8 detector_image(const DetectorMeasurement& m, ColourScale scale, int map_s
         }
     }
     if (m.total_power > 0) {  // the centroid: a small cross
-        const int cx = map_x + static_cast<int>(std::lround((m.centroid_u - g.u_min()) * px_per_unit));
-        const int cy = map_y + static_cast<int>(std::lround((g.v_max() - m.centroid_v) * px_per_unit));
+        const int cx =
+            map_x + static_cast<int>(std::lround((m.centroid_u - g.u_min()) * px_per_unit));
+        const int cy =
+            map_y + static_cast<int>(std::lround((g.v_max() - m.centroid_v) * px_per_unit));
         fill(img, cx - 6, cy, cx - 2, cy + 1, kMarker);
         fill(img, cx + 3, cy, cx + 7, cy + 1, kMarker);
         fill(img, cx, cy - 6, cx + 1, cy - 2, kMarker);
@@ -121,9 +127,12 @@ Image8 detector_image(const DetectorMeasurement& m, ColourScale scale, int map_s
         fill(img, bar_x, map_y + y, bar_x + kBarWidth, map_y + y + 1, c);
     }
     for (int i = 0; i < tick_count; ++i) {
-        const int y = map_y + static_cast<int>(std::lround((map_h - 1) * (1.0 - tick_at[static_cast<size_t>(i)])));
+        const int y =
+            map_y +
+            static_cast<int>(std::lround((map_h - 1) * (1.0 - tick_at[static_cast<size_t>(i)])));
         fill(img, bar_x + kBarWidth, y, bar_x + kBarWidth + 4, y + 1, kInk);
-        draw_text(img, bar_x + kBarWidth + 6, std::clamp(y - 3, map_y - 3, map_y + map_h - 4), ticks[static_cast<size_t>(i)], kInk);
+        draw_text(img, bar_x + kBarWidth + 6, std::clamp(y - 3, map_y - 3, map_y + map_h - 4),
+                  ticks[static_cast<size_t>(i)], kInk);
     }
     draw_text(img, bar_x, map_y - kLine, irradiance_unit(m), kInk);
 

@@ -15,7 +15,8 @@ enum class ColourScale { Linear, Log };
 inline constexpr int kLogDecades = 4;
 
 // `map_size`: pixels along the map's longer side.
-Image8 detector_image(const DetectorMeasurement& m, ColourScale scale = ColourScale::Linear, int map_size = 512);
+Image8 detector_image(const DetectorMeasurement& m, ColourScale scale = ColourScale::Linear,
+                      int map_size = 512);
 
 // "W/mm^2" for a detector whose unit is mm.
 std::string irradiance_unit(const DetectorMeasurement& m);

@@ -81,13 +81,14 @@ nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport
     ordered_json surfaces = ordered_json::array();
     for (size_t i = 0; i < system.surfaces.size(); ++i) {
         const SystemSurface& s = system.surfaces[i];
-        surfaces.push_back({{"surface", s.label},
-                            {"shape", s.shape->describe()},
-                            {"z", s.z},
-                            {"radius", s.curvature == 0 ? ordered_json() : ordered_json(1.0 / s.curvature)},
-                            {"semi_diameter", s.semi_diameter},
-                            {"medium_after", medium_name(system, s.element_after)},
-                            {"n_after", system.n_after(i, r.wavelength_nm)}});
+        surfaces.push_back(
+            {{"surface", s.label},
+             {"shape", s.shape->describe()},
+             {"z", s.z},
+             {"radius", s.curvature == 0 ? ordered_json() : ordered_json(1.0 / s.curvature)},
+             {"semi_diameter", s.semi_diameter},
+             {"medium_after", medium_name(system, s.element_after)},
+             {"n_after", system.n_after(i, r.wavelength_nm)}});
     }
     ordered_json lenses = ordered_json::array();
     for (const SystemElement& e : system.elements) {
@@ -102,7 +103,8 @@ nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport
         {"ffl", p.ffl},
         {"power", p.power},
         {"principal_planes",
-         {{"front", p.z_front_principal}, {"back", p.z_rear_principal - last},
+         {{"front", p.z_front_principal},
+          {"back", p.z_rear_principal - last},
           {"note", "front: from the first vertex; back: from the last vertex"}}},
         {"aperture_diameter", 2.0 * r.aperture_radius},
         {"rays", r.rays},
@@ -135,8 +137,8 @@ std::string report_table(const OpticalSystem& system, const LensReport& r) {
         << system.surfaces.size() << " surfaces on one axis; lengths in the scene's unit "
         << "(mm for lens prescriptions), light travelling along +z from the first vertex\n\n";
     char line[256];
-    std::snprintf(line, sizeof line, "  %-36s %-8s %10s %11s %10s  %s\n", "surface", "shape",
-                  "z", "R (vertex)", "semi-diam", "medium after");
+    std::snprintf(line, sizeof line, "  %-36s %-8s %10s %11s %10s  %s\n", "surface", "shape", "z",
+                  "R (vertex)", "semi-diam", "medium after");
     out << line;
     for (const SystemSurface& s : system.surfaces) {
         std::snprintf(line, sizeof line, "  %-36s %-8s %10s %11s %10s  %s\n", s.label.c_str(),
@@ -160,8 +162,8 @@ std::string report_table(const OpticalSystem& system, const LensReport& r) {
     row("rear principal plane H'", p.z_rear_principal - last, "from the last vertex");
 
     out << "\nReal rays, at " << wavelength_text(r.wavelength_nm)
-        << ": collimated beam on the axis, diameter " << length(2.0 * r.aperture_radius)
-        << ", " << r.rays << " rays";
+        << ": collimated beam on the axis, diameter " << length(2.0 * r.aperture_radius) << ", "
+        << r.rays << " rays";
     if (r.rays_lost > 0) out << " (" << r.rays_lost << " clipped or totally reflected)";
     out << "\n";
     row("RMS spot radius at the paraxial focus", r.spot_paraxial.rms_radius,
@@ -171,7 +173,8 @@ std::string report_table(const OpticalSystem& system, const LensReport& r) {
             " from the paraxial focus");
     row("RMS spot radius at the best focus", r.spot_best.rms_radius,
         "geometric radius " + length(r.spot_best.geometric_radius));
-    out << "  longitudinal spherical aberration (axis crossing minus paraxial focus; < 0: in front):\n";
+    out << "  longitudinal spherical aberration (axis crossing minus paraxial focus; < 0: in "
+           "front):\n";
     std::snprintf(line, sizeof line, "    %12s %12s %14s\n", "ray height", "LSA", "transverse");
     out << line;
     const size_t step = std::max<size_t>(1, r.lsa.size() / 10);
@@ -183,8 +186,8 @@ std::string report_table(const OpticalSystem& system, const LensReport& r) {
         out << line;
     }
 
-    out << "\nChromatic (paraxial), F = " << wavelength_text(kLineF) << ", C = "
-        << wavelength_text(kLineC) << "\n";
+    out << "\nChromatic (paraxial), F = " << wavelength_text(kLineF)
+        << ", C = " << wavelength_text(kLineC) << "\n";
     row("BFL at the F line", r.paraxial_F.bfl);
     row("BFL at the C line", r.paraxial_C.bfl);
     row("focal shift BFL(F) - BFL(C)", r.chromatic_shift_FC);

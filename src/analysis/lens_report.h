@@ -2,9 +2,8 @@
 // `lenslab analyze`: every figure the optical bench gives for a coaxial system, at one
 // wavelength, gathered in one report that prints as a table or as JSON.
 
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "analysis/aberrations.h"
 #include "analysis/optical_system.h"
@@ -21,14 +20,14 @@ struct LensReportOptions {
 
 struct LensReport {
     double wavelength_nm = 0;
-    ParaxialResult paraxial;         // at wavelength_nm
+    ParaxialResult paraxial;  // at wavelength_nm
     ParaxialResult paraxial_F, paraxial_C;
-    double chromatic_shift_FC = 0;   // BFL(F) - BFL(C): paraxial longitudinal colour
+    double chromatic_shift_FC = 0;  // BFL(F) - BFL(C): paraxial longitudinal colour
     double aperture_radius = 0;
     int rays = 0, rays_lost = 0;
     std::vector<LsaPoint> lsa;
     SpotDiagram spot_paraxial, spot_best;
-    double best_focus = 0;           // best-focus plane, from the last vertex
+    double best_focus = 0;  // best-focus plane, from the last vertex
 };
 
 // Throws SceneError when a wavelength lies outside a glass's range or the system is afocal.

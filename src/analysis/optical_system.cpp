@@ -9,8 +9,8 @@
 #include "geometry/lens/flat_surface.h"
 #include "geometry/lens/lens_solid.h"
 #include "geometry/lens/spherical_surface.h"
-#include "scene/scene_error.h"
 #include "scene/scattering.h"
+#include "scene/scene_error.h"
 
 namespace lenslab {
 
@@ -130,9 +130,11 @@ void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
 
 double paraxial_curvature(const LensSurface& s, double semi_diameter) {
     if (dynamic_cast<const FlatSurface*>(&s)) return 0.0;
-    if (const auto* sphere = dynamic_cast<const SphericalSurface*>(&s)) return 1.0 / sphere->radius();
+    if (const auto* sphere = dynamic_cast<const SphericalSurface*>(&s))
+        return 1.0 / sphere->radius();
     if (const auto* conic = dynamic_cast<const ConicSurface*>(&s)) return 1.0 / conic->radius();
-    if (const auto* asphere = dynamic_cast<const AsphereSurface*>(&s)) return 1.0 / asphere->radius();
+    if (const auto* asphere = dynamic_cast<const AsphereSurface*>(&s))
+        return 1.0 / asphere->radius();
     // sag(r) = c r^2 / 2 + O(r^4), so 2 sag(h) / h^2 = c + O(h^2); combining h and 2h cancels
     // the h^2 term (Richardson). sag(0) = 0 is required of formulas, so no cancellation.
     const double h = 0.01 * semi_diameter;
@@ -171,8 +173,7 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
         throw SceneError("objects", "no lens in the scene (analyze measures lens objects)");
     }
     if (lens && std::find(lenses.begin(), lenses.end(), *lens) == lenses.end()) {
-        throw SceneError(*lens >= 0 ? object_path(scene, *lens) : "objects",
-                         "is not a lens");
+        throw SceneError(*lens >= 0 ? object_path(scene, *lens) : "objects", "is not a lens");
     }
     const int seed = lens ? *lens : lenses.front();
     const auto* seed_solid = dynamic_cast<const LensSolid*>(scene.objects[seed].shape.get());
@@ -195,8 +196,8 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
             std::ostringstream why;
             why << "not on the axis of " << describe_object(scene, seed) << ": ";
             if (sine > kAxisAngleTolerance) {
-                why << "its axis is tilted by " << format(std::asin(std::min(1.0, sine)) * 180 / M_PI)
-                    << " degrees";
+                why << "its axis is tilted by "
+                    << format(std::asin(std::min(1.0, sine)) * 180 / M_PI) << " degrees";
             } else {
                 why << "its centre lies " << format(off_axis) << " from that axis";
             }

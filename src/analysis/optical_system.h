@@ -27,11 +27,11 @@ struct SystemSurface {
     double orientation = 1.0;  // +1: the shape's local +z is the system's +z; -1: reversed
     double z = 0.0;            // axial position of the vertex
     double semi_diameter = 0.0;
-    SurfaceSpan span;          // measured over `semi_diameter`, for the numerical surfaces
-    double curvature = 0.0;    // paraxial vertex curvature in system z (> 0: centre at +z)
-    int element_before = -1;   // index into OpticalSystem::elements; -1: the outside (air)
+    SurfaceSpan span;         // measured over `semi_diameter`, for the numerical surfaces
+    double curvature = 0.0;   // paraxial vertex curvature in system z (> 0: centre at +z)
+    int element_before = -1;  // index into OpticalSystem::elements; -1: the outside (air)
     int element_after = -1;
-    std::string label;         // "objects[0].front", "objects[0].back = objects[1].front"
+    std::string label;  // "objects[0].front", "objects[0].back = objects[1].front"
 
     bool cemented() const { return element_before >= 0 && element_after >= 0; }
     // Axial position of the surface at distance r from the axis.
@@ -40,10 +40,10 @@ struct SystemSurface {
 
 // One lens object of the system.
 struct SystemElement {
-    int object = -1;        // index into Scene::objects
-    std::string path;       // "objects[3]"
-    std::string name;       // the object's name (its path when it has none)
-    std::string glass;      // catalogue name, else the index model ("constant n = 1.5")
+    int object = -1;    // index into Scene::objects
+    std::string path;   // "objects[3]"
+    std::string name;   // the object's name (its path when it has none)
+    std::string glass;  // catalogue name, else the index model ("constant n = 1.5")
     IndexModelPtr index;
     int first_surface = 0;  // the surfaces light meets entering and leaving it
     int last_surface = 0;

@@ -29,7 +29,8 @@ ParaxialResult paraxial_trace(const OpticalSystem& system, double nm) {
     const double scale = std::max(system.last_vertex(), 2.0 * system.max_semi_diameter());
     // A focal length a million times the system's size is, for a bench, no focus at all.
     if (!(std::abs(r.power) * scale > 1e-6)) {
-        throw SceneError("objects", "the lens system is afocal (zero optical power): it has no focus");
+        throw SceneError("objects",
+                         "the lens system is afocal (zero optical power): it has no focus");
     }
     const double n_object = system.n_before(0, nm);
     const double n_image = system.n_after(count - 1, nm);

@@ -97,9 +97,9 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     const double z_lo = std::max(std::min({z_start, p.z_front_focus, p.z_front_principal,
                                            p.z_rear_principal, p.z_rear_focus}),
                                  -reach);
-    const double z_hi = std::min(std::max({last, p.z_rear_focus, p.z_front_focus,
-                                           p.z_front_principal, p.z_rear_principal}),
-                                 last + reach);
+    const double z_hi = std::min(
+        std::max({last, p.z_rear_focus, p.z_front_focus, p.z_front_principal, p.z_rear_principal}),
+        last + reach);
     const double span = z_hi - z_lo;
     d.z_min = z_lo - 0.04 * span;
     d.z_max = z_hi + 0.12 * span;
@@ -142,7 +142,8 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
             ray.stroke = colour;
             ray.width = 1.1;
             ray.points.push_back({d.z_min, y0});
-            for (size_t i = 1; i < r.points.size(); ++i) ray.points.push_back({r.points[i].z, r.points[i].y});
+            for (size_t i = 1; i < r.points.size(); ++i)
+                ray.points.push_back({r.points[i].z, r.points[i].y});
             if (r.fate == RayFate::Passed && r.direction.z > 0) {
                 const Vec3 end = at_plane(r.exit_point(), r.direction, d.z_max);
                 ray.points.push_back({end.z, end.y});
@@ -200,10 +201,12 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     focus(p.z_front_focus, "F");
     focus(p.z_rear_focus, "F'");
 
-    d.title = "EFL " + fmt("%.2f", p.efl) + " mm, BFL " + fmt("%.2f", p.bfl) + " mm at " +
-              fmt("%.2f", p.wavelength_nm) + " nm" +
-              (fraunhofer_name(p.wavelength_nm).empty() ? "" : " (" + fraunhofer_name(p.wavelength_nm) + ")") +
-              "; beam diameter " + fmt("%.2f", 2.0 * h) + " mm";
+    d.title =
+        "EFL " + fmt("%.2f", p.efl) + " mm, BFL " + fmt("%.2f", p.bfl) + " mm at " +
+        fmt("%.2f", p.wavelength_nm) + " nm" +
+        (fraunhofer_name(p.wavelength_nm).empty() ? ""
+                                                  : " (" + fraunhofer_name(p.wavelength_nm) + ")") +
+        "; beam diameter " + fmt("%.2f", 2.0 * h) + " mm";
     d.legend = {{kBlueF, fmt("%.1f nm (F)", kLineF)},
                 {kYellowGreenD, fmt("%.1f nm (d)", kLineD)},
                 {kRedC, fmt("%.1f nm (C)", kLineC)}};
@@ -212,8 +215,8 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     return d;
 }
 
-DiagramView fit_diagram(const RayDiagram& d, double width, double height, double margin,
-                        double top, double bottom) {
+DiagramView fit_diagram(const RayDiagram& d, double width, double height, double margin, double top,
+                        double bottom) {
     DiagramView v;
     const double w = std::max(1.0, width - 2.0 * margin);
     const double h = std::max(1.0, height - top - bottom);

@@ -28,7 +28,7 @@ struct DiagramPath {
     std::vector<DiagramPoint> points;
     DiagramColour stroke;
     double width = 1.0;
-    double dash = 0.0;         // dash length; 0: solid
+    double dash = 0.0;  // dash length; 0: solid
     bool closed = false;
     bool filled = false;
     DiagramColour fill;
@@ -58,13 +58,13 @@ struct LegendEntry {
 
 struct RayDiagram {
     double z_min = 0, z_max = 1, y_min = -1, y_max = 1;  // what must be in view
-    std::vector<DiagramPath> paths;   // in drawing order: lenses, axis, rays, marks
+    std::vector<DiagramPath> paths;  // in drawing order: lenses, axis, rays, marks
     std::vector<DiagramDot> dots;
     std::vector<DiagramText> labels;
     std::vector<LegendEntry> legend;
     std::string title;
-    double scale_bar = 10.0;          // length of the scale bar, in the scene's unit
-    std::string scale_bar_label;      // "10 mm"
+    double scale_bar = 10.0;      // length of the scale bar, in the scene's unit
+    std::string scale_bar_label;  // "10 mm"
 };
 
 struct RayDiagramOptions {
@@ -84,7 +84,7 @@ struct DiagramView {
     double x(double z) const { return left + (z - z_min) * scale; }
     double y(double y_) const { return top + (y_max - y_) * scale; }
 };
-DiagramView fit_diagram(const RayDiagram& d, double width, double height, double margin,
-                        double top, double bottom);
+DiagramView fit_diagram(const RayDiagram& d, double width, double height, double margin, double top,
+                        double bottom);
 
 }  // namespace lenslab

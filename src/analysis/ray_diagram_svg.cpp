@@ -26,11 +26,20 @@ std::string escape(const std::string& text) {
     std::string out;
     for (char c : text) {
         switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -38,9 +47,12 @@ std::string escape(const std::string& text) {
 
 const char* anchor(DiagramText::Anchor a) {
     switch (a) {
-        case DiagramText::Anchor::Start: return "start";
-        case DiagramText::Anchor::End: return "end";
-        case DiagramText::Anchor::Middle: break;
+        case DiagramText::Anchor::Start:
+            return "start";
+        case DiagramText::Anchor::End:
+            return "end";
+        case DiagramText::Anchor::Middle:
+            break;
     }
     return "middle";
 }
@@ -68,7 +80,8 @@ std::string ray_diagram_svg(const RayDiagram& d, double width, double min_height
         s << "\" fill=\"" << (p.filled ? colour(p.fill) : "none") << "\"";
         if (p.filled && p.fill_opacity < 1) s << " fill-opacity=\"" << num(p.fill_opacity) << "\"";
         s << " stroke=\"" << colour(p.stroke) << "\" stroke-width=\"" << num(p.width) << "\"";
-        if (p.dash > 0) s << " stroke-dasharray=\"" << num(p.dash) << " " << num(0.6 * p.dash) << "\"";
+        if (p.dash > 0)
+            s << " stroke-dasharray=\"" << num(p.dash) << " " << num(0.6 * p.dash) << "\"";
         s << " stroke-linejoin=\"round\"/>\n";
     }
     s << "</g>\n";

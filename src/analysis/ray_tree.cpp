@@ -20,7 +20,8 @@ public:
         const double w = parent.weight;
         Interaction it;
         if (!next_interaction(m_scene, ray, m_options.wavelength_nm, it)) {
-            parent.children.push_back({origin, std::nullopt, -1, Event::Escape, ray.direction, w, false, {}});
+            parent.children.push_back(
+                {origin, std::nullopt, -1, Event::Escape, ray.direction, w, false, {}});
             m_tree.escaped += w;
             return;
         }
@@ -28,7 +29,8 @@ public:
         const int object = it.hit.object;
         const Scattering& s = it.scattering;
         if (s.diffuse > 0.0) {
-            parent.children.push_back({origin, p, object, Event::Absorb, ray.direction, w * s.diffuse, false, {}});
+            parent.children.push_back(
+                {origin, p, object, Event::Absorb, ray.direction, w * s.diffuse, false, {}});
             m_tree.absorbed += w * s.diffuse;
         }
         for (int i = 0; i < s.count; ++i) {
@@ -89,7 +91,8 @@ RayTree trace_ray_tree(const Scene& scene, const Ray& ray, const RayTreeOptions&
 nlohmann::ordered_json to_json(const Scene& scene, const RayTree& tree) {
     Json j;
     j["tree"] = node_json(scene, tree.root);
-    j["summary"] = {{"escaped", tree.escaped}, {"absorbed", tree.absorbed}, {"truncated", tree.truncated}};
+    j["summary"] = {
+        {"escaped", tree.escaped}, {"absorbed", tree.absorbed}, {"truncated", tree.truncated}};
     return j;
 }
 

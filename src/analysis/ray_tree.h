@@ -3,10 +3,9 @@
 // branch, each carrying its Fresnel-weighted share of the ray's power. `lenslab trace`
 // prints it; the optical-bench measurements are built on it.
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "scene/scattering.h"
 #include "scene/scene.h"
@@ -19,8 +18,8 @@ namespace lenslab {
 // The root is the start of the ray (event "start", from = to = origin).
 struct RayTreeNode {
     Vec3 from;
-    std::optional<Vec3> to;  // empty when the ray escapes
-    int object = -1;         // -1 when nothing was hit
+    std::optional<Vec3> to;      // empty when the ray escapes
+    int object = -1;             // -1 when nothing was hit
     std::optional<Event> event;  // empty for the root
     Vec3 direction;
     double weight = 0;
@@ -29,8 +28,8 @@ struct RayTreeNode {
 };
 
 struct RayTreeOptions {
-    int max_depth = 16;        // specular bounces followed along any one path
-    double min_weight = 1e-3;  // branches carrying less are dropped (counted as truncated)
+    int max_depth = 16;               // specular bounces followed along any one path
+    double min_weight = 1e-3;         // branches carrying less are dropped (counted as truncated)
     double wavelength_nm = 587.5618;  // vacuum wavelength traced (default: the d line)
 };
 

@@ -13,8 +13,14 @@ struct Aabb {
     Vec3 hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
             -std::numeric_limits<double>::infinity()};
 
-    void expand(const Vec3& p) { lo = min(lo, p); hi = max(hi, p); }
-    void expand(const Aabb& b) { lo = min(lo, b.lo); hi = max(hi, b.hi); }
+    void expand(const Vec3& p) {
+        lo = min(lo, p);
+        hi = max(hi, p);
+    }
+    void expand(const Aabb& b) {
+        lo = min(lo, b.lo);
+        hi = max(hi, b.hi);
+    }
     Vec3 centre() const { return (lo + hi) * 0.5; }
     Vec3 extent() const { return hi - lo; }
     bool empty() const { return lo.x > hi.x; }

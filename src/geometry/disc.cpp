@@ -23,7 +23,8 @@ Aabb Disc::bounds() const {
     // Along axis a the disc reaches r sqrt(1 - n_a^2) either side of its centre.
     Aabb b;
     Vec3 half;
-    for (int a = 0; a < 3; ++a) half[a] = m_radius * std::sqrt(std::max(0.0, 1.0 - m_frame.n[a] * m_frame.n[a]));
+    for (int a = 0; a < 3; ++a)
+        half[a] = m_radius * std::sqrt(std::max(0.0, 1.0 - m_frame.n[a] * m_frame.n[a]));
     b.expand(m_frame.origin - half);
     b.expand(m_frame.origin + half);
     return b;

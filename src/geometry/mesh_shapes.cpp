@@ -43,7 +43,9 @@ MeshGeometry make_uv_sphere(const Vec3& center, double radius, int slices, int s
     }
     const auto south = static_cast<int32_t>(m.vertices.size());
     m.vertices.push_back(center + Vec3{0, -radius, 0});
-    auto ring = [&](int i, int j) { return static_cast<int32_t>(1 + (i - 1) * slices + j % slices); };
+    auto ring = [&](int i, int j) {
+        return static_cast<int32_t>(1 + (i - 1) * slices + j % slices);
+    };
     m.triangles.reserve(2 * static_cast<size_t>(slices) * rings);
     for (int j = 0; j < slices; ++j) {
         m.triangles.push_back({0, ring(1, j + 1), ring(1, j)});

@@ -39,10 +39,10 @@ struct EdgeUse {
 };
 
 uint64_t edge_key(int32_t a, int32_t b) {
-    const auto lo = static_cast<uint32_t>(std::min(a, b)), hi = static_cast<uint32_t>(std::max(a, b));
+    const auto lo = static_cast<uint32_t>(std::min(a, b)),
+               hi = static_cast<uint32_t>(std::max(a, b));
     return (static_cast<uint64_t>(lo) << 32) | hi;
 }
-
 
 }  // namespace
 
@@ -76,8 +76,10 @@ MeshTopology check_mesh_topology(const std::vector<Vec3>& vertices,
     for_each_edge([&](int32_t t, int32_t a, int32_t b) {
         EdgeUse& e = edges[edge_key(a, b)];
         (a < b ? e.low_to_high : e.high_to_low) += 1;
-        if (e.first < 0) e.first = t;
-        else if (e.second < 0) e.second = t;
+        if (e.first < 0)
+            e.first = t;
+        else if (e.second < 0)
+            e.second = t;
         return true;
     });
     for_each_edge([&](int32_t, int32_t a, int32_t b) {
@@ -85,17 +87,16 @@ MeshTopology check_mesh_topology(const std::vector<Vec3>& vertices,
         const int32_t uses = e.low_to_high + e.high_to_low;
         if (uses == 2 && e.low_to_high == 1) return true;
         if (uses == 1) {
-            result.problem = edge_name(a, b) + " belongs to 1 face (face " +
-                             face_name(e.first) + "): the surface has a hole there";
+            result.problem = edge_name(a, b) + " belongs to 1 face (face " + face_name(e.first) +
+                             "): the surface has a hole there";
         } else if (uses == 2) {
-            result.problem = "faces " + face_name(e.first) + " and " +
-                             face_name(e.second) + " both run along " +
-                             edge_name(a, b) +
+            result.problem = "faces " + face_name(e.first) + " and " + face_name(e.second) +
+                             " both run along " + edge_name(a, b) +
                              " in the same direction: their orientations disagree";
         } else {
             result.problem = edge_name(a, b) + " belongs to " + std::to_string(uses) +
-                             " faces (faces " + face_name(e.first) + ", " +
-                             face_name(e.second) + ", ...)";
+                             " faces (faces " + face_name(e.first) + ", " + face_name(e.second) +
+                             ", ...)";
         }
         return false;
     });

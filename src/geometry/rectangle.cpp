@@ -4,14 +4,16 @@
 
 namespace lenslab {
 
-Rectangle::Rectangle(const Vec3& centre, const Vec3& normal, double width, double height, const Vec3& up)
+Rectangle::Rectangle(const Vec3& centre, const Vec3& normal, double width, double height,
+                     const Vec3& up)
     : m_frame(PlaneFrame::from_normal_up(centre, normal, up)), m_width(width), m_height(height) {}
 
 bool Rectangle::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const {
     const auto t = m_frame.ray_t(ray, t_min, t_max);
     if (!t) return false;
     const Vec3 p = ray.at(*t);
-    if (std::abs(m_frame.u_of(p)) > 0.5 * m_width || std::abs(m_frame.v_of(p)) > 0.5 * m_height) return false;
+    if (std::abs(m_frame.u_of(p)) > 0.5 * m_width || std::abs(m_frame.v_of(p)) > 0.5 * m_height)
+        return false;
     hit.t = *t;
     hit.point = p;
     hit.normal = m_frame.n;

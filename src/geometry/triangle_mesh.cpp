@@ -13,11 +13,13 @@ constexpr int kMaxLeafSize = 4;
 
 float round_down(double v) {
     const auto f = static_cast<float>(v);
-    return static_cast<double>(f) <= v ? f : std::nextafter(f, -std::numeric_limits<float>::infinity());
+    return static_cast<double>(f) <= v ? f
+                                       : std::nextafter(f, -std::numeric_limits<float>::infinity());
 }
 float round_up(double v) {
     const auto f = static_cast<float>(v);
-    return static_cast<double>(f) >= v ? f : std::nextafter(f, std::numeric_limits<float>::infinity());
+    return static_cast<double>(f) >= v ? f
+                                       : std::nextafter(f, std::numeric_limits<float>::infinity());
 }
 
 // The slab test of Aabb::hit with its conservative far distance (Ize 2013), on a float box,

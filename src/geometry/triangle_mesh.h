@@ -43,7 +43,7 @@ private:
     // memory, so the box is stored in float, rounded outward so it still holds its triangles.
     struct Node {
         float lo[3], hi[3];
-        int32_t first;  // leaf: first triangle; inner: index of the right child (left is next)
+        int32_t first;       // leaf: first triangle; inner: index of the right child (left is next)
         int32_t count_axis;  // leaf: triangle count << 2; inner: split axis (count 0)
     };
     std::vector<Node> m_nodes;

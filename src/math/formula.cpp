@@ -1,13 +1,13 @@
 #include "math/formula.h"
 
+#include <muParser.h>
+#include <oneapi/tbb/enumerable_thread_specific.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <regex>
-
-#include <muParser.h>
-#include <oneapi/tbb/enumerable_thread_specific.h>
 
 namespace lenslab {
 
@@ -130,8 +130,9 @@ Formula::Formula(std::string text, std::vector<std::string> names, const std::st
         throw FormulaError(0, "must not be empty");
     }
     if (m_text.size() > kMaxLength) {
-        throw FormulaError(0, "is " + std::to_string(m_text.size()) + " characters long, more than the " +
-                                  std::to_string(kMaxLength) + " allowed");
+        throw FormulaError(0, "is " + std::to_string(m_text.size()) +
+                                  " characters long, more than the " + std::to_string(kMaxLength) +
+                                  " allowed");
     }
     // muparser's `=` assigns to a variable, which would change the inputs it was given.
     for (size_t i = 0; i < m_text.size(); ++i) {

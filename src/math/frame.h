@@ -14,7 +14,9 @@ struct Frame {
         const double sign = std::copysign(1.0, w.z);
         const double a = -1.0 / (sign + w.z);
         const double b = w.x * w.y * a;
-        return {{1.0 + sign * w.x * w.x * a, sign * b, -sign * w.x}, {b, sign + w.y * w.y * a, -w.y}, w};
+        return {{1.0 + sign * w.x * w.x * a, sign * b, -sign * w.x},
+                {b, sign + w.y * w.y * a, -w.y},
+                w};
     }
 
     Vec3 to_world(const Vec3& local) const { return u * local.x + v * local.y + w * local.z; }

@@ -3,7 +3,6 @@
 // is identical for a given seed whatever the thread count.
 
 #include <cstdint>
-
 #include <pcg_random.hpp>
 
 namespace lenslab {

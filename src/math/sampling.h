@@ -11,7 +11,10 @@ namespace lenslab {
 // Uniform point on the unit disc, concentric mapping (Shirley & Chiu 1997): keeps strata.
 inline void sample_disc_concentric(double u1, double u2, double& x, double& y) {
     const double a = 2.0 * u1 - 1.0, b = 2.0 * u2 - 1.0;
-    if (a == 0.0 && b == 0.0) { x = y = 0.0; return; }
+    if (a == 0.0 && b == 0.0) {
+        x = y = 0.0;
+        return;
+    }
     double r, phi;
     if (std::abs(a) > std::abs(b)) {
         r = a;

@@ -43,7 +43,8 @@ private:
 
 class SellmeierIndex final : public IndexModel {
 public:
-    SellmeierIndex(std::vector<double> b, std::vector<double> c) : m_b(std::move(b)), m_c(std::move(c)) {}
+    SellmeierIndex(std::vector<double> b, std::vector<double> c)
+        : m_b(std::move(b)), m_c(std::move(c)) {}
     double n(double nm) const override {
         const double l2 = (nm * 1e-3) * (nm * 1e-3);
         double n2 = 1.0;
@@ -88,61 +89,78 @@ const std::vector<Glass>& glass_catalogue() {
     static const std::vector<Glass> catalogue = [] {
         std::vector<Glass> g;
         // SCHOTT optical glass data sheets (Sellmeier B1..B3, C1..C3; n_d, V_d; range).
-        g.push_back({"N-BK7", "borosilicate crown, the standard lens glass", "SCHOTT data sheet N-BK7 (517642.251)",
+        g.push_back({"N-BK7", "borosilicate crown, the standard lens glass",
+                     "SCHOTT data sheet N-BK7 (517642.251)",
                      with_range(sellmeier_index({1.03961212, 0.231792344, 1.01046945},
-                                                {0.00600069867, 0.0200179144, 103.560653}), 300, 2500),
+                                                {0.00600069867, 0.0200179144, 103.560653}),
+                                300, 2500),
                      1.51680, 64.17});
         g.push_back({"N-SF11", "dense flint, high index", "SCHOTT data sheet N-SF11 (785257.322)",
                      with_range(sellmeier_index({1.73759695, 0.313747346, 1.89878101},
-                                                {0.013188707, 0.0623068142, 155.23629}), 370, 2500),
+                                                {0.013188707, 0.0623068142, 155.23629}),
+                                370, 2500),
                      1.78472, 25.68});
-        g.push_back({"F2", "flint, classic achromat partner of crown", "SCHOTT data sheet F2 (620364.360)",
+        g.push_back({"F2", "flint, classic achromat partner of crown",
+                     "SCHOTT data sheet F2 (620364.360)",
                      with_range(sellmeier_index({1.34533359, 0.209073176, 0.937357162},
-                                                {0.00997743871, 0.0470450767, 111.886764}), 320, 2500),
+                                                {0.00997743871, 0.0470450767, 111.886764}),
+                                320, 2500),
                      1.62004, 36.37});
-        g.push_back({"N-SF6", "dense flint, strong dispersion (prisms)", "SCHOTT data sheet N-SF6 (805254.337)",
+        g.push_back({"N-SF6", "dense flint, strong dispersion (prisms)",
+                     "SCHOTT data sheet N-SF6 (805254.337)",
                      with_range(sellmeier_index({1.77931763, 0.338149866, 2.08734474},
-                                                {0.0133714182, 0.0617533621, 174.01759}), 370, 2500),
+                                                {0.0133714182, 0.0617533621, 174.01759}),
+                                370, 2500),
                      1.80518, 25.36});
         // The flint of Thorlabs' visible achromats (AC254-100-A: N-BK7 + SF5).
-        g.push_back({"SF5", "flint, achromat partner of N-BK7", "SCHOTT data sheet SF5 (673322.407)",
+        g.push_back({"SF5", "flint, achromat partner of N-BK7",
+                     "SCHOTT data sheet SF5 (673322.407)",
                      with_range(sellmeier_index({1.46141885, 0.247713019, 0.949995832},
-                                                {0.0111826126, 0.0508594669, 112.041888}), 370, 2500),
+                                                {0.0111826126, 0.0508594669, 112.041888}),
+                                370, 2500),
                      1.67270, 32.21});
-        g.push_back({"N-FK51A", "fluor crown, low dispersion (apochromats)", "SCHOTT data sheet N-FK51A (487845.368)",
+        g.push_back({"N-FK51A", "fluor crown, low dispersion (apochromats)",
+                     "SCHOTT data sheet N-FK51A (487845.368)",
                      with_range(sellmeier_index({0.971247817, 0.216901417, 0.904651666},
-                                                {0.00472301995, 0.0153575612, 168.68133}), 290, 2500),
+                                                {0.00472301995, 0.0153575612, 168.68133}),
+                                290, 2500),
                      1.48656, 84.47});
         // I. H. Malitson, "Interspecimen comparison of the refractive index of fused silica",
         // J. Opt. Soc. Am. 55, 1205 (1965): Sellmeier with C_i = (0.0684043, 0.1162414,
         // 9.896161 um)^2, 0.21 to 3.71 um; n_d 1.45846, V_d 67.82 as tabulated there.
         g.push_back({"fused-silica", "fused silica (SiO2 glass)", "Malitson, JOSA 55, 1205 (1965)",
                      with_range(sellmeier_index({0.6961663, 0.4079426, 0.8974794},
-                                                {0.0684043 * 0.0684043, 0.1162414 * 0.1162414, 9.896161 * 9.896161}),
+                                                {0.0684043 * 0.0684043, 0.1162414 * 0.1162414,
+                                                 9.896161 * 9.896161}),
                                 210, 3710),
                      1.45846, 67.82});
         // M. Daimon, A. Masumura, "Measurement of the refractive index of distilled water
         // from the near-infrared region to the ultraviolet region", Appl. Opt. 46, 3811
         // (2007), four-term Sellmeier at 20 degC, 0.182 to 1.129 um. Reference values: the
         // CRC Handbook gives n_D = 1.333 at 20 degC; V_d about 55.8.
-        g.push_back({"water", "distilled water at 20 degC", "Daimon & Masumura, Appl. Opt. 46, 3811 (2007)",
-                     with_range(sellmeier_index({5.684027565e-1, 1.726177391e-1, 2.086189578e-2, 1.130748688e-1},
-                                                {5.101829712e-3, 1.821153936e-2, 2.620722293e-2, 1.069792721e1}),
-                                182, 1129),
-                     1.3330, 55.8});
+        g.push_back(
+            {"water", "distilled water at 20 degC", "Daimon & Masumura, Appl. Opt. 46, 3811 (2007)",
+             with_range(
+                 sellmeier_index({5.684027565e-1, 1.726177391e-1, 2.086189578e-2, 1.130748688e-1},
+                                 {5.101829712e-3, 1.821153936e-2, 2.620722293e-2, 1.069792721e1}),
+                 182, 1129),
+             1.3330, 55.8});
         // F. Peter, "Uber Brechungsindizes und Absorptionskonstanten des Diamanten zwischen
         // 644 und 226 mu", Z. Phys. 15, 358 (1923): n^2 = 1 + 0.3306 l^2/(l^2 - 0.175^2)
         // + 4.3356 l^2/(l^2 - 0.106^2); n_d = 2.4175, V_d = 55.3 (gemmological tables).
         g.push_back({"diamond", "diamond (C)", "Peter, Z. Phys. 15, 358 (1923)",
-                     with_range(sellmeier_index({0.3306, 4.3356}, {0.175 * 0.175, 0.106 * 0.106}), 225, 2500),
+                     with_range(sellmeier_index({0.3306, 4.3356}, {0.175 * 0.175, 0.106 * 0.106}),
+                                225, 2500),
                      2.4175, 55.3});
         // Optical plastics are specified by their catalogue code (n_d, V_d); e.g. Evonik
         // PLEXIGLAS (PMMA) n_d 1.4918, V_d 57.2 and Covestro Makrolon (polycarbonate)
         // n_d 1.5855, V_d 29.9 optical-grade data. Modelled by a two-term Cauchy through the d,
-    // F and C lines: exact there, an approximation towards the ends of the visible.
-        g.push_back({"PMMA", "acrylic (PMMA), moulded lenses", "optical-grade PMMA: n_d 1.4918, V_d 57.2",
+        // F and C lines: exact there, an approximation towards the ends of the visible.
+        g.push_back({"PMMA", "acrylic (PMMA), moulded lenses",
+                     "optical-grade PMMA: n_d 1.4918, V_d 57.2",
                      with_range(abbe_index(1.4918, 57.2), 360, 1100), 1.4918, 57.2});
-        g.push_back({"polycarbonate", "polycarbonate (PC), moulded lenses", "optical-grade PC: n_d 1.5855, V_d 29.9",
+        g.push_back({"polycarbonate", "polycarbonate (PC), moulded lenses",
+                     "optical-grade PC: n_d 1.5855, V_d 29.9",
                      with_range(abbe_index(1.5855, 29.9), 360, 1100), 1.5855, 29.9});
         return g;
     }();

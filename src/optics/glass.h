@@ -40,9 +40,9 @@ std::shared_ptr<IndexModel> abbe_index(double n_d, double v_d);
 struct Glass {
     std::string name;
     std::string description;
-    std::string source;   // where the coefficients come from
+    std::string source;  // where the coefficients come from
     IndexModelPtr model;
-    double datasheet_n_d; // the source's published n_d and V_d, for checking
+    double datasheet_n_d;  // the source's published n_d and V_d, for checking
     double datasheet_v_d;
 };
 

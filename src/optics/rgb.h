@@ -15,9 +15,24 @@ struct Rgb {
     constexpr Rgb(double r_, double g_, double b_) : r(r_), g(g_), b(b_) {}
     static constexpr Rgb grey(double v) { return {v, v, v}; }
 
-    constexpr Rgb& operator+=(const Rgb& o) { r += o.r; g += o.g; b += o.b; return *this; }
-    constexpr Rgb& operator*=(const Rgb& o) { r *= o.r; g *= o.g; b *= o.b; return *this; }
-    constexpr Rgb& operator*=(double s) { r *= s; g *= s; b *= s; return *this; }
+    constexpr Rgb& operator+=(const Rgb& o) {
+        r += o.r;
+        g += o.g;
+        b += o.b;
+        return *this;
+    }
+    constexpr Rgb& operator*=(const Rgb& o) {
+        r *= o.r;
+        g *= o.g;
+        b *= o.b;
+        return *this;
+    }
+    constexpr Rgb& operator*=(double s) {
+        r *= s;
+        g *= s;
+        b *= s;
+        return *this;
+    }
 
     constexpr double max_component() const { return std::max(r, std::max(g, b)); }
     constexpr double average() const { return (r + g + b) / 3.0; }

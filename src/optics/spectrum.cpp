@@ -36,11 +36,11 @@ double integrate(F f) {
 // Constants derived once from the tables: D65 scaled to Y = 1, and the 3x3 matrix taking
 // band weights to the linear sRGB of the banded spectrum lit by (or multiplied with) D65.
 struct Calibration {
-    double d65_scale = 1.0;       // D65 * d65_scale has Y = 1
-    double d65_power = 1.0;       // int D65 * d65_scale over the visible range
-    Rgb white{1, 1, 1};           // linear sRGB of that D65 before white balancing
-    double inverse[3][3] = {};    // band weights from linear sRGB
-    BandColour d65_bands;         // band colours of D65 * d65_scale
+    double d65_scale = 1.0;     // D65 * d65_scale has Y = 1
+    double d65_power = 1.0;     // int D65 * d65_scale over the visible range
+    Rgb white{1, 1, 1};         // linear sRGB of that D65 before white balancing
+    double inverse[3][3] = {};  // band weights from linear sRGB
+    BandColour d65_bands;       // band colours of D65 * d65_scale
 
     // The tabulated D65 is a hair off the sRGB white point; dividing by its colour makes
     // D65 exactly [1, 1, 1], so greys round-trip exactly.
@@ -51,11 +51,14 @@ struct Calibration {
 
     Calibration() {
         const double y_integral = cie_y_integral();
-        d65_scale = y_integral / integrate([](double nm) { return d65_raw(nm) * cie_xyz_bar(nm).y; });
+        d65_scale =
+            y_integral / integrate([](double nm) { return d65_raw(nm) * cie_xyz_bar(nm).y; });
         d65_power = integrate([&](double nm) { return d65_raw(nm) * d65_scale; });
         Vec3 white_xyz;
         for (int c = 0; c < 3; ++c) {
-            white_xyz[c] = integrate([&](double nm) { return d65_raw(nm) * d65_scale * cie_xyz_bar(nm)[c]; }) / y_integral;
+            white_xyz[c] =
+                integrate([&](double nm) { return d65_raw(nm) * d65_scale * cie_xyz_bar(nm)[c]; }) /
+                y_integral;
         }
         white = xyz_to_linear_srgb(white_xyz);
         double m[3][3];
@@ -63,8 +66,11 @@ struct Calibration {
             Vec3 xyz;
             for (int c = 0; c < 3; ++c) {
                 xyz[c] = integrate([&](double nm) {
-                             return band_of(nm) == band ? d65_raw(nm) * d65_scale * cie_xyz_bar(nm)[c] : 0.0;
-                         }) / y_integral;
+                             return band_of(nm) == band
+                                        ? d65_raw(nm) * d65_scale * cie_xyz_bar(nm)[c]
+                                        : 0.0;
+                         }) /
+                         y_integral;
             }
             const Rgb rgb = balanced(xyz);
             d65_bands.band[band] = rgb;
@@ -86,7 +92,8 @@ struct Calibration {
     std::array<double, 3> weights(const Rgb& rgb, double max_weight) const {
         std::array<double, 3> w{};
         for (int b = 0; b < 3; ++b) {
-            w[b] = std::clamp(inverse[b][0] * rgb.r + inverse[b][1] * rgb.g + inverse[b][2] * rgb.b, 0.0, max_weight);
+            w[b] = std::clamp(inverse[b][0] * rgb.r + inverse[b][1] * rgb.g + inverse[b][2] * rgb.b,
+                              0.0, max_weight);
         }
         return w;
     }
@@ -185,14 +192,16 @@ double radiant_power(const Spectrum& s) {
 
 Rgb spectrum_to_rgb(const Spectrum& s) {
     Vec3 xyz;
-    for (int c = 0; c < 3; ++c) xyz[c] = integrate([&](double nm) { return s.eval(nm) * cie_xyz_bar(nm)[c]; });
+    for (int c = 0; c < 3; ++c)
+        xyz[c] = integrate([&](double nm) { return s.eval(nm) * cie_xyz_bar(nm)[c]; });
     return calibration().balanced(xyz * (1.0 / cie_y_integral()));
 }
 
 Rgb to_rgb(const SampledSpectrum& s, const SampledWavelengths& w) {
     Vec3 xyz;
     for (int i = 0; i < kWavelengthSamples; ++i) xyz += cie_xyz_bar(w.nm[i]) * s.v[i];
-    return calibration().balanced(xyz * (1.0 / (kWavelengthSamples * SampledWavelengths::pdf() * cie_y_integral())));
+    return calibration().balanced(
+        xyz * (1.0 / (kWavelengthSamples * SampledWavelengths::pdf() * cie_y_integral())));
 }
 
 SampledSpectrum Spectrum::sample(const SampledWavelengths& w) const {
@@ -219,7 +228,8 @@ double Spectrum::sample_wavelength(double u, double& nm) const {
     }
     const double target = u * total;
     const auto it = std::upper_bound(m_cdf.begin() + 1, m_cdf.end(), target);
-    const int b = std::min(static_cast<int>(it - m_cdf.begin()) - 1, static_cast<int>(m_cdf.size()) - 2);
+    const int b =
+        std::min(static_cast<int>(it - m_cdf.begin()) - 1, static_cast<int>(m_cdf.size()) - 2);
     const double in_bin = m_cdf[b + 1] - m_cdf[b];
     nm = kLambdaMinNm + b + (in_bin > 0 ? (target - m_cdf[b]) / in_bin : 0.5);
     return in_bin / total;  // density per nm, constant over this 1 nm bin

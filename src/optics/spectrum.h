@@ -1,8 +1,8 @@
 #pragma once
-// Spectral light transport, never RGB (colour is an output, not a transport unit): radiometric quantities are sampled at four
-// wavelengths per camera sample (hero-wavelength sampling, Wilkie et al. 2014, as pbrt-v4
-// does), spectra are functions of wavelength, and colour comes out through the CIE 1931
-// colour matching functions, XYZ and linear sRGB (IEC 61966-2-1).
+// Spectral light transport, never RGB (colour is an output, not a transport unit): radiometric
+// quantities are sampled at four wavelengths per camera sample (hero-wavelength sampling, Wilkie et
+// al. 2014, as pbrt-v4 does), spectra are functions of wavelength, and colour comes out through the
+// CIE 1931 colour matching functions, XYZ and linear sRGB (IEC 61966-2-1).
 
 #include <array>
 #include <memory>

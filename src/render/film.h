@@ -15,14 +15,17 @@ struct PixelRgb {
 class Film {
 public:
     Film() = default;
-    Film(int width, int height) : m_width(width), m_height(height), m_pixels(size_t(width) * height) {}
+    Film(int width, int height)
+        : m_width(width), m_height(height), m_pixels(size_t(width) * height) {}
 
     int width() const { return m_width; }
     int height() const { return m_height; }
     PixelRgb& at(int x, int y) { return m_pixels[size_t(y) * m_width + x]; }
     const PixelRgb& at(int x, int y) const { return m_pixels[size_t(y) * m_width + x]; }
     // Stores a linear value, clamped to what a float holds: no Inf or NaN in a pixel.
-    void set(int x, int y, const Rgb& c) { at(x, y) = {to_float(c.r), to_float(c.g), to_float(c.b)}; }
+    void set(int x, int y, const Rgb& c) {
+        at(x, y) = {to_float(c.r), to_float(c.g), to_float(c.b)};
+    }
     const std::vector<PixelRgb>& pixels() const { return m_pixels; }
 
 private:

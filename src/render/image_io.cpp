@@ -1,11 +1,10 @@
 #include "render/image_io.h"
 
-#include <png.h>
-
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <png.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +21,8 @@ namespace {
 
 std::string extension_of(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     return ext;
 }
 
@@ -87,16 +87,22 @@ void write_png_image(const Image8& image, const std::string& path) {
     write_via_temporary(path, [&](const std::string& tmp) { write_png(image, tmp); });
 }
 
-void write_exr_channels(int width, int height, const std::vector<ExrChannel>& channels, const std::string& path) {
+void write_exr_channels(int width, int height, const std::vector<ExrChannel>& channels,
+                        const std::string& path) {
     write_via_temporary(path, [&](const std::string& tmp) {
         try {
             Imf::Header header(width, height);
-            for (const ExrChannel& c : channels) header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+            for (const ExrChannel& c : channels)
+                header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
             Imf::OutputFile file(tmp.c_str(), header);
             Imf::FrameBuffer fb;
             const size_t xs = sizeof(float), ys = sizeof(float) * static_cast<size_t>(width);
             for (const ExrChannel& c : channels) {
-                fb.insert(c.name, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(c.values.data())), xs, ys));
+                fb.insert(
+                    c.name,
+                    Imf::Slice(Imf::FLOAT,
+                               const_cast<char*>(reinterpret_cast<const char*>(c.values.data())),
+                               xs, ys));
             }
             file.setFrameBuffer(fb);
             file.writePixels(height);

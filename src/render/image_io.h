@@ -44,6 +44,7 @@ struct ExrChannel {
     std::vector<float> values;
 };
 // Writes linear float channels as an OpenEXR file, atomically. Throws ImageError.
-void write_exr_channels(int width, int height, const std::vector<ExrChannel>& channels, const std::string& path);
+void write_exr_channels(int width, int height, const std::vector<ExrChannel>& channels,
+                        const std::string& path);
 
 }  // namespace lenslab

@@ -4,9 +4,9 @@
 #include <memory>
 #include <string>
 
+#include "optics/spectrum.h"
 #include "render/camera.h"
 #include "render/film.h"
-#include "optics/spectrum.h"
 #include "render/render_control.h"
 #include "render/render_stats.h"
 #include "scene/scene.h"
@@ -50,7 +50,8 @@ class ProgressiveIntegrator : public Integrator {
 public:
     // Runs `scene.render.passes` passes, or as many as fit in `scene.render.time` seconds,
     // then develops the image into `film`.
-    bool render(const Scene& scene, const Camera& camera, Film& film, RenderControl& control) override;
+    bool render(const Scene& scene, const Camera& camera, Film& film,
+                RenderControl& control) override;
 
     // One more pass. Returns false, having changed nothing, when `control` was cancelled.
     virtual bool add_pass(RenderControl& control) = 0;

@@ -1,11 +1,11 @@
 #include "render/photon_map.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
-
-#include <tbb/parallel_invoke.h>
 
 namespace lenslab {
 
@@ -13,22 +13,27 @@ PhotonFilter parse_photon_filter(const std::string& name) {
     if (name == "cone") return PhotonFilter::Cone;
     if (name == "gaussian") return PhotonFilter::Gaussian;
     if (name == "box") return PhotonFilter::Box;
-    throw std::invalid_argument("unknown photon filter '" + name + "' (known: cone, gaussian, box)");
+    throw std::invalid_argument("unknown photon filter '" + name +
+                                "' (known: cone, gaussian, box)");
 }
 
 const char* photon_filter_name(PhotonFilter f) {
     switch (f) {
-        case PhotonFilter::Cone: return "cone";
-        case PhotonFilter::Gaussian: return "gaussian";
-        case PhotonFilter::Box: return "box";
+        case PhotonFilter::Cone:
+            return "cone";
+        case PhotonFilter::Gaussian:
+            return "gaussian";
+        case PhotonFilter::Box:
+            return "box";
     }
     return "cone";
 }
 
 PhotonMap::PhotonMap(std::vector<Photon> photons, size_t direct) : m_storage(std::move(photons)) {
     Photon* base = m_storage.data();
-    tbb::parallel_invoke([&] { m_direct = PhotonKdTree(base, direct); },
-                         [&] { m_caustic = PhotonKdTree(base + direct, m_storage.size() - direct); });
+    tbb::parallel_invoke(
+        [&] { m_direct = PhotonKdTree(base, direct); },
+        [&] { m_caustic = PhotonKdTree(base + direct, m_storage.size() - direct); });
 }
 
 Rgb PhotonMap::irradiance(const PhotonKdTree& map, const Vec3& x, const Vec3& n,
@@ -46,7 +51,8 @@ Rgb PhotonMap::irradiance(const PhotonKdTree& map, const Vec3& x, const Vec3& n,
         if (g.filter == PhotonFilter::Cone) {
             w = 1.0 - std::sqrt(static_cast<double>(nb.dist2)) / (g.cone_k * r);
         } else if (g.filter == PhotonFilter::Gaussian) {
-            w = kAlpha * (1.0 - (1.0 - std::exp(-kBeta * nb.dist2 / (2.0 * r2))) / gauss_denominator);
+            w = kAlpha *
+                (1.0 - (1.0 - std::exp(-kBeta * nb.dist2 / (2.0 * r2))) / gauss_denominator);
         }
         for (int c = 0; c < 3; ++c) sum[c] += w * nb.photon->power[c];
     }

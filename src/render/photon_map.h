@@ -16,10 +16,10 @@ PhotonFilter parse_photon_filter(const std::string& name);  // throws std::inval
 const char* photon_filter_name(PhotonFilter f);
 
 struct GatherSettings {
-    double radius = 0.05;        // largest gather radius
-    size_t max_photons = 500;    // cap on photons per estimate (k nearest within the radius)
+    double radius = 0.05;      // largest gather radius
+    size_t max_photons = 500;  // cap on photons per estimate (k nearest within the radius)
     PhotonFilter filter = PhotonFilter::Cone;
-    double cone_k = 1.1;         // cone filter constant, >= 1
+    double cone_k = 1.1;  // cone filter constant, >= 1
 };
 
 class PhotonMap {

@@ -1,9 +1,9 @@
 #include "render/sppm_photons.h"
 
-#include <algorithm>
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+
+#include <algorithm>
 
 #include "accel/photon.h"
 #include "math/rng.h"
@@ -24,8 +24,8 @@ struct ChunkOut {
     std::vector<uint32_t> chains;
 };
 
-void trace_one(const Scene& scene, const PhotonPassSettings& s, const PhotonPlan& plan, int64_t index,
-               Rng& rng, ChunkOut& out) {
+void trace_one(const Scene& scene, const PhotonPassSettings& s, const PhotonPlan& plan,
+               int64_t index, Rng& rng, ChunkOut& out) {
     const PhotonPlan::Photon photon = plan.start(scene, index, rng);
     const PhotonStart& start = photon.start;
     if (start.scale == 0.0) return;  // sampled where the light sends nothing

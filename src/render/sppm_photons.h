@@ -61,13 +61,13 @@ struct PhotonPass {
 
 struct PhotonPassSettings {
     int64_t photons_per_light = 100000;  // emitted as the lights emit, per light on average
-    int max_depth = 8;       // surfaces a photon meets before it is dropped
-    uint64_t seed = 1;       // this pass's seed
-    double lambda_nm = 550;  // the pass wavelength
-    double lambda_pdf = 1;   // its density
-    double pass_share = 0;   // probability that a dispersed photon takes the pass wavelength
+    int max_depth = 8;                   // surfaces a photon meets before it is dropped
+    uint64_t seed = 1;                   // this pass's seed
+    double lambda_nm = 550;              // the pass wavelength
+    double lambda_pdf = 1;               // its density
+    double pass_share = 0;  // probability that a dispersed photon takes the pass wavelength
     const class PassWavelength* wavelengths = nullptr;  // where dispersed photons draw their own
-    int64_t caustic_photons_per_light = 0;  // aimed at the photon targets, per light
+    int64_t caustic_photons_per_light = 0;              // aimed at the photon targets, per light
     bool aim = true;
 };
 

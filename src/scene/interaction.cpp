@@ -5,7 +5,8 @@
 namespace lenslab {
 
 bool next_interaction(const Scene& scene, const Ray& ray, double lambda_nm, Interaction& out) {
-    if (!scene.intersect(ray, surface_epsilon(ray.origin), std::numeric_limits<double>::infinity(), out.hit)) {
+    if (!scene.intersect(ray, surface_epsilon(ray.origin), std::numeric_limits<double>::infinity(),
+                         out.hit)) {
         return false;
     }
     out.object = &scene.objects[out.hit.object];
@@ -16,7 +17,8 @@ bool next_interaction(const Scene& scene, const Ray& ray, double lambda_nm, Inte
 }
 
 Scattering scatter_at(const Interaction& it, const Vec3& d, double lambda_nm) {
-    return scatter(*it.material, it.object->shape->is_closed(), d, it.normal(), lambda_nm, it.beyond);
+    return scatter(*it.material, it.object->shape->is_closed(), d, it.normal(), lambda_nm,
+                   it.beyond);
 }
 
 }  // namespace lenslab

@@ -10,12 +10,18 @@ namespace {
 
 const char* type_name(const nlohmann::json& v) {
     switch (v.type()) {
-        case nlohmann::json::value_t::null: return "null";
-        case nlohmann::json::value_t::object: return "an object";
-        case nlohmann::json::value_t::array: return "an array";
-        case nlohmann::json::value_t::string: return "a string";
-        case nlohmann::json::value_t::boolean: return "a boolean";
-        default: return "a number";
+        case nlohmann::json::value_t::null:
+            return "null";
+        case nlohmann::json::value_t::object:
+            return "an object";
+        case nlohmann::json::value_t::array:
+            return "an array";
+        case nlohmann::json::value_t::string:
+            return "a string";
+        case nlohmann::json::value_t::boolean:
+            return "a boolean";
+        default:
+            return "a number";
     }
 }
 
@@ -142,7 +148,8 @@ std::string format_number(double v) {
 }
 
 JsonObjectReader::JsonObjectReader(const nlohmann::json& value, std::string path,
-                                   const std::vector<std::string>& allowed, const std::string& owner)
+                                   const std::vector<std::string>& allowed,
+                                   const std::string& owner)
     : m_value(value), m_path(std::move(path)), m_allowed(allowed.begin(), allowed.end()) {
     if (!value.is_object()) {
         throw SceneError(m_path, std::string("must be an object, got ") + type_name(value));
@@ -180,7 +187,8 @@ const nlohmann::json& JsonObjectReader::require(const std::string& key) {
 }
 
 double JsonObjectReader::as_number(const nlohmann::json& v, const std::string& path) {
-    if (!v.is_number()) throw SceneError(path, std::string("must be a number, got ") + type_name(v));
+    if (!v.is_number())
+        throw SceneError(path, std::string("must be a number, got ") + type_name(v));
     const double d = v.get<double>();
     // Scene values stay far from double's range, so squares and products cannot overflow.
     if (!(std::abs(d) <= kMaxSceneNumber)) {
@@ -248,8 +256,8 @@ int64_t JsonObjectReader::integer(const std::string& key, int64_t fallback, int6
         throw SceneError(child_path(key), "must be a whole number, got " + format_number(d));
     }
     if (d < static_cast<double>(min_value) || d > static_cast<double>(max_value)) {
-        throw SceneError(child_path(key), "must be between " + std::to_string(min_value) +
-                                              " and " + std::to_string(max_value) + ", got " +
+        throw SceneError(child_path(key), "must be between " + std::to_string(min_value) + " and " +
+                                              std::to_string(max_value) + ", got " +
                                               format_number(d));
     }
     return static_cast<int64_t>(d);
@@ -278,7 +286,9 @@ std::string JsonObjectReader::string(const std::string& key, const std::string& 
     return has(key) ? string(key) : fallback;
 }
 
-Vec3 JsonObjectReader::vec3(const std::string& key) { return as_vec3(require(key), child_path(key)); }
+Vec3 JsonObjectReader::vec3(const std::string& key) {
+    return as_vec3(require(key), child_path(key));
+}
 
 Vec3 JsonObjectReader::direction(const std::string& key) {
     const Vec3 v = vec3(key);
@@ -304,7 +314,9 @@ Rgb JsonObjectReader::albedo(const std::string& key, const Rgb& fallback) {
 std::optional<bool> JsonObjectReader::boolean(const std::string& key) {
     const nlohmann::json* v = find(key);
     if (!v) return std::nullopt;
-    if (!v->is_boolean()) throw SceneError(child_path(key), std::string("must be true or false, got ") + type_name(*v));
+    if (!v->is_boolean())
+        throw SceneError(child_path(key),
+                         std::string("must be true or false, got ") + type_name(*v));
     return v->get<bool>();
 }
 

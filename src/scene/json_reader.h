@@ -4,13 +4,12 @@
 
 #include <cmath>
 #include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <stdexcept>
-#include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "math/vec3.h"
 #include "optics/rgb.h"
@@ -68,7 +67,7 @@ public:
     // A reflectance colour: as `color`, each component also <= 1 (energy conservation).
     Rgb albedo(const std::string& key, const Rgb& fallback);
     double fraction(const std::string& key, double fallback);  // in [0, 1]
-    std::optional<bool> boolean(const std::string& key);      // unset when absent
+    std::optional<bool> boolean(const std::string& key);       // unset when absent
 
     // Helpers for values that are not members of an object reader.
     static double as_number(const nlohmann::json& v, const std::string& path);

@@ -56,14 +56,17 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
         e.name = er.string("name", name + " element " + std::to_string(i + 1));
         e.thickness = er.positive("thickness");
         e.gap = er.has("gap") ? er.number("gap") : 0.0;
-        if (e.gap < 0) throw SceneError(er.child_path("gap"), "must be >= 0 (the air space after the element)");
+        if (e.gap < 0)
+            throw SceneError(er.child_path("gap"),
+                             "must be >= 0 (the air space after the element)");
         e.diameter = er.positive("diameter", group_diameter);
         e.front = &er.require("front");
         e.back = er.find("back");
         const bool last = i + 1 == list.size();
         if (!e.back && (last || e.gap > 0)) {
-            throw SceneError(e.path, last ? "the last element needs a back surface"
-                                          : "an element followed by an air gap needs a back surface");
+            throw SceneError(e.path,
+                             last ? "the last element needs a back surface"
+                                  : "an element followed by an air gap needs a back surface");
         }
         if (e.back && !last && e.gap == 0) {
             throw SceneError(er.child_path("back"),
@@ -88,10 +91,10 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
         p.back = read_lens_surface(back, back_path, 0.5 * e.diameter);
         p.x_axis = x_axis;
         if (auto problem = LensSolid::check_prescription(p)) {
-            const std::string field = problem->field == "back"    ? back_path
-                                      : problem->field == "front" ? e.path + ".front"
+            const std::string field = problem->field == "back"     ? back_path
+                                      : problem->field == "front"  ? e.path + ".front"
                                       : problem->field == "x_axis" ? r.child_path("x_axis")
-                                                                  : e.path + "." + problem->field;
+                                                                   : e.path + "." + problem->field;
             throw SceneError(field, problem->reason);
         }
         SceneObject o;

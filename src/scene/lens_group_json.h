@@ -5,10 +5,9 @@
 // "Lens group"). It becomes one lens object per element.
 
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "scene/scene.h"
 

@@ -9,8 +9,8 @@ namespace lenslab {
 std::optional<std::string> image_size_problem(int64_t width, int64_t height) {
     if (width * height <= kMaxImagePixels) return std::nullopt;
     return std::to_string(width) + " x " + std::to_string(height) + " is " +
-           std::to_string(width * height) + " pixels, more than the " + std::to_string(kMaxImagePixels) +
-           " (8192 x 8192) allowed";
+           std::to_string(width * height) + " pixels, more than the " +
+           std::to_string(kMaxImagePixels) + " (8192 x 8192) allowed";
 }
 
 void check_count(size_t count, size_t limit, const std::string& path, const std::string& what) {

@@ -11,16 +11,16 @@
 
 namespace lenslab {
 
-inline constexpr int kMaxImageSide = 16384;                    // render.width, render.height
-inline constexpr int64_t kMaxImagePixels = int64_t{1} << 26;   // width x height (8192 x 8192)
-inline constexpr int kMaxSpp = 1 << 20;                        // render.spp
-inline constexpr int kMaxDepth = 1000;                         // render.max_depth
+inline constexpr int kMaxImageSide = 16384;                       // render.width, render.height
+inline constexpr int64_t kMaxImagePixels = int64_t{1} << 26;      // width x height (8192 x 8192)
+inline constexpr int kMaxSpp = 1 << 20;                           // render.spp
+inline constexpr int kMaxDepth = 1000;                            // render.max_depth
 inline constexpr int64_t kMaxPhotonsPerLight = int64_t{1} << 40;  // also checked against memory
-inline constexpr size_t kMaxObjects = 1000000;                 // objects[]
-inline constexpr size_t kMaxLights = 10000;                    // lights[]
-inline constexpr size_t kMaxMeshTriangles = 10000000;          // per mesh, after triangulation
+inline constexpr size_t kMaxObjects = 1000000;                    // objects[]
+inline constexpr size_t kMaxLights = 10000;                       // lights[]
+inline constexpr size_t kMaxMeshTriangles = 10000000;             // per mesh, after triangulation
 inline constexpr uint64_t kMaxSceneFileBytes = uint64_t{256} << 20;  // a scene file
-inline constexpr uint64_t kMaxObjFileBytes = uint64_t{512} << 20;  // an OBJ file
+inline constexpr uint64_t kMaxObjFileBytes = uint64_t{512} << 20;    // an OBJ file
 
 // Why a width x height image is refused ("16384 x 16384 is 268435456 pixels, more than the
 // 67108864 (8192 x 8192) allowed"), or nullopt. The sides are checked separately.

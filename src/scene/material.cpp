@@ -19,10 +19,15 @@ private:
 void Material::finish() {
     albedo = reflectance_from_rgb(color);
     albedo_bands = reflectance_bands(color);
-    const SpectrumPtr shape = emission_spectrum ? emission_spectrum : illuminant_from_rgb(emission_color);
-    emission = emission_intensity > 0.0 ? std::make_shared<ScaledSpectrum>(shape, emission_intensity) : nullptr;
+    const SpectrumPtr shape =
+        emission_spectrum ? emission_spectrum : illuminant_from_rgb(emission_color);
+    emission = emission_intensity > 0.0
+                   ? std::make_shared<ScaledSpectrum>(shape, emission_intensity)
+                   : nullptr;
 }
 
-SpectrumPtr scaled_spectrum(SpectrumPtr s, double scale) { return std::make_shared<ScaledSpectrum>(std::move(s), scale); }
+SpectrumPtr scaled_spectrum(SpectrumPtr s, double scale) {
+    return std::make_shared<ScaledSpectrum>(std::move(s), scale);
+}
 
 }  // namespace lenslab

@@ -26,17 +26,19 @@ struct Material {
     std::string glass;  // catalogue name when the index came from the catalogue
     Rgb emission_color{1.0, 1.0, 1.0};
     double emission_intensity = 0.0;  // radiance scale, W m^-2 sr^-1
-    SpectrumPtr emission_spectrum;    // set when the emission gives a spectrum, else from the colour
+    SpectrumPtr emission_spectrum;  // set when the emission gives a spectrum, else from the colour
 
     // Spectra derived from the colours; `finish()` builds them after the fields are set.
     SpectrumPtr albedo;
     BandWeights albedo_bands{};  // albedo's value in each band (it is band-constant)
-    SpectrumPtr emission;  // emitted radiance spectrum (intensity included)
+    SpectrumPtr emission;        // emitted radiance spectrum (intensity included)
     void finish();
 
     double diffuse_weight() const { return std::max(0.0, 1.0 - transparency - specular); }
     double ior(double nm) const { return index->n(nm); }
-    bool is_emitter() const { return emission_intensity > 0.0 && emission && !emission_color.is_black(); }
+    bool is_emitter() const {
+        return emission_intensity > 0.0 && emission && !emission_color.is_black();
+    }
 };
 
 // `s` times a constant.

@@ -68,17 +68,18 @@ int32_t read_index(const json& v, const std::string& face_path, size_t k, size_t
         const std::string path = item_path(face_path, k);
         const double d = JsonObjectReader::as_number(v, path);
         if (d != std::floor(d)) {
-            throw SceneError(path, "must be a whole number (a vertex index), got " + format_number(d));
+            throw SceneError(path,
+                             "must be a whole number (a vertex index), got " + format_number(d));
         }
         if (d >= 0 && d < static_cast<double>(vertex_count)) return static_cast<int32_t>(d);
     } else {
         const int64_t i = v.get<int64_t>();
         if (i >= 0 && static_cast<uint64_t>(i) < vertex_count) return static_cast<int32_t>(i);
     }
-    throw SceneError(item_path(face_path, k),
-                     "must be a vertex index from 0 to " + std::to_string(vertex_count - 1) +
-                         " (there are " + std::to_string(vertex_count) + " vertices), got " +
-                         v.dump());
+    throw SceneError(item_path(face_path, k), "must be a vertex index from 0 to " +
+                                                  std::to_string(vertex_count - 1) +
+                                                  " (there are " + std::to_string(vertex_count) +
+                                                  " vertices), got " + v.dump());
 }
 
 Polygons read_inline(JsonObjectReader& r) {
@@ -104,10 +105,10 @@ Polygons read_inline(JsonObjectReader& r) {
     for (size_t f = 0; f < faces.size(); ++f) {
         const json& face = faces[f];
         if (!face.is_array() || face.size() < 3) {
-            throw SceneError(item_path(fpath, f),
-                             "a face must be an array of at least 3 vertex indices, got " +
-                                 (face.is_array() ? std::to_string(face.size()) + " indices"
-                                                  : face.dump()));
+            throw SceneError(
+                item_path(fpath, f),
+                "a face must be an array of at least 3 vertex indices, got " +
+                    (face.is_array() ? std::to_string(face.size()) + " indices" : face.dump()));
         }
         corners.clear();
         for (size_t k = 0; k < face.size(); ++k) {
@@ -121,7 +122,8 @@ Polygons read_inline(JsonObjectReader& r) {
             corners.push_back(index);
         }
         add_fan(corners, static_cast<int32_t>(f), p);
-        check_count(p.geometry.triangles.size(), kMaxMeshTriangles, fpath, "triangles (faces fan-split)");
+        check_count(p.geometry.triangles.size(), kMaxMeshTriangles, fpath,
+                    "triangles (faces fan-split)");
     }
     return p;
 }
@@ -141,8 +143,9 @@ Polygons read_obj(JsonObjectReader& r, const std::string& base_dir) {
     const std::string file = r.string("file");
     const std::string path = r.child_path("file");
     namespace fs = std::filesystem;
-    const fs::path resolved =
-        fs::path(file).is_absolute() || base_dir.empty() ? fs::path(file) : fs::path(base_dir) / file;
+    const fs::path resolved = fs::path(file).is_absolute() || base_dir.empty()
+                                  ? fs::path(file)
+                                  : fs::path(base_dir) / file;
     const std::string cannot = "cannot read '" + file + "': ";
     const std::string where =
         resolved.string() == file ? "" : " (looked for " + resolved.string() + ")";
@@ -167,8 +170,9 @@ Polygons read_obj(JsonObjectReader& r, const std::string& base_dir) {
     const std::vector<double>& xyz = reader.GetAttrib().vertices;
     const size_t vertex_count = xyz.size() / 3;
     if (vertex_count > kMaxMeshTriangles) {
-        throw SceneError(path, cannot + "holds " + std::to_string(vertex_count) + " vertices, more than the " +
-                                   std::to_string(kMaxMeshTriangles) + " allowed");
+        throw SceneError(path, cannot + "holds " + std::to_string(vertex_count) +
+                                   " vertices, more than the " + std::to_string(kMaxMeshTriangles) +
+                                   " allowed");
     }
     p.geometry.vertices.reserve(vertex_count);
     for (size_t i = 0; i < vertex_count; ++i) {
@@ -219,7 +223,8 @@ Polygons read_obj(JsonObjectReader& r, const std::string& base_dir) {
             add_fan(corners, face, p);
             ++face;
             if (p.geometry.triangles.size() > kMaxMeshTriangles) {
-                throw SceneError(path, cannot + "holds more than " + std::to_string(kMaxMeshTriangles) +
+                throw SceneError(path, cannot + "holds more than " +
+                                           std::to_string(kMaxMeshTriangles) +
                                            " triangles (faces fan-split), more than allowed");
             }
         }
@@ -272,14 +277,14 @@ std::shared_ptr<const Shape> build_mesh(JsonObjectReader& r, Polygons p) {
 }  // namespace
 
 const std::vector<std::string>& mesh_keys() {
-    static const std::vector<std::string> keys{"vertices", "faces", "file",    "scale",
+    static const std::vector<std::string> keys{"vertices", "faces", "file",  "scale",
                                                "position", "up",    "facing"};
     return keys;
 }
 
 const std::vector<std::string>& prism_keys() {
-    static const std::vector<std::string> keys{"apex_angle", "side", "height", "center",
-                                               "axis",       "facing"};
+    static const std::vector<std::string> keys{"apex_angle", "side", "height",
+                                               "center",     "axis", "facing"};
     return keys;
 }
 
@@ -325,8 +330,10 @@ std::shared_ptr<const Shape> read_prism(JsonObjectReader& r) {
     // Built closed by construction; only sizes at the edge of what doubles resolve (a height
     // of 1e-307, or a millimetre far from the origin) collapse faces and open it.
     if (!static_cast<const TriangleMesh&>(*shape).is_closed()) {
-        throw SceneError(r.path(), "side " + format_number(spec.side) + " and height " + format_number(spec.height) +
-                                       " are too small to build a closed prism at this position (its faces collapse)");
+        throw SceneError(
+            r.path(),
+            "side " + format_number(spec.side) + " and height " + format_number(spec.height) +
+                " are too small to build a closed prism at this position (its faces collapse)");
     }
     return shape;
 }

@@ -13,7 +13,8 @@
 //        | height    | number > 0, required    | length along axis
 //        | center    | point, required         | centre of the bounding box
 //        | axis      | direction, [0, 1, 0]    | the long axis (along the height)
-//        | facing    | direction, [0, 0, 1]    | from the base towards the apex, perpendicular to axis
+//        | facing    | direction, [0, 0, 1]    | from the base towards the apex, perpendicular to
+//        axis
 //
 // A closed mesh (every edge shared by two faces running along it in opposite directions) is
 // a solid of its material; one given inside-out (negative signed volume) is turned outward.

@@ -19,7 +19,8 @@ constexpr int kMaxBands = 16;
 Vec3 read_up(JsonObjectReader& r, const Vec3& normal) {
     if (!r.has("up")) return default_plane_up(normal);
     const Vec3 up = r.direction("up");
-    if (length(cross(up, normal)) < 1e-9) throw SceneError(r.child_path("up"), "must not be parallel to normal");
+    if (length(cross(up, normal)) < 1e-9)
+        throw SceneError(r.child_path("up"), "must not be parallel to normal");
     return up;
 }
 
@@ -27,13 +28,15 @@ void read_resolution(const json& v, const std::string& path, DetectorSettings& d
     auto cells = [&](const json& n, const std::string& at) {
         const double x = JsonObjectReader::as_number(n, at);
         if (x != std::floor(x) || x < 1 || x > kMaxCellsPerSide) {
-            throw SceneError(at, "must be a whole number of cells from 1 to " + std::to_string(kMaxCellsPerSide) +
-                                     ", got " + format_number(x));
+            throw SceneError(at, "must be a whole number of cells from 1 to " +
+                                     std::to_string(kMaxCellsPerSide) + ", got " +
+                                     format_number(x));
         }
         return static_cast<int>(x);
     };
     if (v.is_array()) {
-        if (v.size() != 2) throw SceneError(path, "must be a number of cells or [cells along u, cells along v]");
+        if (v.size() != 2)
+            throw SceneError(path, "must be a number of cells or [cells along u, cells along v]");
         d.cells_u = cells(v[0], path + "[0]");
         d.cells_v = cells(v[1], path + "[1]");
     } else {
@@ -45,19 +48,21 @@ void read_bands(const json& v, const std::string& path, DetectorSettings& d) {
     d.band_edges.clear();
     if (v.is_array()) {
         if (v.size() < 2 || v.size() > kMaxBands + 1) {
-            throw SceneError(path, "must be a number of bands or an array of 2 to " + std::to_string(kMaxBands + 1) +
+            throw SceneError(path, "must be a number of bands or an array of 2 to " +
+                                       std::to_string(kMaxBands + 1) +
                                        " band edges in nm, increasing");
         }
         for (size_t i = 0; i < v.size(); ++i) {
             const std::string at = path + "[" + std::to_string(i) + "]";
             const double nm = JsonObjectReader::as_number(v[i], at);
             if (nm < kLambdaMinNm || nm > kLambdaMaxNm) {
-                throw SceneError(at, "must be a wavelength from 360 to 830 nm (the range transported), got " +
-                                         format_number(nm));
+                throw SceneError(
+                    at, "must be a wavelength from 360 to 830 nm (the range transported), got " +
+                            format_number(nm));
             }
             if (i > 0 && !(nm > d.band_edges.back())) {
-                throw SceneError(at, "band edges must increase, got " + format_number(nm) + " after " +
-                                         format_number(d.band_edges.back()));
+                throw SceneError(at, "band edges must increase, got " + format_number(nm) +
+                                         " after " + format_number(d.band_edges.back()));
             }
             d.band_edges.push_back(nm);
         }
@@ -65,11 +70,13 @@ void read_bands(const json& v, const std::string& path, DetectorSettings& d) {
     }
     const double n = JsonObjectReader::as_number(v, path);
     if (n != std::floor(n) || n < 1 || n > kMaxBands) {
-        throw SceneError(path, "must be a whole number of bands from 1 to " + std::to_string(kMaxBands) +
+        throw SceneError(path, "must be a whole number of bands from 1 to " +
+                                   std::to_string(kMaxBands) +
                                    " (or an array of band edges in nm), got " + format_number(n));
     }
     const int bands = static_cast<int>(n);
-    for (int i = 0; i <= bands; ++i) d.band_edges.push_back(kLambdaMinNm + (kLambdaMaxNm - kLambdaMinNm) * i / bands);
+    for (int i = 0; i <= bands; ++i)
+        d.band_edges.push_back(kLambdaMinNm + (kLambdaMaxNm - kLambdaMinNm) * i / bands);
 }
 
 }  // namespace
@@ -99,30 +106,39 @@ std::shared_ptr<const Shape> read_rectangle(SpecReader& r) {
 std::optional<DetectorSettings> read_detector(JsonObjectReader& r) {
     const json* v = r.find("detector");
     if (!v) return std::nullopt;
-    if (v->is_boolean()) return v->get<bool>() ? std::optional<DetectorSettings>(DetectorSettings{}) : std::nullopt;
+    if (v->is_boolean())
+        return v->get<bool>() ? std::optional<DetectorSettings>(DetectorSettings{}) : std::nullopt;
     const std::string path = r.child_path("detector");
-    if (!v->is_object()) throw SceneError(path, "must be true, false or an object {\"resolution\": ..., \"bands\": ...}");
+    if (!v->is_object())
+        throw SceneError(path,
+                         "must be true, false or an object {\"resolution\": ..., \"bands\": ...}");
     JsonObjectReader dr(*v, path, {"resolution", "bands", "side", "unit"});
     DetectorSettings d;
-    if (const json* res = dr.find("resolution")) read_resolution(*res, dr.child_path("resolution"), d);
+    if (const json* res = dr.find("resolution"))
+        read_resolution(*res, dr.child_path("resolution"), d);
     if (const json* bands = dr.find("bands")) read_bands(*bands, dr.child_path("bands"), d);
     const std::string side = dr.choice("side", "front", {"front", "back", "both"});
-    d.side = side == "front" ? DetectorSide::Front : (side == "back" ? DetectorSide::Back : DetectorSide::Both);
+    d.side = side == "front" ? DetectorSide::Front
+                             : (side == "back" ? DetectorSide::Back : DetectorSide::Both);
     d.unit = dr.string("unit", d.unit);
-    const bool printable = !d.unit.empty() && d.unit.size() <= 16 &&
-                           d.unit.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") ==
-                               std::string::npos;
+    const bool printable =
+        !d.unit.empty() && d.unit.size() <= 16 &&
+        d.unit.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") ==
+            std::string::npos;
     if (!printable) {
-        throw SceneError(dr.child_path("unit"), "must be the name of a length unit in 1 to 16 letters (e.g. \"mm\"), got '" +
-                                                    d.unit + "'");
+        throw SceneError(
+            dr.child_path("unit"),
+            "must be the name of a length unit in 1 to 16 letters (e.g. \"mm\"), got '" + d.unit +
+                "'");
     }
     return d;
 }
 
 void check_detector_allowed(const json& object, const std::string& path, const std::string& type) {
     if (object.is_object() && object.contains("detector")) {
-        throw SceneError(path + ".detector", "only a triangle, disc or rectangle can be a detector (this is a" +
-                                                 std::string(type == "implicit" ? "n " : " ") + type + ")");
+        throw SceneError(path + ".detector",
+                         "only a triangle, disc or rectangle can be a detector (this is a" +
+                             std::string(type == "implicit" ? "n " : " ") + type + ")");
     }
 }
 

@@ -21,13 +21,13 @@ inline const std::vector<std::string> kDirectLightNames{"shadow_rays", "photon_m
 struct RenderSettings {
     int width = 640;
     int height = 480;
-    int spp = 4;            // camera samples per pixel
-    int max_depth = 8;      // longest chain of specular bounces followed
+    int spp = 4;        // camera samples per pixel
+    int max_depth = 8;  // longest chain of specular bounces followed
     uint64_t seed = 1;
-    Rgb ambient{0, 0, 0};   // ambient radiance Ia lighting every diffuse surface
-    Rgb background{0, 0, 0};  // radiance of rays that leave the scene
-    int light_samples = 1;  // shadow rays per area light per camera sample
-    double min_weight = 1e-4;  // specular branches carrying less are not followed
+    Rgb ambient{0, 0, 0};                // ambient radiance Ia lighting every diffuse surface
+    Rgb background{0, 0, 0};             // radiance of rays that leave the scene
+    int light_samples = 1;               // shadow rays per area light per camera sample
+    double min_weight = 1e-4;            // specular branches carrying less are not followed
     std::string integrator = "whitted";  // whitted | photon_map | sppm | path
 
     // Photon mapping (integrator photon_map).
@@ -46,10 +46,10 @@ struct RenderSettings {
     // Stochastic progressive photon mapping (integrator sppm). The render stops after
     // `passes` passes or `time` seconds, whichever comes first (0: no limit of that kind).
     int passes = 64;
-    double time = 0;                  // seconds
-    int64_t pass_photons = 0;         // photons emitted per light in each pass; 0 = auto (pixels / lights)
-    double initial_radius = 0;        // 0 = auto, from the pixel footprint and the scene's size
-    double alpha = 2.0 / 3.0;         // share of each pass's photons kept as the radius shrinks
+    double time = 0;           // seconds
+    int64_t pass_photons = 0;  // photons emitted per light in each pass; 0 = auto (pixels / lights)
+    double initial_radius = 0;  // 0 = auto, from the pixel footprint and the scene's size
+    double alpha = 2.0 / 3.0;   // share of each pass's photons kept as the radius shrinks
 };
 
 }  // namespace lenslab

@@ -9,11 +9,16 @@ namespace lenslab {
 
 const char* event_name(Event e) {
     switch (e) {
-        case Event::Refract: return "refract";
-        case Event::Reflect: return "reflect";
-        case Event::Tir: return "tir";
-        case Event::Absorb: return "absorb";
-        case Event::Escape: return "escape";
+        case Event::Refract:
+            return "refract";
+        case Event::Reflect:
+            return "reflect";
+        case Event::Tir:
+            return "tir";
+        case Event::Absorb:
+            return "absorb";
+        case Event::Escape:
+            return "escape";
     }
     return "unknown";
 }

@@ -26,7 +26,8 @@ void Scene::find_lights_and_targets() {
     m_lights.clear();
     for (const SphereEmitter& e : m_emitters) {
         m_lights.push_back(make_sphere_light(
-            std::static_pointer_cast<const Sphere>(objects[static_cast<size_t>(e.object)].shape), e.radiance));
+            std::static_pointer_cast<const Sphere>(objects[static_cast<size_t>(e.object)].shape),
+            e.radiance));
     }
     for (const PointLight& l : point_lights) m_lights.push_back(make_point_light(l));
     for (const BeamLight& b : beams) m_lights.push_back(make_beam_light(b));
@@ -94,7 +95,8 @@ void Scene::find_touching_solids() {
     }
 }
 
-const Material* Scene::medium_beyond(int object, const Vec3& point, const Vec3& outward_normal) const {
+const Material* Scene::medium_beyond(int object, const Vec3& point,
+                                     const Vec3& outward_normal) const {
     const std::vector<int>& candidates = m_touching[object];
     if (candidates.empty()) return nullptr;
     // Step just off the surface, to the side away from `object`: ten times the offset rays

@@ -14,21 +14,29 @@
 #include "scene/light.h"
 #include "scene/light_sampler.h"
 #include "scene/light_source.h"
-#include "scene/photon_targets.h"
 #include "scene/material.h"
+#include "scene/photon_targets.h"
 #include "scene/render_settings.h"
 
 namespace lenslab {
 
-enum class ObjectType { Sphere, Triangle, Lens, Mesh, Implicit, Disc, Rectangle };  // Mesh: a mesh or a prism
+enum class ObjectType {
+    Sphere,
+    Triangle,
+    Lens,
+    Mesh,
+    Implicit,
+    Disc,
+    Rectangle
+};  // Mesh: a mesh or a prism
 
 struct SceneObject {
     std::string name;  // the user's `name`, or the JSON path "objects[i]"
     ObjectType type = ObjectType::Sphere;
     std::shared_ptr<const Shape> shape;
-    int material = 0;  // index into Scene::materials
-    int source = -1;   // index of the scene file's `objects` entry it came from (a lens group
-                       // makes several objects)
+    int material = 0;   // index into Scene::materials
+    int source = -1;    // index of the scene file's `objects` entry it came from (a lens group
+                        // makes several objects)
     std::string group;  // the lens group's name, for its elements
     // Set when the object is a detector (triangles, discs and rectangles only).
     std::optional<DetectorSettings> detector;
@@ -40,8 +48,8 @@ struct SceneObject {
 // An emitting sphere: the report's light source.
 struct SphereEmitter {
     int object;            // index into Scene::objects
-    const Sphere* sphere;   // its shape
-    SpectrumPtr radiance;   // emitted spectral radiance
+    const Sphere* sphere;  // its shape
+    SpectrumPtr radiance;  // emitted spectral radiance
 };
 
 struct SceneHit {
@@ -76,7 +84,9 @@ public:
     const LightSampler& light_sampler() const { return m_light_sampler; }
     // The objects photons are aimed at, and whether `object` is one of them.
     const PhotonTargets& photon_targets() const { return m_targets; }
-    bool is_photon_target(int object) const { return m_is_target[static_cast<size_t>(object)] != 0; }
+    bool is_photon_target(int object) const {
+        return m_is_target[static_cast<size_t>(object)] != 0;
+    }
     // A transparent or mirror object that is not a photon target: its caustics come from
     // the ordinary (unaimed) photons.
     bool has_specular_non_target() const { return m_specular_non_target; }

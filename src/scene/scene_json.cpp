@@ -19,13 +19,13 @@
 #include "scene/light_spec.h"
 #include "scene/limits.h"
 #include "scene/material_spec.h"
-#include "scene/object_spec.h"
 #include "scene/mesh_json.h"
+#include "scene/object_spec.h"
 #include "scene/planar_json.h"
 #include "scene/render_settings_json.h"
 #include "scene/render_settings_spec.h"
-#include "scene/spectral_json.h"
 #include "scene/spec_reader.h"
+#include "scene/spectral_json.h"
 #include "scene/surface_json.h"
 
 namespace lenslab {
@@ -88,7 +88,8 @@ void read_render(const json& j, RenderSettings& s) {
     s.passes = static_cast<int>(r.whole("passes"));
     s.time = r.real("time");
     if (s.passes == 0 && s.time == 0.0) {
-        throw SceneError("render.passes", "0 means no pass limit, which needs a time budget: give render.time > 0");
+        throw SceneError("render.passes",
+                         "0 means no pass limit, which needs a time budget: give render.time > 0");
     }
     s.pass_photons = r.whole("pass_photons");
     s.caustic_photons = r.whole("caustic_photons");
@@ -117,12 +118,14 @@ Material read_material(const json& j, const std::string& path, const std::string
         m.index = glass.model;
         m.glass = glass.name;
     } else if (const json* n = r.find("ior")) {
-        m.index = n->is_number() ? constant_index(r.real("ior")) : read_index_model(*n, r.child_path("ior"));
+        m.index = n->is_number() ? constant_index(r.real("ior"))
+                                 : read_index_model(*n, r.child_path("ior"));
     }
     if (const json* e = r.find("emission")) {
         SpecReader er(*e, r.child_path("emission"), emission_spec());
         if (const json* s = er.find("spectrum")) {
-            if (er.has("color")) throw SceneError(er.child_path("color"), "give either color or spectrum, not both");
+            if (er.has("color"))
+                throw SceneError(er.child_path("color"), "give either color or spectrum, not both");
             m.emission_spectrum = read_spectrum(*s, er.child_path("spectrum"));
         }
         m.emission_color = er.colour("color");
@@ -134,7 +137,8 @@ Material read_material(const json& j, const std::string& path, const std::string
 
 std::map<std::string, int> read_materials(const json& j, std::vector<Material>& out) {
     std::map<std::string, int> by_name;
-    if (!j.is_object()) throw SceneError("materials", "must be an object mapping names to materials");
+    if (!j.is_object())
+        throw SceneError("materials", "must be an object mapping names to materials");
     for (const auto& [name, value] : j.items()) {
         by_name[name] = static_cast<int>(out.size());
         out.push_back(read_material(value, "materials." + name, name));
@@ -203,7 +207,8 @@ int read_material_ref(JsonObjectReader& r, const std::string& owner_name,
         all.push_back(read_material(m, path, owner_name));
         return static_cast<int>(all.size()) - 1;
     }
-    if (!m.is_string()) throw SceneError(path, "must be a material name or a material object { ... }");
+    if (!m.is_string())
+        throw SceneError(path, "must be a material name or a material object { ... }");
     const std::string name = m.get<std::string>();
     const auto it = materials.find(name);
     if (it != materials.end()) return it->second;
@@ -244,8 +249,8 @@ std::shared_ptr<const Shape> read_implicit(SpecReader& r) {
     for (int a = 0; a < 3; ++a) {
         if (!(box.hi[a] > box.lo[a])) {
             throw SceneError(bpath, std::string("the second corner must exceed the first in ") +
-                                        "xyz"[a] + ", got " + format_number(box.lo[a]) +
-                                        " and " + format_number(box.hi[a]));
+                                        "xyz"[a] + ", got " + format_number(box.lo[a]) + " and " +
+                                        format_number(box.hi[a]));
         }
     }
     const int steps = static_cast<int>(r.whole("steps"));
@@ -293,9 +298,11 @@ SceneObject read_object(const json& j, const std::string& path,
         o.type = ObjectType::Implicit;
     } else {
         throw SceneError(path + ".type", "unknown object type '" + type +
-                                             "' (known: sphere, triangle, disc, rectangle, lens, lens_group, mesh, prism, implicit)");
+                                             "' (known: sphere, triangle, disc, rectangle, lens, "
+                                             "lens_group, mesh, prism, implicit)");
     }
-    if (o.type != ObjectType::Triangle && o.type != ObjectType::Disc && o.type != ObjectType::Rectangle) {
+    if (o.type != ObjectType::Triangle && o.type != ObjectType::Disc &&
+        o.type != ObjectType::Rectangle) {
         check_detector_allowed(j, path, type);
     }
     // Declared shapes read through their declaration; the others list their keys above.
@@ -317,16 +324,27 @@ SceneObject read_object(const json& j, const std::string& path,
             o.shape = std::make_shared<Sphere>(sphere.point("center"), sphere.real("radius"));
             break;
         }
-        case ObjectType::Triangle: o.shape = read_triangle(r); break;
-        case ObjectType::Lens: o.shape = read_lens(r); break;
+        case ObjectType::Triangle:
+            o.shape = read_triangle(r);
+            break;
+        case ObjectType::Lens:
+            o.shape = read_lens(r);
+            break;
         case ObjectType::Mesh:
             o.shape = type == "mesh" ? read_mesh(r, base_dir) : read_prism(r);
             break;
-        case ObjectType::Implicit: o.shape = read_implicit(static_cast<SpecReader&>(r)); break;
-        case ObjectType::Disc: o.shape = read_disc(static_cast<SpecReader&>(r)); break;
-        case ObjectType::Rectangle: o.shape = read_rectangle(static_cast<SpecReader&>(r)); break;
+        case ObjectType::Implicit:
+            o.shape = read_implicit(static_cast<SpecReader&>(r));
+            break;
+        case ObjectType::Disc:
+            o.shape = read_disc(static_cast<SpecReader&>(r));
+            break;
+        case ObjectType::Rectangle:
+            o.shape = read_rectangle(static_cast<SpecReader&>(r));
+            break;
     }
-    if (o.type == ObjectType::Triangle || o.type == ObjectType::Disc || o.type == ObjectType::Rectangle) {
+    if (o.type == ObjectType::Triangle || o.type == ObjectType::Disc ||
+        o.type == ObjectType::Rectangle) {
         o.detector = read_detector(r);
     }
     o.material = read_material_ref(r, o.name, materials, all);
@@ -360,8 +378,8 @@ void read_light(const json& j, const std::string& path, Scene& scene) {
 
 }  // namespace
 
-Scene parse_scene(const std::string& text, const std::string& source,
-                  const std::string& base_dir, const SceneReadOptions& options) {
+Scene parse_scene(const std::string& text, const std::string& source, const std::string& base_dir,
+                  const SceneReadOptions& options) {
     const json root = parse_json_strict(text, source);
     if (!root.is_object()) throw SceneError(source, "the top level must be a JSON object { ... }");
     return scene_from_json(root, base_dir, options);
@@ -369,9 +387,8 @@ Scene parse_scene(const std::string& text, const std::string& source,
 
 Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
                       const SceneReadOptions& options) {
-    JsonObjectReader r(root, "",
-                       {"version", "description", "camera", "render", "materials", "objects",
-                        "lights"});
+    JsonObjectReader r(
+        root, "", {"version", "description", "camera", "render", "materials", "objects", "lights"});
     const int version = r.integer("version", 1, 1, 1000);
     if (version != 1) throw SceneError("version", "this lenslab reads version 1 scene files");
     (void)r.string("description", "");
@@ -398,16 +415,19 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
                 }
                 continue;
             }
-            scene.objects.push_back(read_object((*jo)[i], path, by_name, scene.materials, base_dir));
+            scene.objects.push_back(
+                read_object((*jo)[i], path, by_name, scene.materials, base_dir));
             scene.objects.back().source = static_cast<int>(i);
         }
         // A lens group adds one object per element.
-        check_count(scene.objects.size(), kMaxObjects, "objects", "objects (lens group elements counted one by one)");
+        check_count(scene.objects.size(), kMaxObjects, "objects",
+                    "objects (lens group elements counted one by one)");
     }
     if (const json* jl = r.find("lights")) {
         if (!jl->is_array()) throw SceneError("lights", "must be an array");
         check_count(jl->size(), kMaxLights, "lights", "lights");
-        for (size_t i = 0; i < jl->size(); ++i) read_light((*jl)[i], index_path("lights", i), scene);
+        for (size_t i = 0; i < jl->size(); ++i)
+            read_light((*jl)[i], index_path("lights", i), scene);
     }
     scene.build();
     return scene;
@@ -450,7 +470,8 @@ nlohmann::json read_scene_json_file(const std::string& path) {
     if (in.bad()) throw SceneError(path, "cannot read scene file");
     return naming_file(path, [&] {
         json root = parse_json_strict(text.str(), path);
-        if (!root.is_object()) throw SceneError(path, "the top level must be a JSON object { ... }");
+        if (!root.is_object())
+            throw SceneError(path, "the top level must be a JSON object { ... }");
         return root;
     });
 }

@@ -2,9 +2,8 @@
 // The scene file format (docs/scene-format.md): JSON in, Scene out, with errors that name
 // the JSON path and the reason.
 
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "scene/scene.h"
 

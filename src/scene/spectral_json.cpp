@@ -28,8 +28,8 @@ IndexModelPtr read_index_model(const nlohmann::json& j, const std::string& path)
     if (!j.is_object()) {
         throw SceneError(path, "must be a number or a model {\"model\": \"sellmeier\", ...}");
     }
-    const std::string model =
-        JsonObjectReader(j, path, {"model", "A", "B", "C", "n_d", "V_d"}).choice("model", "sellmeier", {"cauchy", "sellmeier", "abbe"});
+    const std::string model = JsonObjectReader(j, path, {"model", "A", "B", "C", "n_d", "V_d"})
+                                  .choice("model", "sellmeier", {"cauchy", "sellmeier", "abbe"});
     IndexModelPtr m;
     if (model == "cauchy") {
         JsonObjectReader r(j, path, {"model", "A", "B", "C"}, "a Cauchy model");
@@ -39,20 +39,23 @@ IndexModelPtr read_index_model(const nlohmann::json& j, const std::string& path)
         const auto b = read_numbers(r.require("B"), r.child_path("B"));
         const auto c = read_numbers(r.require("C"), r.child_path("C"));
         if (b.size() != c.size()) {
-            throw SceneError(r.child_path("C"), "must have as many terms as B (" + std::to_string(b.size()) + ")");
+            throw SceneError(r.child_path("C"),
+                             "must have as many terms as B (" + std::to_string(b.size()) + ")");
         }
         m = sellmeier_index(b, c);
     } else {
         JsonObjectReader r(j, path, {"model", "n_d", "V_d"}, "an Abbe model");
         const double nd = r.positive("n_d");
-        if (nd <= 1.0) throw SceneError(r.child_path("n_d"), "must be > 1, got " + format_number(nd));
+        if (nd <= 1.0)
+            throw SceneError(r.child_path("n_d"), "must be > 1, got " + format_number(nd));
         m = abbe_index(nd, r.positive("V_d"));
     }
     // A model whose index is not a real number > 0 across the visible range is a typo.
     for (double nm = kLambdaMinNm; nm <= kLambdaMaxNm; nm += 10.0) {
         const double n = m->n(nm);
         if (!(n > 0.0) || !std::isfinite(n)) {
-            throw SceneError(path, "the model gives n = " + format_number(n) + " at " + format_number(nm) +
+            throw SceneError(path, "the model gives n = " + format_number(n) + " at " +
+                                       format_number(nm) +
                                        " nm (must be a positive number across 360-830 nm)");
         }
     }
@@ -65,7 +68,8 @@ const Glass& read_glass(const nlohmann::json& j, const std::string& path) {
     if (const Glass* g = find_glass(name)) return *g;
     std::string known;
     for (const Glass& g : glass_catalogue()) known += (known.empty() ? "" : ", ") + g.name;
-    throw SceneError(path, "unknown glass '" + name + "' (known: " + known + "; see `lenslab glass`)");
+    throw SceneError(path,
+                     "unknown glass '" + name + "' (known: " + known + "; see `lenslab glass`)");
 }
 
 SpectrumPtr read_spectrum(const nlohmann::json& j, const std::string& path) {
@@ -78,14 +82,17 @@ SpectrumPtr read_spectrum(const nlohmann::json& j, const std::string& path) {
     if (r.has("blackbody")) {
         const double k = r.positive("blackbody");
         if (k < 500 || k > 100000) {
-            throw SceneError(r.child_path("blackbody"), "must be between 500 and 100000 K, got " + format_number(k));
+            throw SceneError(r.child_path("blackbody"),
+                             "must be between 500 and 100000 K, got " + format_number(k));
         }
         return blackbody_spectrum(k);
     }
     if (r.has("line")) {
         const double nm = r.number("line");
         if (nm < kLambdaMinNm || nm > kLambdaMaxNm) {
-            throw SceneError(r.child_path("line"), "must be within the visible range 360-830 nm, got " + format_number(nm));
+            throw SceneError(
+                r.child_path("line"),
+                "must be within the visible range 360-830 nm, got " + format_number(nm));
         }
         return line_spectrum(nm, r.positive("width", 1.0));
     }
@@ -94,7 +101,8 @@ SpectrumPtr read_spectrum(const nlohmann::json& j, const std::string& path) {
 
 SpectrumPtr light_spectrum(JsonObjectReader& r, Rgb& color, double power) {
     if (const nlohmann::json* s = r.find("spectrum")) {
-        if (r.has("color")) throw SceneError(r.child_path("color"), "give either color or spectrum, not both");
+        if (r.has("color"))
+            throw SceneError(r.child_path("color"), "give either color or spectrum, not both");
         return scaled_spectrum(read_spectrum(*s, r.child_path("spectrum")), power);
     }
     color = r.color("color", color);

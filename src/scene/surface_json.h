@@ -4,10 +4,9 @@
 // shape has its own keys and checks.
 
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "geometry/lens/lens_surface.h"
 

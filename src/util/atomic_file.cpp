@@ -1,18 +1,21 @@
 #include "util/atomic_file.h"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 namespace lenslab {
 
 std::string temporary_path_for(const std::string& path) {
-    return path + ".tmp" + std::to_string(getpid()) + std::filesystem::path(path).extension().string();
+    return path + ".tmp" + std::to_string(getpid()) +
+           std::filesystem::path(path).extension().string();
 }
 
-void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write) {
+void write_atomically(const std::string& path,
+                      const std::function<void(const std::string&)>& write) {
     const std::string tmp = temporary_path_for(path);
     std::error_code ec;
     try {

@@ -23,7 +23,8 @@ std::string temporary_path_for(const std::string& path);
 // Calls `write(temporary)` to fill the temporary file, then renames it to `path`. If `write`
 // throws, or the rename fails, the temporary is removed and the exception (a FileWriteError
 // for the rename) propagates.
-void write_atomically(const std::string& path, const std::function<void(const std::string&)>& write);
+void write_atomically(const std::string& path,
+                      const std::function<void(const std::string&)>& write);
 
 // `text` written atomically. Throws FileWriteError.
 void write_text_atomically(const std::string& path, const std::string& text);

@@ -135,7 +135,8 @@ int text_width(const std::string& text, int scale) {
     return text.empty() ? 0 : (static_cast<int>(text.size()) * kGlyphAdvance - 1) * scale;
 }
 
-void draw_text(Image8& image, int x, int y, const std::string& text, const unsigned char (&rgb)[3], int scale) {
+void draw_text(Image8& image, int x, int y, const std::string& text, const unsigned char (&rgb)[3],
+               int scale) {
     for (size_t i = 0; i < text.size(); ++i) {
         const int left = x + static_cast<int>(i) * kGlyphAdvance * scale;
         for (int gy = 0; gy < kGlyphHeight; ++gy) {
@@ -145,7 +146,8 @@ void draw_text(Image8& image, int x, int y, const std::string& text, const unsig
                     for (int sx = 0; sx < scale; ++sx) {
                         const int px = left + gx * scale + sx, py = y + gy * scale + sy;
                         if (px < 0 || py < 0 || px >= image.width || py >= image.height) continue;
-                        unsigned char* p = &image.rgb[(static_cast<size_t>(py) * image.width + px) * 3];
+                        unsigned char* p =
+                            &image.rgb[(static_cast<size_t>(py) * image.width + px) * 3];
                         p[0] = rgb[0];
                         p[1] = rgb[1];
                         p[2] = rgb[2];

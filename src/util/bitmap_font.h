@@ -1,6 +1,7 @@
 #pragma once
-// A small built-in 5x7 pixel font (8 rows with descenders) (printable ASCII) for labelling images the program draws
-// itself (detector maps and their colour bars), so no font files or libraries are needed.
+// A small built-in 5x7 pixel font (8 rows with descenders) (printable ASCII) for labelling images
+// the program draws itself (detector maps and their colour bars), so no font files or libraries are
+// needed.
 
 #include <string>
 
@@ -21,6 +22,7 @@ int text_width(const std::string& text, int scale = 1);
 
 // Draws `text` with its top-left corner at (x, y), each font pixel a scale x scale block;
 // whatever falls outside the image is clipped.
-void draw_text(Image8& image, int x, int y, const std::string& text, const unsigned char (&rgb)[3], int scale = 1);
+void draw_text(Image8& image, int x, int y, const std::string& text, const unsigned char (&rgb)[3],
+               int scale = 1);
 
 }  // namespace lenslab

@@ -18,18 +18,23 @@ TEST(Bvh, NearestHitMatchesBruteForce) {
     std::vector<const Shape*> shapes;
     for (int i = 0; i < 500; ++i) {
         spheres.push_back(std::make_unique<Sphere>(
-            Vec3{rng.uniform() * 10, rng.uniform() * 10, rng.uniform() * 10}, 0.05 + 0.3 * rng.uniform()));
+            Vec3{rng.uniform() * 10, rng.uniform() * 10, rng.uniform() * 10},
+            0.05 + 0.3 * rng.uniform()));
         shapes.push_back(spheres.back().get());
     }
     const Bvh bvh(shapes);
     for (int q = 0; q < 2000; ++q) {
-        const Ray ray{{rng.uniform() * 10, rng.uniform() * 10, -5},
-                      normalize(sample_uniform_sphere(rng.uniform(), rng.uniform()) + Vec3{0, 0, 1.5})};
+        const Ray ray{
+            {rng.uniform() * 10, rng.uniform() * 10, -5},
+            normalize(sample_uniform_sphere(rng.uniform(), rng.uniform()) + Vec3{0, 0, 1.5})};
         double best = INFINITY;
         int best_i = -1;
         for (size_t i = 0; i < shapes.size(); ++i) {
             SurfaceHit h;
-            if (shapes[i]->intersect(ray, 1e-9, best, h)) { best = h.t; best_i = int(i); }
+            if (shapes[i]->intersect(ray, 1e-9, best, h)) {
+                best = h.t;
+                best_i = int(i);
+            }
         }
         BvhHit hit;
         const bool found = bvh.intersect(ray, 1e-9, INFINITY, hit);
@@ -48,7 +53,8 @@ TEST(Bvh, GeometricChainOfScalesStaysShallow) {
     std::vector<std::unique_ptr<Sphere>> spheres;
     std::vector<const Shape*> shapes;
     for (int k = 0; k < 300; ++k) {
-        spheres.push_back(std::make_unique<Sphere>(Vec3{std::ldexp(1.0, k), 0, 0}, 0.1 * std::ldexp(1.0, k)));
+        spheres.push_back(
+            std::make_unique<Sphere>(Vec3{std::ldexp(1.0, k), 0, 0}, 0.1 * std::ldexp(1.0, k)));
         shapes.push_back(spheres.back().get());
     }
     const Bvh bvh(shapes);

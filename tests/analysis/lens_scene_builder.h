@@ -34,11 +34,10 @@ struct LensSpec {
 inline std::string lens_json(const LensSpec& l) {
     std::ostringstream s;
     s.precision(17);
-    s << R"({"type": "lens", "name": ")" << l.name << R"(", "center": [)" << l.offset_x
-      << ", 0, " << l.z_front + 0.5 * l.thickness << R"(], "axis": )" << l.axis
-      << R"(, "thickness": )" << l.thickness << R"(, "diameter": )" << l.diameter
-      << R"(, "front": )" << l.front << R"(, "back": )" << l.back << R"(, "material": )"
-      << l.material << "}";
+    s << R"({"type": "lens", "name": ")" << l.name << R"(", "center": [)" << l.offset_x << ", 0, "
+      << l.z_front + 0.5 * l.thickness << R"(], "axis": )" << l.axis << R"(, "thickness": )"
+      << l.thickness << R"(, "diameter": )" << l.diameter << R"(, "front": )" << l.front
+      << R"(, "back": )" << l.back << R"(, "material": )" << l.material << "}";
     return s.str();
 }
 
@@ -48,8 +47,7 @@ inline Scene lens_scene(const std::vector<LensSpec>& lenses,
     std::string objects;
     for (const LensSpec& l : lenses) objects += (objects.empty() ? "" : ",\n") + lens_json(l);
     for (const std::string& e : extra) objects += (objects.empty() ? "" : ",\n") + e;
-    return parse_scene(R"({"objects": [)" + objects + "]}", "test", "",
-                       {.require_camera = false});
+    return parse_scene(R"({"objects": [)" + objects + "]}", "test", "", {.require_camera = false});
 }
 
 inline std::string glass(const std::string& name) {

@@ -17,16 +17,16 @@
 namespace lenslab {
 namespace {
 
-using test::LensSpec;
 using test::lens_scene;
+using test::LensSpec;
 using test::sphere;
 
 constexpr double kN = 1.5, kR = -50.0, kThickness = 5.0, kDiameter = 25.0;
 constexpr double kFocalLength = -kR / (kN - 1.0);  // 100
 
 OpticalSystem plano_convex(const std::string& back) {
-    const LensSpec l{"lens", 0, kThickness, kDiameter, sphere(0), back,
-                     R"({"transparency": 1, "ior": 1.5})"};
+    const LensSpec l{
+        "lens", 0, kThickness, kDiameter, sphere(0), back, R"({"transparency": 1, "ior": 1.5})"};
     return build_optical_system(lens_scene({l}));
 }
 

@@ -27,8 +27,8 @@
 namespace lenslab {
 namespace {
 
-using test::LensSpec;
 using test::lens_scene;
+using test::LensSpec;
 using test::sphere;
 
 struct Catalogue {
@@ -48,7 +48,8 @@ std::vector<Catalogue> catalogue() {
         {"AC254-100-A",
          {{"crown", 0, 4.0, 25.4, sphere(62.8), sphere(-45.7), kBk7},
           {"flint", 4.0, 2.5, 25.4, sphere(-45.7), sphere(-128.2), test::glass("SF5")}},
-         100.1, 97.1},
+         100.1,
+         97.1},
     };
 }
 
@@ -56,9 +57,9 @@ TEST(CatalogueLenses, FocalLengthsWithinHalfAPercentOfThorlabs) {
     for (const Catalogue& c : catalogue()) {
         SCOPED_TRACE(c.part);
         const ParaxialResult p = paraxial_trace(build_optical_system(lens_scene(c.lenses)), kLineD);
-        std::printf("%-12s EFL %9.4f (published %6.1f, %+.2f%%)  BFL %9.4f (published %6.1f, %+.2f%%)\n",
-                    c.part, p.efl, c.f, 100 * (p.efl / c.f - 1), p.bfl, c.f_b,
-                    100 * (p.bfl / c.f_b - 1));
+        std::printf(
+            "%-12s EFL %9.4f (published %6.1f, %+.2f%%)  BFL %9.4f (published %6.1f, %+.2f%%)\n",
+            c.part, p.efl, c.f, 100 * (p.efl / c.f - 1), p.bfl, c.f_b, 100 * (p.bfl / c.f_b - 1));
         EXPECT_NEAR(p.efl, c.f, 0.005 * std::abs(c.f));
         EXPECT_NEAR(p.bfl, c.f_b, 0.005 * std::abs(c.f_b));
     }
@@ -73,7 +74,8 @@ TEST(CatalogueLenses, AchromatFocalShiftIsFarSmallerThanASinglets) {
     const LensReport d = analyze_lens_system(build_optical_system(lens_scene(doublet.lenses)), {});
     const LensReport s = analyze_lens_system(build_optical_system(lens_scene({singlet})), {});
     std::printf("F-C focal shift: achromat %.4f mm, N-BK7 singlet %.4f mm (ratio %.1f)\n",
-                d.chromatic_shift_FC, s.chromatic_shift_FC, s.chromatic_shift_FC / d.chromatic_shift_FC);
+                d.chromatic_shift_FC, s.chromatic_shift_FC,
+                s.chromatic_shift_FC / d.chromatic_shift_FC);
     EXPECT_NEAR(s.chromatic_shift_FC, -s.paraxial.efl / 64.17, 0.02 * s.paraxial.efl / 64.17);
     EXPECT_LT(std::abs(d.chromatic_shift_FC), 0.1 * std::abs(s.chromatic_shift_FC));
     // The same focal length within 0.5%, so the comparison is fair.

@@ -59,7 +59,8 @@ TEST(Detector, LensFocusReceivesTheBeamTimesTheFresnelTransmission) {
         const double h = (i + 0.5) * a / kSteps;
         const double theta1 = std::asin(h / radius);
         const double theta2 = theta1 - std::asin(std::sin(theta1) / n);
-        expected += fresnel_t(theta1, 1, n) * fresnel_t(theta2, n, 1) * 2 * h * (a / kSteps) / (a * a);
+        expected +=
+            fresnel_t(theta1, 1, n) * fresnel_t(theta2, n, 1) * 2 * h * (a / kSteps) / (a * a);
     }
     // The paraxial back focal distance f - t / n = R / (n - 1) - t / n behind the flat back.
     const double bfd = radius / (n - 1) - 5.3 / n, focus = 2.65 + bfd;
@@ -68,14 +69,17 @@ TEST(Detector, LensFocusReceivesTheBeamTimesTheFresnelTransmission) {
         "objects": [{"type": "lens", "center": [0, 0, 0], "axis": [0, 0, 1], "thickness": 5.3, "diameter": 25.4,
                      "front": {"shape": "sphere", "radius": 25.8}, "back": {"shape": "flat"},
                      "material": {"transparency": 1, "glass": "N-BK7"}},
-                    {"name": "focus", "type": "disc", "center": [0, 0, )" << focus << R"(], "normal": [0, 0, -1],
+                    {"name": "focus", "type": "disc", "center": [0, 0, )"
+         << focus << R"(], "normal": [0, 0, -1],
                      "radius": 1, "material": {"color": 0.5}, "detector": {"resolution": 64, "unit": "mm"}}],
         "lights": [{"type": "beam", "origin": [0, 0, -20], "direction": [0, 0, 1], "radius": 5, "power": 1,
                     "spectrum": {"line": 587.56}}]})";
     const DetectorMeasurement m = only(measure(parse_scene(text.str()), 200000));
-    std::printf("focus at z = %.3f: P = %.5f W, expected %.5f W (%+.3f%%); centroid (%.2e, %.2e), rms radius %.4f mm\n",
-                focus, m.total_power, expected, 100 * (m.total_power / expected - 1), m.centroid_u, m.centroid_v,
-                m.rms_radius);
+    std::printf(
+        "focus at z = %.3f: P = %.5f W, expected %.5f W (%+.3f%%); centroid (%.2e, %.2e), rms "
+        "radius %.4f mm\n",
+        focus, m.total_power, expected, 100 * (m.total_power / expected - 1), m.centroid_u,
+        m.centroid_v, m.rms_radius);
     EXPECT_NEAR(m.total_power, expected, 0.01 * expected);
     EXPECT_GT(expected, 0.90);  // the integral itself: about (1 - 0.042)^2 near the axis
     EXPECT_LT(expected, 0.92);
@@ -111,12 +115,15 @@ TEST(Detector, PointLightIrradianceFollowsInverseSquareAndCosine) {
         "lights": [{"type": "point", "position": [0, 1, 0], "power": 100}]})");
     const DetectorMeasurement m = only(measure(scene, 2000000));
     const DetectorGrid& g = m.grid;
-    for (const auto& [u, v] : {std::pair{0.1, 0.1}, std::pair{0.6, -0.1}, std::pair{-0.4, 0.6}, std::pair{0.9, 0.9}}) {
+    for (const auto& [u, v] :
+         {std::pair{0.1, 0.1}, std::pair{0.6, -0.1}, std::pair{-0.4, 0.6}, std::pair{0.9, 0.9}}) {
         const int c = g.cell_at(u, v);
         const double hw = 0.5 * g.cell_width(), hh = 0.5 * g.cell_height();
-        const double expected = cell_irradiance(100, 1, g.cell_u(c) - hw, g.cell_u(c) + hw, g.cell_v(c) - hh, g.cell_v(c) + hh);
-        std::printf("cell at (%.3f, %.3f): E = %.4f W/unit^2, expected %.4f (%+.2f%%)\n", g.cell_u(c), g.cell_v(c),
-                    m.irradiance(c), expected, 100 * (m.irradiance(c) / expected - 1));
+        const double expected = cell_irradiance(100, 1, g.cell_u(c) - hw, g.cell_u(c) + hw,
+                                                g.cell_v(c) - hh, g.cell_v(c) + hh);
+        std::printf("cell at (%.3f, %.3f): E = %.4f W/unit^2, expected %.4f (%+.2f%%)\n",
+                    g.cell_u(c), g.cell_v(c), m.irradiance(c), expected,
+                    100 * (m.irradiance(c) / expected - 1));
         EXPECT_NEAR(m.irradiance(c), expected, 0.04 * expected);
     }
 }
@@ -132,7 +139,8 @@ TEST(Detector, DiscInterceptsTheSolidAngleItSubtendsOfAPointLight) {
         "lights": [{"type": "point", "position": [0, 1, 0], "power": 100}]})");
     const DetectorMeasurement m = only(measure(scene, 400000));
     const double expected = p / 2 * (1 - d / std::sqrt(d * d + a * a));
-    std::printf("P = %.4f W, expected %.4f W (%+.3f%%)\n", m.total_power, expected, 100 * (m.total_power / expected - 1));
+    std::printf("P = %.4f W, expected %.4f W (%+.3f%%)\n", m.total_power, expected,
+                100 * (m.total_power / expected - 1));
     EXPECT_NEAR(m.total_power, expected, 0.01 * expected);
     EXPECT_LT(std::hypot(m.centroid_u, m.centroid_v), 0.01);
 }
@@ -151,15 +159,18 @@ TEST(Detector, DiscInterceptsTheFluxOfAGlowingSphere) {
                      "material": {"color": 0, "emission": {"color": 1, "intensity": 10}}}]})");
     const DetectorMeasurement m = only(measure(scene, 400000));
     const double expected = 2 * kPi * kPi * l * s * s * (1 - d / std::sqrt(d * d + a * a));
-    std::printf("P = %.4f W, expected %.4f W (%+.3f%%)\n", m.total_power, expected, 100 * (m.total_power / expected - 1));
+    std::printf("P = %.4f W, expected %.4f W (%+.3f%%)\n", m.total_power, expected,
+                100 * (m.total_power / expected - 1));
     EXPECT_NEAR(m.total_power, expected, 0.015 * expected);
 }
 
 // A 1 W beam of radius 0.5 along +z through `objects`.
 Scene beam_scene(const std::string& objects, const std::string& spectrum = R"("color": 1)") {
-    return parse_scene(R"({"camera": {"position": [0, 5, 5], "look_at": [0, 0, 0]}, "objects": [)" + objects +
-                       R"(], "lights": [{"type": "beam", "origin": [0, 0, -5], "direction": [0, 0, 1], "radius": 0.5,
-                                         "power": 1, )" + spectrum + "}]}");
+    return parse_scene(
+        R"({"camera": {"position": [0, 5, 5], "look_at": [0, 0, 0]}, "objects": [)" + objects +
+        R"(], "lights": [{"type": "beam", "origin": [0, 0, -5], "direction": [0, 0, 1], "radius": 0.5,
+                                         "power": 1, )" +
+        spectrum + "}]}");
 }
 
 TEST(Detector, VirtualSensorCountsEachPhotonOnceAndPassesItOn) {
@@ -184,9 +195,12 @@ TEST(Detector, VirtualSensorCountsEachPhotonOnceAndPassesItOn) {
 
 TEST(Detector, CountsTheFaceItIsAskedFor) {
     // The beam meets these discs from behind (their normals point along the beam).
-    for (const auto& [side, expected] : {std::pair{"front", 0.0}, std::pair{"back", 1.0}, std::pair{"both", 1.0}}) {
-        const Scene scene = beam_scene(std::string(R"({"type": "disc", "center": [0, 0, 0], "normal": [0, 0, 1],
-            "radius": 1, "material": {"color": 0.5}, "detector": {"side": ")") + side + R"("}})");
+    for (const auto& [side, expected] :
+         {std::pair{"front", 0.0}, std::pair{"back", 1.0}, std::pair{"both", 1.0}}) {
+        const Scene scene =
+            beam_scene(std::string(R"({"type": "disc", "center": [0, 0, 0], "normal": [0, 0, 1],
+            "radius": 1, "material": {"color": 0.5}, "detector": {"side": ")") +
+                       side + R"("}})");
         EXPECT_NEAR(only(measure(scene, 1000)).total_power, expected, 1e-9) << side;
     }
 }
@@ -213,7 +227,8 @@ double planck_share(double kelvin, double lo, double hi) {
     };
     auto integral = [&](double a, double b) {
         double s = 0;
-        for (int i = 0; i < 10000; ++i) s += planck(a + (i + 0.5) * (b - a) / 10000) * (b - a) / 10000;
+        for (int i = 0; i < 10000; ++i)
+            s += planck(a + (i + 0.5) * (b - a) / 10000) * (b - a) / 10000;
         return s;
     };
     return integral(lo, hi) / integral(360, 830);
@@ -221,17 +236,22 @@ double planck_share(double kelvin, double lo, double hi) {
 
 TEST(Detector, BandsHoldTheSpectrumTheyCover) {
     // A 532 nm laser line falls wholly in the 490-585 nm band.
-    const std::string screen = R"({"type": "disc", "center": [0, 0, 3], "normal": [0, 0, -1], "radius": 2,
+    const std::string screen =
+        R"({"type": "disc", "center": [0, 0, 3], "normal": [0, 0, -1], "radius": 2,
         "material": {"color": 0.5}, "detector": {"bands": [360, 450, 550, 650, 830]}})";
-    const DetectorMeasurement laser = only(measure(beam_scene(screen, R"("spectrum": {"line": 532})"), 2000));
+    const DetectorMeasurement laser =
+        only(measure(beam_scene(screen, R"("spectrum": {"line": 532})"), 2000));
     ASSERT_EQ(laser.bands(), 4);
     EXPECT_NEAR(laser.band_total[1] + laser.band_total[2], 1.0, 1e-9);
     EXPECT_NEAR(laser.band_total[2], 0.0, 1e-9);
     // Black-body light arriving with its whole spectrum: each band holds Planck's share.
-    const DetectorMeasurement bb = only(measure(beam_scene(screen, R"("spectrum": {"blackbody": 4000})"), 2000));
+    const DetectorMeasurement bb =
+        only(measure(beam_scene(screen, R"("spectrum": {"blackbody": 4000})"), 2000));
     const double edges[] = {360, 450, 550, 650, 830};
     for (int b = 0; b < 4; ++b) {
-        EXPECT_NEAR(bb.band_total[static_cast<size_t>(b)], planck_share(4000, edges[b], edges[b + 1]), 1e-4) << b;
+        EXPECT_NEAR(bb.band_total[static_cast<size_t>(b)],
+                    planck_share(4000, edges[b], edges[b + 1]), 1e-4)
+            << b;
     }
 }
 
@@ -241,12 +261,13 @@ TEST(Detector, SingleWavelengthPhotonsKeepTheSpectrum) {
     // photon ends on a wall. The walls together receive the whole beam, each band
     // Planck's share of it (up to sampling noise).
     std::string walls;
-    const char* faces[][3] = {{"[0, 0, -4]", "[0, 0, 1]", "[8, 8]"}, {"[0, 0, 4]", "[0, 0, -1]", "[8, 8]"},
-                              {"[-4, 0, 0]", "[1, 0, 0]", "[8, 8]"}, {"[4, 0, 0]", "[-1, 0, 0]", "[8, 8]"},
-                              {"[0, -4, 0]", "[0, 1, 0]", "[8, 8]"}, {"[0, 4, 0]", "[0, -1, 0]", "[8, 8]"}};
+    const char* faces[][3] = {
+        {"[0, 0, -4]", "[0, 0, 1]", "[8, 8]"}, {"[0, 0, 4]", "[0, 0, -1]", "[8, 8]"},
+        {"[-4, 0, 0]", "[1, 0, 0]", "[8, 8]"}, {"[4, 0, 0]", "[-1, 0, 0]", "[8, 8]"},
+        {"[0, -4, 0]", "[0, 1, 0]", "[8, 8]"}, {"[0, 4, 0]", "[0, -1, 0]", "[8, 8]"}};
     for (const auto& f : faces) {
-        walls += std::string(R"(, {"type": "rectangle", "center": )") + f[0] + R"(, "normal": )" + f[1] +
-                 R"(, "size": )" + f[2] + R"(, "material": {"color": 0},
+        walls += std::string(R"(, {"type": "rectangle", "center": )") + f[0] + R"(, "normal": )" +
+                 f[1] + R"(, "size": )" + f[2] + R"(, "material": {"color": 0},
                    "detector": {"resolution": 8, "bands": [360, 450, 550, 650, 830]}})";
     }
     // Emitted photons each keep exactly their share of the beam: only those still inside the
@@ -255,8 +276,10 @@ TEST(Detector, SingleWavelengthPhotonsKeepTheSpectrum) {
     for (const bool aim : {false, true}) {
         SCOPED_TRACE(aim ? "aimed" : "emitted");
         const Scene scene = parse_scene(R"({"camera": {"position": [0, 0, 3], "look_at": [0, 0, 0]},
-            "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": )" + std::string(aim ? "0.3" : "0.8") + R"(,
-                         "material": {"transparency": 1, "glass": "N-SF11"}})" + walls + R"(],
+            "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": )" +
+                                        std::string(aim ? "0.3" : "0.8") + R"(,
+                         "material": {"transparency": 1, "glass": "N-SF11"}})" +
+                                        walls + R"(],
             "lights": [{"type": "beam", "origin": [0, 0, -3], "direction": [0, 0, 1], "radius": 0.5, "power": 1,
                         "spectrum": {"blackbody": 4000}}]})");
         RenderControl control;
@@ -281,15 +304,18 @@ TEST(Detector, SingleWavelengthPhotonsKeepTheSpectrum) {
         const double edges[] = {360, 450, 550, 650, 830};
         for (int b = 0; b < 4; ++b) {
             const double share = planck_share(4000, edges[b], edges[b + 1]);
-            std::printf("%g-%g nm: %.4f W, Planck %.4f W\n", edges[b], edges[b + 1], band[b], share);
+            std::printf("%g-%g nm: %.4f W, Planck %.4f W\n", edges[b], edges[b + 1], band[b],
+                        share);
             EXPECT_NEAR(band[b], share, 0.02 * share) << "band " << b;
         }
     }
 }
 
 TEST(Detector, NoDetectorsNoWork) {
-    const DetectionResult r = measure(beam_scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1,
-        "material": {"color": 0.5}})"), 1000);
+    const DetectionResult r =
+        measure(beam_scene(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1,
+        "material": {"color": 0.5}})"),
+                1000);
     EXPECT_TRUE(r.detectors.empty());
 }
 

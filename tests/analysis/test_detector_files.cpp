@@ -78,7 +78,8 @@ TEST(DetectorFiles, WritesCsvExrAndPng) {
     fs::create_directories(dir);
     DetectionSettings s;
     write_detector_files(r.detectors[0], s, dir.string(), "screen");
-    for (const char* ext : {".csv", ".exr", ".png"}) EXPECT_TRUE(fs::is_regular_file(dir / ("screen" + std::string(ext)))) << ext;
+    for (const char* ext : {".csv", ".exr", ".png"})
+        EXPECT_TRUE(fs::is_regular_file(dir / ("screen" + std::string(ext)))) << ext;
     std::ifstream exr(dir / "screen.exr", std::ios::binary);
     unsigned char magic[4] = {};
     exr.read(reinterpret_cast<char*>(magic), 4);

@@ -18,11 +18,13 @@ constexpr double kPi = std::numbers::pi;
 const SceneObject& only_object(const Scene& s) { return s.objects.at(0); }
 
 Scene scene_with(const std::string& object) {
-    return parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "objects": [)" + object + "]}");
+    return parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "objects": [)" +
+                       object + "]}");
 }
 
 TEST(DetectorGrid, DiscCellsAddUpToPiRSquared) {
-    const Scene s = scene_with(R"({"type": "disc", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 2,
+    const Scene s =
+        scene_with(R"({"type": "disc", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 2,
         "material": {"color": 0.5}, "detector": {"resolution": 37}})");
     const DetectorGrid g = DetectorGrid::for_object(only_object(s));
     EXPECT_EQ(g.cells_u(), 37);
@@ -43,7 +45,8 @@ TEST(DetectorGrid, DiscOverlapOfAQuarterAndAHalf) {
 
 TEST(DetectorGrid, TriangleCellsAddUpToItsArea) {
     // Area = |e1 x e2| / 2 = |(3, 0, 0) x (1, 2, 0)| / 2 = 3.
-    const Scene s = scene_with(R"({"type": "triangle", "vertices": [[0, 0, 0], [3, 0, 0], [1, 2, 0]],
+    const Scene s =
+        scene_with(R"({"type": "triangle", "vertices": [[0, 0, 0], [3, 0, 0], [1, 2, 0]],
         "material": {"color": 0.5}, "detector": {"resolution": [30, 20]}})");
     const DetectorGrid g = DetectorGrid::for_object(only_object(s));
     EXPECT_NEAR(g.surface_area(), 3.0, 1e-12);
@@ -55,7 +58,8 @@ TEST(DetectorGrid, TriangleCellsAddUpToItsArea) {
 }
 
 TEST(DetectorGrid, RectangleCellsAreSquareAlongTheLongerSide) {
-    const Scene s = scene_with(R"({"type": "rectangle", "center": [0, 0, 0], "normal": [0, 0, 1], "size": [4, 2],
+    const Scene s = scene_with(
+        R"({"type": "rectangle", "center": [0, 0, 0], "normal": [0, 0, 1], "size": [4, 2],
         "material": {"color": 0.5}, "detector": {"resolution": 64}})");
     const DetectorGrid g = DetectorGrid::for_object(only_object(s));
     EXPECT_EQ(g.cells_u(), 64);
@@ -70,7 +74,8 @@ TEST(DetectorGrid, RectangleCellsAreSquareAlongTheLongerSide) {
 }
 
 TEST(DetectorGrid, RefusesAnObjectThatIsNotADetector) {
-    const Scene s = scene_with(R"({"type": "disc", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 2,
+    const Scene s =
+        scene_with(R"({"type": "disc", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 2,
         "material": {"color": 0.5}})");
     EXPECT_THROW(DetectorGrid::for_object(only_object(s)), std::invalid_argument);
 }

@@ -9,8 +9,8 @@
 namespace lenslab {
 namespace {
 
-using test::LensSpec;
 using test::lens_scene;
+using test::LensSpec;
 using test::sphere;
 
 const LensSpec kLens{"LA1131", 0, 5.34, 25.4, sphere(25.75), sphere(0), test::glass("N-BK7")};

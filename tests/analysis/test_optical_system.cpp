@@ -15,8 +15,8 @@
 namespace lenslab {
 namespace {
 
-using test::LensSpec;
 using test::lens_scene;
+using test::LensSpec;
 using test::sphere;
 
 // Expects build_optical_system to refuse with this path and a reason containing `words`.
@@ -117,11 +117,13 @@ TEST(OpticalSystem, RefusesWhatIsNotOneCoaxialLensSystem) {
     LensSpec tilted = kFlint;
     tilted.z_front = 30;
     tilted.axis = "[0, 0.1, 1]";
-    expect_refused(lens_scene({kCrown, tilted}), "objects[1]", "its axis is tilted by 5.71059 degrees");
+    expect_refused(lens_scene({kCrown, tilted}), "objects[1]",
+                   "its axis is tilted by 5.71059 degrees");
 
     LensSpec overlapping = kFlint;
     overlapping.z_front = 3;
-    expect_refused(lens_scene({kCrown, overlapping}), "objects[1]", "overlaps objects[0] along the axis");
+    expect_refused(lens_scene({kCrown, overlapping}), "objects[1]",
+                   "overlaps objects[0] along the axis");
 
     LensSpec opaque = kCrown;
     opaque.material = R"({"color": 0.5})";
@@ -166,7 +168,8 @@ TEST(OpticalSystem, WavelengthsOutsideAGlassRangeAreRefused) {
         FAIL() << "not refused";
     } catch (const SceneError& e) {
         EXPECT_EQ(e.path(), "objects[1].material");
-        EXPECT_EQ(e.reason(), "--wavelength 350 nm is outside the validity range 370-2500 nm of SF5");
+        EXPECT_EQ(e.reason(),
+                  "--wavelength 350 nm is outside the validity range 370-2500 nm of SF5");
     }
 }
 

@@ -12,8 +12,8 @@
 namespace lenslab {
 namespace {
 
-using test::LensSpec;
 using test::lens_scene;
+using test::LensSpec;
 using test::sphere;
 
 struct Thick {

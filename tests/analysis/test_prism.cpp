@@ -88,18 +88,26 @@ TEST(Prism, OneRayWorkedOutByHand) {
 // spectrometer: coarse 0.05 degree steps, then 0.0005 degree steps around the best. Rays hit
 // the middle of the left face at incidence i; the face's inward normal points 30 degrees
 // below +x, so the ray points 30 - i below +x. Returns {deviation, incidence} in degrees.
-std::pair<double, double> scanned_minimum_deviation(const Scene& scene, double wavelength_nm = kLineD) {
+std::pair<double, double> scanned_minimum_deviation(const Scene& scene,
+                                                    double wavelength_nm = kLineD) {
     auto deviation = [&](double i) {
         const Vec3 d{std::cos(30 * kDeg - i), 0, -std::sin(30 * kDeg - i)};
-        const auto out = through_both_faces(scene, {Vec3{-0.25, 0, 0} - d * 2.0, d}, nullptr, nullptr, wavelength_nm);
+        const auto out = through_both_faces(scene, {Vec3{-0.25, 0, 0} - d * 2.0, d}, nullptr,
+                                            nullptr, wavelength_nm);
         return out ? std::acos(std::clamp(dot(*out, d), -1.0, 1.0)) : INFINITY;
     };
     double best_i = 0, best = INFINITY;
     for (double i = 30 * kDeg; i <= 80 * kDeg; i += 0.05 * kDeg) {
-        if (const double dev = deviation(i); dev < best) { best = dev; best_i = i; }
+        if (const double dev = deviation(i); dev < best) {
+            best = dev;
+            best_i = i;
+        }
     }
     for (double i = best_i - 0.05 * kDeg; i <= best_i + 0.05 * kDeg; i += 0.0005 * kDeg) {
-        if (const double dev = deviation(i); dev < best) { best = dev; best_i = i; }
+        if (const double dev = deviation(i); dev < best) {
+            best = dev;
+            best_i = i;
+        }
     }
     return {best / kDeg, best_i / kDeg};
 }
@@ -128,7 +136,8 @@ TEST(Prism, NBk7MinimumDeviationAtTheFraunhoferLines) {
     for (double nm : {486.1327, 587.5618, 656.2725}) {  // blue F, yellow d, red C
         const double expected = (2 * std::asin(bk7.n(nm) * 0.5) - 60 * kDeg) / kDeg;
         const double measured = scanned_minimum_deviation(scene, nm).first;
-        std::printf("N-BK7 prism at %.1f nm: minimum deviation %.4f deg (formula %.4f)\n", nm, measured, expected);
+        std::printf("N-BK7 prism at %.1f nm: minimum deviation %.4f deg (formula %.4f)\n", nm,
+                    measured, expected);
         EXPECT_NEAR(measured, expected, 0.01);
         EXPECT_LT(measured, previous);  // longer wavelengths deviate less: red least
         previous = measured;

@@ -45,8 +45,10 @@ double brightest_deviation(const Scene& scene, double nm) {
                 if (bounce.event != Event::Reflect) continue;
                 for (const RayTreeNode& out : bounce.children) {
                     if (out.event != Event::Refract) continue;
-                    const double deviation = std::acos(std::clamp(out.direction.z, -1.0, 1.0)) * kDeg;
-                    histogram[std::min(histogram.size() - 1, static_cast<size_t>(deviation / bin))] += out.weight;
+                    const double deviation =
+                        std::acos(std::clamp(out.direction.z, -1.0, 1.0)) * kDeg;
+                    histogram[std::min(histogram.size() - 1,
+                                       static_cast<size_t>(deviation / bin))] += out.weight;
                 }
             }
         }
@@ -62,8 +64,11 @@ TEST(Rainbow, OnceReflectedLightPeaksAtDescartesAngleRedOutside) {
     const IndexModel& water = *find_glass("water")->model;
     const double red = brightest_deviation(drop, 656.3);
     const double blue = brightest_deviation(drop, 486.1);
-    std::printf("rainbow: red (656 nm) at %.2f deg, Descartes %.2f; blue (486 nm) at %.2f deg, Descartes %.2f\n",
-                red, descartes_minimum_deviation(water.n(656.3)), blue, descartes_minimum_deviation(water.n(486.1)));
+    std::printf(
+        "rainbow: red (656 nm) at %.2f deg, Descartes %.2f; blue (486 nm) at %.2f deg, Descartes "
+        "%.2f\n",
+        red, descartes_minimum_deviation(water.n(656.3)), blue,
+        descartes_minimum_deviation(water.n(486.1)));
     // The histogram's peak sits at the minimum deviation, a bin's width above it at most.
     EXPECT_NEAR(red, descartes_minimum_deviation(water.n(656.3)), 0.3);
     EXPECT_NEAR(blue, descartes_minimum_deviation(water.n(486.1)), 0.3);

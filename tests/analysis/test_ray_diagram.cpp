@@ -13,12 +13,16 @@
 namespace lenslab {
 namespace {
 
-using test::LensSpec;
 using test::lens_scene;
+using test::LensSpec;
 using test::sphere;
 
 // The hyperbolic plano-convex lens of the equation-lens issue: a perfect focus at 100.
-const LensSpec kHyperbolic{"hyperbolic", 0, 5, 25, sphere(0),
+const LensSpec kHyperbolic{"hyperbolic",
+                           0,
+                           5,
+                           25,
+                           sphere(0),
                            R"({"shape": "conic", "radius": -50, "k": -2.25})",
                            R"({"transparency": 1, "ior": 1.5})"};
 
@@ -84,19 +88,21 @@ TEST(RayDiagram, SvgIsAStandalonePicture) {
     const LensSpec crown{"crown", 0, 4, 25.4, sphere(62.8), sphere(-45.7), test::glass("N-BK7")};
     const LensSpec flint{"flint", 4, 2.5, 25.4, sphere(-45.7), sphere(-128.2), test::glass("SF5")};
     const OpticalSystem system = build_optical_system(lens_scene({crown, flint}));
-    const std::string svg = ray_diagram_svg(make_ray_diagram(system, analyze_lens_system(system, {})));
+    const std::string svg =
+        ray_diagram_svg(make_ray_diagram(system, analyze_lens_system(system, {})));
     EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
     EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
     const auto count = [&](const std::string& what) {
         const std::regex re(what);
-        return std::distance(std::sregex_iterator(svg.begin(), svg.end(), re), std::sregex_iterator());
+        return std::distance(std::sregex_iterator(svg.begin(), svg.end(), re),
+                             std::sregex_iterator());
     };
     EXPECT_EQ(count("<polygon "), 2);    // two lenses
     EXPECT_GE(count("<polyline "), 27);  // rays, axis, planes
     EXPECT_EQ(count("<circle "), 2);     // F and F'
     EXPECT_EQ(count(">N-BK7<"), 1);
     EXPECT_EQ(count(">SF5<"), 1);
-    EXPECT_EQ(count(">20 mm<"), 1);      // the scale bar
+    EXPECT_EQ(count(">20 mm<"), 1);  // the scale bar
     EXPECT_EQ(count("\\bnan\\b|\\binf\\b"), 0);
 }
 

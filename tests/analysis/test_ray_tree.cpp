@@ -36,7 +36,8 @@ TEST(RayTree, NormalIncidenceSplitsFourAndNinetySixPercent) {
     EXPECT_EQ(reflected.children[0].event, Event::Escape);
     // Through the ball: 0.96 * 0.96 of the power reaches the floor and is absorbed there.
     const RayTreeNode* exit = nullptr;
-    for (const auto& c : refracted.children) if (c.event == Event::Refract) exit = &c;
+    for (const auto& c : refracted.children)
+        if (c.event == Event::Refract) exit = &c;
     ASSERT_NE(exit, nullptr);
     EXPECT_NEAR(exit->weight, 0.96 * 0.96, 1e-12);
     ASSERT_FALSE(exit->children.empty());

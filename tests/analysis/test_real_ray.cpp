@@ -13,8 +13,8 @@
 namespace lenslab {
 namespace {
 
-using test::LensSpec;
 using test::lens_scene;
+using test::LensSpec;
 using test::sphere;
 
 // The refracted branch through every face, as the scene's ray tree follows it.
@@ -33,8 +33,13 @@ const RayTreeNode* refracted_path_end(const RayTree& tree, int faces) {
 TEST(RealRay, AgreesWithTheScenesRayTree) {
     // Two air-spaced lenses, one an even asphere, traced both ways at the F line.
     const LensSpec a{"a", 0, 5, 25, sphere(50), sphere(-80), test::glass("N-BK7")};
-    const LensSpec b{"b", 8, 4, 25, R"({"shape": "asphere", "radius": 40, "k": -1, "coefficients": [-2e-6]})",
-                     sphere(0), test::glass("N-SF11")};
+    const LensSpec b{"b",
+                     8,
+                     4,
+                     25,
+                     R"({"shape": "asphere", "radius": 40, "k": -1, "coefficients": [-2e-6]})",
+                     sphere(0),
+                     test::glass("N-SF11")};
     const Scene scene = lens_scene({a, b});
     const OpticalSystem system = build_optical_system(scene);
     RayTreeOptions options;

@@ -14,10 +14,14 @@ Scene lens_scene(double r1, double r2, double thickness, double n) {
     const std::string text = R"({
       "camera": {"position": [0, 0, -200], "look_at": [0, 0, 0]},
       "objects": [{"type": "lens", "center": [0, 0, 0], "axis": [0, 0, 1],
-                   "thickness": )" + std::to_string(thickness) + R"(, "diameter": 25,
-                   "front": {"shape": "sphere", "radius": )" + std::to_string(r1) + R"(},
-                   "back": {"shape": "sphere", "radius": )" + std::to_string(r2) + R"(},
-                   "material": {"transparency": 1, "ior": )" + std::to_string(n) + R"(}}]
+                   "thickness": )" +
+                             std::to_string(thickness) + R"(, "diameter": 25,
+                   "front": {"shape": "sphere", "radius": )" +
+                             std::to_string(r1) + R"(},
+                   "back": {"shape": "sphere", "radius": )" +
+                             std::to_string(r2) + R"(},
+                   "material": {"transparency": 1, "ior": )" +
+                             std::to_string(n) + R"(}}]
     })";
     return parse_scene(text);
 }
@@ -43,7 +47,7 @@ double axis_crossing(const Scene& scene, double height) {
 TEST(ThickLens, ParaxialRayFocusesAtTheBackFocalDistance) {
     const double r1 = 50, r2 = -50, d = 5, n = 1.5;
     const double power = (n - 1) * (1 / r1 - 1 / r2 + (n - 1) * d / (n * r1 * r2));
-    const double f = 1 / power;                        // 50.847
+    const double f = 1 / power;                           // 50.847
     const double bfd = f * (1 - (n - 1) * d / (n * r1));  // 49.153 from the back vertex
     const Scene scene = lens_scene(r1, r2, d, n);
     const double measured = axis_crossing(scene, 0.05) - d / 2;  // back vertex at z = +d/2

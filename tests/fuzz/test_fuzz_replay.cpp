@@ -28,7 +28,8 @@ std::vector<fs::path> inputs_in(const std::string& folder) {
     const fs::path dir = fs::path(LENSLAB_TEST_DATA) / "fuzz" / folder;
     if (!fs::is_directory(dir)) return files;
     for (const auto& entry : fs::directory_iterator(dir)) {
-        if (entry.is_regular_file() && entry.path().filename() != "README.md") files.push_back(entry.path());
+        if (entry.is_regular_file() && entry.path().filename() != "README.md")
+            files.push_back(entry.path());
     }
     std::sort(files.begin(), files.end());
     return files;

@@ -39,8 +39,10 @@ TEST(ShapeContains, ClosedMeshByTheFacingOfItsNearestSurface) {
         const Vec3 p{rng.uniform() - 0.5, 1.2 * rng.uniform() - 0.6, rng.uniform() - 0.5};
         // Skip points within 1e-6 of the surface, where rounding may decide either way.
         const double margin = 1e-6;
-        if (inside(p) != inside(p + Vec3{margin, 0, 0}) || inside(p) != inside(p - Vec3{margin, 0, 0}) ||
-            inside(p) != inside(p + Vec3{0, margin, margin}) || inside(p) != inside(p - Vec3{0, margin, margin})) {
+        if (inside(p) != inside(p + Vec3{margin, 0, 0}) ||
+            inside(p) != inside(p - Vec3{margin, 0, 0}) ||
+            inside(p) != inside(p + Vec3{0, margin, margin}) ||
+            inside(p) != inside(p - Vec3{0, margin, margin})) {
             continue;
         }
         EXPECT_EQ(prism.contains(p), inside(p)) << p.x << " " << p.y << " " << p.z;

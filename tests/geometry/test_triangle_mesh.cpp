@@ -39,7 +39,8 @@ Ray ray_towards(const Aabb& box, Rng& rng) {
     const Vec3 e = box.extent();
     const double r = 3.0 * std::max(e.x, std::max(e.y, e.z));
     const Vec3 origin = c + sample_uniform_sphere(rng.uniform(), rng.uniform()) * r;
-    const Vec3 target = box.lo + Vec3{e.x * rng.uniform(), e.y * rng.uniform(), e.z * rng.uniform()};
+    const Vec3 target =
+        box.lo + Vec3{e.x * rng.uniform(), e.y * rng.uniform(), e.z * rng.uniform()};
     return {origin, normalize(target - origin)};
 }
 
@@ -111,7 +112,8 @@ TEST(TriangleMesh, NearestHitMatchesBruteForce) {
 TEST(TriangleMesh, AxisAlignedRaysHitWhateverTheSignOfTheirZeros) {
     // A direction component of -0 makes 1/d = -inf: the box test must take the far side first.
     const TriangleMesh mesh = closed_mesh(make_prism({}));
-    for (const Vec3& d : {Vec3{1, 0, 0}, Vec3{1, -0.0, -0.0}, Vec3{-0.0, 1, 0}, Vec3{0, -0.0, -1}}) {
+    for (const Vec3& d :
+         {Vec3{1, 0, 0}, Vec3{1, -0.0, -0.0}, Vec3{-0.0, 1, 0}, Vec3{0, -0.0, -1}}) {
         SurfaceHit h;
         EXPECT_TRUE(mesh.intersect({d * -3.0 + Vec3{0, 0.1, 0.01}, d}, 0, INFINITY, h))
             << d.x << " " << d.y << " " << d.z;
@@ -122,13 +124,14 @@ TEST(TriangleMesh, RaysThroughSharedEdgesAndVerticesNeverSlipThrough) {
     // An octahedron: rays aimed at its centre through the midpoint of every edge and through
     // every vertex meet exactly the boundary between faces, where a non-watertight test can
     // miss both triangles.
-    const MeshGeometry g{{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
-                         {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
-                          {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
+    const MeshGeometry g{
+        {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
+        {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
     const TriangleMesh mesh = closed_mesh(g);
     std::vector<Vec3> targets(g.vertices);
     for (const MeshTriangle& t : g.triangles) {
-        for (int k = 0; k < 3; ++k) targets.push_back((g.vertices[t[k]] + g.vertices[t[(k + 1) % 3]]) * 0.5);
+        for (int k = 0; k < 3; ++k)
+            targets.push_back((g.vertices[t[k]] + g.vertices[t[(k + 1) % 3]]) * 0.5);
     }
     Rng rng(3, 0);
     for (const Vec3& target : targets) {
@@ -140,7 +143,8 @@ TEST(TriangleMesh, RaysThroughSharedEdgesAndVerticesNeverSlipThrough) {
             const Vec3 from = target + out * (0.5 + 5.0 * rng.uniform());
             SurfaceHit h;
             EXPECT_TRUE(mesh.intersect({from, normalize(target - from)}, 0, INFINITY, h));
-            const Vec3 inner = Vec3{rng.uniform(), rng.uniform(), rng.uniform()} * 0.1 - Vec3{0.05, 0.05, 0.05};
+            const Vec3 inner =
+                Vec3{rng.uniform(), rng.uniform(), rng.uniform()} * 0.1 - Vec3{0.05, 0.05, 0.05};
             EXPECT_TRUE(mesh.intersect({inner, normalize(target - inner)}, 0, INFINITY, h));
             EXPECT_GT(dot(normalize(target - inner), h.normal), 0.0);
         }
@@ -164,7 +168,8 @@ void every_entering_ray_exits(const TriangleMesh& mesh, uint64_t seed, int max_t
         const Ray ray = ray_towards(box, rng);
         SurfaceHit h;
         if (!mesh.intersect(ray, 0, INFINITY, h)) continue;
-        ASSERT_LT(dot(ray.direction, h.normal), 0.0) << "the first hit from outside must be an entry";
+        ASSERT_LT(dot(ray.direction, h.normal), 0.0)
+            << "the first hit from outside must be an entry";
         const auto inside = refract(ray.direction, h.normal, 1.0 / eta);
         ASSERT_TRUE(inside.has_value());
         ++entered;
@@ -192,10 +197,11 @@ void every_entering_ray_exits(const TriangleMesh& mesh, uint64_t seed, int max_t
 }
 
 TEST(TriangleMesh, EveryRayEnteringAPrismExits) {
-    every_entering_ray_exits(closed_mesh(make_prism({60.0, 1.0, 1.0, {0, 0, 0}, {0, 1, 0}, {0, 0, 1}})), 11, 0);
     every_entering_ray_exits(
-        closed_mesh(make_prism({30.0, 2.0, 0.5, {1, 2, 3}, normalize(Vec3{1, 1, 0}),
-                                normalize(Vec3{1, -1, 1})})),
+        closed_mesh(make_prism({60.0, 1.0, 1.0, {0, 0, 0}, {0, 1, 0}, {0, 0, 1}})), 11, 0);
+    every_entering_ray_exits(
+        closed_mesh(make_prism(
+            {30.0, 2.0, 0.5, {1, 2, 3}, normalize(Vec3{1, 1, 0}), normalize(Vec3{1, -1, 1})})),
         12, 0);
 }
 
@@ -237,7 +243,8 @@ TEST(MeshTopology, FindsHolesDisagreeingFacesAndNonManifoldEdges) {
 TEST(MeshTopology, InsideOutMeshHasNegativeVolumeAndRepeatedCornersWeld) {
     MeshGeometry prism = make_prism({});
     flip_triangles(prism.triangles);
-    const auto t = check_mesh_topology(prism.vertices, prism.triangles, one_face_per_triangle(prism));
+    const auto t =
+        check_mesh_topology(prism.vertices, prism.triangles, one_face_per_triangle(prism));
     EXPECT_TRUE(t.closed);
     EXPECT_LT(t.signed_volume, 0.0);
 

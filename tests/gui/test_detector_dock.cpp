@@ -26,7 +26,8 @@ private slots:
     void selecting_a_detector_and_measuring_shows_its_map() {
         MainWindow w;
         QString error;
-        QVERIFY2(w.open_file(LENSLAB_SOURCE_DIR "/scenes/detector_focus.json", &error), qPrintable(error));
+        QVERIFY2(w.open_file(LENSLAB_SOURCE_DIR "/scenes/detector_focus.json", &error),
+                 qPrintable(error));
         DetectorDock* dock = w.detector_dock();
         w.tree()->select_pointer("/objects/1");
         QCOMPARE(dock->shown_object(), 1);
@@ -41,7 +42,8 @@ private slots:
         QVERIFY(m);
         QCOMPARE(m->name, std::string("focal plane"));
         // The beam's 1 W less the Fresnel losses at the lens's two faces (about 8%).
-        QVERIFY2(m->total_power > 0.89 && m->total_power < 0.94, qPrintable(QString::number(m->total_power)));
+        QVERIFY2(m->total_power > 0.89 && m->total_power < 0.94,
+                 qPrintable(QString::number(m->total_power)));
         QVERIFY(!dock->picture()->pixmap().isNull());
         QVERIFY(dock->picture()->pixmap().width() > 100);
         QVERIFY2(dock->summary_text().contains("total power"), qPrintable(dock->summary_text()));
@@ -66,7 +68,9 @@ private slots:
         QVERIFY(!dock->findChild<QPushButton*>("detector_measure")->isEnabled());
         w.add_element("disc");
         const int index = int(w.document()->json()["objects"].size()) - 1;
-        QCOMPARE(QString::fromStdString(w.document()->json()["objects"][index]["type"].get<std::string>()), QString("disc"));
+        QCOMPARE(QString::fromStdString(
+                     w.document()->json()["objects"][index]["type"].get<std::string>()),
+                 QString("disc"));
         QCOMPARE(dock->shown_object(), index);
         QVERIFY(dock->findChild<QPushButton*>("detector_measure")->isEnabled());
 
@@ -87,8 +91,12 @@ private slots:
     void detector_true_becomes_an_object_when_a_field_is_edited() {
         MainWindow w;
         json j = w.document()->json();
-        j["objects"].push_back({{"type", "rectangle"}, {"center", {0, 1, 0}}, {"normal", {0, 0, 1}}, {"size", {1, 2}},
-                                {"material", {{"color", 0.5}}}, {"detector", true}});
+        j["objects"].push_back({{"type", "rectangle"},
+                                {"center", {0, 1, 0}},
+                                {"normal", {0, 0, 1}},
+                                {"size", {1, 2}},
+                                {"material", {{"color", 0.5}}},
+                                {"detector", true}});
         QVERIFY(w.document()->apply(j, "add", nullptr));
         const int index = int(j["objects"].size()) - 1;
         w.tree()->select_pointer(QString("/objects/%1").arg(index));

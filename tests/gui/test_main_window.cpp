@@ -4,9 +4,9 @@
 #include <QAction>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
-#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -95,7 +95,8 @@ private slots:
         type_value(radius, 0.7);
         QCOMPARE(w.document()->json()["objects"][0]["radius"].get<double>(), 0.7);
         QVERIFY(wait_for_fresh_frame(w));
-        qInfo("edit -> first frame of the edited scene: %lld ms", static_cast<long long>(latency.elapsed()));
+        qInfo("edit -> first frame of the edited scene: %lld ms",
+              static_cast<long long>(latency.elapsed()));
         QVERIFY(w.document()->is_modified());
 
         w.document()->undo_stack()->undo();
@@ -132,14 +133,16 @@ private slots:
         QString error;
         QVERIFY2(w.export_image_to(dir.filePath("view.png"), &error), qPrintable(error));
         QVERIFY2(w.export_image_to(dir.filePath("view.exr"), &error), qPrintable(error));
-        QCOMPARE(QDir(dir.path()).entryList(QDir::Files, QDir::Name), QStringList({"view.exr", "view.png"}));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files, QDir::Name),
+                 QStringList({"view.exr", "view.png"}));
         QFile png(dir.filePath("view.png"));
         QVERIFY(png.open(QIODevice::ReadOnly));
         QCOMPARE(png.read(8), QByteArray("\x89PNG\r\n\x1a\n", 8));
         // A folder that does not exist: refused, and nothing is left anywhere.
         QVERIFY(!w.export_image_to(dir.filePath("missing/view.png"), &error));
         QVERIFY2(error.contains("missing/view.png"), qPrintable(error));
-        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Dirs | QDir::NoDotAndDotDot).size(), 2);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Dirs | QDir::NoDotAndDotDot).size(),
+                 2);
     }
 
     void a_broken_file_leaves_the_scene_untouched() {
@@ -199,7 +202,7 @@ private slots:
         QDoubleSpinBox* flint = field(w, "elements/1/thickness");
         QVERIFY(flint);
         QCOMPARE(flint->value(), 2.5);
-        QVERIFY(field(w, "elements/0/gap"));       // the crown may be moved off the flint
+        QVERIFY(field(w, "elements/0/gap"));           // the crown may be moved off the flint
         QVERIFY(!field(w, "elements/0/back/radius"));  // cemented: no back of its own
         type_value(flint, 3.0);
         QCOMPARE(w.document()->json()["objects"][1]["elements"][1]["thickness"].get<double>(), 3.0);
@@ -233,7 +236,8 @@ private slots:
         QVERIFY(glass);
         glass->setCurrentText("N-BK7");
         emit glass->activated(glass->currentIndex());
-        QCOMPARE(w.document()->json()["materials"]["red"]["glass"].get<std::string>(), std::string("N-BK7"));
+        QCOMPARE(w.document()->json()["materials"]["red"]["glass"].get<std::string>(),
+                 std::string("N-BK7"));
         QVERIFY(!w.document()->json()["materials"]["red"].contains("ior"));
         // Give the point light a 2700 K blackbody spectrum instead of a colour.
         w.tree()->select_pointer("/lights/0");
@@ -257,13 +261,15 @@ private slots:
         QCOMPARE(w.panel()->pointer(), lens);
         auto* shape = w.panel()->findChild<QComboBox*>("field:front/shape");
         QVERIFY(shape);
-        for (const char* s : {"flat", "sphere", "conic", "asphere", "sag"}) QVERIFY(shape->findText(s) >= 0);
+        for (const char* s : {"flat", "sphere", "conic", "asphere", "sag"})
+            QVERIFY(shape->findText(s) >= 0);
         shape->setCurrentText("sag");
         emit shape->activated(shape->currentIndex());
         const json front = w.document()->json()["objects"][3]["front"];
         QCOMPARE(front["shape"].get<std::string>(), std::string("sag"));
         // The sphere it was becomes its formula.
-        QVERIFY2(front["formula"].get<std::string>().find("sqrt") != std::string::npos, front.dump().c_str());
+        QVERIFY2(front["formula"].get<std::string>().find("sqrt") != std::string::npos,
+                 front.dump().c_str());
 
         auto* formula = w.panel()->findChild<QLineEdit*>("field:front/formula");
         auto* problem = w.panel()->findChild<QLabel*>("formula_error:front/formula");
@@ -282,20 +288,23 @@ private slots:
         QTest::keyClicks(formula, "r^2/3");
         QVERIFY(problem->text().isEmpty());
         emit formula->editingFinished();
-        QCOMPARE(w.document()->json()["objects"][3]["front"]["formula"].get<std::string>(), std::string("r^2/3"));
+        QCOMPARE(w.document()->json()["objects"][3]["front"]["formula"].get<std::string>(),
+                 std::string("r^2/3"));
         QVERIFY(wait_for_fresh_frame(w));
         // Every shape has its fields: an asphere's coefficients are a list of numbers.
         shape = w.panel()->findChild<QComboBox*>("field:front/shape");
         shape->setCurrentText("asphere");
         emit shape->activated(shape->currentIndex());
-        QCOMPARE(w.document()->json()["objects"][3]["front"]["shape"].get<std::string>(), std::string("asphere"));
+        QCOMPARE(w.document()->json()["objects"][3]["front"]["shape"].get<std::string>(),
+                 std::string("asphere"));
         QVERIFY(field(w, "front/k"));
         auto* coefficients = w.panel()->findChild<QLineEdit*>("field:front/coefficients");
         QVERIFY(coefficients);
         coefficients->clear();
         QTest::keyClicks(coefficients, "0.01, -0.002");
         emit coefficients->editingFinished();
-        QCOMPARE(w.document()->json()["objects"][3]["front"]["coefficients"], json::array({0.01, -0.002}));
+        QCOMPARE(w.document()->json()["objects"][3]["front"]["coefficients"],
+                 json::array({0.01, -0.002}));
         w.document()->undo_stack()->undo();
         QCOMPARE(w.document()->json()["objects"][3]["front"]["coefficients"], json::array({0.0}));
     }
@@ -315,14 +324,17 @@ private slots:
         QTest::keyClicks(formula, "x^2 + y^2 + z^2 - 0.04");
         QVERIFY(problem->text().isEmpty());
         emit formula->editingFinished();
-        QCOMPARE(w.document()->json()["objects"][3]["formula"].get<std::string>(), std::string("x^2 + y^2 + z^2 - 0.04"));
+        QCOMPARE(w.document()->json()["objects"][3]["formula"].get<std::string>(),
+                 std::string("x^2 + y^2 + z^2 - 0.04"));
         // A formula that parses but leaves nothing inside the box is refused by the reader.
         formula = w.panel()->findChild<QLineEdit*>("field:formula");
         formula->clear();
         QTest::keyClicks(formula, "x^2 + 1");
         emit formula->editingFinished();
-        QVERIFY2(w.panel()->error_text().contains("the solid is empty"), qPrintable(w.panel()->error_text()));
-        QCOMPARE(w.document()->json()["objects"][3]["formula"].get<std::string>(), std::string("x^2 + y^2 + z^2 - 0.04"));
+        QVERIFY2(w.panel()->error_text().contains("the solid is empty"),
+                 qPrintable(w.panel()->error_text()));
+        QCOMPARE(w.document()->json()["objects"][3]["formula"].get<std::string>(),
+                 std::string("x^2 + y^2 + z^2 - 0.04"));
     }
 
     void edit_while_rendering_restarts_promptly() {
@@ -335,8 +347,10 @@ private slots:
         latency.start();
         type_value(field(w, "radius"), 0.6);
         QVERIFY(wait_for_fresh_frame(w, 60000));
-        qInfo("edit while rendering -> first frame of the edited scene: %lld ms (one sppm pass: "
-              "camera paths and photons)", static_cast<long long>(latency.elapsed()));
+        qInfo(
+            "edit while rendering -> first frame of the edited scene: %lld ms (one sppm pass: "
+            "camera paths and photons)",
+            static_cast<long long>(latency.elapsed()));
     }
 };
 

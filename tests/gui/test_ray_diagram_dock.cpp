@@ -39,7 +39,8 @@ private slots:
         const QImage image = dock->view()->grab().toImage();
         int coloured = 0;
         for (int y = 0; y < image.height(); y += 2) {
-            for (int x = 0; x < image.width(); x += 2) coloured += image.pixel(x, y) != qRgb(255, 255, 255);
+            for (int x = 0; x < image.width(); x += 2)
+                coloured += image.pixel(x, y) != qRgb(255, 255, 255);
         }
         QVERIFY(coloured > 200);
 

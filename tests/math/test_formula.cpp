@@ -2,12 +2,11 @@
 // constructs refused, and evaluation from many threads at once.
 
 #include <gtest/gtest.h>
+#include <oneapi/tbb/parallel_for.h>
 
 #include <cmath>
 #include <numbers>
 #include <vector>
-
-#include <oneapi/tbb/parallel_for.h>
 
 #include "math/formula.h"
 

@@ -31,7 +31,7 @@ TEST(Refraction, SnellsLawHoldsForRandomDirections) {
             ASSERT_TRUE(t.has_value());
             EXPECT_NEAR(length(*t), 1.0, 1e-12);
             EXPECT_NEAR(lhs, n2 * sin_angle(*t, n), 1e-12);  // n1 sin(a) = n2 sin(b)
-            EXPECT_LT(t->z, 0.0);                             // continues through the surface
+            EXPECT_LT(t->z, 0.0);                            // continues through the surface
             EXPECT_NEAR(dot(cross(d, n), *t), 0.0, 1e-12);   // stays in the plane of incidence
         }
     }

@@ -6,9 +6,8 @@
 // Every scene goes through the scene reader, so it is one a user could have written.
 
 #include <cstdint>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "scene/scene.h"
 

@@ -20,7 +20,8 @@ namespace {
 // times, moving 0.02 along x each time, before it leaves past x = 18 into the white
 // background. So a pixel is white exactly when the render followed 900 bounces.
 Scene mirror_corridor(int max_depth) {
-    const std::string mirror = R"({"type": "triangle", "vertices": [[-1, -5, Z], [18, -5, Z], [18, 5, Z]], "material": {"specular": 1}},
+    const std::string mirror =
+        R"({"type": "triangle", "vertices": [[-1, -5, Z], [18, -5, Z], [18, 5, Z]], "material": {"specular": 1}},
         {"type": "triangle", "vertices": [[-1, -5, Z], [18, 5, Z], [-1, 5, Z]], "material": {"specular": 1}})";
     auto at = [&](const char* z) {
         std::string m = mirror;
@@ -29,9 +30,11 @@ Scene mirror_corridor(int max_depth) {
     };
     return parse_scene(R"({
       "camera": {"position": [0, 0, 0], "direction": [0.01, 0, 1], "fov": 0.001},
-      "render": {"width": 2, "height": 2, "spp": 256, "max_depth": )" + std::to_string(max_depth) + R"(,
+      "render": {"width": 2, "height": 2, "spp": 256, "max_depth": )" +
+                       std::to_string(max_depth) + R"(,
                  "min_weight": 1e-6, "background": 1, "photons": 1000},
-      "objects": [)" + at("1") + ", " + at("-1") + R"(],
+      "objects": [)" + at("1") +
+                       ", " + at("-1") + R"(],
       "lights": [{"type": "point", "position": [0, 0, 0.5], "power": 10}]
     })");
 }
@@ -49,7 +52,8 @@ TEST(DepthLimit, MirrorCorridorAtTheDeepestAllowedDepth) {
             // Past 900 bounces the background shows (white to the colour noise of 256
             // samples of 4 wavelengths); cut at 800 the pixel stays black.
             const double expected = depth > 900 ? 1.0 : 0.0;
-            for (const PixelRgb& p : r.film.pixels()) EXPECT_NEAR(p.g, expected, 0.02) << "max_depth " << depth;
+            for (const PixelRgb& p : r.film.pixels())
+                EXPECT_NEAR(p.g, expected, 0.02) << "max_depth " << depth;
         }
     }
 }

@@ -3,12 +3,11 @@
 // random streams are tied to pixels and photons, never to threads.
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cstring>
 #include <string>
 #include <vector>
-
-#include <tbb/global_control.h>
 
 #include "random_scene.h"
 #include "render/render_session.h"
@@ -63,7 +62,8 @@ TEST_F(Determinism, RandomScenesAtOneTwoAndEightThreads) {
     options.height = 32;
     options.photons = 20000;
     for (uint64_t seed : {3u, 16u, 19u}) {
-        expect_same_at_any_thread_count(testing::random_scene(seed, options), "random scene " + std::to_string(seed));
+        expect_same_at_any_thread_count(testing::random_scene(seed, options),
+                                        "random scene " + std::to_string(seed));
     }
 }
 

@@ -79,8 +79,8 @@ TEST_P(GoldenImage, SpectralAgreesWithTheRgbRender) {
         for (int c = 0; c < 3; ++c) reference[c] += to_linear(rgb.rgb[3 * i + c]);
     }
     for (int c = 0; c < 3; ++c) {
-        std::printf("%s channel %d: spectral %.4f, rgb %.4f\n", name.c_str(), c, spectral[c] / film.pixels().size(),
-                    reference[c] / film.pixels().size());
+        std::printf("%s channel %d: spectral %.4f, rgb %.4f\n", name.c_str(), c,
+                    spectral[c] / film.pixels().size(), reference[c] / film.pixels().size());
         EXPECT_NEAR(spectral[c] / reference[c], 1.0, 0.01) << "channel " << c;
     }
 }

@@ -2,12 +2,11 @@
 // lens, the focus of a ball lens and of a thick lens, convergence with photon count.
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <cmath>
 #include <numbers>
 #include <sstream>
-
-#include <tbb/task_arena.h>
 
 #include "render/integrators/photon_map.h"
 #include "render/photon_tracer.h"
@@ -24,7 +23,8 @@ std::string floor_triangles(double y, double half = 50) {
             {"name": "floor", "type": "triangle", "vertices": [[-H, Y, -H], [H, Y, H], [H, Y, -H]], "material": {"color": 0.5}})";
     std::string t = s.str();
     for (auto [key, v] : {std::pair{"H", half}, std::pair{"Y", y}}) {
-        for (size_t at; (at = t.find(key)) != std::string::npos;) t.replace(at, 1, std::to_string(v));
+        for (size_t at; (at = t.find(key)) != std::string::npos;)
+            t.replace(at, 1, std::to_string(v));
     }
     return t;
 }
@@ -32,10 +32,10 @@ std::string floor_triangles(double y, double half = 50) {
 // A screen: the plane z = `z`, facing -z, 60 across.
 std::string screen_at(double z) {
     std::ostringstream s;
-    s << R"({"name": "screen", "type": "triangle", "vertices": [[-30, -30, )" << z << "], [30, 30, " << z
-      << "], [30, -30, " << z << R"(]], "material": {"color": 0.5}},
-         {"name": "screen", "type": "triangle", "vertices": [[-30, -30, )" << z << "], [-30, 30, " << z
-      << "], [30, 30, " << z << R"(]], "material": {"color": 0.5}})";
+    s << R"({"name": "screen", "type": "triangle", "vertices": [[-30, -30, )" << z << "], [30, 30, "
+      << z << "], [30, -30, " << z << R"(]], "material": {"color": 0.5}},
+         {"name": "screen", "type": "triangle", "vertices": [[-30, -30, )"
+      << z << "], [-30, 30, " << z << "], [30, 30, " << z << R"(]], "material": {"color": 0.5}})";
     return s.str();
 }
 
@@ -55,7 +55,8 @@ double total_power(const PhotonKdTree& map) {
 TEST(PhotonMap, PointLightIrradianceMatchesInverseSquareLaw) {
     // E = I cos(theta) / r^2, I = P / (4 pi), on a floor 1 below a point light of P = 100 W.
     const Scene scene = parse_scene(R"({"camera": {"position": [0, 5, 5], "look_at": [0, 0, 0]},
-        "objects": [)" + floor_triangles(0) + R"(],
+        "objects": [)" + floor_triangles(0) +
+                                    R"(],
         "lights": [{"type": "point", "position": [0, 1, 0], "power": 100}]})");
     const PhotonMap map = trace(scene, 4000000);
     GatherSettings g;
@@ -80,7 +81,8 @@ TEST(PhotonMap, LensTransmitsTheFresnelShareOfABeam) {
     const Scene scene = parse_scene(R"({"camera": {"position": [0, 0, -100], "look_at": [0, 0, 0]},
         "objects": [{"type": "lens", "center": [0, 0, 0], "axis": [0, 0, 1], "thickness": 5, "diameter": 25,
                      "front": {"shape": "sphere", "radius": 50}, "back": {"shape": "sphere", "radius": -50},
-                     "material": {"transparency": 1, "ior": 1.5}}, )" + screen_at(10) + R"(],
+                     "material": {"transparency": 1, "ior": 1.5}}, )" +
+                                    screen_at(10) + R"(],
         "lights": [{"type": "beam", "origin": [0, 0, -20], "direction": [0, 0, 1], "radius": 2, "power": 1}]})");
     PhotonTracingStats stats;
     const PhotonMap map = trace(scene, 400000, &stats);
@@ -92,9 +94,10 @@ TEST(PhotonMap, LensTransmitsTheFresnelShareOfABeam) {
 // Caustic irradiance at the axis of a screen placed at z, for a beam along +z.
 double axial_caustic(const std::string& optics, double beam_radius, double z, double gather) {
     const Scene scene = parse_scene(R"({"camera": {"position": [0, 0, -100], "look_at": [0, 0, 0]},
-        "objects": [)" + optics + ", " + screen_at(z) + R"(],
+        "objects": [)" + optics + ", " +
+                                    screen_at(z) + R"(],
         "lights": [{"type": "beam", "origin": [0, 0, -60], "direction": [0, 0, 1], "radius": )" +
-                                std::to_string(beam_radius) + R"(, "power": 1}]})");
+                                    std::to_string(beam_radius) + R"(, "power": 1}]})");
     const PhotonMap map = trace(scene, 60000);
     GatherSettings g;
     g.radius = gather;
@@ -110,7 +113,10 @@ double brightest_screen(const std::string& optics, double beam_radius, double z0
     for (int i = 0; i <= steps; ++i) {
         const double z = z0 + (z1 - z0) * i / steps;
         const double e = axial_caustic(optics, beam_radius, z, gather);
-        if (e > best) { best = e; best_z = z; }
+        if (e > best) {
+            best = e;
+            best_z = z;
+        }
     }
     return best_z;
 }
@@ -129,17 +135,20 @@ TEST(PhotonMap, BallLensFocusesAtItsBackFocalDistance) {
 TEST(PhotonMap, ThickLensFocusesAtItsBackFocalDistance) {
     // R1 = 50, R2 = -50, d = 5, n = 1.5: BFD = 49.15 behind the back vertex (z = 2.5), from
     // the thick-lens equation (Hecht eqs. 6.2, 6.3).
-    const std::string lens = R"({"type": "lens", "center": [0, 0, 0], "axis": [0, 0, 1], "thickness": 5,
+    const std::string lens =
+        R"({"type": "lens", "center": [0, 0, 0], "axis": [0, 0, 1], "thickness": 5,
         "diameter": 25, "front": {"shape": "sphere", "radius": 50}, "back": {"shape": "sphere", "radius": -50},
         "material": {"transparency": 1, "ior": 1.5}})";
-    const double f = 1 / (0.5 * (2.0 / 50 - 0.5 * 5 / (1.5 * 2500))), bfd = f * (1 - 0.5 * 5 / (1.5 * 50));
+    const double f = 1 / (0.5 * (2.0 / 50 - 0.5 * 5 / (1.5 * 2500))),
+                 bfd = f * (1 - 0.5 * 5 / (1.5 * 50));
     const double z = brightest_screen(lens, 1.5, 2.5 + bfd * 0.95, 2.5 + bfd * 1.05, 40, 0.01);
     EXPECT_NEAR(z - 2.5, bfd, 0.02 * bfd);
 }
 
 TEST(PhotonMap, BrightnessDoesNotDependOnThePhotonCount) {
     const Scene scene = parse_scene(R"({"camera": {"position": [0, 5, 5], "look_at": [0, 0, 0]},
-        "objects": [)" + floor_triangles(0, 2) + R"(],
+        "objects": [)" + floor_triangles(0, 2) +
+                                    R"(],
         "lights": [{"type": "point", "position": [0, 1, 0], "power": 100}]})");
     // The floor (4 x 4, 1 below the light) catches the same share of the power whatever the
     // count: the solid angle of the square seen from the light.
@@ -164,7 +173,9 @@ TEST(PhotonMap, CausticErrorShrinksAsPhotonsGrow) {
         std::vector<double> e;
         for (int i = -6; i <= 6; ++i) {
             for (int j = -6; j <= 6; ++j) {
-                e.push_back(PhotonMap::irradiance(map.caustic(), {i * 0.05, 0, j * 0.05}, {0, 1, 0}, g, scratch).g);
+                e.push_back(PhotonMap::irradiance(map.caustic(), {i * 0.05, 0, j * 0.05}, {0, 1, 0},
+                                                  g, scratch)
+                                .g);
             }
         }
         return e;
@@ -180,7 +191,8 @@ TEST(PhotonMap, CausticErrorShrinksAsPhotonsGrow) {
         }
         const double relative = std::sqrt(err / norm);
         RecordProperty("photons_" + std::to_string(photons), std::to_string(relative));
-        std::printf("caustic error with %lld photons: %.4f\n", static_cast<long long>(photons), relative);
+        std::printf("caustic error with %lld photons: %.4f\n", static_cast<long long>(photons),
+                    relative);
         EXPECT_LT(relative, previous);
         previous = relative;
     }

@@ -31,7 +31,8 @@ Scene laser_through_glass(double nm, double width) {
         {"type": "triangle", "vertices": [[-20, -20, 5], [-20, 20, 5], [20, 20, 5]], "material": {"color": 1}}
       ],
       "lights": [{"type": "beam", "origin": [0, 0, -3], "direction": [0, 0, 1], "radius": 0.3, "power": 1,
-                  "spectrum": {"line": )" + std::to_string(nm) + R"(, "width": )" + std::to_string(width) + "}}]}");
+                  "spectrum": {"line": )" +
+                       std::to_string(nm) + R"(, "width": )" + std::to_string(width) + "}}]}");
 }
 
 // How far `got` is from the colour of a single wavelength near `nm` (within 6 `width` + 1 nm)
@@ -42,7 +43,9 @@ double distance_from_one_wavelength(const Rgb& got, double power, double nm, dou
     for (double l = nm - 6 * width - 1; l <= nm + 6 * width + 1; l += 0.002) {
         const Rgb c = sample_to_rgb(power, l, 1.0);
         const double scale = std::max({std::abs(c.r), std::abs(c.g), std::abs(c.b)});
-        best = std::min(best, std::max({std::abs(got.r - c.r), std::abs(got.g - c.g), std::abs(got.b - c.b)}) / scale);
+        best = std::min(
+            best, std::max({std::abs(got.r - c.r), std::abs(got.g - c.g), std::abs(got.b - c.b)}) /
+                      scale);
     }
     return best;
 }
@@ -68,7 +71,8 @@ void expect_caustic_photons_keep_the_beams_power(double nm, double width) {
         // Stored on white (p_diffuse = 1) after two refractions and perhaps reflections
         // inside, each kept by Russian roulette with the power unchanged.
         const Rgb got = map.caustic().begin()[i].flux();
-        worst = std::max(worst, distance_from_one_wavelength(got, emitted, nm, std::max(width, 0.1)));
+        worst =
+            std::max(worst, distance_from_one_wavelength(got, emitted, nm, std::max(width, 0.1)));
     }
     EXPECT_LT(worst, 2e-3);
 }

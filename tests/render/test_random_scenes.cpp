@@ -26,7 +26,9 @@ namespace {
 
 constexpr int kScenes = 24;
 
-bool finite(const float v[3]) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
+bool finite(const float v[3]) {
+    return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
 
 // The power one emitted photon of each light leaves with: an emitting sphere of radiance L
 // and radius R sends pi L 4 pi R^2, a point light or a beam its power, divided among the
@@ -35,7 +37,9 @@ std::vector<Rgb> emitted_per_photon(const Scene& scene, int64_t photons_per_ligh
     std::vector<Rgb> out;
     const std::vector<int64_t> counts = photons_by_power(scene, photons_per_light);
     size_t light = 0;
-    auto add = [&](const Rgb& total) { out.push_back(total * (1.0 / static_cast<double>(counts[light++]))); };
+    auto add = [&](const Rgb& total) {
+        out.push_back(total * (1.0 / static_cast<double>(counts[light++])));
+    };
     for (const SphereEmitter& e : scene.emitters()) {
         const double r = e.sphere->radius();
         add(spectrum_to_rgb(*e.radiance) * (std::numbers::pi * 4 * std::numbers::pi * r * r));
@@ -85,7 +89,8 @@ TEST(RandomScenes, NoIntegratorMakesANonFiniteSampleOrPixel) {
 TEST(RandomScenes, EveryStoredPhotonIsFinite) {
     size_t photons = 0;
     for (uint64_t seed = 1; seed <= kScenes; ++seed) {
-        SCOPED_TRACE("scene seed " + std::to_string(seed) + ":\n" + testing::random_scene_json(seed).dump());
+        SCOPED_TRACE("scene seed " + std::to_string(seed) + ":\n" +
+                     testing::random_scene_json(seed).dump());
         const Scene scene = testing::random_scene(seed);
         RenderControl control;
         const PhotonMap map = trace_photons(scene, photon_tracing_settings(scene), control);
@@ -106,42 +111,44 @@ TEST(RandomScenes, NoPhotonGainsPower) {
     options.dispersive = false;
     size_t checked = 0, unplaced = 0, aimed = 0;
     for (uint64_t seed = 1; seed <= kScenes; ++seed) {
-      for (const bool aim : {false, true}) {
-        SCOPED_TRACE("scene seed " + std::to_string(seed) + (aim ? ", aimed" : ", uniform") + ":\n" +
-                     testing::random_scene_json(seed, options).dump());
-        const Scene scene = testing::random_scene(seed, options);
-        PhotonTracingSettings settings = photon_tracing_settings(scene);
-        settings.aim = aim;
-        settings.photons_per_light = settings.caustic_photons_per_light = scene.render.photons;
-        const std::vector<Rgb> emitted = emitted_per_photon(scene, settings.photons_per_light);
-        double most = 0;
-        for (const Rgb& e : emitted) most = std::max({most, e.r, e.g, e.b});
-        RenderControl control;
-        const PhotonMap map = trace_photons(scene, settings, control);
-        for (const PhotonKdTree* tree : {&map.direct(), &map.caustic()}) {
-            for (size_t i = 0; i < tree->size(); ++i) {
-                const Photon& ph = tree->begin()[i];
-                const double p_diffuse = storage_probability(scene, ph);
-                if (p_diffuse < 0) {
-                    ++unplaced;  // two surfaces closer than the probe: cannot tell which
-                    continue;
+        for (const bool aim : {false, true}) {
+            SCOPED_TRACE("scene seed " + std::to_string(seed) + (aim ? ", aimed" : ", uniform") +
+                         ":\n" + testing::random_scene_json(seed, options).dump());
+            const Scene scene = testing::random_scene(seed, options);
+            PhotonTracingSettings settings = photon_tracing_settings(scene);
+            settings.aim = aim;
+            settings.photons_per_light = settings.caustic_photons_per_light = scene.render.photons;
+            const std::vector<Rgb> emitted = emitted_per_photon(scene, settings.photons_per_light);
+            double most = 0;
+            for (const Rgb& e : emitted) most = std::max({most, e.r, e.g, e.b});
+            RenderControl control;
+            const PhotonMap map = trace_photons(scene, settings, control);
+            for (const PhotonKdTree* tree : {&map.direct(), &map.caustic()}) {
+                for (size_t i = 0; i < tree->size(); ++i) {
+                    const Photon& ph = tree->begin()[i];
+                    const double p_diffuse = storage_probability(scene, ph);
+                    if (p_diffuse < 0) {
+                        ++unplaced;  // two surfaces closer than the probe: cannot tell which
+                        continue;
+                    }
+                    ASSERT_GT(p_diffuse, 0.0)
+                        << "photon " << i << " stored on a surface that cannot store";
+                    const Rgb carried = ph.flux() * p_diffuse;
+                    bool from_a_light = false;
+                    for (const Rgb& e : emitted) from_a_light = from_a_light || matches(carried, e);
+                    if (aim && !from_a_light) {
+                        ASSERT_LE(std::max({carried.r, carried.g, carried.b}), most * (1 + 1e-5))
+                            << "aimed photon " << i << " carried more than any light's photons";
+                        ++aimed;
+                    } else {
+                        ASSERT_TRUE(from_a_light)
+                            << "photon " << i << " carried (" << carried.r << ", " << carried.g
+                            << ", " << carried.b << "), which no light emitted";
+                    }
+                    ++checked;
                 }
-                ASSERT_GT(p_diffuse, 0.0) << "photon " << i << " stored on a surface that cannot store";
-                const Rgb carried = ph.flux() * p_diffuse;
-                bool from_a_light = false;
-                for (const Rgb& e : emitted) from_a_light = from_a_light || matches(carried, e);
-                if (aim && !from_a_light) {
-                    ASSERT_LE(std::max({carried.r, carried.g, carried.b}), most * (1 + 1e-5))
-                        << "aimed photon " << i << " carried more than any light's photons";
-                    ++aimed;
-                } else {
-                    ASSERT_TRUE(from_a_light) << "photon " << i << " carried (" << carried.r << ", " << carried.g
-                                              << ", " << carried.b << "), which no light emitted";
-                }
-                ++checked;
             }
         }
-      }
     }
     EXPECT_GT(aimed, 1000u);  // the scenes do aim photons at their glass
     EXPECT_GT(checked, 1000u);

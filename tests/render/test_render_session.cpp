@@ -20,7 +20,8 @@ constexpr double kPi = std::numbers::pi;
 std::string floor_scene(const std::string& lights_and_objects, int spp = 256) {
     return R"({
       "camera": {"position": [0, 1, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 1},
-      "render": {"width": 3, "height": 3, "spp": )" + std::to_string(spp) + R"(},
+      "render": {"width": 3, "height": 3, "spp": )" +
+           std::to_string(spp) + R"(},
       "objects": [
         {"type": "triangle", "vertices": [[-50, 0, -50], [-50, 0, 50], [50, 0, 50]], "material": {"color": 0.5}},
         {"type": "triangle", "vertices": [[-50, 0, -50], [50, 0, 50], [50, 0, -50]], "material": {"color": 0.5}})" +
@@ -45,8 +46,8 @@ TEST(Radiometry, PointLightGivesLambertRadiance) {
 
 TEST(Radiometry, WhiteFloorUnderWhiteLightIsNeutralGrey) {
     // D65 light (colour [1, 1, 1]) on a grey floor, rendered spectrally: r = g = b.
-    const Scene scene = parse_scene(
-        floor_scene(R"(], "lights": [{"type": "point", "position": [0, 2, 0], "power": 100, "spectrum": "d65"}])"));
+    const Scene scene = parse_scene(floor_scene(
+        R"(], "lights": [{"type": "point", "position": [0, 2, 0], "power": 100, "spectrum": "d65"}])"));
     RenderControl control;
     const PixelRgb p = render_scene(scene, control).film.at(1, 1);
     EXPECT_NEAR(p.r / p.g, 1.0, 5e-3);
@@ -141,15 +142,26 @@ TEST(RenderSession, DefaultSceneIsTheReportsExperiment) {
         const Material& m = scene.material_of(static_cast<int>(i));
         switch (scene.objects[i].type) {
             case ObjectType::Sphere:
-                if (m.transparency > 0) ++glass_spheres;
-                else if (!m.is_emitter()) ++opaque_spheres;
+                if (m.transparency > 0)
+                    ++glass_spheres;
+                else if (!m.is_emitter())
+                    ++opaque_spheres;
                 break;
-            case ObjectType::Lens: lenses += m.transparency > 0; break;
-            case ObjectType::Triangle: ++triangles; break;
-            case ObjectType::Mesh: break;
-            case ObjectType::Implicit: ADD_FAILURE() << "the report had no implicit solids"; break;
+            case ObjectType::Lens:
+                lenses += m.transparency > 0;
+                break;
+            case ObjectType::Triangle:
+                ++triangles;
+                break;
+            case ObjectType::Mesh:
+                break;
+            case ObjectType::Implicit:
+                ADD_FAILURE() << "the report had no implicit solids";
+                break;
             case ObjectType::Disc:
-            case ObjectType::Rectangle: ADD_FAILURE() << "the report had no discs or rectangles"; break;
+            case ObjectType::Rectangle:
+                ADD_FAILURE() << "the report had no discs or rectangles";
+                break;
         }
     }
     EXPECT_EQ(glass_spheres, 1);

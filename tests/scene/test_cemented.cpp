@@ -15,15 +15,19 @@ namespace {
 
 // Crown (n = 1.5) cemented to flint (n = 1.7): a lens group of two elements, front vertex at
 // the origin, shared surface R = -40 at z = 5, back R = -100 at z = 7.
-std::string doublet(double n1, double n2, const std::string& shared = R"({"shape": "sphere", "radius": -40})") {
+std::string doublet(double n1, double n2,
+                    const std::string& shared = R"({"shape": "sphere", "radius": -40})") {
     return R"({
       "camera": {"position": [0, 0, -100], "look_at": [0, 0, 0]},
-      "materials": {"crown": {"transparency": 1, "ior": )" + std::to_string(n1) + R"(},
-                    "flint": {"transparency": 1, "ior": )" + std::to_string(n2) + R"(}},
+      "materials": {"crown": {"transparency": 1, "ior": )" +
+           std::to_string(n1) + R"(},
+                    "flint": {"transparency": 1, "ior": )" +
+           std::to_string(n2) + R"(}},
       "objects": [{"type": "lens_group", "name": "doublet", "vertex": [0, 0, 0], "axis": [0, 0, 1],
         "diameter": 20, "elements": [
           {"front": {"shape": "sphere", "radius": 50}, "thickness": 5, "material": "crown"},
-          {"front": )" + shared + R"(, "thickness": 2, "material": "flint",
+          {"front": )" +
+           shared + R"(, "thickness": 2, "material": "flint",
            "back": {"shape": "sphere", "radius": -100}}]}]
     })";
 }
@@ -74,7 +78,8 @@ TEST(Cemented, AxialRayLosesTheFresnelShareOfEachInterface) {
     const RayTreeNode* out = child(*across, Event::Refract);
     ASSERT_NE(out, nullptr);
     EXPECT_NEAR(out->weight,
-                t_in * (1 - normal_reflectance(1.5, 1.7)) * (1 - normal_reflectance(1.7, 1.0)), 1e-12);
+                t_in * (1 - normal_reflectance(1.5, 1.7)) * (1 - normal_reflectance(1.7, 1.0)),
+                1e-12);
 }
 
 // Snell's law across the shared surface: n1 |d1 x N| = n2 |d2 x N| (Hecht eq. 4.4), with the
@@ -138,7 +143,8 @@ TEST(Cemented, TouchingLensObjectsShareTheirSurface) {
             {"type": "lens", "center": [0, 0, 2.5], "axis": [0, 0, 1], "thickness": 5, "diameter": 20,
              "front": {"shape": "sphere", "radius": 50}, "back": {"shape": "flat"},
              "material": {"transparency": 1, "ior": 1.5}},
-            {"type": "lens", "center": [0, 0, )" + std::to_string(6 + gap) + R"(], "axis": [0, 0, 1],
+            {"type": "lens", "center": [0, 0, )" +
+                           std::to_string(6 + gap) + R"(], "axis": [0, 0, 1],
              "thickness": 2, "diameter": 20, "front": {"shape": "flat"}, "back": {"shape": "flat"},
              "material": {"transparency": 1, "ior": 1.7}}]
         })");
@@ -166,7 +172,8 @@ TEST(Cemented, TotalInternalReflectionUsesTheIndexRatio) {
     const Vec3 origin{0, 0, 6};  // inside the flint
     auto event_at = [&](double degrees) {
         const double a = degrees * M_PI / 180;
-        const RayTree tree = trace_ray_tree(scene, {origin, {0, std::sin(a), -std::cos(a)}}, {1, 1e-12});
+        const RayTree tree =
+            trace_ray_tree(scene, {origin, {0, std::sin(a), -std::cos(a)}}, {1, 1e-12});
         return tree.root.children.empty() ? Event::Escape : tree.root.children.front().event;
     };
     EXPECT_EQ(event_at(50), Event::Reflect);  // partial: reflected and refracted branches
@@ -191,12 +198,14 @@ double axial_focus(const Scene& scene, double lambda_nm) {
 TEST(Cemented, AchromaticDoubletFocusesTheFAndCLinesTogether) {
     const std::string materials = R"("materials": {"crown": {"transparency": 1, "glass": "N-BK7"},
                                       "flint": {"transparency": 1, "glass": "F2"}},)";
-    const Scene singlet = parse_scene(R"({"camera": {"position": [30, 0, 50], "look_at": [0, 0, 50]},)" +
-                                      materials + R"("objects": [{"type": "lens", "center": [0, 0, 2.5],
+    const Scene singlet =
+        parse_scene(R"({"camera": {"position": [30, 0, 50], "look_at": [0, 0, 50]},)" + materials +
+                    R"("objects": [{"type": "lens", "center": [0, 0, 2.5],
         "axis": [0, 0, 1], "thickness": 5, "diameter": 25, "material": "crown",
         "front": {"shape": "sphere", "radius": 102.4}, "back": {"shape": "sphere", "radius": -102.4}}]})");
-    const Scene doublet = parse_scene(R"({"camera": {"position": [30, 0, 50], "look_at": [0, 0, 50]},)" +
-                                      materials + R"("objects": [{"type": "lens_group", "vertex": [0, 0, 0],
+    const Scene doublet =
+        parse_scene(R"({"camera": {"position": [30, 0, 50], "look_at": [0, 0, 50]},)" + materials +
+                    R"("objects": [{"type": "lens_group", "vertex": [0, 0, 0],
         "axis": [0, 0, 1], "diameter": 25, "elements": [
         {"front": {"shape": "sphere", "radius": 44.8}, "thickness": 6, "material": "crown"},
         {"front": {"shape": "sphere", "radius": -44.8}, "thickness": 2.5, "material": "flint",

@@ -39,9 +39,9 @@ const TriangleMesh& mesh_of(const Scene& s, int i) {
 }
 
 TEST(MeshJson, InlineCubeWithQuadFacesIsAClosedSolid) {
-    const Scene s = parse_scene(scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices +
-                                           ", " + kCubeFaces +
-                                           R"(, "material": {"transparency": 1}})"));
+    const Scene s =
+        parse_scene(scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " +
+                               kCubeFaces + R"(, "material": {"transparency": 1}})"));
     ASSERT_EQ(s.objects.size(), 1u);
     EXPECT_EQ(s.objects[0].type, ObjectType::Mesh);
     const TriangleMesh& m = mesh_of(s, 0);
@@ -66,11 +66,11 @@ void collect(const RayTreeNode& n, std::vector<std::pair<Vec3, double>>& out) {
 
 TEST(MeshJson, InsideOutMeshIsTurnedOutwardAndRefractsTheSame) {
     const std::string material = R"(, "material": {"color": 1, "transparency": 1, "ior": 1.5}})";
-    const Scene right = parse_scene(scene_with(std::string(R"({"type": "mesh", )") +
-                                               kCubeVertices + ", " + kCubeFaces + material));
-    const Scene inverted = parse_scene(scene_with(std::string(R"({"type": "mesh", )") +
-                                                  kCubeVertices + ", " + kCubeFacesInsideOut +
-                                                  material));
+    const Scene right = parse_scene(scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices +
+                                               ", " + kCubeFaces + material));
+    const Scene inverted =
+        parse_scene(scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " +
+                               kCubeFacesInsideOut + material));
     SurfaceHit h;
     ASSERT_TRUE(mesh_of(inverted, 0).intersect({{0.5, 0.5, 5}, {0, 0, -1}}, 0, INFINITY, h));
     EXPECT_EQ(h.normal.z, 1.0) << "the inside-out cube was not turned outward";
@@ -98,15 +98,18 @@ TEST(MeshJson, InsideOutMeshIsTurnedOutwardAndRefractsTheSame) {
 
 TEST(MeshJson, OpenMeshIsAcceptedOnlyWhenOpaque) {
     // The cube without its top: a box of two-sided squares.
-    const std::string open_faces = R"("faces": [[0,3,2,1], [0,1,5,4], [2,3,7,6], [0,4,7,3], [1,2,6,5]])";
-    const Scene s = parse_scene(scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices +
-                                           ", " + open_faces +
-                                           R"(, "material": {"specular": 0.5}})"));
+    const std::string open_faces =
+        R"("faces": [[0,3,2,1], [0,1,5,4], [2,3,7,6], [0,4,7,3], [1,2,6,5]])";
+    const Scene s =
+        parse_scene(scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " +
+                               open_faces + R"(, "material": {"specular": 0.5}})"));
     const TriangleMesh& m = mesh_of(s, 0);
     EXPECT_FALSE(m.is_closed());
-    EXPECT_EQ(m.open_reason(), "edge (5, 4) belongs to 1 face (face 1): the surface has a hole there");
+    EXPECT_EQ(m.open_reason(),
+              "edge (5, 4) belongs to 1 face (face 1): the surface has a hole there");
     SurfaceHit h;
-    EXPECT_TRUE(m.intersect({{0.5, 0.5, 0.5}, {0, 0, -1}}, 0, INFINITY, h));  // the floor, from above
+    EXPECT_TRUE(
+        m.intersect({{0.5, 0.5, 0.5}, {0, 0, -1}}, 0, INFINITY, h));  // the floor, from above
 
     try {
         (void)parse_scene(scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " +
@@ -121,9 +124,9 @@ TEST(MeshJson, OpenMeshIsAcceptedOnlyWhenOpaque) {
 
 TEST(MeshJson, PlacementScalesRotatesThenMoves) {
     // Model +y goes to +z (up), model +z to -y (facing), so model +x stays +x.
-    const Scene s = parse_scene(scene_with(
-        std::string(R"({"type": "mesh", )") + kCubeVertices + ", " + kCubeFaces +
-        R"(, "scale": 2, "up": [0, 0, 3], "facing": [0, -1, 0], "position": [10, 0, 0],
+    const Scene s = parse_scene(
+        scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " + kCubeFaces +
+                   R"(, "scale": 2, "up": [0, 0, 3], "facing": [0, -1, 0], "position": [10, 0, 0],
              "material": {"transparency": 1}})"));
     const Aabb b = mesh_of(s, 0).bounds();
     EXPECT_NEAR(length(b.lo - Vec3{10, -2, 0}), 0.0, 1e-12);
@@ -186,9 +189,9 @@ TEST(MeshJson, ObjProblemsNameTheFileAndCountFromOne) {
     auto reason_for = [&](const std::string& obj_text, const std::string& material) {
         std::ofstream(dir / "t.obj") << obj_text;
         try {
-            (void)parse_scene(scene_with(R"({"type": "mesh", "file": "t.obj", "material": )" +
-                                         material + "}"),
-                              "t", dir.string());
+            (void)parse_scene(
+                scene_with(R"({"type": "mesh", "file": "t.obj", "material": )" + material + "}"),
+                "t", dir.string());
         } catch (const SceneError& e) {
             EXPECT_EQ(e.path(), "objects[0].file");
             return e.reason();
@@ -199,7 +202,8 @@ TEST(MeshJson, ObjProblemsNameTheFileAndCountFromOne) {
     EXPECT_EQ(reason_for(tri + "f 1 2 9\n", "{}"),
               "cannot read 't.obj': face 1 refers to vertex 9, but the file has 3 vertices");
     EXPECT_EQ(reason_for(tri, "{}"), "cannot read 't.obj': it has no faces (f lines)");
-    EXPECT_EQ(reason_for(tri + "f 1 2 2\n", "{}"), "cannot read 't.obj': face 1 uses vertex 2 twice");
+    EXPECT_EQ(reason_for(tri + "f 1 2 2\n", "{}"),
+              "cannot read 't.obj': face 1 uses vertex 2 twice");
     // One triangle is an open surface: fine when opaque, refused when transparent.
     EXPECT_EQ(reason_for(tri + "f 1 2 3\n", R"({"color": 0.5})"), "loaded");
     EXPECT_EQ(reason_for(tri + "f -3 -2 -1\n", R"({"transparency": 1})")

@@ -252,8 +252,7 @@ TEST_P(BadSceneFile, IsRefusedWithPathAndReason) {
     } catch (const lenslab::SceneError& e) {
         const std::string what = e.what();
         // The path is the file name, then the JSON path (none for a syntax error).
-        const std::string expected_path =
-            std::string(c.path).empty() ? file : file + ": " + c.path;
+        const std::string expected_path = std::string(c.path).empty() ? file : file + ": " + c.path;
         EXPECT_EQ(e.path(), expected_path) << what;
         EXPECT_NE(e.reason().find(c.reason), std::string::npos)
             << "reason \"" << e.reason() << "\" lacks \"" << c.reason << "\"";
@@ -279,7 +278,8 @@ TEST(scene_errors, EveryBadFileHasOneExpectation) {
 
     std::vector<std::string> on_disk;
     for (const auto& entry : fs::directory_iterator(bad_dir())) {
-        if (entry.path().extension() == ".json") on_disk.push_back(entry.path().filename().string());
+        if (entry.path().extension() == ".json")
+            on_disk.push_back(entry.path().filename().string());
     }
     std::sort(on_disk.begin(), on_disk.end());
     ASSERT_GE(on_disk.size(), 14u) << "expected at least 14 bad scenes in " << bad_dir();

@@ -53,13 +53,14 @@ TEST(SceneJson, TheBenchReadsFilesWithoutACamera) {
     } catch (const SceneError& e) {
         EXPECT_STREQ(e.what(), "camera: missing (required)");
     }
-    EXPECT_THROW(parse_scene(R"({"camera": {"position": [0, 0, 5]}})", "s", "",
-                             {.require_camera = false}),
-                 SceneError);
+    EXPECT_THROW(
+        parse_scene(R"({"camera": {"position": [0, 0, 5]}})", "s", "", {.require_camera = false}),
+        SceneError);
 }
 
 TEST(SceneJson, SppmSettings) {
-    const Scene defaults = parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}})");
+    const Scene defaults =
+        parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}})");
     EXPECT_EQ(defaults.render.passes, 64);
     EXPECT_EQ(defaults.render.time, 0.0);
     EXPECT_EQ(defaults.render.pass_photons, 0);  // auto
@@ -75,7 +76,9 @@ TEST(SceneJson, SppmSettings) {
     EXPECT_EQ(s.render.initial_radius, 0.02);
     EXPECT_EQ(s.render.alpha, 0.7);
     EXPECT_EQ(parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
-                              "render": {"integrator": "path"}})").render.integrator, "path");
+                              "render": {"integrator": "path"}})")
+                  .render.integrator,
+              "path");
 }
 
 TEST(SceneJson, NamedAndInlineMaterials) {
@@ -155,7 +158,8 @@ TEST(SceneJson, DiscsRectanglesAndDetectors) {
 }
 
 TEST(SceneJson, CompiledInDefaultSceneIsScenesDefaultJson) {
-    EXPECT_EQ(default_scene_text(), read_file(fs::path(LENSLAB_SOURCE_DIR) / "scenes/default.json"));
+    EXPECT_EQ(default_scene_text(),
+              read_file(fs::path(LENSLAB_SOURCE_DIR) / "scenes/default.json"));
 }
 
 TEST(SceneJson, EveryExampleSceneLoads) {

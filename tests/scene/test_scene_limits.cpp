@@ -3,13 +3,12 @@
 // edges of the image and formula limits. Each refusal must come before the work it guards.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
-#include <string>
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "math/formula.h"
 #include "render/render_session.h"
@@ -38,7 +37,8 @@ std::string refusal(const nlohmann::json& root) {
 
 // A file of `bytes` bytes that takes no disk space (a hole), in the temp folder.
 std::string sparse_file(const std::string& name, uint64_t bytes) {
-    const fs::path path = fs::temp_directory_path() / ("lenslab_limits_" + std::to_string(getpid()) + "_" + name);
+    const fs::path path =
+        fs::temp_directory_path() / ("lenslab_limits_" + std::to_string(getpid()) + "_" + name);
     { std::ofstream(path, std::ios::binary | std::ios::trunc); }
     fs::resize_file(path, bytes);
     return path.string();
@@ -53,12 +53,14 @@ TEST(SceneLimits, ObjectCountIsCheckedBeforeAnyObjectIsRead) {
 }
 
 TEST(SceneLimits, LensGroupElementsCountAsObjects) {
-    nlohmann::json group = {{"type", "lens_group"}, {"vertex", {0, 0, 0}}, {"axis", {0, 0, 1}}, {"diameter", 10}};
+    nlohmann::json group = {
+        {"type", "lens_group"}, {"vertex", {0, 0, 0}}, {"axis", {0, 0, 1}}, {"diameter", 10}};
     group["elements"] = nlohmann::json::array();
     group["elements"].get_ref<nlohmann::json::array_t&>().resize(kMaxObjects + 1);
     nlohmann::json root = minimal_scene();
     root["objects"] = {group};
-    EXPECT_EQ(refusal(root), "objects[0].elements: holds 1000001 elements, more than the 1000000 allowed");
+    EXPECT_EQ(refusal(root),
+              "objects[0].elements: holds 1000001 elements, more than the 1000000 allowed");
 }
 
 TEST(SceneLimits, LightCountIsCheckedBeforeAnyLightIsRead) {
@@ -88,7 +90,8 @@ TEST(SceneLimits, RenderRefusesTooManyPixelsBeforeAllocatingTheFilm) {
         FAIL() << "a 16384 x 16384 image was accepted";
     } catch (const ResourceError& e) {
         EXPECT_STREQ(e.what(),
-                     "image: 16384 x 16384 is 268435456 pixels, more than the 67108864 (8192 x 8192) allowed");
+                     "image: 16384 x 16384 is 268435456 pixels, more than the 67108864 (8192 x "
+                     "8192) allowed");
     }
     s.width = 64;
     s.height = 48;
@@ -114,7 +117,8 @@ TEST(SceneLimits, SceneFileLargerThanTheLimitIsNotRead) {
     } catch (const SceneError& e) {
         EXPECT_EQ(e.path(), path);
         EXPECT_EQ(e.reason(),
-                  "cannot read scene file: it is 256 MiB (268435457 bytes), more than the 256 MiB allowed");
+                  "cannot read scene file: it is 256 MiB (268435457 bytes), more than the 256 MiB "
+                  "allowed");
     }
     fs::remove(path);
 }
@@ -125,7 +129,9 @@ TEST(SceneLimits, SceneFileThatIsADeviceIsNotRead) {
         (void)load_scene_file("/dev/zero");
         FAIL() << "/dev/zero was read as a scene";
     } catch (const SceneError& e) {
-        EXPECT_STREQ(e.what(), "/dev/zero: cannot read scene file: it is not a regular file (a device or a pipe)");
+        EXPECT_STREQ(
+            e.what(),
+            "/dev/zero: cannot read scene file: it is not a regular file (a device or a pipe)");
     }
 }
 
@@ -145,7 +151,8 @@ TEST(SceneLimits, MeshTriangleCountSharesTheCountCheck) {
         check_count(kMaxMeshTriangles + 1, kMaxMeshTriangles, "objects[0].faces", "faces");
         FAIL() << "no refusal";
     } catch (const SceneError& e) {
-        EXPECT_STREQ(e.what(), "objects[0].faces: holds 10000001 faces, more than the 10000000 allowed");
+        EXPECT_STREQ(e.what(),
+                     "objects[0].faces: holds 10000001 faces, more than the 10000000 allowed");
     }
     EXPECT_NO_THROW(check_count(kMaxMeshTriangles, kMaxMeshTriangles, "objects[0].faces", "faces"));
 }

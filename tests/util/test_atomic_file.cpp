@@ -3,16 +3,16 @@
 // file survives either way.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 #include <string>
-#include <unistd.h>
 
-#include "util/atomic_file.h"
 #include "render/image_io.h"
+#include "util/atomic_file.h"
 
 namespace lenslab {
 namespace {
@@ -30,7 +30,8 @@ protected:
 
     std::string path(const std::string& name) const { return (m_dir / name).string(); }
     size_t files() const {
-        return static_cast<size_t>(std::distance(fs::directory_iterator(m_dir), fs::directory_iterator()));
+        return static_cast<size_t>(
+            std::distance(fs::directory_iterator(m_dir), fs::directory_iterator()));
     }
     static std::string read(const std::string& p) {
         std::ifstream in(p, std::ios::binary);

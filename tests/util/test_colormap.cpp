@@ -11,7 +11,8 @@ namespace {
 TEST(Colormap, InfernoMatchesTheTable) {
     const struct {
         double t, r, g, b;
-    } table[] = {{0.0, 0.001462, 0.000466, 0.013866}, {128.0 / 255, 0.735683, 0.215906, 0.330245},
+    } table[] = {{0.0, 0.001462, 0.000466, 0.013866},
+                 {128.0 / 255, 0.735683, 0.215906, 0.330245},
                  {1.0, 0.988362, 0.998364, 0.644924}};
     for (const auto& e : table) {
         const Rgb c = inferno(e.t);

@@ -16,9 +16,9 @@ struct ReportBenchmarkSettings {
     std::vector<int64_t> photons{100000, 350000, 600000, 850000, 1100000};
     std::vector<double> radii{0.025, 0.05, 0.075, 0.1};
     int width = 900, height = 900, spp = 1;
-    int repeats = 3;        // each timing is the median of this many runs
-    int threads = 0;        // 0: all cores
-    int thumbnail = 180;    // pixel size of each image in the grid
+    int repeats = 3;      // each timing is the median of this many runs
+    int threads = 0;      // 0: all cores
+    int thumbnail = 180;  // pixel size of each image in the grid
 };
 
 struct ReportBuildTiming {
@@ -40,7 +40,7 @@ struct ReportBenchmarkResult {
 };
 
 // The course report's figures (docs/performance.md lists them), for the ratios in the CSV.
-double report_build_seconds(int64_t photons);                // Table 4.1; 0 if not listed
+double report_build_seconds(int64_t photons);                  // Table 4.1; 0 if not listed
 double report_render_seconds(int64_t photons, double radius);  // Table 4.2; 0 if not listed
 
 // Runs the experiment on `scene` with the photon-map integrator (direct light from the

@@ -93,9 +93,13 @@ ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings&
     log(format("reference: path, %d spp, %.2f s", s.reference_spp, r.reference_seconds));
 
     auto add = [&](const std::string& integrator, int amount, double seconds, const Film& film) {
-        ConvergencePoint p{integrator, amount, seconds, block_relative_error(film, r.reference),
-                           rms_relative_error(film, r.reference),
-                           s.has_region() ? region_relative_error(film, r.reference, s.region) : 0.0};
+        ConvergencePoint p{
+            integrator,
+            amount,
+            seconds,
+            block_relative_error(film, r.reference),
+            rms_relative_error(film, r.reference),
+            s.has_region() ? region_relative_error(film, r.reference, s.region) : 0.0};
         r.points.push_back(p);
         log(format("%s %d: %.3f s, block error %.4f, rms error %.4f", integrator.c_str(), amount,
                    seconds, p.block_error, p.rms_error) +

@@ -26,11 +26,11 @@ struct ConvergenceSettings {
 };
 
 struct ConvergencePoint {
-    std::string integrator;  // integrators::kSppm or kPath
-    int amount = 0;          // passes or samples per pixel
-    double seconds = 0;      // rendering time to this point
-    double block_error = 0;  // mean over 8x8-pixel blocks of |block - reference| / reference
-    double rms_error = 0;    // RMS over pixels of the luminance error, over the reference's mean
+    std::string integrator;   // integrators::kSppm or kPath
+    int amount = 0;           // passes or samples per pixel
+    double seconds = 0;       // rendering time to this point
+    double block_error = 0;   // mean over 8x8-pixel blocks of |block - reference| / reference
+    double rms_error = 0;     // RMS over pixels of the luminance error, over the reference's mean
     double region_error = 0;  // rms_error over the region only
 };
 

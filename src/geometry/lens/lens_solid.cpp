@@ -34,8 +34,7 @@ std::string where(const DiscPoint& q, bool symmetric) {
 
 }  // namespace
 
-LensSolid::LensSolid(LensPrescription p)
-    : m_p(std::move(p)), m_frame(lens_frame(m_p)) {
+LensSolid::LensSolid(LensPrescription p) : m_p(std::move(p)), m_frame(lens_frame(m_p)) {
     const double a = 0.5 * m_p.diameter;
     m_front_span = measure_span(*m_p.front, a);
     m_back_span = measure_span(*m_p.back, a);
@@ -64,9 +63,8 @@ std::optional<LensSolid::Problem> LensSolid::check_prescription(const LensPrescr
     const double a = 0.5 * p.diameter;
     for (const auto& [name, s] : {std::pair{"front", p.front}, std::pair{"back", p.back}}) {
         if (a > s->max_semi_diameter()) {
-            msg << "a " << s->describe() << " surface cannot span the lens diameter "
-                << p.diameter << " (its largest diameter is " << 2 * s->max_semi_diameter()
-                << ")";
+            msg << "a " << s->describe() << " surface cannot span the lens diameter " << p.diameter
+                << " (its largest diameter is " << 2 * s->max_semi_diameter() << ")";
             return Problem{name, msg.str()};
         }
     }
@@ -112,12 +110,12 @@ std::optional<LensSolid::Problem> LensSolid::check_prescription(const LensPrescr
 }
 
 LensPrescription LensSolid::symmetric_biconvex(const Vec3& centre, const Vec3& axis,
-                                               double curvature_radius,
-                                               double aperture_radius) {
+                                               double curvature_radius, double aperture_radius) {
     const auto front = std::make_shared<SphericalSurface>(curvature_radius);
     const double sag = front->sag(aperture_radius);
-    return {centre, axis, 2.0 * sag, 2.0 * aperture_radius, front,
-            std::make_shared<SphericalSurface>(-curvature_radius)};
+    return {centre,    axis,
+            2.0 * sag, 2.0 * aperture_radius,
+            front,     std::make_shared<SphericalSurface>(-curvature_radius)};
 }
 
 double LensSolid::edge_thickness() const {
@@ -137,8 +135,7 @@ bool LensSolid::contains(const Vec3& world) const {
            p.z <= back_z(p.x, p.y);
 }
 
-bool LensSolid::intersect(const Ray& world_ray, double t_min, double t_max,
-                          SurfaceHit& hit) const {
+bool LensSolid::intersect(const Ray& world_ray, double t_min, double t_max, SurfaceHit& hit) const {
     const Ray ray{m_frame.to_local(world_ray.origin - m_p.centre),
                   m_frame.to_local(world_ray.direction)};
     const double a = 0.5 * m_p.diameter;
@@ -200,7 +197,8 @@ BoundingSphere LensSolid::bounding_sphere() const {
     const double z_hi = 0.5 * m_p.thickness + m_back_span.z_max;
     const double half = 0.5 * (z_hi - z_lo);
     const double pad = 1e-6 * std::max(1.0, a);
-    return {m_p.centre + m_frame.to_world({0, 0, 0.5 * (z_lo + z_hi)}), std::sqrt(a * a + half * half) + pad};
+    return {m_p.centre + m_frame.to_world({0, 0, 0.5 * (z_lo + z_hi)}),
+            std::sqrt(a * a + half * half) + pad};
 }
 
 Aabb LensSolid::bounds() const {

@@ -15,8 +15,8 @@
 namespace lenslab {
 
 struct LensPrescription {
-    Vec3 centre;      // midway between the two vertices
-    Vec3 axis;        // unit, front vertex -> back vertex
+    Vec3 centre;           // midway between the two vertices
+    Vec3 axis;             // unit, front vertex -> back vertex
     double thickness = 0;  // centre thickness (vertex to vertex)
     double diameter = 0;
     std::shared_ptr<const LensSurface> front;
@@ -31,7 +31,7 @@ public:
     explicit LensSolid(LensPrescription p);
 
     struct Problem {
-        std::string field;   // thickness, diameter, front, back or x_axis
+        std::string field;  // thickness, diameter, front, back or x_axis
         std::string reason;
     };
     // Why a prescription cannot make a closed solid, or nothing if it can: a face narrower
@@ -63,9 +63,7 @@ public:
     double front_z(double x, double y) const {
         return -0.5 * m_p.thickness + m_p.front->sag_xy(x, y);
     }
-    double back_z(double x, double y) const {
-        return 0.5 * m_p.thickness + m_p.back->sag_xy(x, y);
-    }
+    double back_z(double x, double y) const { return 0.5 * m_p.thickness + m_p.back->sag_xy(x, y); }
     // Smallest axial gap between the faces at the rim.
     double edge_thickness() const;
 

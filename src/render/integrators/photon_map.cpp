@@ -31,7 +31,8 @@ PhotonTracingSettings photon_tracing_settings(const Scene& scene) {
     // and mirrors that are not aimed at: when every light aims at every such object they
     // would be traced for nothing.
     const auto aims = [&](const LightPtr& l) { return l->worth_aiming(scene.photon_targets()); };
-    const bool all_aimed = s.aim && !scene.photon_targets().empty() && !scene.has_specular_non_target() &&
+    const bool all_aimed = s.aim && !scene.photon_targets().empty() &&
+                           !scene.has_specular_non_target() &&
                            std::all_of(scene.lights().begin(), scene.lights().end(), aims);
     if (r.direct == kDirectFromShadowRays && all_aimed) s.photons_per_light = 0;
     return s;

@@ -25,7 +25,8 @@ public:
     explicit PhotonMapIntegrator(const Scene& scene);
 
     // Traces the photons, builds the maps, then renders the pixels.
-    bool render(const Scene& scene, const Camera& camera, Film& film, RenderControl& control) override;
+    bool render(const Scene& scene, const Camera& camera, Film& film,
+                RenderControl& control) override;
 
     // The photons traced (none yet: zeros); summary "photons: N emitted (...) ...".
     RenderStats stats(double seconds) const override;

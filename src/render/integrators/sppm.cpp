@@ -1,13 +1,13 @@
 #include "render/integrators/sppm.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "accel/hash_grid.h"
 #include "accel/photon.h"
@@ -60,13 +60,13 @@ struct SppmIntegrator::Pixel {
 };
 
 struct SppmIntegrator::VisiblePoint {
-    Vec3 p, n;          // n: the normal on the side the camera sees
-    double beta = 0;    // path throughput to the point
+    Vec3 p, n;        // n: the normal on the side the camera sees
+    double beta = 0;  // path throughput to the point
     const Spectrum* albedo = nullptr;
     BandWeights albedo_bands{};  // the same albedo, per band
-    double path_length = 0;  // camera to point, through mirrors and glass
-    bool valid = false;      // the path reached a diffuse surface
-    bool dispersed = false;  // it went through dispersive glass: pass wavelength only
+    double path_length = 0;      // camera to point, through mirrors and glass
+    bool valid = false;          // the path reached a diffuse surface
+    bool dispersed = false;      // it went through dispersive glass: pass wavelength only
     Rgb direct;
 };
 

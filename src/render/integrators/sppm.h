@@ -33,9 +33,9 @@ namespace lenslab {
 
 struct SppmStats {
     int passes = 0;
-    int64_t photons_emitted = 0;                                        // over all passes
-    int64_t photons_aimed = 0;   // of which aimed at the photon targets
-    size_t photon_hits = 0;                                             // stored in the last pass
+    int64_t photons_emitted = 0;  // over all passes
+    int64_t photons_aimed = 0;    // of which aimed at the photon targets
+    size_t photon_hits = 0;       // stored in the last pass
     double camera_seconds = 0, photon_seconds = 0, gather_seconds = 0;  // summed over passes
     double mean_radius = 0;  // over pixels with a visible point, after the last pass
 };

@@ -16,7 +16,9 @@
 namespace lenslab {
 namespace {
 
-std::shared_ptr<const LensSurface> sphere(double r) { return std::make_shared<SphericalSurface>(r); }
+std::shared_ptr<const LensSurface> sphere(double r) {
+    return std::make_shared<SphericalSurface>(r);
+}
 std::shared_ptr<const LensSurface> flat() { return std::make_shared<FlatSurface>(); }
 
 LensPrescription make(double thickness, double diameter, std::shared_ptr<const LensSurface> front,
@@ -151,8 +153,9 @@ TEST(LensSolid, EveryRayThatEntersExits) {
         const LensSolid lens(p);
         // Aim from a point on a sphere of radius 60 around the lens at a point of its box.
         const Aabb box = lens.bounds();
-        const Vec3 target = box.lo + Vec3{box.extent().x * rng.uniform(), box.extent().y * rng.uniform(),
-                                          box.extent().z * rng.uniform()};
+        const Vec3 target =
+            box.lo + Vec3{box.extent().x * rng.uniform(), box.extent().y * rng.uniform(),
+                          box.extent().z * rng.uniform()};
         const Vec3 origin = p.centre + sample_uniform_sphere(rng.uniform(), rng.uniform()) * 60.0;
         const Vec3 d = normalize(target - origin);
         SurfaceHit in;
