@@ -4,6 +4,7 @@
 #include "geometry/lens/lens_solid.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
+#include "scene/box_json.h"
 #include "scene/mesh_json.h"
 #include "scene/object_spec.h"
 #include "scene/planar_json.h"
@@ -140,6 +141,7 @@ std::vector<ObjectTypeEntry> make_table() {
         {"mesh",       ObjectType::Mesh,      nullptr,         mesh_keys(),    &read_mesh,                 false, false, true},
         {"prism",      ObjectType::Mesh,      nullptr,         prism_keys(),   &listed<read_prism>,        false, false, false},  // closed by construction
         {"implicit",   ObjectType::Implicit,  &implicit_spec,  {},             &declared<read_implicit>,   false, false, false},
+        {"box",        ObjectType::Mesh,      &box_spec,       {},             &declared<read_box>,        false, false, false},  // closed by construction
     };
     // clang-format on
 }
