@@ -9,6 +9,7 @@
 
 #include "analysis/ray_tree.h"
 #include "geometry/triangle_mesh.h"
+#include "scene/scene_error.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {
@@ -122,7 +123,8 @@ TEST(Box, UnknownTypeSuggestsBox) {
 double traced_displacement(double thickness, double theta, Vec3& exit_direction) {
     const Scene scene = scene_from_json(scene_with(slab(thickness)));
     const Vec3 d{std::sin(theta), 0, -std::cos(theta)};
-    const Vec3 origin = Vec3{0, 0, 2} - d * 2.0;
+    // Aimed at the middle of the front face, so it leaves through the back face at any angle.
+    const Vec3 origin = Vec3{0, 0, 0.5 * thickness} - d * 2.0;
     const RayTree tree = trace_ray_tree(scene, {origin, d}, {});
     // root -> refract (in) -> refract (out)
     const RayTreeNode* in = nullptr;
