@@ -20,6 +20,7 @@
 #include "scene/material.h"
 #include "scene/material_spec.h"
 #include "scene/object_spec.h"
+#include "scene/object_types.h"
 #include "scene/planar_json.h"
 #include "scene/render_settings_spec.h"
 #include "scene/surface_json.h"
@@ -495,6 +496,10 @@ void PropertyPanel::build_object() {
     } else if (type == "lens_group") {
         build_lens_group();  // each element has its own material
         return;
+    } else if (const ObjectTypeEntry* kind = find_object_type(type); kind && kind->spec) {
+        // A declared kind with no form of its own: its declaration's fields, in order (the
+        // common ones are added around it).
+        build_declared(kind->spec(), {"name", "photon_target"});
     }
     if (type == "triangle" || type == "disc" || type == "rectangle") build_detector();
     add_flag(tr("Photon target (aim caustic photons)"), "photon_target", tr("auto"));

@@ -9,10 +9,6 @@
 #include <memory>
 #include <sstream>
 
-#include "geometry/implicit_solid.h"
-#include "geometry/lens/lens_solid.h"
-#include "geometry/sphere.h"
-#include "geometry/triangle.h"
 #include "scene/camera_spec.h"
 #include "scene/json_reader.h"
 #include "scene/lens_group_json.h"
@@ -20,7 +16,7 @@
 #include "scene/limits.h"
 #include "scene/material_spec.h"
 #include "scene/mesh_json.h"
-#include "scene/object_spec.h"
+#include "scene/object_types.h"
 #include "scene/planar_json.h"
 #include "scene/render_settings_json.h"
 #include "scene/render_settings_spec.h"
@@ -146,50 +142,6 @@ std::map<std::string, int> read_materials(const json& j, std::vector<Material>& 
     return by_name;
 }
 
-std::shared_ptr<const Shape> read_lens(JsonObjectReader& r) {
-    const Vec3 centre = r.vec3("center");
-    const Vec3 axis = r.direction("axis");
-    LensPrescription p;
-    const bool report_form = r.has("curvature_radius") || r.has("aperture_radius");
-    const bool prescription_form =
-        r.has("thickness") || r.has("diameter") || r.has("front") || r.has("back");
-    if (!report_form && !prescription_form) {
-        throw SceneError(r.path(),
-                         "a lens needs either curvature_radius and aperture_radius (the report's "
-                         "form) or thickness, diameter, front and back (a prescription)");
-    }
-    if (report_form) {
-        for (const char* key : {"thickness", "diameter", "front", "back", "x_axis"}) {
-            if (r.has(key)) {
-                throw SceneError(r.child_path(key),
-                                 "belongs to the prescription form; the report form "
-                                 "(curvature_radius, aperture_radius) cannot take it");
-            }
-        }
-        const double radius = r.positive("curvature_radius");
-        const double aperture = r.positive("aperture_radius");
-        if (aperture > radius) {
-            throw SceneError(r.child_path("aperture_radius"),
-                             "two spheres of radius " + format_number(radius) +
-                                 " cannot meet in a circle of radius " + format_number(aperture) +
-                                 " (must be <= curvature_radius)");
-        }
-        p = LensSolid::symmetric_biconvex(centre, axis, radius, aperture);
-    } else {
-        p.centre = centre;
-        p.axis = axis;
-        p.thickness = r.positive("thickness");
-        p.diameter = r.positive("diameter");
-        p.front = read_lens_surface(r.require("front"), r.child_path("front"), 0.5 * p.diameter);
-        p.back = read_lens_surface(r.require("back"), r.child_path("back"), 0.5 * p.diameter);
-        if (r.has("x_axis")) p.x_axis = r.direction("x_axis");
-    }
-    if (auto problem = LensSolid::check_prescription(p)) {
-        throw SceneError(r.child_path(problem->field), problem->reason);
-    }
-    return std::make_shared<LensSolid>(std::move(p));
-}
-
 // The `type` of an object or light, read first: it decides which other keys belong.
 std::string peek_type(const json& j, const std::string& path) {
     if (!j.is_object()) throw SceneError(path, "must be an object { \"type\": ... }");
@@ -219,52 +171,6 @@ int read_material_ref(JsonObjectReader& r, const std::string& owner_name,
                                (best.empty() ? "" : "; did you mean '" + best + "'?") + ")");
 }
 
-std::shared_ptr<const Shape> read_triangle(JsonObjectReader& r) {
-    const json& v = r.require("vertices");
-    const std::string vpath = r.child_path("vertices");
-    if (!v.is_array() || v.size() != 3) {
-        throw SceneError(vpath, "must be an array of 3 points [[x,y,z], [x,y,z], [x,y,z]]");
-    }
-    Vec3 p[3];
-    for (int i = 0; i < 3; ++i) p[i] = JsonObjectReader::as_vec3(v[i], index_path(vpath, i));
-    // Relative to the edges, so tiny triangles in a large-unit scene are fine: the sine of
-    // the angle at vertex 0 must not vanish.
-    const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
-    if (!(length(cross(e1, e2)) > 1e-10 * length(e1) * length(e2))) {
-        throw SceneError(vpath, "the three vertices are collinear (zero area)");
-    }
-    return std::make_shared<Triangle>(p[0], p[1], p[2]);
-}
-
-std::shared_ptr<const Shape> read_implicit(SpecReader& r) {
-    const std::string formula = r.text("formula");
-    const nlohmann::json& b = r.require("bounds");
-    const std::string bpath = r.child_path("bounds");
-    if (!b.is_array() || b.size() != 2) {
-        throw SceneError(bpath, "must be two corners [[xmin, ymin, zmin], [xmax, ymax, zmax]]");
-    }
-    Aabb box;
-    box.lo = JsonObjectReader::as_vec3(b[0], index_path(bpath, 0));
-    box.hi = JsonObjectReader::as_vec3(b[1], index_path(bpath, 1));
-    for (int a = 0; a < 3; ++a) {
-        if (!(box.hi[a] > box.lo[a])) {
-            throw SceneError(bpath, std::string("the second corner must exceed the first in ") +
-                                        "xyz"[a] + ", got " + format_number(box.lo[a]) + " and " +
-                                        format_number(box.hi[a]));
-        }
-    }
-    const int steps = static_cast<int>(r.whole("steps"));
-    const Vec3 centre = r.point("center");
-    std::shared_ptr<ImplicitSolid> solid;
-    try {
-        solid = std::make_shared<ImplicitSolid>(formula, box, steps, centre);
-    } catch (const FormulaError& e) {
-        throw SceneError(r.child_path("formula"), e.message());
-    }
-    if (auto problem = solid->check_values()) throw SceneError(r.child_path("formula"), *problem);
-    return solid;
-}
-
 void check_not_emitting(JsonObjectReader& r, const Material& m) {
     if (m.is_emitter()) {
         throw SceneError(r.child_path("material"),
@@ -276,80 +182,25 @@ SceneObject read_object(const json& j, const std::string& path,
                         const std::map<std::string, int>& materials, std::vector<Material>& all,
                         const std::string& base_dir) {
     const std::string type = peek_type(j, path);
-    std::vector<std::string> keys{"type", "name", "material", "photon_target"};
+    const ObjectTypeEntry* kind = find_object_type(type);
+    if (!kind || !kind->read) throw SceneError(path + ".type", unknown_object_type_message(type));
     SceneObject o;
-    if (type == "sphere") {
-        o.type = ObjectType::Sphere;
-    } else if (type == "triangle") {
-        o.type = ObjectType::Triangle;
-    } else if (type == "disc") {
-        o.type = ObjectType::Disc;
-    } else if (type == "rectangle") {
-        o.type = ObjectType::Rectangle;
-    } else if (type == "lens") {
-        o.type = ObjectType::Lens;
-        keys.insert(keys.end(), {"center", "axis", "curvature_radius", "aperture_radius",
-                                 "thickness", "diameter", "front", "back", "x_axis"});
-    } else if (type == "mesh" || type == "prism") {
-        o.type = ObjectType::Mesh;
-        const auto& more = type == "mesh" ? mesh_keys() : prism_keys();
-        keys.insert(keys.end(), more.begin(), more.end());
-    } else if (type == "implicit") {
-        o.type = ObjectType::Implicit;
-    } else {
-        throw SceneError(path + ".type", "unknown object type '" + type +
-                                             "' (known: sphere, triangle, disc, rectangle, lens, "
-                                             "lens_group, mesh, prism, implicit)");
-    }
-    if (o.type != ObjectType::Triangle && o.type != ObjectType::Disc &&
-        o.type != ObjectType::Rectangle) {
-        check_detector_allowed(j, path, type);
-    }
-    // Declared shapes read through their declaration; the others list their keys above.
-    const ElementSpec* declared = o.type == ObjectType::Sphere      ? &sphere_spec()
-                                  : o.type == ObjectType::Triangle  ? &triangle_spec()
-                                  : o.type == ObjectType::Implicit  ? &implicit_spec()
-                                  : o.type == ObjectType::Disc      ? &disc_spec()
-                                  : o.type == ObjectType::Rectangle ? &rectangle_spec()
-                                                                    : nullptr;
+    o.type = kind->type;
+    if (!kind->may_detect) check_detector_allowed(j, path, type);
+    // Declared shapes read through their declaration; the others list their keys.
+    std::vector<std::string> keys{"type", "name", "material", "photon_target"};
+    keys.insert(keys.end(), kind->keys.begin(), kind->keys.end());
     const std::unique_ptr<JsonObjectReader> reader =
-        declared ? std::make_unique<SpecReader>(j, path, *declared)
-                 : std::make_unique<JsonObjectReader>(j, path, keys, "a " + type);
+        kind->spec ? std::make_unique<SpecReader>(j, path, kind->spec())
+                   : std::make_unique<JsonObjectReader>(j, path, keys, "a " + type);
     JsonObjectReader& r = *reader;
     o.name = r.string("name", path);
     o.photon_target = r.boolean("photon_target");
-    switch (o.type) {
-        case ObjectType::Sphere: {
-            SpecReader& sphere = static_cast<SpecReader&>(r);
-            o.shape = std::make_shared<Sphere>(sphere.point("center"), sphere.real("radius"));
-            break;
-        }
-        case ObjectType::Triangle:
-            o.shape = read_triangle(r);
-            break;
-        case ObjectType::Lens:
-            o.shape = read_lens(r);
-            break;
-        case ObjectType::Mesh:
-            o.shape = type == "mesh" ? read_mesh(r, base_dir) : read_prism(r);
-            break;
-        case ObjectType::Implicit:
-            o.shape = read_implicit(static_cast<SpecReader&>(r));
-            break;
-        case ObjectType::Disc:
-            o.shape = read_disc(static_cast<SpecReader&>(r));
-            break;
-        case ObjectType::Rectangle:
-            o.shape = read_rectangle(static_cast<SpecReader&>(r));
-            break;
-    }
-    if (o.type == ObjectType::Triangle || o.type == ObjectType::Disc ||
-        o.type == ObjectType::Rectangle) {
-        o.detector = read_detector(r);
-    }
+    o.shape = kind->read(r, base_dir);
+    if (kind->may_detect) o.detector = read_detector(r);
     o.material = read_material_ref(r, o.name, materials, all);
-    if (type == "mesh") check_mesh_material(r, *o.shape, all[o.material]);  // a prism is closed
-    if (o.type != ObjectType::Sphere) check_not_emitting(r, all[o.material]);
+    if (kind->open_mesh_check) check_mesh_material(r, *o.shape, all[o.material]);
+    if (!kind->may_emit) check_not_emitting(r, all[o.material]);
     return o;
 }
 

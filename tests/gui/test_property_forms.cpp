@@ -14,6 +14,7 @@
 
 #include "main_window.h"
 #include "property_panel.h"
+#include "scene/box_json.h"
 #include "scene/camera_spec.h"
 #include "scene/light_spec.h"
 #include "scene/material_spec.h"
@@ -150,6 +151,28 @@ private slots:
         check_form(w, lenslab::sphere_spec(), {});
         w.tree()->select_pointer("/materials/grey");
         check_form(w, lenslab::material_spec(), {});
+    }
+
+    // A declared type with no form of its own (the box) gets its declaration's fields.
+    void box_form_falls_back_to_its_declaration() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("box.json");
+        QFile file(path);
+        file.open(QIODevice::WriteOnly);
+        const json scene = {{"camera", {{"position", {0, 1, 4}}, {"look_at", {0, 0, 0}}}},
+                            {"materials", {{"grey", {{"color", 0.5}}}}},
+                            {"objects",
+                             {{{"type", "box"},
+                               {"center", {0, 0, 0}},
+                               {"size", {1, 2, 3}},
+                               {"material", "grey"}}}}};
+        file.write(QByteArray::fromStdString(scene.dump(2)));
+        file.close();
+        MainWindow w;
+        QString error;
+        QVERIFY2(w.open_file(path, &error), qPrintable(error));
+        w.tree()->select_pointer("/objects/0");
+        check_form(w, lenslab::box_spec(), {});
     }
 
     // Must-show: 0 means "auto" for the gather radius, and the field can be set to it.

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/box_json.h"
 #include "scene/camera_spec.h"
 #include "scene/json_reader.h"
 #include "scene/light_spec.h"
@@ -111,6 +112,11 @@ std::vector<Case> cases() {
     with_rectangle["objects"][0].erase("radius");
     with_rectangle["objects"][0]["type"] = "rectangle";
     with_rectangle["objects"][0]["size"] = {1, 2};
+    json with_box = scene;
+    with_box["objects"] = {{{"type", "box"},
+                            {"center", {0, 0, 0}},
+                            {"size", {1, 2, 3}},
+                            {"material", {{"color", 0.5}}}}};
     std::vector<std::string> common = lenslab::object_common_spec().keys();
     return {
         {lenslab::render_settings_spec, "## Render", scene, "/render", "render", {}},
@@ -142,6 +148,7 @@ std::vector<Case> cases() {
         {lenslab::disc_spec, "### Disc", with_disc, "/objects/0", "objects[0]", common},
         {lenslab::rectangle_spec, "### Rectangle", with_rectangle, "/objects/0", "objects[0]",
          common},
+        {lenslab::box_spec, "### Box", with_box, "/objects/0", "objects[0]", common},
     };
 }
 

@@ -1,0 +1,175 @@
+#include "scene/object_types.h"
+
+#include "geometry/implicit_solid.h"
+#include "geometry/lens/lens_solid.h"
+#include "geometry/sphere.h"
+#include "geometry/triangle.h"
+#include "scene/box_json.h"
+#include "scene/mesh_json.h"
+#include "scene/object_spec.h"
+#include "scene/planar_json.h"
+#include "scene/spec_reader.h"
+#include "scene/surface_json.h"
+
+namespace lenslab {
+
+namespace {
+
+using nlohmann::json;
+
+std::string index_path(const std::string& base, size_t i) {
+    return base + "[" + std::to_string(i) + "]";
+}
+
+std::shared_ptr<const Shape> read_lens(JsonObjectReader& r) {
+    const Vec3 centre = r.vec3("center");
+    const Vec3 axis = r.direction("axis");
+    LensPrescription p;
+    const bool report_form = r.has("curvature_radius") || r.has("aperture_radius");
+    const bool prescription_form =
+        r.has("thickness") || r.has("diameter") || r.has("front") || r.has("back");
+    if (!report_form && !prescription_form) {
+        throw SceneError(r.path(),
+                         "a lens needs either curvature_radius and aperture_radius (the report's "
+                         "form) or thickness, diameter, front and back (a prescription)");
+    }
+    if (report_form) {
+        for (const char* key : {"thickness", "diameter", "front", "back", "x_axis"}) {
+            if (r.has(key)) {
+                throw SceneError(r.child_path(key),
+                                 "belongs to the prescription form; the report form "
+                                 "(curvature_radius, aperture_radius) cannot take it");
+            }
+        }
+        const double radius = r.positive("curvature_radius");
+        const double aperture = r.positive("aperture_radius");
+        if (aperture > radius) {
+            throw SceneError(r.child_path("aperture_radius"),
+                             "two spheres of radius " + format_number(radius) +
+                                 " cannot meet in a circle of radius " + format_number(aperture) +
+                                 " (must be <= curvature_radius)");
+        }
+        p = LensSolid::symmetric_biconvex(centre, axis, radius, aperture);
+    } else {
+        p.centre = centre;
+        p.axis = axis;
+        p.thickness = r.positive("thickness");
+        p.diameter = r.positive("diameter");
+        p.front = read_lens_surface(r.require("front"), r.child_path("front"), 0.5 * p.diameter);
+        p.back = read_lens_surface(r.require("back"), r.child_path("back"), 0.5 * p.diameter);
+        if (r.has("x_axis")) p.x_axis = r.direction("x_axis");
+    }
+    if (auto problem = LensSolid::check_prescription(p)) {
+        throw SceneError(r.child_path(problem->field), problem->reason);
+    }
+    return std::make_shared<LensSolid>(std::move(p));
+}
+
+std::shared_ptr<const Shape> read_triangle(JsonObjectReader& r) {
+    const json& v = r.require("vertices");
+    const std::string vpath = r.child_path("vertices");
+    if (!v.is_array() || v.size() != 3) {
+        throw SceneError(vpath, "must be an array of 3 points [[x,y,z], [x,y,z], [x,y,z]]");
+    }
+    Vec3 p[3];
+    for (int i = 0; i < 3; ++i) p[i] = JsonObjectReader::as_vec3(v[i], index_path(vpath, i));
+    // Relative to the edges, so tiny triangles in a large-unit scene are fine: the sine of
+    // the angle at vertex 0 must not vanish.
+    const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
+    if (!(length(cross(e1, e2)) > 1e-10 * length(e1) * length(e2))) {
+        throw SceneError(vpath, "the three vertices are collinear (zero area)");
+    }
+    return std::make_shared<Triangle>(p[0], p[1], p[2]);
+}
+
+std::shared_ptr<const Shape> read_implicit(SpecReader& r) {
+    const std::string formula = r.text("formula");
+    const nlohmann::json& b = r.require("bounds");
+    const std::string bpath = r.child_path("bounds");
+    if (!b.is_array() || b.size() != 2) {
+        throw SceneError(bpath, "must be two corners [[xmin, ymin, zmin], [xmax, ymax, zmax]]");
+    }
+    Aabb box;
+    box.lo = JsonObjectReader::as_vec3(b[0], index_path(bpath, 0));
+    box.hi = JsonObjectReader::as_vec3(b[1], index_path(bpath, 1));
+    for (int a = 0; a < 3; ++a) {
+        if (!(box.hi[a] > box.lo[a])) {
+            throw SceneError(bpath, std::string("the second corner must exceed the first in ") +
+                                        "xyz"[a] + ", got " + format_number(box.lo[a]) + " and " +
+                                        format_number(box.hi[a]));
+        }
+    }
+    const int steps = static_cast<int>(r.whole("steps"));
+    const Vec3 centre = r.point("center");
+    std::shared_ptr<ImplicitSolid> solid;
+    try {
+        solid = std::make_shared<ImplicitSolid>(formula, box, steps, centre);
+    } catch (const FormulaError& e) {
+        throw SceneError(r.child_path("formula"), e.message());
+    }
+    if (auto problem = solid->check_values()) throw SceneError(r.child_path("formula"), *problem);
+    return solid;
+}
+
+std::shared_ptr<const Shape> read_sphere(SpecReader& r) {
+    return std::make_shared<Sphere>(r.point("center"), r.real("radius"));
+}
+
+// A declared kind's reader, given the SpecReader read_object made for it.
+template <std::shared_ptr<const Shape> (*Read)(SpecReader&)>
+std::shared_ptr<const Shape> declared(JsonObjectReader& r, const std::string&) {
+    return Read(static_cast<SpecReader&>(r));
+}
+
+template <std::shared_ptr<const Shape> (*Read)(JsonObjectReader&)>
+std::shared_ptr<const Shape> listed(JsonObjectReader& r, const std::string&) {
+    return Read(r);
+}
+
+std::vector<ObjectTypeEntry> make_table() {
+    // clang-format off
+    return {
+        //  type          ObjectType             declaration       keys            reader                       detect emit  mesh check
+        {"sphere",     ObjectType::Sphere,    &sphere_spec,    {},             &declared<read_sphere>,     false, true,  false},
+        {"triangle",   ObjectType::Triangle,  &triangle_spec,  {},             &listed<read_triangle>,     true,  false, false},
+        {"disc",       ObjectType::Disc,      &disc_spec,      {},             &declared<read_disc>,       true,  false, false},
+        {"rectangle",  ObjectType::Rectangle, &rectangle_spec, {},             &declared<read_rectangle>,  true,  false, false},
+        {"lens",       ObjectType::Lens,      nullptr,         {"center", "axis", "curvature_radius", "aperture_radius",
+                                                                "thickness", "diameter", "front", "back", "x_axis"},
+                                                                               &listed<read_lens>,         false, false, false},
+        {"lens_group", ObjectType::Lens,      nullptr,         {},             nullptr,                    false, false, false},  // read by scene_from_json
+        {"mesh",       ObjectType::Mesh,      nullptr,         mesh_keys(),    &read_mesh,                 false, false, true},
+        {"prism",      ObjectType::Mesh,      nullptr,         prism_keys(),   &listed<read_prism>,        false, false, false},  // closed by construction
+        {"implicit",   ObjectType::Implicit,  &implicit_spec,  {},             &declared<read_implicit>,   false, false, false},
+        {"box",        ObjectType::Mesh,      &box_spec,       {},             &declared<read_box>,        false, false, false},  // closed by construction
+    };
+    // clang-format on
+}
+
+}  // namespace
+
+const std::vector<ObjectTypeEntry>& object_types() {
+    static const std::vector<ObjectTypeEntry> table = make_table();
+    return table;
+}
+
+const ObjectTypeEntry* find_object_type(const std::string& name) {
+    for (const ObjectTypeEntry& e : object_types()) {
+        if (e.name == name) return &e;
+    }
+    return nullptr;
+}
+
+std::string unknown_object_type_message(const std::string& name) {
+    std::vector<std::string> names;
+    std::string known;
+    for (const ObjectTypeEntry& e : object_types()) {
+        names.push_back(e.name);
+        known += (known.empty() ? "" : ", ") + e.name;
+    }
+    const std::string best = closest_match(name, names);
+    return "unknown object type '" + name + "' (known: " + known +
+           (best.empty() ? "" : "; did you mean '" + best + "'?") + ")";
+}
+
+}  // namespace lenslab
