@@ -7,6 +7,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "scene/camera_spec.h"
@@ -190,10 +191,12 @@ SceneObject read_object(const json& j, const std::string& path,
     // Declared shapes read through their declaration; the others list their keys.
     std::vector<std::string> keys{"type", "name", "material", "photon_target"};
     keys.insert(keys.end(), kind->keys.begin(), kind->keys.end());
-    const std::unique_ptr<JsonObjectReader> reader =
-        kind->spec ? std::make_unique<SpecReader>(j, path, kind->spec())
-                   : std::make_unique<JsonObjectReader>(j, path, keys, "a " + type);
-    JsonObjectReader& r = *reader;
+    // Built in place, never deleted through the base: JsonObjectReader is not polymorphic.
+    std::optional<SpecReader> declared;
+    std::optional<JsonObjectReader> listed;
+    JsonObjectReader& r =
+        kind->spec ? static_cast<JsonObjectReader&>(declared.emplace(j, path, kind->spec()))
+                   : listed.emplace(j, path, keys, "a " + type);
     o.name = r.string("name", path);
     o.photon_target = r.boolean("photon_target");
     o.shape = kind->read(r, base_dir);
