@@ -3,10 +3,12 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QSaveFile>
+#include <algorithm>
+#include <set>
 
 #include "edit_scene_command.h"
 #include "scene/json_reader.h"
-#include "scene/scene_json.h"
+#include "scene/render_settings_json.h"
 
 namespace lenslab::gui {
 
@@ -16,17 +18,22 @@ std::string folder_of(const QString& path) {
     return path.isEmpty() ? std::string() : QFileInfo(path).absolutePath().toStdString();
 }
 
-// Whether `b` differs from `a` in the camera block alone, or not at all: then the objects,
-// materials, lights and their BVH stay as they are.
-bool only_camera_differs(const nlohmann::json& a, const nlohmann::json& b) {
-    if (!a.is_object() || !b.is_object() || a.size() != b.size()) return false;
-    if (!a.contains("camera") || !b.contains("camera")) return false;
+// The top-level keys whose values differ between `a` and `b` (present in one only counts).
+std::set<std::string> differing_blocks(const nlohmann::json& a, const nlohmann::json& b) {
+    std::set<std::string> keys;
     for (const auto& [key, value] : a.items()) {
-        if (key == "camera") continue;
         const auto it = b.find(key);
-        if (it == b.end() || *it != value) return false;
+        if (it == b.end() || *it != value) keys.insert(key);
     }
-    return true;
+    for (const auto& [key, value] : b.items()) {
+        if (!a.contains(key)) keys.insert(key);
+    }
+    return keys;
+}
+
+// Blocks the installed scene can take alone, keeping its objects, materials and BVH.
+bool updatable_alone(const std::string& key) {
+    return key == "camera" || key == "render" || key == "lights";
 }
 }  // namespace
 
@@ -43,10 +50,22 @@ void SceneDocument::load_default() {
 
 SceneUpdate SceneDocument::read_update(const nlohmann::json& j) const {
     SceneUpdate update;
-    if (only_camera_differs(m_json, j)) {
-        update.camera = camera_from_json(j.at("camera"));
-    } else {
+    const std::set<std::string> blocks = differing_blocks(m_json, j);
+    // The camera is required: removing it goes through the whole reader for its message.
+    const bool alone = j.is_object() && j.contains("camera") &&
+                       std::all_of(blocks.begin(), blocks.end(), updatable_alone);
+    if (!alone) {
         update.scene = scene_from_json(j, folder_of(m_path));
+        return update;
+    }
+    // Read as scene_from_json reads them: an absent block means its defaults.
+    if (blocks.count("camera")) update.camera = camera_from_json(j.at("camera"));
+    if (blocks.count("render")) {
+        update.render =
+            j.contains("render") ? read_render_settings(j.at("render")) : RenderSettings{};
+    }
+    if (blocks.count("lights")) {
+        update.lights = j.contains("lights") ? lights_from_json(j.at("lights")) : SceneLights{};
     }
     return update;
 }
@@ -148,10 +167,14 @@ void SceneDocument::install(const nlohmann::json& json) {
 }
 
 void SceneDocument::install(const nlohmann::json& json, SceneUpdate update) {
+    // Nothing the BVH holds depends on the camera, the render settings or the lights.
     if (update.scene) {
         m_scene = std::move(*update.scene);
-    } else if (update.camera) {
-        m_scene.camera = *update.camera;  // nothing the BVH or the lights hold depends on it
+    } else {
+        if (update.camera) m_scene.camera = *update.camera;
+        if (update.render) m_scene.render = *update.render;
+        if (update.lights)
+            m_scene.set_lights(std::move(update.lights->points), std::move(update.lights->beams));
     }
     m_json = json;
     emit changed();

@@ -2,8 +2,9 @@
 // The scene being edited: its JSON document (the single source of truth, saved as it is),
 // the file it came from, and the undo stack. Every edit is checked by the same reader the
 // command line uses, so the editor cannot hold a scene that `lenslab render` would refuse.
-// An edit is read once and that result installed; one that changes the camera alone (a
-// camera drag) updates the installed scene's camera and rebuilds nothing.
+// An edit is read once and that result installed, and rebuilds only what it changed: an edit
+// of the camera (a camera drag), the render settings or the lights alone keeps the installed
+// objects and their BVH.
 
 #include <QObject>
 #include <QString>
@@ -13,14 +14,18 @@
 #include <string>
 
 #include "scene/scene.h"
+#include "scene/scene_json.h"
 
 namespace lenslab::gui {
 
 // What installing a checked document changes in the installed scene: a whole new scene, or
-// only the camera (nothing else in the document differs), or nothing (neither set).
+// only the blocks that differ among camera, render settings and lights (nothing set: nothing
+// the scene holds differs, e.g. the description).
 struct SceneUpdate {
     std::optional<Scene> scene;
     std::optional<CameraSettings> camera;
+    std::optional<RenderSettings> render;
+    std::optional<SceneLights> lights;
 };
 
 class SceneDocument : public QObject {
@@ -66,7 +71,7 @@ signals:
 
 private:
     // Reads `j` with the scene reader, only as far as it differs from the installed document
-    // (the camera block alone, or all of it). Throws SceneError.
+    // (the camera, render or lights blocks alone, or all of it). Throws SceneError.
     SceneUpdate read_update(const nlohmann::json& j) const;
     bool check(const nlohmann::json& j, SceneUpdate& out, QString* error) const;
     // `merge_pointer`: set for a set_value, whose step merges with the next one of the same

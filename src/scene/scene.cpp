@@ -22,6 +22,12 @@ void Scene::build() {
     find_lights_and_targets();
 }
 
+void Scene::set_lights(std::vector<PointLight> points, std::vector<BeamLight> beam_lights) {
+    point_lights = std::move(points);
+    beams = std::move(beam_lights);
+    find_lights_and_targets();
+}
+
 void Scene::find_lights_and_targets() {
     m_lights.clear();
     for (const SphereEmitter& e : m_emitters) {

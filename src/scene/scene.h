@@ -68,6 +68,9 @@ public:
 
     // Builds the acceleration structure and the emitter list; call after filling the fields.
     void build();
+    // Replaces the point lights and beams of a built scene, keeping its acceleration
+    // structure (an editor's light edit).
+    void set_lights(std::vector<PointLight> points, std::vector<BeamLight> beam_lights);
 
     bool intersect(const Ray& ray, double t_min, double t_max, SceneHit& hit) const;
     bool occluded(const Ray& ray, double t_min, double t_max) const;

@@ -207,7 +207,7 @@ SceneObject read_object(const json& j, const std::string& path,
     return o;
 }
 
-void read_light(const json& j, const std::string& path, Scene& scene) {
+void read_light(const json& j, const std::string& path, SceneLights& lights) {
     const std::string type = peek_type(j, path);
     if (type == "point") {
         SpecReader r(j, path, point_light_spec());
@@ -215,7 +215,7 @@ void read_light(const json& j, const std::string& path, Scene& scene) {
         l.position = r.point("position");
         l.power = r.real("power");
         l.spectrum = light_spectrum(r, l.color, l.power);
-        scene.point_lights.push_back(l);
+        lights.points.push_back(l);
     } else if (type == "beam") {
         SpecReader r(j, path, beam_spec());
         BeamLight b;
@@ -224,7 +224,7 @@ void read_light(const json& j, const std::string& path, Scene& scene) {
         b.radius = r.real("radius");
         b.power = r.real("power");
         b.spectrum = light_spectrum(r, b.color, b.power);
-        scene.beams.push_back(b);
+        lights.beams.push_back(b);
     } else {
         throw SceneError(path + ".type", "unknown light type '" + type + "' (known: point, beam)");
     }
@@ -278,13 +278,20 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
                     "objects (lens group elements counted one by one)");
     }
     if (const json* jl = r.find("lights")) {
-        if (!jl->is_array()) throw SceneError("lights", "must be an array");
-        check_count(jl->size(), kMaxLights, "lights", "lights");
-        for (size_t i = 0; i < jl->size(); ++i)
-            read_light((*jl)[i], index_path("lights", i), scene);
+        SceneLights lights = lights_from_json(*jl);
+        scene.point_lights = std::move(lights.points);
+        scene.beams = std::move(lights.beams);
     }
     scene.build();
     return scene;
+}
+
+SceneLights lights_from_json(const nlohmann::json& lights) {
+    if (!lights.is_array()) throw SceneError("lights", "must be an array");
+    check_count(lights.size(), kMaxLights, "lights", "lights");
+    SceneLights out;
+    for (size_t i = 0; i < lights.size(); ++i) read_light(lights[i], index_path("lights", i), out);
+    return out;
 }
 
 CameraSettings camera_from_json(const nlohmann::json& camera) {

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 
@@ -29,6 +30,14 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir = 
 // Reads a scene's `camera` block alone, with the checks and messages scene_from_json gives
 // it: an editor moving the camera need not rebuild the objects. Throws SceneError.
 CameraSettings camera_from_json(const nlohmann::json& camera);
+
+// A scene's `lights` array alone, checked as scene_from_json checks it: an editor changing a
+// light need not rebuild the objects. Throws SceneError.
+struct SceneLights {
+    std::vector<PointLight> points;
+    std::vector<BeamLight> beams;
+};
+SceneLights lights_from_json(const nlohmann::json& lights);
 
 // Reads and parses a scene file; relative paths in it are relative to the file's folder.
 // Throws SceneError (unreadable file, syntax, content).

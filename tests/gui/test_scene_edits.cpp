@@ -251,6 +251,37 @@ private slots:
         QCOMPARE(bvh_build_count() - later, uint64_t(0));
     }
 
+    // An edit of the render settings or of a light keeps the objects and their BVH: the
+    // installed scene takes the new block, as the reader makes it, and its undo restores it.
+    void render_and_light_edits_rebuild_no_bvh() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        const uint64_t before = bvh_build_count();
+        w.tree()->select_pointer("/render");
+        type_value(field(w, "max_depth"), 7);
+        QCOMPARE(w.document()->scene().render.max_depth, 7);
+        w.tree()->select_pointer("/lights/0");
+        type_value(field(w, "power"), 120);
+        QCOMPARE(w.document()->scene().point_lights.at(0).power, 120.0);
+        json edited = w.document()->json();
+        edited["lights"].push_back({{"type", "point"}, {"position", {0, 4, 0}}, {"power", 5}});
+        QVERIFY(w.document()->apply(edited, "Add light", nullptr));
+        QCOMPARE(w.document()->scene().lights().size(), size_t(2));
+        QCOMPARE(bvh_build_count() - before, uint64_t(0));
+        // A light the reader refuses is refused here too, naming it.
+        edited["lights"][1]["power"] = -1;
+        QString error;
+        QVERIFY(!w.document()->apply(edited, "Bad light", &error));
+        QVERIFY2(error.contains("lights[1].power"), qPrintable(error));
+        w.document()->undo_stack()->undo();
+        QCOMPARE(w.document()->scene().lights().size(), size_t(1));
+        w.document()->undo_stack()->undo();
+        w.document()->undo_stack()->undo();
+        QCOMPARE(w.document()->scene().render.max_depth, 4);
+        QCOMPARE(w.document()->scene().point_lights.at(0).power, 300.0);
+        QCOMPARE(bvh_build_count() - before, uint64_t(0));
+    }
+
     // A camera edit the reader refuses is refused without touching the installed scene.
     void a_bad_camera_edit_is_refused() {
         MainWindow w;
