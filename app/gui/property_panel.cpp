@@ -16,6 +16,7 @@
 #include "optics/spectrum.h"
 #include "scene/camera_spec.h"
 #include "scene/json_reader.h"
+#include "scene/lens_group_json.h"
 #include "scene/light_spec.h"
 #include "scene/material.h"
 #include "scene/material_spec.h"
@@ -523,37 +524,41 @@ void PropertyPanel::build_material_ref(const QString& label, const std::string& 
 }
 
 void PropertyPanel::build_lens_group() {
-    add_vec3(tr("Front vertex"), "vertex", json::array({0, 0, 0}));
-    add_vec3(tr("Axis"), "axis", json::array({0, 0, 1}));
-    add_number(tr("Diameter"), "diameter", 1.0, 1e-6, 1e6);
+    const ElementSpec& group = lens_group_spec();
+    for (const char* key : {"vertex", "axis", "diameter"}) add_param(group.param(key));
+    const ElementSpec& element = lens_group_element_spec();
     const json* elements = value_at("elements");
     if (!elements || !elements->is_array()) return;
     for (size_t i = 0; i < elements->size(); ++i) {
         const std::string e = "elements/" + std::to_string(i) + "/";
         add_heading(tr("Element %1").arg(i + 1));
         build_surface(tr("Front surface"), e + "front");
-        add_number(tr("Centre thickness"), e + "thickness", 1.0, 1e-6, 1e6);
+        add_param(element.param("thickness"), e);
         // A cemented element's back is the next element's front.
         if (value_at(e + "back")) build_surface(tr("Back surface"), e + "back");
-        if (i + 1 < elements->size()) add_number(tr("Air gap after"), e + "gap", 0.0, 0.0, 1e6);
+        if (i + 1 < elements->size()) add_param(element.param("gap"), e);
         build_material_ref(tr("Material"), e + "material");
     }
 }
 
 void PropertyPanel::build_lens() {
-    add_vec3(tr("Centre"), "center", json::array({0, 0, 0}));
-    add_vec3(tr("Axis"), "axis", json::array({0, 0, 1}));
+    // One declaration holds both forms; the form shows the keys of the one the file uses.
+    const ElementSpec& declared = lens_spec();
+    add_param(declared.param("center"));
+    add_param(declared.param("axis"));
     if (value_at("curvature_radius")) {
-        add_number(tr("Curvature radius"), "curvature_radius", 1.0, 1e-6, 1e6);
-        add_number(tr("Aperture radius"), "aperture_radius", 0.5, 1e-6, 1e6);
+        add_param(declared.param("curvature_radius"));
+        add_param(declared.param("aperture_radius"));
         return;
     }
-    add_number(tr("Centre thickness"), "thickness", 1.0, 1e-6, 1e6);
-    add_number(tr("Diameter"), "diameter", 1.0, 1e-6, 1e6);
+    add_param(declared.param("thickness"));
+    add_param(declared.param("diameter"));
     build_surface(tr("Front surface"), "front");
     build_surface(tr("Back surface"), "back");
-    // Where local +x points matters only for z(x, y) faces.
-    add_vec3(tr("Local x axis"), "x_axis", json::array({1, 0, 0}));
+    // Where local +x points matters only for z(x, y) faces; left out, it is a fixed
+    // perpendicular to the axis, shown as +x.
+    add_vec3(QString::fromStdString(declared.param("x_axis").label), "x_axis",
+             json::array({1, 0, 0}));
 }
 
 void PropertyPanel::build_surface(const QString& label, const std::string& key) {
@@ -568,12 +573,18 @@ void PropertyPanel::build_surface(const QString& label, const std::string& key) 
                [this, key, label, diameter](const std::string& chosen) {
                    commit(key, surface_of_shape(chosen, value_at(key), diameter), label);
                });
-    if (shape == "sphere" || shape == "conic" || shape == "asphere") {
-        add_number(label + tr(" radius (signed)"), key + "/radius", 2.0 * diameter, -1e6, 1e6);
-    }
-    if (shape == "conic" || shape == "asphere") {
-        add_number(label + tr(" conic constant k"), key + "/k", 0.0, -1e6, 1e6);
-    }
+    // The shape's declared fields, labelled with the face they belong to; a new radius is
+    // twice the diameter.
+    const ElementSpec* declared = surface_spec(shape);
+    const auto add_field = [&](const std::string& field, const json& shown) {
+        if (!declared || !declared->find(field)) return;
+        ParamSpec p = declared->param(field);
+        p.label = label.toStdString() + " " + p.label;
+        if (p.fallback.is_null()) p.fallback = shown;
+        add_param(p, key + "/");
+    };
+    add_field("radius", 2.0 * diameter);
+    add_field("k", 0.0);
     if (shape == "asphere") {
         add_number_list(label + tr(" A4, A6, ... A16"), key + "/coefficients", json::array({0.0}),
                         7);
@@ -606,22 +617,29 @@ void PropertyPanel::build_detector() {
                [this](const std::string& chosen) {
                    json element = *value_at("");
                    if (chosen == "yes")
-                       element["detector"] = {{"resolution", 64}};
+                       element["detector"] = {
+                           {"resolution", detector_spec().param("resolution").fallback}};
                    else
                        element.erase("detector");
                    commit("", element, tr("detector"));
                });
     if (!on) return;
+    // A number or two per side, each in the declared range.
+    const ElementSpec& declared = detector_spec();
+    const ParamSpec& cells = declared.param("resolution");
+    const long long fallback = cells.fallback.get<long long>();
+    const auto low = static_cast<long long>(cells.min->value);
+    const auto high = static_cast<long long>(cells.max->value);
     const json* resolution = value_at("detector/resolution");
     if (resolution && resolution->is_array()) {
-        add_integer(tr("Cells along u"), "detector/resolution/0", 64, 1, 1024);
-        add_integer(tr("Cells along v"), "detector/resolution/1", 64, 1, 1024);
+        add_integer(tr("Cells along u"), "detector/resolution/0", fallback, low, high);
+        add_integer(tr("Cells along v"), "detector/resolution/1", fallback, low, high);
     } else {
-        add_integer(tr("Cells (longer side)"), "detector/resolution", 64, 1, 1024);
+        add_integer(tr("Cells (longer side)"), "detector/resolution", fallback, low, high);
     }
-    add_choice(tr("Face counted"), "detector/side", "front", {"front", "back", "both"});
+    add_param(declared.param("side"), "detector/");
     // A number of bands shows as the edges it stands for (equal bands over 360-830 nm).
-    json edges = json::array({360, 490, 585, 830});
+    json edges = declared.param("bands").fallback;
     if (const json* bands = value_at("detector/bands");
         bands && bands->is_number_integer() && bands->get<int>() > 0) {
         edges = json::array();
@@ -630,7 +648,7 @@ void PropertyPanel::build_detector() {
             edges.push_back(kLambdaMinNm + (kLambdaMaxNm - kLambdaMinNm) * i / n);
     }
     add_number_list(tr("Band edges (nm)"), "detector/bands", edges, 17);
-    add_text(tr("Length unit"), "detector/unit", "unit");
+    add_param(declared.param("unit"), "detector/");
 }
 
 void PropertyPanel::build_implicit() {

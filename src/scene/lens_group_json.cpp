@@ -5,6 +5,8 @@
 #include "geometry/lens/lens_solid.h"
 #include "scene/json_reader.h"
 #include "scene/limits.h"
+#include "scene/object_spec.h"
+#include "scene/spec_reader.h"
 #include "scene/surface_json.h"
 
 namespace lenslab {
@@ -13,7 +15,8 @@ namespace {
 
 using nlohmann::json;
 
-struct ElementSpec {
+// One element as read, before the lenses are built.
+struct GroupElement {
     std::string path, name;
     double thickness = 0, gap = 0, diameter = 0;
     const json* front = nullptr;
@@ -21,24 +24,86 @@ struct ElementSpec {
     int material = 0;
 };
 
+ElementSpec declare_group() {
+    // The common keys but material (each element names its own) and detector.
+    ElementSpec s{"lens_group", "a lens group", {}};
+    for (const ParamSpec& p : object_common_spec().params) {
+        if (p.key != "material" && p.key != "detector") s.params.push_back(p);
+    }
+    s.params.push_back(point_param("vertex")
+                           .describe("front vertex of the first element")
+                           .in_editor("Front vertex"));
+    s.params.push_back(
+        direction_param("axis").describe("the optical axis, from front to back").in_editor("Axis"));
+    s.params.push_back(number_param("diameter", 0)
+                           .above(0)
+                           .needed()
+                           .describe("diameter of every element that does not give its own")
+                           .in_editor("Diameter"));
+    s.params.push_back(nested_param(ParamKind::Direction, "x_axis")
+                           .meaning_auto("a fixed perpendicular to `axis`")
+                           .describe("as for a lens"));
+    s.params.push_back(nested_param(ParamKind::Array, "elements")
+                           .needed()
+                           .describe("the elements, front to back (at least one)"));
+    return s;
+}
+
+ElementSpec declare_element() {
+    ElementSpec s{"lens_group element", "a lens group element", {}};
+    s.params.push_back(nested_param(ParamKind::String, "name")
+                           .meaning_auto("`\"NAME element i\"`")
+                           .describe("shown by lenslab trace"));
+    s.params.push_back(nested_param(ParamKind::Object, "front")
+                           .needed()
+                           .as_written("[surface](#surfaces)")
+                           .describe("its front face"));
+    s.params.push_back(nested_param(ParamKind::Object, "back")
+                           .meaning_auto("the next element's `front`")
+                           .as_written("[surface](#surfaces)")
+                           .describe("its back face; none when cemented to the next"));
+    s.params.push_back(number_param("thickness", 0)
+                           .above(0)
+                           .needed()
+                           .describe("centre thickness")
+                           .in_editor("Centre thickness"));
+    s.params.push_back(number_param("gap", 0)
+                           .at_least(0)
+                           .because("the air space after the element")
+                           .describe("air space to the next element's front vertex (0: cemented)")
+                           .in_editor("Air gap after"));
+    s.params.push_back(nested_param(ParamKind::Number, "diameter")
+                           .above(0)
+                           .meaning_auto("the group's")
+                           .describe("its diameter"));
+    s.params.push_back(nested_param(ParamKind::Object, "material")
+                           .needed()
+                           .as_written("string or object")
+                           .describe("its glass"));
+    return s;
+}
+
 }  // namespace
 
-const std::vector<std::string>& lens_group_keys() {
-    static const std::vector<std::string> keys{"vertex", "axis", "diameter", "x_axis", "elements"};
-    return keys;
+const ElementSpec& lens_group_spec() {
+    static const ElementSpec spec = declare_group();
+    return spec;
+}
+
+const ElementSpec& lens_group_element_spec() {
+    static const ElementSpec spec = declare_element();
+    return spec;
 }
 
 std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
                                          const MaterialResolver& material) {
-    std::vector<std::string> keys{"type", "name", "photon_target"};
-    keys.insert(keys.end(), lens_group_keys().begin(), lens_group_keys().end());
-    JsonObjectReader r(j, path, keys, "a lens group");
+    SpecReader r(j, path, lens_group_spec());
     const std::string name = r.string("name", path);
     const std::optional<bool> photon_target = r.boolean("photon_target");
-    const Vec3 vertex = r.vec3("vertex");
-    const Vec3 axis = r.direction("axis");
-    const double group_diameter = r.positive("diameter");
-    const Vec3 x_axis = r.has("x_axis") ? r.direction("x_axis") : Vec3{};
+    const Vec3 vertex = r.point("vertex");
+    const Vec3 axis = r.unit_vector("axis");
+    const double group_diameter = r.real("diameter");
+    const Vec3 x_axis = r.has("x_axis") ? r.unit_vector("x_axis") : Vec3{};
 
     const json& list = r.require("elements");
     const std::string list_path = r.child_path("elements");
@@ -46,20 +111,15 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
         throw SceneError(list_path, "must be a non-empty array of elements, front to back");
     }
     check_count(list.size(), kMaxObjects, list_path, "elements");
-    std::vector<ElementSpec> specs(list.size());
+    std::vector<GroupElement> specs(list.size());
     for (size_t i = 0; i < list.size(); ++i) {
-        ElementSpec& e = specs[i];
+        GroupElement& e = specs[i];
         e.path = list_path + "[" + std::to_string(i) + "]";
-        JsonObjectReader er(list[i], e.path,
-                            {"name", "front", "back", "thickness", "gap", "diameter", "material"},
-                            "a lens group element");
+        SpecReader er(list[i], e.path, lens_group_element_spec());
         e.name = er.string("name", name + " element " + std::to_string(i + 1));
-        e.thickness = er.positive("thickness");
-        e.gap = er.has("gap") ? er.number("gap") : 0.0;
-        if (e.gap < 0)
-            throw SceneError(er.child_path("gap"),
-                             "must be >= 0 (the air space after the element)");
-        e.diameter = er.positive("diameter", group_diameter);
+        e.thickness = er.real("thickness");
+        e.gap = er.real("gap");
+        e.diameter = er.has("diameter") ? er.real("diameter") : group_diameter;
         e.front = &er.require("front");
         e.back = er.find("back");
         const bool last = i + 1 == list.size();
@@ -79,7 +139,7 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
     std::vector<SceneObject> objects;
     double z = 0;  // axial position of the current element's front vertex
     for (size_t i = 0; i < specs.size(); ++i) {
-        const ElementSpec& e = specs[i];
+        const GroupElement& e = specs[i];
         const json& back = e.back ? *e.back : *specs[i + 1].front;
         const std::string back_path = e.back ? e.path + ".back" : specs[i + 1].path + ".front";
         LensPrescription p;

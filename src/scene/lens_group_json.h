@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/param_spec.h"
 #include "scene/scene.h"
 
 namespace lenslab {
@@ -19,9 +20,10 @@ class JsonObjectReader;
 // scene's materials; given by the scene reader.
 using MaterialResolver = std::function<int(JsonObjectReader& element, const std::string& owner)>;
 
-// The keys a lens group object takes, besides type, name and material (which it refuses:
-// each element names its own).
-const std::vector<std::string>& lens_group_keys();
+// The declarations of a lens group (type, name and photon_target but not material, which
+// each element names itself, and its own keys) and of one of its elements.
+const ElementSpec& lens_group_spec();
+const ElementSpec& lens_group_element_spec();
 
 // Reads the lens group at JSON path `path`; throws SceneError.
 std::vector<SceneObject> read_lens_group(const nlohmann::json& j, const std::string& path,

@@ -19,6 +19,7 @@ static_assert(sizeof(tinyobj::real_t) == sizeof(double), "link tinyobjloader_dou
 #include "geometry/mesh_topology.h"
 #include "geometry/triangle_mesh.h"
 #include "scene/limits.h"
+#include "scene/object_spec.h"
 
 namespace lenslab {
 
@@ -233,21 +234,21 @@ Polygons read_obj(JsonObjectReader& r, const std::string& base_dir) {
     return p;
 }
 
-// Two perpendicular unit vectors from `first_key` and `second_key` (each with a default).
-// Nearly perpendicular input (within 1e-6 rad) is made exactly perpendicular.
-std::pair<Vec3, Vec3> read_frame(JsonObjectReader& r, const std::string& first_key,
-                                 const Vec3& first_default, const std::string& second_key,
-                                 const Vec3& second_default) {
-    const Vec3 first = r.direction(first_key, first_default);
-    const Vec3 second = r.direction(second_key, second_default);
+// Two perpendicular unit vectors from `first_key` and `second_key` (each with a declared
+// default). Nearly perpendicular input (within 1e-6 rad) is made exactly perpendicular.
+std::pair<Vec3, Vec3> read_frame(SpecReader& r, const std::string& first_key,
+                                 const std::string& second_key) {
+    const Vec3 first = r.unit_vector(first_key);
+    const Vec3 second = r.unit_vector(second_key);
     const double c = dot(first, second);
     if (std::abs(c) > 1e-6) {
         if (!r.has(second_key)) {
-            throw SceneError(r.child_path(second_key),
-                             "the default " + second_key + " [" + format_number(second_default.x) +
-                                 ", " + format_number(second_default.y) + ", " +
-                                 format_number(second_default.z) + "] is not perpendicular to " +
-                                 first_key + "; give " + second_key);
+            const json& d = r.spec().param(second_key).fallback;
+            throw SceneError(
+                r.child_path(second_key),
+                "the default " + second_key + " [" + format_number(d[0].get<double>()) + ", " +
+                    format_number(d[1].get<double>()) + ", " + format_number(d[2].get<double>()) +
+                    "] is not perpendicular to " + first_key + "; give " + second_key);
         }
         const double degrees = std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / std::numbers::pi;
         throw SceneError(r.child_path(second_key),
@@ -276,19 +277,81 @@ std::shared_ptr<const Shape> build_mesh(JsonObjectReader& r, Polygons p) {
 
 }  // namespace
 
-const std::vector<std::string>& mesh_keys() {
-    static const std::vector<std::string> keys{"vertices", "faces", "file",  "scale",
-                                               "position", "up",    "facing"};
-    return keys;
+namespace {
+
+ParamSpec direction_or(const std::string& key, const json& fallback, const std::string& doc,
+                       const std::string& label) {
+    return vector_param(ParamKind::Direction, key, fallback).describe(doc).in_editor(label);
 }
 
-const std::vector<std::string>& prism_keys() {
-    static const std::vector<std::string> keys{"apex_angle", "side", "height",
-                                               "center",     "axis", "facing"};
-    return keys;
+ElementSpec declare_mesh() {
+    ElementSpec s = shape_spec("mesh", "a mesh", false);
+    s.params.push_back(nested_param(ParamKind::Array, "vertices")
+                           .as_written("array of points")
+                           .describe("inline form: the corners, numbered from 0"));
+    s.params.push_back(nested_param(ParamKind::Array, "faces")
+                           .as_written("array of faces")
+                           .describe("inline form: each face 3 or more vertex numbers"));
+    s.params.push_back(nested_param(ParamKind::String, "file")
+                           .describe("OBJ form: the OBJ file, relative to the scene's folder"));
+    s.params.push_back(number_param("scale", 1)
+                           .above(0)
+                           .describe("multiplies the model's coordinates")
+                           .in_editor("Scale"));
+    s.params.push_back(direction_or("up", json::array({0, 1, 0}),
+                                    "where the model's +y axis points", "Up (model +y)"));
+    s.params.push_back(direction_or("facing", json::array({0, 0, 1}),
+                                    "where the model's +z axis points; perpendicular to up",
+                                    "Facing (model +z)"));
+    s.params.push_back(vector_param(ParamKind::Point, "position", json::array({0, 0, 0}))
+                           .describe("where the model's origin goes")
+                           .in_editor("Position"));
+    return s;
 }
 
-std::shared_ptr<const Shape> read_mesh(JsonObjectReader& r, const std::string& base_dir) {
+ElementSpec declare_prism() {
+    ElementSpec s = shape_spec("prism", "a prism", false);
+    s.params.push_back(number_param("apex_angle", 60)
+                           .above(0)
+                           .below(180)
+                           .in_unit("degrees")
+                           .describe("A, the angle between the two refracting faces")
+                           .in_editor("Apex angle (degrees)"));
+    s.params.push_back(number_param("side", 0)
+                           .above(0)
+                           .needed()
+                           .describe("width of each refracting face, apex edge to base")
+                           .in_editor("Face width (side)"));
+    s.params.push_back(number_param("height", 0)
+                           .above(0)
+                           .needed()
+                           .describe("length along axis")
+                           .in_editor("Height (along axis)"));
+    s.params.push_back(point_param("center")
+                           .describe("the centre of the prism's bounding box")
+                           .in_editor("Centre"));
+    s.params.push_back(direction_or("axis", json::array({0, 1, 0}),
+                                    "the long axis: the apex edge runs along it",
+                                    "Axis (apex edge)"));
+    s.params.push_back(direction_or("facing", json::array({0, 0, 1}),
+                                    "from the base towards the apex edge; perpendicular to axis",
+                                    "Facing (towards apex)"));
+    return s;
+}
+
+}  // namespace
+
+const ElementSpec& mesh_spec() {
+    static const ElementSpec spec = declare_mesh();
+    return spec;
+}
+
+const ElementSpec& prism_spec() {
+    static const ElementSpec spec = declare_prism();
+    return spec;
+}
+
+std::shared_ptr<const Shape> read_mesh(SpecReader& r, const std::string& base_dir) {
     const bool inline_form = r.has("vertices") || r.has("faces");
     if (inline_form && r.has("file")) {
         throw SceneError(r.child_path("file"),
@@ -299,9 +362,9 @@ std::shared_ptr<const Shape> read_mesh(JsonObjectReader& r, const std::string& b
     }
     Polygons p = inline_form ? read_inline(r) : read_obj(r, base_dir);
 
-    const double scale = r.positive("scale", 1.0);
-    const Vec3 position = r.has("position") ? r.vec3("position") : Vec3{};
-    const auto [up, facing] = read_frame(r, "up", {0, 1, 0}, "facing", {0, 0, 1});
+    const double scale = r.real("scale");
+    const Vec3 position = r.point("position");
+    const auto [up, facing] = read_frame(r, "up", "facing");
     const Vec3 right = cross(up, facing);  // where the model's +x goes: a rotation, no mirror
     for (Vec3& v : p.geometry.vertices) {
         v = position + (right * v.x + up * v.y + facing * v.z) * scale;
@@ -309,18 +372,13 @@ std::shared_ptr<const Shape> read_mesh(JsonObjectReader& r, const std::string& b
     return build_mesh(r, std::move(p));
 }
 
-std::shared_ptr<const Shape> read_prism(JsonObjectReader& r) {
+std::shared_ptr<const Shape> read_prism(SpecReader& r) {
     PrismSpec spec;
-    spec.apex_angle_deg = r.number("apex_angle", spec.apex_angle_deg);
-    if (!(spec.apex_angle_deg > 0 && spec.apex_angle_deg < 180)) {
-        throw SceneError(r.child_path("apex_angle"),
-                         "must be between 0 and 180 degrees (exclusive), got " +
-                             format_number(spec.apex_angle_deg));
-    }
-    spec.side = r.positive("side");
-    spec.height = r.positive("height");
-    spec.center = r.vec3("center");
-    std::tie(spec.axis, spec.facing) = read_frame(r, "axis", {0, 1, 0}, "facing", {0, 0, 1});
+    spec.apex_angle_deg = r.real("apex_angle");
+    spec.side = r.real("side");
+    spec.height = r.real("height");
+    spec.center = r.point("center");
+    std::tie(spec.axis, spec.facing) = read_frame(r, "axis", "facing");
     MeshGeometry g = make_prism(spec);
     Polygons p;
     p.key = "side";

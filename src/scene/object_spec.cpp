@@ -65,7 +65,55 @@ ElementSpec declare_implicit() {
     return s;
 }
 
+// One declaration for both forms; which form a key belongs to is in its doc line, and the
+// rule that the forms do not mix stays with the reader (object_types.cpp).
+ElementSpec declare_lens() {
+    ElementSpec s = shape_spec("lens", "a lens", false);
+    s.params.push_back(point_param("center")
+                           .describe("the point on the optical axis midway between the vertices")
+                           .in_editor("Centre"));
+    s.params.push_back(direction_param("axis")
+                           .describe("the optical axis, from the front vertex to the back vertex")
+                           .in_editor("Axis"));
+    const auto length = [](std::string key, std::string form, std::string doc, std::string label) {
+        return nested_param(ParamKind::Number, std::move(key))
+            .above(0)
+            .meaning_auto("**required** in the " + form + " form")
+            .describe(form + " form: " + doc)
+            .in_editor(std::move(label));
+    };
+    s.params.push_back(
+        length("curvature_radius", "report", "R, the radius of both spheres", "Curvature radius"));
+    s.params.push_back(length("aperture_radius", "report",
+                              "h, the distance from the axis to the edge; h <= R",
+                              "Aperture radius"));
+    s.params.push_back(length("thickness", "prescription",
+                              "centre thickness, vertex to vertex along the axis",
+                              "Centre thickness"));
+    s.params.push_back(length("diameter", "prescription",
+                              "diameter of the lens (twice the rim radius)", "Diameter"));
+    for (const char* side : {"front", "back"}) {
+        s.params.push_back(
+            nested_param(ParamKind::Object, side)
+                .meaning_auto("**required** in the prescription form")
+                .as_written("surface")
+                .describe(std::string("prescription form: the ") +
+                          (side == std::string("front") ? "surface met first along axis"
+                                                        : "other surface")));
+    }
+    s.params.push_back(nested_param(ParamKind::Direction, "x_axis")
+                           .meaning_auto("a fixed perpendicular to `axis`")
+                           .describe("prescription form: where the lens's local x axis points")
+                           .in_editor("Local x axis"));
+    return s;
+}
+
 }  // namespace
+
+const ElementSpec& lens_spec() {
+    static const ElementSpec spec = declare_lens();
+    return spec;
+}
 
 const ElementSpec& object_common_spec() {
     static const ElementSpec spec = declare_common();

@@ -1,7 +1,8 @@
 #pragma once
 // The declarations of what every object in `objects` takes, and of the shapes read through
 // them (the sphere, the triangle and the implicit solid here; the disc and the rectangle in
-// planar_json.h; the other shapes still list their keys in their readers).
+// planar_json.h; the lens here too; the mesh and the prism in mesh_json.h, the box in box_json.h,
+// the lens group in lens_group_json.h).
 
 #include "scene/param_spec.h"
 
@@ -13,6 +14,9 @@ const ElementSpec& object_common_spec();
 const ElementSpec& sphere_spec();
 const ElementSpec& implicit_spec();
 const ElementSpec& triangle_spec();
+// Both forms of a lens (report and prescription) in one declaration; the reader keeps them
+// apart.
+const ElementSpec& lens_spec();
 
 // A shape's declaration to add its own keys to: the common ones (`detector` only for the
 // flat shapes, which can measure light).

@@ -5,6 +5,7 @@
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
 #include "scene/box_json.h"
+#include "scene/lens_group_json.h"
 #include "scene/mesh_json.h"
 #include "scene/object_spec.h"
 #include "scene/planar_json.h"
@@ -21,9 +22,15 @@ std::string index_path(const std::string& base, size_t i) {
     return base + "[" + std::to_string(i) + "]";
 }
 
-std::shared_ptr<const Shape> read_lens(JsonObjectReader& r) {
-    const Vec3 centre = r.vec3("center");
-    const Vec3 axis = r.direction("axis");
+// A length one form requires: absent is "missing (required)", as for any required key.
+double form_length(SpecReader& r, const std::string& key) {
+    (void)r.require(key);
+    return r.real(key);
+}
+
+std::shared_ptr<const Shape> read_lens(SpecReader& r) {
+    const Vec3 centre = r.point("center");
+    const Vec3 axis = r.unit_vector("axis");
     LensPrescription p;
     const bool report_form = r.has("curvature_radius") || r.has("aperture_radius");
     const bool prescription_form =
@@ -41,8 +48,8 @@ std::shared_ptr<const Shape> read_lens(JsonObjectReader& r) {
                                  "(curvature_radius, aperture_radius) cannot take it");
             }
         }
-        const double radius = r.positive("curvature_radius");
-        const double aperture = r.positive("aperture_radius");
+        const double radius = form_length(r, "curvature_radius");
+        const double aperture = form_length(r, "aperture_radius");
         if (aperture > radius) {
             throw SceneError(r.child_path("aperture_radius"),
                              "two spheres of radius " + format_number(radius) +
@@ -53,11 +60,11 @@ std::shared_ptr<const Shape> read_lens(JsonObjectReader& r) {
     } else {
         p.centre = centre;
         p.axis = axis;
-        p.thickness = r.positive("thickness");
-        p.diameter = r.positive("diameter");
+        p.thickness = form_length(r, "thickness");
+        p.diameter = form_length(r, "diameter");
         p.front = read_lens_surface(r.require("front"), r.child_path("front"), 0.5 * p.diameter);
         p.back = read_lens_surface(r.require("back"), r.child_path("back"), 0.5 * p.diameter);
-        if (r.has("x_axis")) p.x_axis = r.direction("x_axis");
+        if (r.has("x_axis")) p.x_axis = r.unit_vector("x_axis");
     }
     if (auto problem = LensSolid::check_prescription(p)) {
         throw SceneError(r.child_path(problem->field), problem->reason);
@@ -65,7 +72,7 @@ std::shared_ptr<const Shape> read_lens(JsonObjectReader& r) {
     return std::make_shared<LensSolid>(std::move(p));
 }
 
-std::shared_ptr<const Shape> read_triangle(JsonObjectReader& r) {
+std::shared_ptr<const Shape> read_triangle(SpecReader& r) {
     const json& v = r.require("vertices");
     const std::string vpath = r.child_path("vertices");
     if (!v.is_array() || v.size() != 3) {
@@ -117,31 +124,24 @@ std::shared_ptr<const Shape> read_sphere(SpecReader& r) {
 
 // A declared kind's reader, given the SpecReader read_object made for it.
 template <std::shared_ptr<const Shape> (*Read)(SpecReader&)>
-std::shared_ptr<const Shape> declared(JsonObjectReader& r, const std::string&) {
-    return Read(static_cast<SpecReader&>(r));
-}
-
-template <std::shared_ptr<const Shape> (*Read)(JsonObjectReader&)>
-std::shared_ptr<const Shape> listed(JsonObjectReader& r, const std::string&) {
+std::shared_ptr<const Shape> declared(SpecReader& r, const std::string&) {
     return Read(r);
 }
 
 std::vector<ObjectTypeEntry> make_table() {
     // clang-format off
     return {
-        //  type          ObjectType             declaration       keys            reader                       detect emit  mesh check
-        {"sphere",     ObjectType::Sphere,    &sphere_spec,    {},             &declared<read_sphere>,     false, true,  false},
-        {"triangle",   ObjectType::Triangle,  &triangle_spec,  {},             &listed<read_triangle>,     true,  false, false},
-        {"disc",       ObjectType::Disc,      &disc_spec,      {},             &declared<read_disc>,       true,  false, false},
-        {"rectangle",  ObjectType::Rectangle, &rectangle_spec, {},             &declared<read_rectangle>,  true,  false, false},
-        {"lens",       ObjectType::Lens,      nullptr,         {"center", "axis", "curvature_radius", "aperture_radius",
-                                                                "thickness", "diameter", "front", "back", "x_axis"},
-                                                                               &listed<read_lens>,         false, false, false},
-        {"lens_group", ObjectType::Lens,      nullptr,         {},             nullptr,                    false, false, false},  // read by scene_from_json
-        {"mesh",       ObjectType::Mesh,      nullptr,         mesh_keys(),    &read_mesh,                 false, false, true},
-        {"prism",      ObjectType::Mesh,      nullptr,         prism_keys(),   &listed<read_prism>,        false, false, false},  // closed by construction
-        {"implicit",   ObjectType::Implicit,  &implicit_spec,  {},             &declared<read_implicit>,   false, false, false},
-        {"box",        ObjectType::Mesh,      &box_spec,       {},             &declared<read_box>,        false, false, false},  // closed by construction
+        //  type          ObjectType             declaration        reader                         detect emit  mesh check
+        {"sphere",     ObjectType::Sphere,    &sphere_spec,     &declared<read_sphere>,       false, true,  false},
+        {"triangle",   ObjectType::Triangle,  &triangle_spec,   &declared<read_triangle>,     true,  false, false},
+        {"disc",       ObjectType::Disc,      &disc_spec,       &declared<read_disc>,         true,  false, false},
+        {"rectangle",  ObjectType::Rectangle, &rectangle_spec,  &declared<read_rectangle>,    true,  false, false},
+        {"lens",       ObjectType::Lens,      &lens_spec,       &declared<read_lens>,         false, false, false},
+        {"lens_group", ObjectType::Lens,      &lens_group_spec, nullptr,                      false, false, false},  // read by scene_from_json
+        {"mesh",       ObjectType::Mesh,      &mesh_spec,       &read_mesh,                  false, false, true},
+        {"prism",      ObjectType::Mesh,      &prism_spec,      &declared<read_prism>,        false, false, false},  // closed by construction
+        {"implicit",   ObjectType::Implicit,  &implicit_spec,   &declared<read_implicit>,     false, false, false},
+        {"box",        ObjectType::Mesh,      &box_spec,        &declared<read_box>,          false, false, false},  // closed by construction
     };
     // clang-format on
 }

@@ -1,9 +1,8 @@
 #pragma once
 // The kinds of object a scene's `objects` may hold, one entry each (object_types.cpp): the
-// `type` string, the ObjectType it becomes, its declaration (or, for shapes not yet
-// declared, the keys it takes), the function that builds its shape, and the rules that
-// differ between kinds. The scene reader, the "unknown object type" message and the
-// editor's fallback form all read this table.
+// `type` string, the ObjectType it becomes, its declaration (the keys it takes), the function
+// that builds its shape, and the rules that differ between kinds. The scene reader, the "unknown
+// object type" message and the editor's fallback form all read this table.
 
 #include <memory>
 #include <string>
@@ -13,20 +12,18 @@
 #include "scene/json_reader.h"
 #include "scene/param_spec.h"
 #include "scene/scene.h"
+#include "scene/spec_reader.h"
 
 namespace lenslab {
 
 struct ObjectTypeEntry {
     std::string name;  // the `type` string
     ObjectType type;
-    // The declaration the object is read through (a SpecReader); null for the kinds that
-    // list their keys instead (besides type, name, material and photon_target).
+    // The declaration the object is read through (a SpecReader): every kind has one.
     const ElementSpec& (*spec)() = nullptr;
-    std::vector<std::string> keys;
-    // Builds the shape; `r` is a SpecReader when `spec` is given. Null for lens_group, which
+    // Builds the shape; `r` is the SpecReader made from `spec`. Null for lens_group, which
     // scene_from_json reads itself (it makes one object per element).
-    std::shared_ptr<const Shape> (*read)(JsonObjectReader& r,
-                                         const std::string& base_dir) = nullptr;
+    std::shared_ptr<const Shape> (*read)(SpecReader& r, const std::string& base_dir) = nullptr;
     bool may_detect = false;       // may take `detector` (flat shapes)
     bool may_emit = false;         // its material may have an emission
     bool open_mesh_check = false;  // refuse an open mesh with a transparent material

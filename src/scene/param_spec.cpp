@@ -261,6 +261,12 @@ std::string range_text(const ParamSpec& p) {
                 return std::string("`") + (p.max->exclusive ? "< " : "<= ") +
                        format_number(p.max->value) + "`";
             return "";
+        case ParamKind::Object:
+        case ParamKind::Array:
+            // A count that may also be written as an array (a detector's cells).
+            if (p.min && p.max)
+                return format_number(p.min->value) + " – " + format_number(p.max->value);
+            return "";
         default:
             return "";
     }

@@ -12,7 +12,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr int kMaxCellsPerSide = 1024;
 constexpr int kMaxBands = 16;
 
 // The frame's `up`: given (and not parallel to the normal), or the default.
@@ -25,12 +24,14 @@ Vec3 read_up(JsonObjectReader& r, const Vec3& normal) {
 }
 
 void read_resolution(const json& v, const std::string& path, DetectorSettings& d) {
+    const ParamSpec& declared = detector_spec().param("resolution");
+    const int low = static_cast<int>(declared.min->value);
+    const int high = static_cast<int>(declared.max->value);
     auto cells = [&](const json& n, const std::string& at) {
         const double x = JsonObjectReader::as_number(n, at);
-        if (x != std::floor(x) || x < 1 || x > kMaxCellsPerSide) {
-            throw SceneError(at, "must be a whole number of cells from 1 to " +
-                                     std::to_string(kMaxCellsPerSide) + ", got " +
-                                     format_number(x));
+        if (x != std::floor(x) || x < low || x > high) {
+            throw SceneError(at, "must be a whole number of cells from " + std::to_string(low) +
+                                     " to " + std::to_string(high) + ", got " + format_number(x));
         }
         return static_cast<int>(x);
     };
@@ -112,15 +113,20 @@ std::optional<DetectorSettings> read_detector(JsonObjectReader& r) {
     if (!v->is_object())
         throw SceneError(path,
                          "must be true, false or an object {\"resolution\": ..., \"bands\": ...}");
-    JsonObjectReader dr(*v, path, {"resolution", "bands", "side", "unit"});
+    SpecReader dr(*v, path, detector_spec());
     DetectorSettings d;
-    if (const json* res = dr.find("resolution"))
-        read_resolution(*res, dr.child_path("resolution"), d);
-    if (const json* bands = dr.find("bands")) read_bands(*bands, dr.child_path("bands"), d);
-    const std::string side = dr.choice("side", "front", {"front", "back", "both"});
+    read_resolution(dr.has("resolution") ? dr.require("resolution")
+                                         : detector_spec().param("resolution").fallback,
+                    dr.child_path("resolution"), d);
+    if (const json* bands = dr.find("bands")) {
+        read_bands(*bands, dr.child_path("bands"), d);
+    } else {
+        d.band_edges = detector_spec().param("bands").fallback.get<std::vector<double>>();
+    }
+    const std::string side = dr.text("side");
     d.side = side == "front" ? DetectorSide::Front
                              : (side == "back" ? DetectorSide::Back : DetectorSide::Both);
-    d.unit = dr.string("unit", d.unit);
+    d.unit = dr.text("unit");
     const bool printable =
         !d.unit.empty() && d.unit.size() <= 16 &&
         d.unit.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") ==

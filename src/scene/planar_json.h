@@ -2,7 +2,7 @@
 // Flat open surfaces and detectors in scene files (docs/scene-format.md, "Disc",
 // "Rectangle" and "Detectors"):
 //
-// Their keys are declared in planar_spec.cpp.
+// Their keys, and the detector block's, are declared in planar_spec.cpp.
 
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -24,6 +24,9 @@ const ElementSpec& rectangle_spec();
 // `r` reads through disc_spec() or rectangle_spec().
 std::shared_ptr<const Shape> read_disc(SpecReader& r);
 std::shared_ptr<const Shape> read_rectangle(SpecReader& r);
+
+// The `detector` object's keys (planar_spec.cpp).
+const ElementSpec& detector_spec();
 
 // The object's `detector` key: nothing when absent or false.
 std::optional<DetectorSettings> read_detector(JsonObjectReader& r);

@@ -41,7 +41,36 @@ ElementSpec declare_rectangle() {
     return s;
 }
 
+// A detector's cells and bands are a number or an array, so their kind is an array (read by
+// planar_json.cpp); the cell count's range is declared here all the same.
+ElementSpec declare_detector() {
+    // No phrase: a key it does not take is an "unknown key", as in any nested object.
+    ElementSpec s{"detector", "", {}};
+    s.params.push_back(vector_param(ParamKind::Array, "resolution", 64)
+                           .at_least(1)
+                           .at_most(1024)
+                           .as_written("whole number, or `[cells_u, cells_v]`")
+                           .describe("cells across the detector; each count in the range"));
+    s.params.push_back(
+        vector_param(ParamKind::Array, "bands", nlohmann::json::array({360, 490, 585, 830}))
+            .as_written("whole number, or array of wavelengths (nm)")
+            .describe("wavelength bands measured besides the total"));
+    s.params.push_back(choice_param("side", "front", {"front", "back", "both"})
+                           .describe("which face counts")
+                           .in_editor("Face counted"));
+    s.params.push_back(string_param("unit", "unit")
+                           .as_written("string of letters")
+                           .describe("the name of the scene's length unit, for labels")
+                           .in_editor("Length unit"));
+    return s;
+}
+
 }  // namespace
+
+const ElementSpec& detector_spec() {
+    static const ElementSpec spec = declare_detector();
+    return spec;
+}
 
 const ElementSpec& disc_spec() {
     static const ElementSpec spec = declare_disc();

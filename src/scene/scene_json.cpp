@@ -188,15 +188,8 @@ SceneObject read_object(const json& j, const std::string& path,
     SceneObject o;
     o.type = kind->type;
     if (!kind->may_detect) check_detector_allowed(j, path, type);
-    // Declared shapes read through their declaration; the others list their keys.
-    std::vector<std::string> keys{"type", "name", "material", "photon_target"};
-    keys.insert(keys.end(), kind->keys.begin(), kind->keys.end());
-    // Built in place, never deleted through the base: JsonObjectReader is not polymorphic.
-    std::optional<SpecReader> declared;
-    std::optional<JsonObjectReader> listed;
-    JsonObjectReader& r =
-        kind->spec ? static_cast<JsonObjectReader&>(declared.emplace(j, path, kind->spec()))
-                   : listed.emplace(j, path, keys, "a " + type);
+    // Every kind reads through its declaration.
+    SpecReader r(j, path, kind->spec());
     o.name = r.string("name", path);
     o.photon_target = r.boolean("photon_target");
     o.shape = kind->read(r, base_dir);

@@ -8,6 +8,7 @@
 #include "geometry/lens/sag_formula_surface.h"
 #include "geometry/lens/spherical_surface.h"
 #include "scene/json_reader.h"
+#include "scene/spec_reader.h"
 
 namespace lenslab {
 
@@ -15,13 +16,54 @@ const std::vector<std::string> kSurfaceShapeNames{"flat", "sphere", "conic", "as
 
 namespace {
 
-// The keys each shape takes besides `shape`.
-std::vector<std::string> keys_of(const std::string& shape) {
-    if (shape == "sphere") return {"radius"};
-    if (shape == "conic") return {"radius", "k"};
-    if (shape == "asphere") return {"radius", "k", "coefficients"};
-    if (shape == "sag") return {"formula"};
-    return {};
+ParamSpec shape_param(const std::string& shape) {
+    return string_param("shape", "").needed().describe("\"" + shape + "\"");
+}
+
+ParamSpec radius_param() {
+    return number_param("radius", 0)
+        .needed()
+        .describe("R, the vertex radius of curvature; not 0 (signed, see the sign convention)")
+        .in_editor("radius (signed)");
+}
+
+ParamSpec k_param() {
+    return number_param("k", 0).describe("the conic constant").in_editor("conic constant k");
+}
+
+ElementSpec declare(const std::string& shape, std::vector<ParamSpec> own) {
+    // No phrase: a key no shape takes is an "unknown key", as in any nested object.
+    ElementSpec s{shape + " surface", "", {shape_param(shape)}};
+    for (ParamSpec& p : own) s.params.push_back(std::move(p));
+    return s;
+}
+
+std::vector<ElementSpec> declare_surfaces() {
+    return {
+        declare("flat", {}),
+        declare("sphere", {radius_param()}),
+        declare("conic", {radius_param(), k_param().needed()}),
+        declare("asphere", {radius_param(), k_param(),
+                            nested_param(ParamKind::Array, "coefficients")
+                                .needed()
+                                .as_written("array of 1 to 7 numbers")
+                                .describe("[A4, A6, ..., A16]")}),
+        declare("sag", {string_param("formula", "")
+                            .needed()
+                            .describe("z(r) or z(x, y), 0 on the axis")
+                            .in_editor("z(r) or z(x, y)")}),
+    };
+}
+
+// Every key some shape takes.
+std::vector<std::string> all_surface_keys() {
+    std::vector<std::string> out;
+    for (const ElementSpec& s : surface_specs()) {
+        for (const std::string& key : s.keys()) {
+            if (std::find(out.begin(), out.end(), key) == out.end()) out.push_back(key);
+        }
+    }
+    return out;
 }
 
 std::string joined(const std::vector<std::string>& names) {
@@ -30,8 +72,8 @@ std::string joined(const std::vector<std::string>& names) {
     return out;
 }
 
-double vertex_radius(JsonObjectReader& r) {
-    const double radius = r.number("radius");
+double vertex_radius(SpecReader& r) {
+    const double radius = r.real("radius");
     if (radius == 0) {
         throw SceneError(r.child_path("radius"),
                          "must not be 0 (use {\"shape\": \"flat\"} for a plane)");
@@ -54,36 +96,58 @@ std::vector<double> read_coefficients(JsonObjectReader& r) {
 
 }  // namespace
 
+const std::vector<ElementSpec>& surface_specs() {
+    static const std::vector<ElementSpec> specs = declare_surfaces();
+    return specs;
+}
+
+const ElementSpec* surface_spec(const std::string& shape) {
+    for (const ElementSpec& s : surface_specs()) {
+        if (s.name == shape + " surface") return &s;
+    }
+    return nullptr;
+}
+
+const ElementSpec& flat_surface_spec() { return *surface_spec("flat"); }
+const ElementSpec& sphere_surface_spec() { return *surface_spec("sphere"); }
+const ElementSpec& conic_surface_spec() { return *surface_spec("conic"); }
+const ElementSpec& asphere_surface_spec() { return *surface_spec("asphere"); }
+const ElementSpec& sag_surface_spec() { return *surface_spec("sag"); }
+
 std::shared_ptr<const LensSurface> read_lens_surface(const nlohmann::json& j,
                                                      const std::string& path,
                                                      double semi_diameter) {
-    JsonObjectReader r(j, path, {"shape", "radius", "k", "coefficients", "formula"});
-    const std::string shape = r.string("shape");
-    if (std::find(kSurfaceShapeNames.begin(), kSurfaceShapeNames.end(), shape) ==
-        kSurfaceShapeNames.end()) {
-        throw SceneError(r.child_path("shape"), "unknown surface shape '" + shape + "' (known: " +
-                                                    joined(kSurfaceShapeNames) + ")");
+    static const std::vector<std::string> any_shape = all_surface_keys();
+    JsonObjectReader any(j, path, any_shape);
+    const std::string shape = any.string("shape");
+    const ElementSpec* spec = surface_spec(shape);
+    if (!spec) {
+        throw SceneError(any.child_path("shape"), "unknown surface shape '" + shape + "' (known: " +
+                                                      joined(kSurfaceShapeNames) + ")");
     }
-    const std::vector<std::string> takes = keys_of(shape);
-    for (const char* key : {"radius", "k", "coefficients", "formula"}) {
-        if (r.has(key) && std::find(takes.begin(), takes.end(), key) == takes.end()) {
-            throw SceneError(r.child_path(key),
+    std::vector<std::string> takes = spec->keys();
+    takes.erase(takes.begin());  // shape
+    for (const std::string& key : any_shape) {
+        if (any.has(key) && !spec->find(key)) {
+            throw SceneError(any.child_path(key),
                              "a " + shape + " surface has no " + key +
                                  (takes.empty() ? "" : " (it takes " + joined(takes) + ")"));
         }
     }
+    // Only the shape's own keys are left: read them as declared.
+    SpecReader r(j, path, *spec);
     if (shape == "flat") return std::make_shared<FlatSurface>();
     if (shape == "sphere") return std::make_shared<SphericalSurface>(vertex_radius(r));
     if (shape == "conic") {
         const double radius = vertex_radius(r);
-        return std::make_shared<ConicSurface>(radius, r.number("k"));
+        return std::make_shared<ConicSurface>(radius, r.real("k"));
     }
     if (shape == "asphere") {
         const double radius = vertex_radius(r);
-        const double k = r.number("k", 0.0);
+        const double k = r.real("k");
         return std::make_shared<AsphereSurface>(radius, k, read_coefficients(r));
     }
-    const std::string formula = r.string("formula");
+    const std::string formula = r.text("formula");
     try {
         return std::make_shared<SagFormulaSurface>(formula, semi_diameter);
     } catch (const FormulaError& e) {

@@ -16,10 +16,14 @@
 #include "property_panel.h"
 #include "scene/box_json.h"
 #include "scene/camera_spec.h"
+#include "scene/lens_group_json.h"
 #include "scene/light_spec.h"
 #include "scene/material_spec.h"
+#include "scene/mesh_json.h"
 #include "scene/object_spec.h"
+#include "scene/planar_json.h"
 #include "scene/render_settings_spec.h"
+#include "scene/surface_json.h"
 #include "scene_document.h"
 #include "scene_tree.h"
 
@@ -48,11 +52,13 @@ QString write_bare_scene(QTemporaryDir& dir, const json& render) {
     return path;
 }
 
-// Every labelled parameter of `spec` (but `skip`) against the form now shown.
-void check_form(MainWindow& w, const ElementSpec& spec, const std::vector<std::string>& skip) {
+// Every labelled parameter of `spec` (but `skip`) against the form now shown; `prefix` is
+// where a nested element's fields are ("detector/", "front/").
+void check_form(MainWindow& w, const ElementSpec& spec, const std::vector<std::string>& skip,
+                const std::string& prefix = "") {
     for (const ParamSpec& p : spec.params) {
         if (p.label.empty() || std::find(skip.begin(), skip.end(), p.key) != skip.end()) continue;
-        const QString name = QString::fromStdString("field:" + p.key);
+        const QString name = QString::fromStdString("field:" + prefix + p.key);
         const QByteArray where = QByteArray::fromStdString(spec.name + "." + p.key);
         switch (p.kind) {
             case ParamKind::WholeNumber:
@@ -118,6 +124,21 @@ void check_form(MainWindow& w, const ElementSpec& spec, const std::vector<std::s
     }
 }
 
+// Opens a scene holding `objects` (with a material "grey") and selects the first object.
+void open_objects(MainWindow& w, QTemporaryDir& dir, const json& objects) {
+    const QString path = dir.filePath("objects.json");
+    QFile file(path);
+    file.open(QIODevice::WriteOnly);
+    const json scene = {{"camera", {{"position", {0, 1, 4}}, {"look_at", {0, 0, 0}}}},
+                        {"materials", {{"grey", {{"color", 0.5}}}}},
+                        {"objects", objects}};
+    file.write(QByteArray::fromStdString(scene.dump(2)));
+    file.close();
+    QString error;
+    QVERIFY2(w.open_file(path, &error), qPrintable(error));
+    w.tree()->select_pointer("/objects/0");
+}
+
 }  // namespace
 
 class TestPropertyForms : public QObject {
@@ -173,6 +194,101 @@ private slots:
         QVERIFY2(w.open_file(path, &error), qPrintable(error));
         w.tree()->select_pointer("/objects/0");
         check_form(w, lenslab::box_spec(), {});
+    }
+
+    // The lens's two forms, its faces, the lens group and its elements, the mesh, the prism
+    // and the detector block: each form takes its fields from the declaration.
+    void lens_forms_follow_the_declaration() {
+        QTemporaryDir dir;
+        {
+            MainWindow w;
+            open_objects(
+                w, dir,
+                {{{"type", "lens"},
+                  {"center", {0, 0, 0}},
+                  {"axis", {0, 0, 1}},
+                  {"thickness", 0.5},
+                  {"diameter", 1},
+                  {"front", {{"shape", "conic"}, {"radius", 2}, {"k", -1}}},
+                  {"back", {{"shape", "asphere"}, {"radius", -2}, {"coefficients", {0.0}}}},
+                  {"material", "grey"}}});
+            check_form(w, lenslab::lens_spec(), {"curvature_radius", "aperture_radius"});
+            check_form(w, lenslab::conic_surface_spec(), {}, "front/");
+            check_form(w, lenslab::asphere_surface_spec(), {}, "back/");
+            QVERIFY(!w.panel()->findChild<QDoubleSpinBox*>("field:curvature_radius"));
+        }
+        MainWindow w;
+        open_objects(w, dir,
+                     {{{"type", "lens"},
+                       {"center", {0, 0, 0}},
+                       {"axis", {0, 0, 1}},
+                       {"curvature_radius", 1},
+                       {"aperture_radius", 0.5},
+                       {"material", "grey"}}});
+        check_form(w, lenslab::lens_spec(), {"thickness", "diameter", "x_axis"});
+    }
+
+    void lens_group_form_follows_the_declaration() {
+        QTemporaryDir dir;
+        MainWindow w;
+        open_objects(w, dir,
+                     {{{"type", "lens_group"},
+                       {"vertex", {0, 0, 0}},
+                       {"axis", {0, 0, 1}},
+                       {"diameter", 1},
+                       {"elements",
+                        {{{"front", {{"shape", "sphere"}, {"radius", 2}}},
+                          {"thickness", 0.5},
+                          {"material", "grey"}},
+                         {{"front", {{"shape", "sphere"}, {"radius", -2}}},
+                          {"back", {{"shape", "flat"}}},
+                          {"thickness", 0.3},
+                          {"material", "grey"}}}}}});
+        // The group's photon_target is not in its form (each element is an object of its own).
+        check_form(w, lenslab::lens_group_spec(), {"photon_target"});
+        check_form(w, lenslab::lens_group_element_spec(), {}, "elements/0/");
+        check_form(w, lenslab::sphere_surface_spec(), {}, "elements/0/front/");
+    }
+
+    void mesh_and_prism_forms_follow_their_declarations() {
+        QTemporaryDir dir;
+        {
+            MainWindow w;
+            open_objects(w, dir,
+                         {{{"type", "mesh"},
+                           {"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}},
+                           {"faces", {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}},
+                           {"material", "grey"}}});
+            check_form(w, lenslab::mesh_spec(), {});
+        }
+        MainWindow w;
+        open_objects(w, dir,
+                     {{{"type", "prism"},
+                       {"side", 1},
+                       {"height", 1},
+                       {"center", {0, 0, 0}},
+                       {"material", "grey"}}});
+        check_form(w, lenslab::prism_spec(), {});
+    }
+
+    void detector_form_follows_the_declaration() {
+        QTemporaryDir dir;
+        MainWindow w;
+        open_objects(w, dir,
+                     {{{"type", "disc"},
+                       {"center", {0, 0, 0}},
+                       {"normal", {0, 0, 1}},
+                       {"radius", 1},
+                       {"detector", json::object()},
+                       {"material", "grey"}}});
+        check_form(w, lenslab::disc_spec(), {});
+        check_form(w, lenslab::detector_spec(), {}, "detector/");
+        const ParamSpec& cells = lenslab::detector_spec().param("resolution");
+        auto* box = w.panel()->findChild<QDoubleSpinBox*>("field:detector/resolution");
+        QVERIFY(box);
+        QCOMPARE(box->minimum(), cells.min->value);
+        QCOMPARE(box->maximum(), cells.max->value);
+        QCOMPARE(box->value(), cells.fallback.get<double>());
     }
 
     // Must-show: 0 means "auto" for the gather radius, and the field can be set to it.
