@@ -1,0 +1,56 @@
+# Build time: the whole test suite (scripts/test-all.sh) builds the project three times on
+# two cores, so compile and link time is most of its budget (docs/performance.md, "Test
+# suite time"). Nothing here changes what is compiled, only how fast.
+
+# Precompiled headers. <nlohmann/json.hpp> costs 2-3.5 s per translation unit, GoogleTest's
+# headers about 1.5 s, Qt's widget headers 2-4 s; each set is compiled once per build and
+# shared (REUSE_FROM) by the targets with the same flags. LENSLAB_PCH=OFF compiles without
+# them, e.g. to check that every file includes what it uses.
+option(LENSLAB_PCH "Precompile the heavy third-party headers (json, GoogleTest, Qt)" ON)
+
+set(LENSLAB_PCH_STD <algorithm> <cmath> <cstdint> <functional> <memory> <optional> <sstream>
+    <string> <string_view> <vector>)
+
+# The core library's set: json and the standard headers most files use.
+function(lenslab_precompile_core target)
+    if(LENSLAB_PCH)
+        target_precompile_headers(${target} PRIVATE <nlohmann/json.hpp> ${LENSLAB_PCH_STD})
+    endif()
+endfunction()
+
+# The GoogleTest suites' set: the core set plus gtest.
+function(lenslab_precompile_tests target)
+    if(LENSLAB_PCH)
+        target_precompile_headers(${target} PRIVATE <gtest/gtest.h> <nlohmann/json.hpp> ${LENSLAB_PCH_STD})
+    endif()
+endfunction()
+
+# The editor's set: the Qt headers most of its files use (and <QtTest> for its tests) plus
+# the core set.
+set(LENSLAB_PCH_QT <QApplication> <QComboBox> <QDockWidget> <QDoubleSpinBox> <QFormLayout>
+    <QHBoxLayout> <QImage> <QLabel> <QLineEdit> <QMainWindow> <QPainter> <QPushButton>
+    <QSpinBox> <QString> <QTimer> <QVBoxLayout> <QWidget>)
+function(lenslab_precompile_qt target)
+    if(LENSLAB_PCH)
+        target_precompile_headers(${target} PRIVATE ${LENSLAB_PCH_QT} ${ARGN} <nlohmann/json.hpp> ${LENSLAB_PCH_STD})
+    endif()
+endfunction()
+
+# Use another target's precompiled header (same compiler flags; extra -D macros that the
+# headers do not use are fine).
+function(lenslab_reuse_pch target from)
+    if(LENSLAB_PCH)
+        target_precompile_headers(${target} REUSE_FROM ${from})
+    endif()
+endfunction()
+
+# Linking: lld (Debian package lld, scripts/install-deps.sh) links the sanitized test
+# executables several times faster than GNU ld. Used when the compiler accepts it.
+option(LENSLAB_LLD "Link with lld when it is installed" ON)
+if(LENSLAB_LLD)
+    include(CheckLinkerFlag)
+    check_linker_flag(CXX "-fuse-ld=lld" LENSLAB_HAVE_LLD)
+    if(LENSLAB_HAVE_LLD)
+        add_link_options(-fuse-ld=lld)
+    endif()
+endif()
