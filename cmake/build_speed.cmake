@@ -33,12 +33,12 @@ endfunction()
 # Used by the editor's library and its tests, not by lenslab-gui's main.cpp: GCC takes a
 # precompiled header only with the macros it was made with.
 option(LENSLAB_PCH_QT "Precompile Qt's headers for the editor and its tests" ON)
-set(LENSLAB_PCH_QT <QApplication> <QComboBox> <QDockWidget> <QDoubleSpinBox> <QFormLayout>
+set(LENSLAB_PCH_QT_HEADERS <QApplication> <QComboBox> <QDockWidget> <QDoubleSpinBox> <QFormLayout>
     <QHBoxLayout> <QImage> <QLabel> <QLineEdit> <QMainWindow> <QPainter> <QPushButton>
     <QSpinBox> <QString> <QTimer> <QVBoxLayout> <QWidget>)
 function(lenslab_precompile_qt target)
     if(LENSLAB_PCH OR LENSLAB_PCH_QT)
-        target_precompile_headers(${target} PRIVATE ${LENSLAB_PCH_QT} ${ARGN} <nlohmann/json.hpp> ${LENSLAB_PCH_STD})
+        target_precompile_headers(${target} PRIVATE ${LENSLAB_PCH_QT_HEADERS} ${ARGN} <nlohmann/json.hpp> ${LENSLAB_PCH_STD})
     endif()
 endfunction()
 
