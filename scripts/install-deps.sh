@@ -13,10 +13,12 @@ PACKAGES=(
     gnuplot-nox colord-data
     qt6-base-dev
     clang libclang-rt-14-dev llvm clang-format
+    lld
 )
 # clang + libclang-rt-14-dev: libFuzzer and clang's sanitizers for the fuzz targets
 # (scripts/fuzz.sh); llvm: llvm-symbolizer, so sanitizer reports name files and lines;
-# clang-format: scripts/check-format.sh, the first thing the test suite checks.
+# clang-format: scripts/check-format.sh, the first thing the test suite checks; lld: the
+# linker (cmake/build_speed.cmake), several times faster than GNU ld on the test executables.
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -2,8 +2,9 @@
 # The whole test suite, as CI runs it (README, second command; .ci/run): first the C++
 # files' formatting (scripts/check-format.sh, seconds), then
 #   1. release build + every test;
-#   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: no editor, no
-#      benchmarks) + every test but the 20M-photon convergence test (too slow sanitized);
+#   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: the editor
+#      included, no benchmarks) + every test but the 20M-photon convergence test (too slow
+#      sanitized);
 #   3. the libFuzzer targets, 60 s each (scripts/fuzz.sh).
 # Each stage prints a banner and its time; the first failure stops the run.
 #

@@ -1,0 +1,62 @@
+# Build time: the whole test suite (scripts/test-all.sh) builds the project three times on
+# two cores, so compile and link time is most of its budget (docs/performance.md, "Test
+# suite time"). Nothing here changes what is compiled, only how fast.
+
+# Precompiled headers (opt-in, OFF by default): json, GoogleTest and Qt's widget headers
+# compiled once per build and shared (REUSE_FROM) by the targets with the same flags.
+# Measured on the CI machine (docs/performance.md, "Test suite time") they do not pay: GCC's
+# precompiled header is a 100-130 MB image whose loading costs about as much CPU time as
+# parsing json.hpp does (2-4 s), and it is loaded by every file, json or not; clang's showed
+# no difference either. Kept so the measurement can be repeated (-DLENSLAB_PCH=ON).
+option(LENSLAB_PCH "Precompile the heavy third-party headers (json, GoogleTest, Qt)" OFF)
+
+set(LENSLAB_PCH_STD <algorithm> <cmath> <cstdint> <functional> <memory> <optional> <sstream>
+    <string> <string_view> <vector>)
+
+# The core library's set: json and the standard headers most files use.
+function(lenslab_precompile_core target)
+    if(LENSLAB_PCH)
+        target_precompile_headers(${target} PRIVATE <nlohmann/json.hpp> ${LENSLAB_PCH_STD})
+    endif()
+endfunction()
+
+# The GoogleTest suites' set: the core set plus gtest.
+function(lenslab_precompile_tests target)
+    if(LENSLAB_PCH)
+        target_precompile_headers(${target} PRIVATE <gtest/gtest.h> <nlohmann/json.hpp> ${LENSLAB_PCH_STD})
+    endif()
+endfunction()
+
+# The editor's set: the Qt headers most of its files use (and <QtTest> for its tests) plus
+# the core set. Unlike the others it pays (every file of the editor includes Qt's widgets:
+# main_window.cpp 24.4 s of CPU without, 20.5 s with), so it has an option of its own, ON.
+# Used by the editor's library and its tests, not by lenslab-gui's main.cpp: GCC takes a
+# precompiled header only with the macros it was made with.
+option(LENSLAB_PCH_QT "Precompile Qt's headers for the editor and its tests" ON)
+set(LENSLAB_PCH_QT_HEADERS <QApplication> <QComboBox> <QDockWidget> <QDoubleSpinBox> <QFormLayout>
+    <QHBoxLayout> <QImage> <QLabel> <QLineEdit> <QMainWindow> <QPainter> <QPushButton>
+    <QSpinBox> <QString> <QTimer> <QVBoxLayout> <QWidget>)
+function(lenslab_precompile_qt target)
+    if(LENSLAB_PCH OR LENSLAB_PCH_QT)
+        target_precompile_headers(${target} PRIVATE ${LENSLAB_PCH_QT_HEADERS} ${ARGN} <nlohmann/json.hpp> ${LENSLAB_PCH_STD})
+    endif()
+endfunction()
+
+# Use another target's precompiled header: same compiler flags, and every macro the header
+# was made with defined the same way (GCC ignores it otherwise; with -Werror, an error).
+function(lenslab_reuse_pch target from)
+    if(LENSLAB_PCH)
+        target_precompile_headers(${target} REUSE_FROM ${from})
+    endif()
+endfunction()
+
+# Linking: lld (Debian package lld, scripts/install-deps.sh) links the sanitized test
+# executables several times faster than GNU ld. Used when the compiler accepts it.
+option(LENSLAB_LLD "Link with lld when it is installed" ON)
+if(LENSLAB_LLD)
+    include(CheckLinkerFlag)
+    check_linker_flag(CXX "-fuse-ld=lld" LENSLAB_HAVE_LLD)
+    if(LENSLAB_HAVE_LLD)
+        add_link_options(-fuse-ld=lld)
+    endif()
+endif()
