@@ -2,7 +2,7 @@
 // The scene file format (docs/scene-format.md): JSON in, Scene out, with errors that name
 // the JSON path and the reason.
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
