@@ -1,108 +1,114 @@
 #include "render/sppm_photons.h"
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 
 #include "accel/photon.h"
-#include "math/rng.h"
 #include "optics/glass.h"
 #include "render/pass_wavelength.h"
-#include "render/photon_emission.h"
-#include "scene/interaction.h"
+#include "render/photon_walk.h"
 
 namespace lenslab {
 
 namespace {
-
-constexpr uint64_t kPhotonStreamBase = uint64_t{1} << 62;
-constexpr int64_t kChunk = 4096;
 
 struct ChunkOut {
     std::vector<PhotonHit> hits;
     std::vector<uint32_t> chains;
 };
 
-void trace_one(const Scene& scene, const PhotonPassSettings& s, const PhotonPlan& plan,
-               int64_t index, Rng& rng, ChunkOut& out) {
-    const PhotonPlan::Photon photon = plan.start(scene, index, rng);
-    const PhotonStart& start = photon.start;
-    if (start.scale == 0.0) return;  // sampled where the light sends nothing
-    const int light = photon.light;
-    Ray ray = start.ray;
-    double power = start.scale;
-    bool dispersed = false;
-    PhotonWavelength kind = PhotonWavelength::All;
-    double lambda = kLineD;
-    const uint32_t chain = static_cast<uint32_t>(out.chains.size());
-    uint16_t chain_length = 0;
-    for (int depth = 0; depth <= s.max_depth; ++depth) {
-        Interaction it;
-        if (!next_interaction(scene, ray, lambda, it)) return;
-        // Only in its stream's part of the light's emission (photon_emission.h).
-        if (depth == 0 && !plan.counts(scene, light, photon.aimed, it.hit.object)) return;
-        if (!dispersed && it.scattering.dispersive) {
-            // From here the path depends on wavelength: take one.
-            dispersed = true;
-            double pdf = s.lambda_pdf * s.pass_share;
-            if (rng.uniform() < s.pass_share) {
-                kind = PhotonWavelength::Pass;
-                lambda = s.lambda_nm;
-            } else {
-                kind = PhotonWavelength::Own;
-                lambda = s.wavelengths->draw(rng.uniform(), pdf);
-                pdf *= 1.0 - s.pass_share;
-            }
-            double f = start.spectrum->eval(lambda) / pdf;
-            for (uint16_t k = 0; k < chain_length; ++k)
-                f *= scene.materials[out.chains[chain + k]].albedo->eval(lambda);
-            power *= f;
-            chain_length = 0;
-            it.scattering = scatter_at(it, ray.direction, lambda);
+// The pass's deposit policy (render/photon_walk.h): a hit at every diffuse surface after the
+// first, and the diffuse event goes on (Russian roulette on the albedo's largest component).
+class PassDeposit {
+public:
+    static constexpr bool kSplitAimed = false;
+
+    PassDeposit(const Scene& scene, const PhotonPassSettings& s, const PhotonPlan::Photon& photon,
+                ChunkOut& out)
+        : m_scene(scene),
+          m_s(s),
+          m_out(out),
+          m_spectrum(photon.start.spectrum),
+          m_light(photon.light),
+          m_power(photon.start.scale),
+          m_chain(static_cast<uint32_t>(out.chains.size())) {}
+
+    double lambda_nm() const { return m_lambda; }
+    bool dispersed() const { return m_kind != PhotonWavelength::All; }
+    void arrive(const Interaction&, const Vec3&, int) const {}
+
+    void disperse(Rng& rng) {
+        double pdf = m_s.lambda_pdf * m_s.pass_share;
+        if (rng.uniform() < m_s.pass_share) {
+            m_kind = PhotonWavelength::Pass;
+            m_lambda = m_s.lambda_nm;
+        } else {
+            m_kind = PhotonWavelength::Own;
+            m_lambda = m_s.wavelengths->draw(rng.uniform(), pdf);
+            pdf *= 1.0 - m_s.pass_share;
         }
-        const Scattering& sc = it.scattering;
-        const Material& m = *it.material;
-        const Vec3& n = it.normal();
-        const Vec3 facing = dot(ray.direction, n) < 0.0 ? n : -n;
-        const bool diffuse = sc.diffuse > 0.0 && !m.color.is_black();
-        if (diffuse && depth > 0) {
-            PhotonHit h{};
-            const Vec3& p = it.point();
-            h.position[0] = static_cast<float>(p.x);
-            h.position[1] = static_cast<float>(p.y);
-            h.position[2] = static_cast<float>(p.z);
-            encode_octahedral(facing, h.normal);
-            h.power = static_cast<float>(power);
-            if (dispersed) {
-                h.lambda_nm = static_cast<float>(lambda);
-            } else {
-                h.chain = chain;
-                h.chain_length = chain_length;
-            }
-            h.light = static_cast<uint16_t>(light);
-            h.wavelength = kind;
-            out.hits.push_back(h);
-        }
-        // One event with the material's weights as probabilities (Russian roulette); the
-        // diffuse bounce survives with the albedo's largest component.
-        const double survive = diffuse_continuation(sc, m);
-        const EventPick event = pick_event(sc, survive, rng.uniform());
-        if (event.diffuse) {
-            power *= sc.diffuse / survive;
-            if (dispersed) {
-                power *= m.albedo->eval(lambda);
-            } else {
-                out.chains.push_back(static_cast<uint32_t>(it.object->material));
-                ++chain_length;
-            }
-            ray = {it.point(), sample_diffuse_direction(facing, rng)};
-            continue;
-        }
-        if (!event.branch) return;  // absorbed
-        ray = {it.point(), event.branch->direction};
+        double f = m_spectrum->eval(m_lambda) / pdf;
+        for (uint16_t k = 0; k < m_chain_length; ++k)
+            f *= m_scene.materials[m_out.chains[m_chain + k]].albedo->eval(m_lambda);
+        m_power *= f;
+        m_chain_length = 0;
     }
-}
+
+    void hit(const Interaction& it, const Vec3& direction, int depth) {
+        if (!(it.scattering.diffuse > 0.0 && !it.material->color.is_black()) || depth == 0) return;
+        PhotonHit h{};
+        const Vec3& p = it.point();
+        h.position[0] = static_cast<float>(p.x);
+        h.position[1] = static_cast<float>(p.y);
+        h.position[2] = static_cast<float>(p.z);
+        encode_octahedral(facing(it, direction), h.normal);
+        h.power = static_cast<float>(m_power);
+        if (dispersed()) {
+            h.lambda_nm = static_cast<float>(m_lambda);
+        } else {
+            h.chain = m_chain;
+            h.chain_length = m_chain_length;
+        }
+        h.light = static_cast<uint16_t>(m_light);
+        h.wavelength = m_kind;
+        m_out.hits.push_back(h);
+    }
+
+    double diffuse_probability(const Interaction& it) const {
+        return diffuse_continuation(it.scattering, *it.material);
+    }
+
+    bool diffuse(const Interaction& it, Ray& ray, double survive, int, Rng& rng) {
+        m_power *= it.scattering.diffuse / survive;
+        if (dispersed()) {
+            m_power *= it.material->albedo->eval(m_lambda);
+        } else {
+            m_out.chains.push_back(static_cast<uint32_t>(it.object->material));
+            ++m_chain_length;
+        }
+        ray = {it.point(), sample_diffuse_direction(facing(it, ray.direction), rng)};
+        return true;
+    }
+
+private:
+    // The surface normal on the side the photon arrives from.
+    static Vec3 facing(const Interaction& it, const Vec3& direction) {
+        const Vec3& n = it.normal();
+        return dot(direction, n) < 0.0 ? n : -n;
+    }
+
+    const Scene& m_scene;
+    const PhotonPassSettings& m_s;
+    ChunkOut& m_out;
+    const Spectrum* m_spectrum;  // of its light
+    int m_light;
+    double m_power;
+    PhotonWavelength m_kind = PhotonWavelength::All;
+    double m_lambda = kLineD;
+    uint32_t m_chain;  // its first diffuse bounce in m_out.chains
+    uint16_t m_chain_length = 0;
+};
 
 }  // namespace
 
@@ -121,20 +127,16 @@ uint64_t photon_pass_bytes(const Scene& scene, const PhotonPassSettings& s) {
 PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s,
                              RenderControl& control) {
     const PhotonPlan plan = photon_pass_plan(scene, s);
-    const int64_t chunks = (plan.total() + kChunk - 1) / kChunk;
-    std::vector<ChunkOut> outs(static_cast<size_t>(chunks));
-    tbb::parallel_for(
-        tbb::blocked_range<int64_t>(0, chunks, 1), [&](const tbb::blocked_range<int64_t>& r) {
-            for (int64_t c = r.begin(); c != r.end(); ++c) {
-                if (control.cancelled()) return;
-                const int64_t first = c * kChunk, last = std::min(plan.total(), first + kChunk);
-                ChunkOut& out = outs[static_cast<size_t>(c)];
-                for (int64_t i = first; i < last; ++i) {
-                    Rng rng(s.seed, kPhotonStreamBase + static_cast<uint64_t>(i));
-                    trace_one(scene, s, plan, i, rng, out);
-                }
-            }
-        });
+    std::vector<ChunkOut> outs(static_cast<size_t>(photon_chunks(plan.total())));
+    for_each_photon_chunk(plan.total(), control, [&](int64_t chunk, int64_t first, int64_t last) {
+        ChunkOut& out = outs[static_cast<size_t>(chunk)];
+        PhotonWalker<PassDeposit> walker(scene, plan, s.max_depth);
+        for (int64_t i = first; i < last; ++i) {
+            walker.trace(i, s.seed, [&](const PhotonPlan::Photon& p) {
+                return PassDeposit(scene, s, p, out);
+            });
+        }
+    });
     PhotonPass pass;
     if (control.cancelled()) return pass;
     // Concatenate in chunk order: the same hits in the same order for any thread count.
