@@ -1,7 +1,5 @@
 #include "render/photon_tracer.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -51,31 +49,37 @@ Photon make_photon(const Vec3& p, const Rgb& power, const Vec3& towards, PhotonK
 // until it meets a dispersive refraction; only there does it draw one wavelength from the
 // light's spectrum and become that wavelength's colour. Scenes without dispersion thus get
 // no colour noise from wavelength sampling.
-class MapDeposit {
-public:
+struct MapDeposit {
     static constexpr bool kSplitAimed = true;
 
-    MapDeposit(const PhotonPlan::Photon& p, const LightSpectrum& ls,
-               const PhotonArrivalFn* on_arrival, std::vector<Photon>* direct = nullptr,
-               std::vector<Photon>* caustic = nullptr)
-        : m_power(ls.colour * p.start.scale),
-          m_spectrum(p.start.spectrum),
-          m_scale(p.start.scale),
-          m_radiant_power(ls.radiant_power * p.start.scale),
-          m_light(p.light),
-          m_aimed(p.aimed),
-          m_on_arrival(on_arrival),
-          m_direct(direct),
-          m_caustic(caustic) {}
+    Rgb power;
+    const Spectrum* spectrum;  // spectral flux shape of its light
+    double scale;              // this photon's share of it
+    double radiant_power;      // what it carries: scale x the spectrum's radiant power
+    int light;
+    bool aimed;
+    const PhotonArrivalFn* on_arrival;
+    std::vector<Photon>* direct;  // where photons go, or nullptr (a detector's walk)
+    std::vector<Photon>* caustic;
+    double lambda_nm = 0;  // 0 until a dispersive refraction picks one
 
-    double lambda_nm() const { return m_lambda_nm > 0 ? m_lambda_nm : kLineD; }
-    bool dispersed() const { return m_lambda_nm != 0; }
-    double scale() const { return m_scale; }
+    MapDeposit(const PhotonPlan::Photon& p, const LightSpectrum& ls, const PhotonArrivalFn* arrival,
+               std::vector<Photon>* direct_list = nullptr,
+               std::vector<Photon>* caustic_list = nullptr)
+        : power(ls.colour * p.start.scale),
+          spectrum(p.start.spectrum),
+          scale(p.start.scale),
+          radiant_power(ls.radiant_power * p.start.scale),
+          light(p.light),
+          aimed(p.aimed),
+          on_arrival(arrival),
+          direct(direct_list),
+          caustic(caustic_list) {}
 
     void arrive(const Interaction& it, const Vec3& direction, int depth) const {
-        if (m_on_arrival) {
-            (*m_on_arrival)(PhotonArrival{&it, direction, m_light, m_aimed, depth, m_spectrum,
-                                          m_scale, m_lambda_nm});
+        if (on_arrival) {
+            (*on_arrival)(
+                PhotonArrival{&it, direction, light, aimed, depth, spectrum, scale, lambda_nm});
         }
     }
 
@@ -84,14 +88,12 @@ public:
     // by the spectrum's value at the drawn wavelength over the histogram's density instead
     // made photons of a line narrower than a bin up to 15 times brighter than their light.)
     void disperse(Rng& rng) {
-        double nm;
-        (void)m_spectrum->sample_wavelength(rng.uniform(), nm);
-        m_power = sample_to_rgb(m_radiant_power, nm, 1.0);
-        m_lambda_nm = nm;
+        (void)spectrum->sample_wavelength(rng.uniform(), lambda_nm);
+        power = sample_to_rgb(radiant_power, lambda_nm, 1.0);
     }
 
     void hit(const Interaction& it, const Vec3& direction, int depth) {
-        if (m_aimed && diffuse_probability(it) > 0.0) store(it, m_power, direction, depth);
+        if (aimed && diffuse_probability(it) > 0.0) store(it, power, direction, depth);
     }
 
     double diffuse_probability(const Interaction& it) const {
@@ -99,35 +101,23 @@ public:
     }
 
     bool diffuse(const Interaction& it, Ray& ray, double p_diffuse, int depth, Rng&) {
-        store(it, m_power * (1.0 / p_diffuse), ray.direction, depth);
+        store(it, power * (1.0 / p_diffuse), ray.direction, depth);
         return false;
     }
 
     void carry(double w) {
-        m_power = m_power * w;
-        m_scale *= w;
-        m_radiant_power *= w;
+        power = power * w;
+        scale *= w;
+        radiant_power *= w;
     }
 
-private:
-    void store(const Interaction& it, const Rgb& power, const Vec3& direction, int depth) {
-        std::vector<Photon>* map = depth == 0 ? m_direct : m_caustic;
+    void store(const Interaction& it, const Rgb& p, const Vec3& direction, int depth) {
+        std::vector<Photon>* map = depth == 0 ? direct : caustic;
         if (map) {
-            map->push_back(make_photon(it.point(), power, -direction,
+            map->push_back(make_photon(it.point(), p, -direction,
                                        depth == 0 ? PhotonKind::Direct : PhotonKind::Caustic));
         }
     }
-
-    Rgb m_power;
-    const Spectrum* m_spectrum;  // spectral flux shape of its light
-    double m_scale;              // this photon's share of it
-    double m_radiant_power;      // what it carries: scale x the spectrum's radiant power
-    double m_lambda_nm = 0;      // 0 until a dispersive refraction picks one
-    int m_light;
-    bool m_aimed;
-    const PhotonArrivalFn* m_on_arrival;
-    std::vector<Photon>* m_direct;  // where photons go, or nullptr (a detector's walk)
-    std::vector<Photon>* m_caustic;
 };
 }  // namespace
 
@@ -177,16 +167,9 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
             });
         }
     });
-    // Concatenated in photon order, direct then caustic (the same maps for any thread
-    // count), chunks in parallel.
-    std::vector<size_t> offset(found.size() + 1, 0);
-    for (size_t c = 0; c < found.size(); ++c) offset[c + 1] = offset[c] + found[c].size();
-    std::vector<Photon> photons(offset.back());
-    tbb::parallel_for(size_t{0}, found.size(), [&](size_t c) {
-        std::copy(found[c].begin(), found[c].end(),
-                  photons.begin() + static_cast<ptrdiff_t>(offset[c]));
-        std::vector<Photon>().swap(found[c]);
-    });
+    // In photon order, direct then caustic.
+    std::vector<size_t> offset;
+    std::vector<Photon> photons = join_chunks(found, offset);
     const auto t1 = std::chrono::steady_clock::now();
     PhotonMap map(std::move(photons), offset[static_cast<size_t>(chunks)]);
     const auto t2 = std::chrono::steady_clock::now();

@@ -4,25 +4,17 @@
 // (render/sppm_photons.h). A photon leaves its light (render/photon_emission.h), meets a
 // surface, and one event is chosen with the material's weights as probabilities (Russian
 // roulette: pick_event); aimed photons may instead split at each surface into all its
-// branches. What a photon carries and what it leaves behind is a deposit policy's:
-//
-//   static constexpr bool kSplitAimed;  aimed photons split (else they play roulette too)
-//   double lambda_nm() const;           wavelength it is traced at (kLineD until dispersed)
-//   bool dispersed() const;             a dispersive refraction picked its wavelength
-//   void arrive(const Interaction&, const Vec3& direction, int depth);
-//                                       it reached a surface; the material has not acted yet
-//   void disperse(Rng&);                its first dispersive refraction: pick a wavelength
-//   void hit(const Interaction&, const Vec3& direction, int depth);
-//                                       at every surface, the material's scattering known
-//   double diffuse_probability(const Interaction&) const;  of the diffuse event in roulette
-//   bool diffuse(const Interaction&, Ray& ray, double probability, int depth, Rng&);
-//                                       roulette chose the diffuse event: false ends the path,
-//                                       true goes on along `ray` (set by the policy)
-//   double scale() const; void carry(double w);  splitting only: its share of the photon's
-//                                       light, and a branch keeping `w` of it
-//
-// Each photon draws from its own random stream (photon_rng), so a photon takes the same path
-// whoever traces it, at any thread count.
+// branches. What a photon carries and leaves behind is a deposit policy's, a class with:
+//   kSplitAimed            (static constexpr bool) aimed photons split, else they play roulette
+//   lambda_nm              (double) its wavelength once dispersed, 0 until then (traced at kLineD)
+//   arrive(it, dir, depth) it reached a surface, the material not acted yet (detectors)
+//   disperse(rng)          its first dispersive refraction: set lambda_nm
+//   hit(it, dir, depth)    at every surface, its scattering known: deposit here, if at all
+//   diffuse_probability(it)  of the diffuse event in roulette
+//   diffuse(it, ray, p, depth, rng)  roulette chose it: false ends the path, true goes on
+//                          along `ray` (set by the policy)
+//   scale, carry(w)        splitting only: its share of its light, and a branch keeping `w`
+// Each photon draws from its own random stream, so it takes the same path whoever traces it.
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -66,6 +58,21 @@ void for_each_photon_chunk(int64_t photons, RenderControl& control, const Body& 
                       });
 }
 
+// Joins the chunks' deposits in chunk order, in parallel, freeing them: the same result at any
+// thread count. `offset[c]` is where chunk c's begin (and `offset.back()` the total).
+template <class T>
+std::vector<T> join_chunks(std::vector<std::vector<T>>& parts, std::vector<size_t>& offset) {
+    offset.assign(parts.size() + 1, 0);
+    for (size_t c = 0; c < parts.size(); ++c) offset[c + 1] = offset[c] + parts[c].size();
+    std::vector<T> out(offset.back());
+    tbb::parallel_for(size_t{0}, parts.size(), [&](size_t c) {
+        std::copy(parts[c].begin(), parts[c].end(),
+                  out.begin() + static_cast<ptrdiff_t>(offset[c]));
+        std::vector<T>().swap(parts[c]);
+    });
+    return out;
+}
+
 template <class Policy>
 class PhotonWalker {
 public:
@@ -93,14 +100,15 @@ private:
     // The next surface, or false; the first surface must be in this stream's part of the
     // light's emission (photon_emission.h).
     bool reach(const Ray& ray, Policy& policy, int depth, Interaction& it) {
-        if (!next_interaction(m_scene, ray, policy.lambda_nm(), it)) return false;
+        const double nm = policy.lambda_nm > 0 ? policy.lambda_nm : kLineD;
+        if (!next_interaction(m_scene, ray, nm, it)) return false;
         if (depth == 0 && !m_plan.counts(m_scene, m_photon->light, m_photon->aimed, it.hit.object))
             return false;
         policy.arrive(it, ray.direction, depth);
-        if (!policy.dispersed() && it.scattering.dispersive) {
+        if (policy.lambda_nm == 0 && it.scattering.dispersive) {
             // From here the path depends on wavelength: take one.
             policy.disperse(*m_rng);
-            it.scattering = scatter_at(it, ray.direction, policy.lambda_nm());
+            it.scattering = scatter_at(it, ray.direction, policy.lambda_nm);
         }
         policy.hit(it, ray.direction, depth);
         return true;
@@ -137,7 +145,7 @@ private:
             const Scattering& s = it.scattering;
             for (int i = 0; i < s.count; ++i) {
                 double w = s.branches[i].weight;
-                const double share = w * p.policy.scale() / m_photon->start.scale;
+                const double share = w * p.policy.scale / m_photon->start.scale;
                 if (share < kSplitFloor) {
                     // Survives with probability share / floor, carrying the floor.
                     if (m_rng->uniform() * kSplitFloor >= share) continue;

@@ -13,46 +13,40 @@ namespace lenslab {
 
 namespace {
 
-struct ChunkOut {
-    std::vector<PhotonHit> hits;
-    std::vector<uint32_t> chains;
-};
-
 // The pass's deposit policy (render/photon_walk.h): a hit at every diffuse surface after the
 // first, and the diffuse event goes on (Russian roulette on the albedo's largest component).
-class PassDeposit {
-public:
+struct PassDeposit {
     static constexpr bool kSplitAimed = false;
 
-    PassDeposit(const Scene& scene, const PhotonPassSettings& s, const PhotonPlan::Photon& photon,
-                ChunkOut& out)
-        : m_scene(scene),
-          m_s(s),
-          m_out(out),
-          m_spectrum(photon.start.spectrum),
-          m_light(photon.light),
-          m_power(photon.start.scale),
-          m_chain(static_cast<uint32_t>(out.chains.size())) {}
+    const Scene& scene;
+    const PhotonPassSettings& s;
+    std::vector<PhotonHit>& hits;  // the chunk's
+    std::vector<uint32_t>& chains;
+    const Spectrum* spectrum;  // of its light
+    int light;
+    double power;
+    uint32_t chain;  // its first diffuse bounce in `chains`
+    uint16_t chain_length = 0;
+    PhotonWavelength kind = PhotonWavelength::All;
+    double lambda_nm = 0;  // 0 until dispersed
 
-    double lambda_nm() const { return m_lambda; }
-    bool dispersed() const { return m_kind != PhotonWavelength::All; }
     void arrive(const Interaction&, const Vec3&, int) const {}
 
     void disperse(Rng& rng) {
-        double pdf = m_s.lambda_pdf * m_s.pass_share;
-        if (rng.uniform() < m_s.pass_share) {
-            m_kind = PhotonWavelength::Pass;
-            m_lambda = m_s.lambda_nm;
+        double pdf = s.lambda_pdf * s.pass_share;
+        if (rng.uniform() < s.pass_share) {
+            kind = PhotonWavelength::Pass;
+            lambda_nm = s.lambda_nm;
         } else {
-            m_kind = PhotonWavelength::Own;
-            m_lambda = m_s.wavelengths->draw(rng.uniform(), pdf);
-            pdf *= 1.0 - m_s.pass_share;
+            kind = PhotonWavelength::Own;
+            lambda_nm = s.wavelengths->draw(rng.uniform(), pdf);
+            pdf *= 1.0 - s.pass_share;
         }
-        double f = m_spectrum->eval(m_lambda) / pdf;
-        for (uint16_t k = 0; k < m_chain_length; ++k)
-            f *= m_scene.materials[m_out.chains[m_chain + k]].albedo->eval(m_lambda);
-        m_power *= f;
-        m_chain_length = 0;
+        double f = spectrum->eval(lambda_nm) / pdf;
+        for (uint16_t k = 0; k < chain_length; ++k)
+            f *= scene.materials[chains[chain + k]].albedo->eval(lambda_nm);
+        power *= f;
+        chain_length = 0;
     }
 
     void hit(const Interaction& it, const Vec3& direction, int depth) {
@@ -63,16 +57,16 @@ public:
         h.position[1] = static_cast<float>(p.y);
         h.position[2] = static_cast<float>(p.z);
         encode_octahedral(facing(it, direction), h.normal);
-        h.power = static_cast<float>(m_power);
-        if (dispersed()) {
-            h.lambda_nm = static_cast<float>(m_lambda);
+        h.power = static_cast<float>(power);
+        if (lambda_nm > 0) {
+            h.lambda_nm = static_cast<float>(lambda_nm);
         } else {
-            h.chain = m_chain;
-            h.chain_length = m_chain_length;
+            h.chain = chain;
+            h.chain_length = chain_length;
         }
-        h.light = static_cast<uint16_t>(m_light);
-        h.wavelength = m_kind;
-        m_out.hits.push_back(h);
+        h.light = static_cast<uint16_t>(light);
+        h.wavelength = kind;
+        hits.push_back(h);
     }
 
     double diffuse_probability(const Interaction& it) const {
@@ -80,34 +74,22 @@ public:
     }
 
     bool diffuse(const Interaction& it, Ray& ray, double survive, int, Rng& rng) {
-        m_power *= it.scattering.diffuse / survive;
-        if (dispersed()) {
-            m_power *= it.material->albedo->eval(m_lambda);
+        power *= it.scattering.diffuse / survive;
+        if (lambda_nm > 0) {
+            power *= it.material->albedo->eval(lambda_nm);
         } else {
-            m_out.chains.push_back(static_cast<uint32_t>(it.object->material));
-            ++m_chain_length;
+            chains.push_back(static_cast<uint32_t>(it.object->material));
+            ++chain_length;
         }
         ray = {it.point(), sample_diffuse_direction(facing(it, ray.direction), rng)};
         return true;
     }
 
-private:
     // The surface normal on the side the photon arrives from.
     static Vec3 facing(const Interaction& it, const Vec3& direction) {
         const Vec3& n = it.normal();
         return dot(direction, n) < 0.0 ? n : -n;
     }
-
-    const Scene& m_scene;
-    const PhotonPassSettings& m_s;
-    ChunkOut& m_out;
-    const Spectrum* m_spectrum;  // of its light
-    int m_light;
-    double m_power;
-    PhotonWavelength m_kind = PhotonWavelength::All;
-    double m_lambda = kLineD;
-    uint32_t m_chain;  // its first diffuse bounce in m_out.chains
-    uint16_t m_chain_length = 0;
 };
 
 }  // namespace
@@ -127,36 +109,35 @@ uint64_t photon_pass_bytes(const Scene& scene, const PhotonPassSettings& s) {
 PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s,
                              RenderControl& control) {
     const PhotonPlan plan = photon_pass_plan(scene, s);
-    std::vector<ChunkOut> outs(static_cast<size_t>(photon_chunks(plan.total())));
+    const size_t chunks = static_cast<size_t>(photon_chunks(plan.total()));
+    std::vector<std::vector<PhotonHit>> hits(chunks);
+    std::vector<std::vector<uint32_t>> chains(chunks);
     for_each_photon_chunk(plan.total(), control, [&](int64_t chunk, int64_t first, int64_t last) {
-        ChunkOut& out = outs[static_cast<size_t>(chunk)];
+        const size_t c = static_cast<size_t>(chunk);
         PhotonWalker<PassDeposit> walker(scene, plan, s.max_depth);
         for (int64_t i = first; i < last; ++i) {
             walker.trace(i, s.seed, [&](const PhotonPlan::Photon& p) {
-                return PassDeposit(scene, s, p, out);
+                return PassDeposit{scene,
+                                   s,
+                                   hits[c],
+                                   chains[c],
+                                   p.start.spectrum,
+                                   p.light,
+                                   p.start.scale,
+                                   static_cast<uint32_t>(chains[c].size())};
             });
         }
     });
     PhotonPass pass;
     if (control.cancelled()) return pass;
-    // Concatenate in chunk order: the same hits in the same order for any thread count.
-    std::vector<size_t> hit_at(outs.size() + 1, 0), chain_at(outs.size() + 1, 0);
-    for (size_t c = 0; c < outs.size(); ++c) {
-        hit_at[c + 1] = hit_at[c] + outs[c].hits.size();
-        chain_at[c + 1] = chain_at[c] + outs[c].chains.size();
-    }
-    pass.hits.resize(hit_at.back());
-    pass.chains.resize(chain_at.back());
-    tbb::parallel_for(size_t{0}, outs.size(), [&](size_t c) {
-        const uint32_t offset = static_cast<uint32_t>(chain_at[c]);
-        for (size_t i = 0; i < outs[c].hits.size(); ++i) {
-            PhotonHit h = outs[c].hits[i];
-            if (h.wavelength == PhotonWavelength::All) h.chain += offset;
-            pass.hits[hit_at[c] + i] = h;
-        }
-        std::copy(outs[c].chains.begin(), outs[c].chains.end(),
-                  pass.chains.begin() + static_cast<ptrdiff_t>(chain_at[c]));
+    std::vector<size_t> chain_at, hit_at;
+    pass.chains = join_chunks(chains, chain_at);
+    tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {  // chains counted from the pass's first
+        for (PhotonHit& h : hits[c])
+            if (h.wavelength == PhotonWavelength::All)
+                h.chain += static_cast<uint32_t>(chain_at[c]);
     });
+    pass.hits = join_chunks(hits, hit_at);
     pass.emitted = plan.total();
     pass.aimed = plan.aimed_total();
     return pass;
