@@ -7,7 +7,8 @@
 // (weighted; Russian roulette only below kSplitFloor of a photon's power), so a caustic
 // photon rarely carries more than its share and the faint reflected caustics come at low
 // noise. A photon's power is its light's divided by the photons that light sends in its
-// stream, so the estimate does not change with the counts.
+// stream, so the estimate does not change with the counts. The walk itself is the shared
+// photon tracer's (render/photon_walk.h); this file is its photon-map deposit policy.
 
 #include <cstdint>
 #include <functional>
@@ -29,10 +30,6 @@ struct PhotonTracingSettings {
     int64_t caustic_photons_per_light = 0;  // aimed stream, per light on average (0: none)
     bool aim = true;                        // false: no aimed stream, whatever its count
 };
-
-// Branches of an aimed photon weaker than this share of its power play Russian roulette
-// (surviving at this share), so splitting stays bounded.
-inline constexpr double kSplitFloor = 0.5;
 
 struct PhotonTracingStats {
     int64_t emitted = 0;  // both streams

@@ -1,0 +1,175 @@
+#pragma once
+// The photon tracer shared by the photon map (render/photon_tracer.h), the detectors (through
+// trace_photon_path) and the photon pass of stochastic progressive photon mapping
+// (render/sppm_photons.h). A photon leaves its light (render/photon_emission.h), meets a
+// surface, and one event is chosen with the material's weights as probabilities (Russian
+// roulette: pick_event); aimed photons may instead split at each surface into all its
+// branches. What a photon carries and leaves behind is a deposit policy's, a class with:
+//   kSplitAimed            (static constexpr bool) aimed photons split, else they play roulette
+//   lambda_nm              (double) its wavelength once dispersed, 0 until then (traced at kLineD)
+//   arrive(it, dir, depth) it reached a surface, the material not acted yet (detectors)
+//   disperse(rng)          its first dispersive refraction: set lambda_nm
+//   hit(it, dir, depth)    at every surface, its scattering known: deposit here, if at all
+//   diffuse_probability(it)  of the diffuse event in roulette
+//   diffuse(it, ray, p, depth, rng)  roulette chose it: false ends the path, true goes on
+//                          along `ray` (set by the policy)
+//   scale, carry(w)        splitting only: its share of its light, and a branch keeping `w`
+// Each photon draws from its own random stream, so it takes the same path whoever traces it.
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "math/rng.h"
+#include "render/photon_emission.h"
+#include "render/render_control.h"
+#include "scene/interaction.h"
+#include "scene/scattering.h"
+#include "scene/scene.h"
+
+namespace lenslab {
+
+// Branches of an aimed photon weaker than this share of its power play Russian roulette
+// (surviving at this share), so splitting stays bounded.
+inline constexpr double kSplitFloor = 0.5;
+
+// Photons per parallel task; the users keep each chunk's deposits apart and join them in
+// chunk order, so the result does not depend on the threads.
+inline constexpr int64_t kPhotonChunk = 4096;
+
+inline int64_t photon_chunks(int64_t photons) {
+    return (photons + kPhotonChunk - 1) / kPhotonChunk;
+}
+
+// Calls `body(chunk, first, last)` for each chunk of photons [first, last) of `photons`, in
+// parallel; chunks not begun when `control` is cancelled are skipped.
+template <class Body>
+void for_each_photon_chunk(int64_t photons, RenderControl& control, const Body& body) {
+    tbb::parallel_for(tbb::blocked_range<int64_t>(0, photon_chunks(photons), 1),
+                      [&](const tbb::blocked_range<int64_t>& r) {
+                          for (int64_t chunk = r.begin(); chunk != r.end(); ++chunk) {
+                              if (control.cancelled()) return;
+                              const int64_t first = chunk * kPhotonChunk;
+                              body(chunk, first, std::min(photons, first + kPhotonChunk));
+                          }
+                      });
+}
+
+// Joins the chunks' deposits in chunk order, in parallel, freeing them: the same result at any
+// thread count. `offset[c]` is where chunk c's begin (and `offset.back()` the total).
+template <class T>
+std::vector<T> join_chunks(std::vector<std::vector<T>>& parts, std::vector<size_t>& offset) {
+    offset.assign(parts.size() + 1, 0);
+    for (size_t c = 0; c < parts.size(); ++c) offset[c + 1] = offset[c] + parts[c].size();
+    std::vector<T> out(offset.back());
+    tbb::parallel_for(size_t{0}, parts.size(), [&](size_t c) {
+        std::copy(parts[c].begin(), parts[c].end(),
+                  out.begin() + static_cast<ptrdiff_t>(offset[c]));
+        std::vector<T>().swap(parts[c]);
+    });
+    return out;
+}
+
+template <class Policy>
+class PhotonWalker {
+public:
+    PhotonWalker(const Scene& scene, const PhotonPlan& plan, int max_depth)
+        : m_scene(scene), m_plan(plan), m_max_depth(max_depth) {}
+
+    // Traces photon `index` of the plan with its own random stream; `make_policy(photon)`
+    // gives the policy that carries it.
+    template <class MakePolicy>
+    void trace(int64_t index, uint64_t seed, const MakePolicy& make_policy) {
+        // Random streams for photons are offset from the per-pixel camera streams.
+        Rng rng(seed, (uint64_t{1} << 62) + static_cast<uint64_t>(index));
+        const PhotonPlan::Photon photon = m_plan.start(m_scene, index, rng);
+        if (photon.start.scale == 0.0) return;  // sampled where the light sends nothing
+        m_photon = &photon;
+        m_rng = &rng;
+        Policy policy = make_policy(photon);
+        if constexpr (Policy::kSplitAimed) {
+            if (photon.aimed) return split(policy, photon.start.ray);
+        }
+        roulette(policy, photon.start.ray);
+    }
+
+private:
+    // The next surface, or false; the first surface must be in this stream's part of the
+    // light's emission (photon_emission.h).
+    bool reach(const Ray& ray, Policy& policy, int depth, Interaction& it) {
+        const double nm = policy.lambda_nm > 0 ? policy.lambda_nm : kLineD;
+        if (!next_interaction(m_scene, ray, nm, it)) return false;
+        if (depth == 0 && !m_plan.counts(m_scene, m_photon->light, m_photon->aimed, it.hit.object))
+            return false;
+        policy.arrive(it, ray.direction, depth);
+        if (policy.lambda_nm == 0 && it.scattering.dispersive) {
+            // From here the path depends on wavelength: take one.
+            policy.disperse(*m_rng);
+            it.scattering = scatter_at(it, ray.direction, policy.lambda_nm);
+        }
+        policy.hit(it, ray.direction, depth);
+        return true;
+    }
+
+    // Russian roulette picks one event per surface: the diffuse one with the policy's
+    // probability, a specular branch with its weight (its power unchanged), or absorption.
+    void roulette(Policy& policy, Ray ray) {
+        for (int depth = 0; depth <= m_max_depth; ++depth) {
+            Interaction it;
+            if (!reach(ray, policy, depth, it)) return;
+            const double p = policy.diffuse_probability(it);
+            const EventPick event = pick_event(it.scattering, p, m_rng->uniform());
+            if (event.diffuse) {
+                if (!policy.diffuse(it, ray, p, depth, *m_rng)) return;
+                continue;
+            }
+            if (!event.branch) return;  // absorbed (or the diffuse share of a black surface)
+            ray = {it.point(), event.branch->direction};
+        }
+    }
+
+    // Every event at once: the policy's hit sees the diffuse share and each specular branch
+    // goes on with its weight. Branches wait on a list, not the call stack: a mirror
+    // corridor is a thousand deep.
+    void split(const Policy& policy, const Ray& ray) {
+        m_pending.clear();
+        m_pending.push_back({policy, ray, 0});
+        while (!m_pending.empty()) {
+            Pending p = m_pending.back();
+            m_pending.pop_back();
+            Interaction it;
+            if (p.depth > m_max_depth || !reach(p.ray, p.policy, p.depth, it)) continue;
+            const Scattering& s = it.scattering;
+            for (int i = 0; i < s.count; ++i) {
+                double w = s.branches[i].weight;
+                const double share = w * p.policy.scale / m_photon->start.scale;
+                if (share < kSplitFloor) {
+                    // Survives with probability share / floor, carrying the floor.
+                    if (m_rng->uniform() * kSplitFloor >= share) continue;
+                    w *= kSplitFloor / share;
+                }
+                Policy branch = p.policy;
+                branch.carry(w);
+                m_pending.push_back({branch, {it.point(), s.branches[i].direction}, p.depth + 1});
+            }
+        }
+    }
+
+    struct Pending {
+        Policy policy;
+        Ray ray;
+        int depth;
+    };
+
+    const Scene& m_scene;
+    const PhotonPlan& m_plan;
+    int m_max_depth;
+    const PhotonPlan::Photon* m_photon = nullptr;  // the one being traced
+    Rng* m_rng = nullptr;                          // its stream
+    std::vector<Pending> m_pending;
+};
+
+}  // namespace lenslab
