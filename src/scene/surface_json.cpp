@@ -68,7 +68,7 @@ std::shared_ptr<const LensSurface> read_lens_surface(const nlohmann::json& j,
     for (const char* key : {"radius", "k", "coefficients", "formula"}) {
         if (r.has(key) && std::find(takes.begin(), takes.end(), key) == takes.end()) {
             throw SceneError(r.child_path(key),
-                             "a " + shape + " surface has no " + key +
+                             with_article(shape) + " surface has no " + key +
                                  (takes.empty() ? "" : " (it takes " + joined(takes) + ")"));
         }
     }
