@@ -161,8 +161,11 @@ Formula::Formula(std::string text, std::vector<std::string> names, const std::st
         char* end = nullptr;
         const double v = std::strtod(begin, &end);
         if (std::isinf(v)) {
-            throw FormulaError(int(i) + 1, describe(int(i) + 1, "number out of range '" +
-                                                                    std::string(begin, end) + "'"));
+            throw FormulaError(
+                int(i) + 1,
+                describe(int(i) + 1, "number out of range '" +
+                                         std::string(begin, static_cast<size_t>(end - begin)) +
+                                         "'"));
         }
         i += static_cast<size_t>(end - begin);
     }
