@@ -19,7 +19,9 @@ void check_every_option(CLI::App& app) {
         const std::string type = option->get_type_name();
         const bool number =
             type.find("FLOAT") != std::string::npos || type.find("NUMBER") != std::string::npos;
-        option->check(CLI::Validator(
+        // Added in front (transform), so it answers before the option's own checks: NaN and
+        // -inf would otherwise meet a Range's "not in range 0 to 1.79e308" first.
+        option->transform(CLI::Validator(
             [number](std::string& text) -> std::string {
                 if (text.empty()) return "must not be empty";
                 double v = 0;
