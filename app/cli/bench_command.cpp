@@ -9,6 +9,7 @@
 
 #include "bench/report_benchmark.h"
 #include "bench/sppm_convergence.h"
+#include "child_process.h"
 #include "commands.h"
 #include "render/image_io.h"
 #include "render/integrator_names.h"
@@ -35,12 +36,19 @@ struct ConvergenceArgs {
     std::vector<int> region;
 };
 
-bool have_gnuplot() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+// Runs gnuplot on `script`, a file in `dir`, with `dir` as its working folder: no shell, and
+// the scripts name their files relative to `dir`, so no path is quoted into a command line
+// or a script. False when gnuplot is not installed or fails.
+bool run_gnuplot(const std::filesystem::path& dir, const std::string& script) {
+    const std::string gnuplot = find_on_path("gnuplot");
+    if (gnuplot.empty()) return false;
+    const ChildResult r = run_child({gnuplot, script}, dir, dir / "gnuplot.log");
+    return r.exited && r.exit_code == 0;
+}
 
 // Error against time (sppm and path) and sppm's error against passes, log-log.
 bool plot_convergence(const std::filesystem::path& dir, const ConvergenceResult& r) {
-    const auto data = dir / "convergence.dat";
-    std::ofstream dat(data);
+    std::ostringstream dat;
     for (const std::string_view integrator : {integrators::kSppm, integrators::kPath}) {
         dat << "# " << integrator << ": amount seconds block_error rms_error\n";
         for (const ConvergencePoint& p : r.points) {
@@ -50,15 +58,12 @@ bool plot_convergence(const std::filesystem::path& dir, const ConvergenceResult&
         }
         dat << "\n\n";
     }
-    dat.close();
-    const std::string d = "'" + data.string() + "'";
-    const auto script = dir / "convergence.gp";
-    std::ofstream gp(script);
+    write_text_atomically((dir / "convergence.dat").string(), dat.str());
+    const std::string d = "'convergence.dat'";
+    std::ostringstream gp;
     gp << "set terminal pngcairo size 900,600\nset key top right\nset grid\nset logscale xy\n"
           "set ylabel 'error against the path-traced reference'\n"
-          "set output '"
-       << (dir / "convergence_time.png").string()
-       << "'\n"
+          "set output 'convergence_time.png'\n"
           "set title 'Error against rendering time (mean over 8x8-pixel blocks of the relative "
           "error)'\n"
           "set xlabel 'seconds'\n"
@@ -67,16 +72,13 @@ bool plot_convergence(const std::filesystem::path& dir, const ConvergenceResult&
        << " index 1 using 2:3 with linespoints lw 2 title 'path (samples per pixel)', " << d
        << " index 0 using 2:4 with linespoints dt 2 lc 1 title 'sppm, RMS per pixel', " << d
        << " index 1 using 2:4 with linespoints dt 2 lc 2 title 'path, RMS per pixel'\n"
-          "set output '"
-       << (dir / "convergence_passes.png").string()
-       << "'\n"
+          "set output 'convergence_passes.png'\n"
           "set title 'sppm: error against passes'\nset xlabel 'passes'\n"
           "plot "
        << d << " index 0 using 1:3 with linespoints lw 2 title 'mean block error', " << d
        << " index 0 using 1:4 with linespoints lw 2 title 'RMS per pixel'\n";
-    gp.close();
-    if (!have_gnuplot()) return false;
-    return std::system(("gnuplot '" + script.string() + "'").c_str()) == 0;
+    write_text_atomically((dir / "convergence.gp").string(), gp.str());
+    return run_gnuplot(dir, "convergence.gp");
 }
 
 int run_convergence_bench(const ConvergenceArgs& a) {
@@ -89,7 +91,7 @@ int run_convergence_bench(const ConvergenceArgs& a) {
     std::filesystem::create_directories(dir);
     const ConvergenceResult r = run_convergence(
         scene, settings, [](const std::string& line) { std::cerr << line << "\n"; });
-    std::ofstream(dir / "convergence.csv") << convergence_csv(r);
+    write_text_atomically((dir / "convergence.csv").string(), convergence_csv(r));
     write_image(r.reference, (dir / "reference.png").string());
     write_image(r.sppm_last, (dir / "sppm.png").string());
     const bool plotted = plot_convergence(dir, r);
@@ -120,7 +122,7 @@ bool plot(const std::filesystem::path& dir, const ReportBenchmarkSettings& s,
     }
     write_text_atomically(data.string(), dat.str());
     const auto script = dir / "plots.gp";
-    const std::string d = "'" + data.string() + "'";
+    const std::string d = "'plot_data.dat'";
     // gnuplot draws into temporary files, renamed into place once it has succeeded.
     const auto build_png = dir / "build_time.png", render_png = dir / "render_time.png";
     const std::string build_tmp = temporary_path_for(build_png.string());
@@ -129,14 +131,14 @@ bool plot(const std::filesystem::path& dir, const ReportBenchmarkSettings& s,
     gp << "set terminal pngcairo size 900,600\nset key top left\nset grid\nset logscale y\n"
           "set xlabel 'photons per light'\nset ylabel 'seconds'\n"
           "set output '"
-       << build_tmp
+       << std::filesystem::path(build_tmp).filename().string()
        << "'\n"
           "set title 'Photon tracing + map build time (report Table 4.1, Figure 4.2)'\n"
           "plot "
        << d << " index 0 using 1:2 with linespoints lw 2 title 'lenslab', " << d
        << " index 0 using 1:3 with linespoints dt 2 title 'report'\n"
           "set output '"
-       << render_tmp
+       << std::filesystem::path(render_tmp).filename().string()
        << "'\n"
           "set title 'Render time against photons per light, per gather radius (report Table 4.2, "
           "Figure 4.3)'\n"
@@ -149,8 +151,7 @@ bool plot(const std::filesystem::path& dir, const ReportBenchmarkSettings& s,
     }
     gp << "\nunset output\n";
     write_text_atomically(script.string(), gp.str());
-    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) return false;
-    const bool drawn = std::system(("gnuplot '" + script.string() + "'").c_str()) == 0;
+    const bool drawn = run_gnuplot(dir, "plots.gp");
     std::error_code ec;
     if (drawn) {
         std::filesystem::rename(build_tmp, build_png, ec);
@@ -196,7 +197,7 @@ Action add_bench_command(CLI::App& app) {
     report->add_option("--photons", s.photons, "Photons per light to measure")
         ->delimiter(',')
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int64_t>())
+        ->check(whole_number<int64_t>())
         ->check(CLI::Range(int64_t{1}, int64_t{1} << 36));
     report->add_option("--radii", s.radii, "Gather radii to measure")
         ->delimiter(',')
@@ -204,22 +205,22 @@ Action add_bench_command(CLI::App& app) {
         ->check(CLI::PositiveNumber);
     report->add_option("--width", s.width, "Image width")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, kMaxImageSide));
     report->add_option("--height", s.height, "Image height")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, kMaxImageSide));
     report->add_option("--spp", s.spp, "Samples per pixel")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, 1 << 16));
     report->add_option("--repeats", s.repeats, "Runs per timing (the median is kept)")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, 100));
     report->add_option("--threads", s.threads, "Worker threads (default: all cores)")
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, 1024));
 
     auto conv = std::make_shared<ConvergenceArgs>();
@@ -234,33 +235,33 @@ Action add_bench_command(CLI::App& app) {
     ConvergenceSettings& c = conv->settings;
     sppm->add_option("--width", c.width, "Image width")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(8, 16384));
     sppm->add_option("--height", c.height, "Image height")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(8, 16384));
     sppm->add_option("--reference-spp", c.reference_spp,
                      "Samples per pixel of the path-traced reference")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, 1 << 24));
     sppm->add_option("--passes", c.passes, "sppm pass counts to measure at")
         ->delimiter(',')
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, 1 << 20));
     sppm->add_option("--path-spp", c.path_spp, "Path-tracing sample counts to compare with")
         ->delimiter(',')
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, 1 << 20));
     sppm->add_option("--pass-photons", conv->pass_photons,
                      "Photons per light in each sppm pass (default: the scene's)")
-        ->check(CLI::TypeValidator<int64_t>())
+        ->check(whole_number<int64_t>())
         ->check(CLI::Range(int64_t{1}, int64_t{1} << 30));
     sppm->add_option("--threads", c.threads, "Worker threads (default: all cores)")
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, 1024));
     sppm->add_option("--aim-photons", conv->aim_photons,
                      "on: aim caustic photons at the glass (default: the scene's); off: uniform")

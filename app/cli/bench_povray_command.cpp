@@ -397,7 +397,7 @@ Action add_bench_povray_command(CLI::App& bench) {
     cmd->add_option("--photons", args->photons,
                     "Photons: POV-Ray's PhotonCount, lenslab's --caustic-photons")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int64_t>())
+        ->check(whole_number<int64_t>())
         ->check(CLI::Range(int64_t{1}, int64_t{1} << 32));
     cmd->add_option("--radius", args->radius, "Gather radius of both")
         ->capture_default_str()
@@ -406,23 +406,23 @@ Action add_bench_povray_command(CLI::App& bench) {
            "--gather-max", args->gather_max,
            "Most photons per estimate: POV-Ray's GatherMax, lenslab's --max-photons-per-estimate")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, 1000000));
     cmd->add_option("--repeats", args->repeats, "Runs of each (the median wall time is kept)")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, 100));
     cmd->add_option("--threads", args->threads, "Render threads of both")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, 1024));
     cmd->add_option("--width", args->width, "Image width")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(16, kMaxImageSide));
     cmd->add_option("--height", args->height, "Image height")
         ->capture_default_str()
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(16, kMaxImageSide));
     return [args] {
         try {

@@ -4,10 +4,24 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
 
 namespace lenslab::cli {
 
 using Action = std::function<int()>;
+
+// The check of a whole-number option: "must be a whole number, got '1.5'" (CLI11's own
+// TypeValidator says "Failed parsing 1.5 as a INT"). The help still shows the type as INT.
+template <class T>
+CLI::Validator whole_number() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            T value{};
+            if (CLI::detail::lexical_cast(text, value)) return "";
+            return "must be a whole number, got '" + text + "'";
+        },
+        CLI::detail::type_name<T>());
+}
 
 Action add_render_command(CLI::App& app);
 Action add_trace_command(CLI::App& app);

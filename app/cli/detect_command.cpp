@@ -121,7 +121,7 @@ Action add_detect_command(CLI::App& app) {
     cmd->add_option("-o,--output", args->output, "Folder for <detector>.csv, .exr and .png")
         ->capture_default_str();
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, 1024));
     cmd->add_flag("--log", args->log, "Colour the PNG on a log scale (4 decades below the peak)");
     cmd->add_flag("--json", args->json, "Print the summary as JSON");

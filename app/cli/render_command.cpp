@@ -162,7 +162,7 @@ Action add_render_command(CLI::App& app) {
     cmd->add_option("-o,--output", args->output, "Output image: .png (sRGB) or .exr (linear)")
         ->capture_default_str();
     cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(1, 1024));
     cmd->add_option("--exposure", args->exposure, "Exposure in stops applied before writing")
         ->capture_default_str()

@@ -64,7 +64,12 @@ CLI::Validator declared_check(const ParamSpec& p) {
     return CLI::Validator(
         [&p](std::string& text) -> std::string {
             const std::optional<json> v = value_of(p, text);
-            if (!v) return "must be " + type_name(p) + ", got '" + text + "'";
+            if (!v) {
+                const char* kind = p.kind == ParamKind::WholeNumber ? "a whole number"
+                                   : p.kind == ParamKind::Boolean   ? "on or off"
+                                                                    : "a number";
+                return std::string("must be ") + kind + ", got '" + text + "'";
+            }
             std::optional<std::string> problem;
             if (v->is_number()) problem = range_problem(p, v->get<double>());
             if (p.kind == ParamKind::Choice) problem = choice_problem(p, text);

@@ -55,7 +55,7 @@ Action add_trace_command(CLI::App& app) {
         ->expected(3);
     cmd->add_option("--max-depth", args->options.max_depth,
                     "Specular bounces followed along any one path")
-        ->check(CLI::TypeValidator<int>())
+        ->check(whole_number<int>())
         ->check(CLI::Range(0, 1000))
         ->capture_default_str();
     cmd->add_option("--min-weight", args->options.min_weight,

@@ -132,19 +132,37 @@ void DetectorDock::measure() {
     // The worker reads its own copy of the scene; the result comes back queued to this
     // object (dropped if the dock is gone; the destructor joins first).
     const int generation = ++m_generation;
-    m_worker = std::thread([this, scene = m_document->scene(), settings, control = m_control.get(),
-                            generation] {
-        auto result =
-            std::make_shared<DetectionResult>(measure_detectors(scene, settings, *control));
-        QMetaObject::invokeMethod(
-            this, [this, result, generation] { finish(result, generation); }, Qt::QueuedConnection);
-    });
+    m_worker = std::thread(
+        [this, scene = m_document->scene(), settings, control = m_control.get(), generation] {
+            // An exception must not leave the thread (it would end the program): it is shown
+            // in the dock instead (out of memory for the photons, a bug).
+            std::shared_ptr<DetectionResult> result;
+            std::string error;
+            try {
+                result =
+                    std::make_shared<DetectionResult>(measure_detectors(scene, settings, *control));
+            } catch (const std::exception& e) {
+                error = e.what();
+            } catch (...) {
+                error = "unknown error";
+            }
+            QMetaObject::invokeMethod(
+                this, [this, result, error, generation] { finish(result, error, generation); },
+                Qt::QueuedConnection);
+        });
 }
 
-void DetectorDock::finish(std::shared_ptr<DetectionResult> result, int generation) {
+void DetectorDock::finish(std::shared_ptr<DetectionResult> result, const std::string& error,
+                          int generation) {
     if (generation != m_generation) return;  // stopped or superseded: already joined
     if (m_worker.joinable()) m_worker.join();
     m_measure->setText(tr("Measure"));
+    if (!result) {
+        m_result.reset();
+        refresh();
+        m_summary->setText(tr("Measuring failed: %1").arg(QString::fromStdString(error)));
+        return;
+    }
     if (result->cancelled) {
         refresh();
         return;

@@ -13,6 +13,7 @@
 #include <atomic>
 #include <memory>
 #include <optional>
+#include <string>
 #include <thread>
 
 #include "analysis/detector.h"
@@ -52,7 +53,8 @@ protected:
 private:
     void refresh();
     void show_image();
-    void finish(std::shared_ptr<DetectionResult> result, int generation);
+    // `result` is null when measuring threw; `error` then says why.
+    void finish(std::shared_ptr<DetectionResult> result, const std::string& error, int generation);
     void stop_worker();
 
     SceneDocument* m_document;

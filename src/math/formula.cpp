@@ -4,7 +4,9 @@
 #include <oneapi/tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <regex>
@@ -145,6 +147,27 @@ Formula::Formula(std::string text, std::vector<std::string> names, const std::st
                 describe(int(i) + 1,
                          "'=' assigns; a formula cannot (for a comparison write '==')"));
         }
+    }
+    // A literal past double's range (1e999) would reach muparser as "1" and a variable "e999".
+    for (size_t i = 0; i < m_text.size(); ++i) {
+        const auto is_name_char = [](char c) {
+            return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
+        };
+        const bool starts_number = std::isdigit(static_cast<unsigned char>(m_text[i])) ||
+                                   (m_text[i] == '.' && i + 1 < m_text.size() &&
+                                    std::isdigit(static_cast<unsigned char>(m_text[i + 1])));
+        if (!starts_number || (i > 0 && is_name_char(m_text[i - 1]))) continue;
+        const char* begin = m_text.c_str() + i;
+        char* end = nullptr;
+        const double v = std::strtod(begin, &end);
+        if (std::isinf(v)) {
+            throw FormulaError(
+                int(i) + 1,
+                describe(int(i) + 1, "number out of range '" +
+                                         std::string(begin, static_cast<size_t>(end - begin)) +
+                                         "'"));
+        }
+        i += static_cast<size_t>(end - begin);
     }
     mu::Parser parser;
     define_constants(parser);

@@ -3,6 +3,7 @@
 // names the exact path, and refuses keys nobody asked for, so typos never pass silently.
 
 #include <cmath>
+#include <cstdint>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -23,14 +24,36 @@ inline constexpr double kMaxSceneNumber = 1e15;
 // Formats a number for messages the way a user typed it: 5, -1, 0.25.
 std::string format_number(double v);
 
+// How deep arrays and objects may nest in a scene file, and how much memory its parsed values
+// may take (an estimate counting each value, array, object and key as the library stores it).
+// Far above any real scene; they keep a hostile or runaway file from exhausting the stack or
+// the memory. docs/scene-format.md#limits gives the messages.
+inline constexpr int kMaxJsonDepth = 512;
+inline constexpr uint64_t kMaxJsonValueBytes = uint64_t{512} << 20;
+
+// A bounded, flat excerpt of an input value for messages that quote it: at most about 60
+// characters, arrays and objects inside the value shown as [...] and {...} (so it never
+// recurses, however deep the value), control characters escaped.
+std::string excerpt(const nlohmann::json& value);
+
 // Parses JSON text, refusing what nlohmann would accept silently: a key given twice in one
 // object (the first value would be lost). Throws SceneError with path `source` for syntax
-// errors and numbers out of range, and with the JSON path of a duplicated key.
-nlohmann::json parse_json_strict(const std::string& text, const std::string& source);
+// errors, numbers out of range, nesting deeper than kMaxJsonDepth and values over
+// kMaxJsonValueBytes, and with the JSON path of a duplicated key. Time and memory are linear
+// in the text's length.
+// `max_value_bytes` is for tests.
+nlohmann::json parse_json_strict(const std::string& text, const std::string& source,
+                                 uint64_t max_value_bytes = kMaxJsonValueBytes);
 
 // The candidate spelled most like `word` (at most 2 edits away), or "" if none is close:
 // for "did you mean" hints.
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
+
+// Throws SceneError(path.KEY, "missing (required)") for a required `key` that `object` lacks,
+// or, when it holds the key in another case ("Type" for "type"), points at that key instead:
+// "unknown key (did you mean 'type'?)". Keys are case-sensitive.
+[[noreturn]] void throw_missing_key(const nlohmann::json& object, const std::string& path,
+                                    const std::string& key);
 
 class JsonObjectReader {
 public:

@@ -18,6 +18,7 @@ static_assert(sizeof(tinyobj::real_t) == sizeof(double), "link tinyobjloader_dou
 #include "geometry/mesh_shapes.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/triangle_mesh.h"
+#include "scene/json_reader.h"
 #include "scene/limits.h"
 #include "scene/object_spec.h"
 
@@ -80,7 +81,7 @@ int32_t read_index(const json& v, const std::string& face_path, size_t k, size_t
     throw SceneError(item_path(face_path, k), "must be a vertex index from 0 to " +
                                                   std::to_string(vertex_count - 1) +
                                                   " (there are " + std::to_string(vertex_count) +
-                                                  " vertices), got " + v.dump());
+                                                  " vertices), got " + excerpt(v));
 }
 
 Polygons read_inline(JsonObjectReader& r) {
@@ -109,7 +110,7 @@ Polygons read_inline(JsonObjectReader& r) {
             throw SceneError(
                 item_path(fpath, f),
                 "a face must be an array of at least 3 vertex indices, got " +
-                    (face.is_array() ? std::to_string(face.size()) + " indices" : face.dump()));
+                    (face.is_array() ? std::to_string(face.size()) + " indices" : excerpt(face)));
         }
         corners.clear();
         for (size_t k = 0; k < face.size(); ++k) {

@@ -8,11 +8,14 @@
 
 namespace lenslab {
 
-// what() is "path: reason".
+// what() is "path: reason", both printable(): a key or a name from the file with a NUL, a
+// newline or an escape sequence in it is shown escaped, on one line.
 class SceneError : public Error {
 public:
     SceneError(const std::string& path, const std::string& reason)
-        : Error(path.empty() ? reason : path + ": " + reason), m_path(path), m_reason(reason) {}
+        : Error(path.empty() ? printable(reason) : printable(path) + ": " + printable(reason)),
+          m_path(printable(path)),
+          m_reason(printable(reason)) {}
     const std::string& path() const { return m_path; }
     const std::string& reason() const { return m_reason; }
 

@@ -1,5 +1,7 @@
 #include "scene/scene_json.h"
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -147,7 +149,7 @@ std::map<std::string, int> read_materials(const json& j, std::vector<Material>& 
 std::string peek_type(const json& j, const std::string& path) {
     if (!j.is_object()) throw SceneError(path, "must be an object { \"type\": ... }");
     const auto it = j.find("type");
-    if (it == j.end()) throw SceneError(path + ".type", "missing (required)");
+    if (it == j.end()) throw_missing_key(j, path, "type");
     if (!it->is_string()) throw SceneError(path + ".type", "must be a string");
     return it->get<std::string>();
 }
@@ -319,11 +321,23 @@ nlohmann::json read_scene_json_file(const std::string& path) {
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw SceneError(path, std::string("cannot open scene file: ") + std::strerror(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
+    // Read into one string of the file's size: a stream buffer and its copy would hold the
+    // text twice (512 MiB for the largest file allowed).
+    std::string text;
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec) text.reserve(static_cast<size_t>(std::min<uintmax_t>(size, kMaxSceneFileBytes)));
+    std::array<char, 1 << 16> chunk;
+    while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
+        text.append(chunk.data(), static_cast<size_t>(in.gcount()));
+        if (text.size() > kMaxSceneFileBytes) {
+            throw SceneError(path, "cannot read scene file: it grew past the " +
+                                       std::to_string(kMaxSceneFileBytes >> 20) +
+                                       " MiB allowed while being read");
+        }
+    }
     if (in.bad()) throw SceneError(path, "cannot read scene file");
     return naming_file(path, [&] {
-        json root = parse_json_strict(text.str(), path);
+        json root = parse_json_strict(text, path);
         if (!root.is_object())
             throw SceneError(path, "the top level must be a JSON object { ... }");
         return root;

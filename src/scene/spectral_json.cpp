@@ -42,6 +42,19 @@ IndexModelPtr read_index_model(const nlohmann::json& j, const std::string& path)
             throw SceneError(r.child_path("C"),
                              "must have as many terms as B (" + std::to_string(b.size()) + ")");
         }
+        // n² = 1 + Σ B·λ²/(λ² − C) is infinite at λ² = C: a pole inside the visible range
+        // (which sampling every 10 nm can step over) makes every figure NaN.
+        const double lo = kLambdaMinNm * 1e-3, hi = kLambdaMaxNm * 1e-3;  // µm
+        for (size_t i = 0; i < c.size(); ++i) {
+            if (b[i] != 0.0 && c[i] >= lo * lo && c[i] <= hi * hi) {
+                throw SceneError(r.child_path("C") + "[" + std::to_string(i) + "]",
+                                 "n² = 1 + Σ B·λ²/(λ² − C) has a pole at λ = √C = " +
+                                     format_number(std::sqrt(c[i]) * 1e3) +
+                                     " nm, inside 360-830 nm (C is in µm²: each must be below " +
+                                     format_number(lo * lo) + " or above " +
+                                     format_number(hi * hi) + ")");
+            }
+        }
         m = sellmeier_index(b, c);
     } else {
         JsonObjectReader r(j, path, {"model", "n_d", "V_d"}, "an Abbe model");

@@ -130,7 +130,7 @@ std::shared_ptr<const LensSurface> read_lens_surface(const nlohmann::json& j,
     for (const std::string& key : any_shape) {
         if (any.has(key) && !spec->find(key)) {
             throw SceneError(any.child_path(key),
-                             "a " + shape + " surface has no " + key +
+                             with_article(shape) + " surface has no " + key +
                                  (takes.empty() ? "" : " (it takes " + joined(takes) + ")"));
         }
     }

@@ -288,3 +288,41 @@ lenslab_cli_test(NAME render.radius_zero_is_auto
     ARGS render scenes/default.json --integrator photon_map -o ${radius_auto_out} --width 16 --height 12 --spp 1
          --photons 2000 --radius 0 -q
     CHECKS -DEXPECT_EXIT=zero -DOUTPUT=${radius_auto_out} -DOUTPUT_CREATED=ON)
+
+# Issue 15: every numeric option of every command refuses NaN and infinities with its name
+# (CLI11 reads "nan" as a number, and NaN passed its Range and PositiveNumber checks).
+function(lenslab_cli_not_finite name option value)
+    lenslab_cli_test(NAME not_finite.${name}
+        ARGS ${ARGN}
+        CHECKS -DEXPECT_EXIT=2
+               "-DSTDERR_CONTAINS=lenslab: error: ${option}: must be a finite number, got '${value}'")
+endfunction()
+lenslab_cli_not_finite(render_radius --radius nan render -o ${LENSLAB_CLI_OUT}/nan.png --radius nan)
+lenslab_cli_not_finite(render_time --time inf render -o ${LENSLAB_CLI_OUT}/nan.png --time inf)
+lenslab_cli_not_finite(render_exposure --exposure inf render -o ${LENSLAB_CLI_OUT}/nan.png --exposure inf)
+lenslab_cli_not_finite(trace_wavelength --wavelength nan
+    trace scenes/default.json --origin 0,0,5 --direction 0,0,-1 -w nan)
+lenslab_cli_not_finite(trace_origin --origin nan
+    trace scenes/default.json --origin 0,nan,5 --direction 0,0,-1)
+lenslab_cli_not_finite(glass_wavelength --wavelength nan glass N-BK7 -w nan)
+lenslab_cli_not_finite(analyze_wavelength --wavelength nan analyze scenes/achromat_doublet.json -w nan)
+lenslab_cli_not_finite(analyze_aperture --aperture -inf analyze scenes/achromat_doublet.json --aperture -inf)
+lenslab_cli_not_finite(bench_radii --radii 1e999 bench report --radii 1e999)
+lenslab_cli_test(NAME option_whole_number_wording
+    ARGS render -o ${LENSLAB_CLI_OUT}/nan.png --threads 1.5
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--threads: must be a whole number, got '1.5'")
+
+# An empty path is an error, not the default scene (only leaving the argument out means that).
+# run_lenslab.cmake cannot pass an empty argument, so these run the binary directly.
+foreach(cmd render trace analyze detect)
+    add_test(NAME cli.empty_scene_path.${cmd}
+        COMMAND $<TARGET_FILE:lenslab> ${cmd} ""
+        WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+    set_tests_properties(cli.empty_scene_path.${cmd} PROPERTIES TIMEOUT 60 LABELS cli
+        PASS_REGULAR_EXPRESSION "lenslab: error: scene: must not be empty")
+endforeach()
+add_test(NAME cli.empty_output_path
+    COMMAND $<TARGET_FILE:lenslab> render -o ""
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.empty_output_path PROPERTIES TIMEOUT 60 LABELS cli
+    PASS_REGULAR_EXPRESSION "lenslab: error: --output: must not be empty")

@@ -72,6 +72,14 @@ TEST(Formula, UnknownVariablesAndRefusedConstructs) {
     EXPECT_EQ(refusal("r, 2"), "must be one expression, not a list separated by ','");
 }
 
+TEST(Formula, NumberPastDoublesRangeIsOutOfRangeNotAVariable) {
+    // muparser read "1e999" as 1 followed by a variable "e999".
+    EXPECT_EQ(refusal("r + 1e999"), "cannot parse at position 5: number out of range '1e999'");
+    EXPECT_EQ(refusal("2.5E+400*r"), "cannot parse at position 1: number out of range '2.5E+400'");
+    EXPECT_EQ(refusal("r*1e300"), "");
+    EXPECT_EQ(refusal("x1e999 + r", {"r", "x1e999"}), "");  // part of a name
+}
+
 TEST(Formula, NamesWhyAValueIsNotFinite) {
     const Formula f("10 - sqrt(100 - r^2)", kR, "");
     EXPECT_TRUE(std::isnan(f({11.0})));

@@ -231,6 +231,18 @@ const BadScene kBadScenes[] = {
      "3.366750419 in front of the front surface; the centre thickness must be at least "
      "5.366750419 for diameter 20 (or reduce the diameter)"},
     {"lens_group_material_on_group.json", "objects[0].material", "not a property of a lens group"},
+    // Issue 15: messages quote keys escaped, suggest the right case, and read as English.
+    {"key_with_nul.json", "objects[0].ra\\x00dius", "unknown key (did you mean 'radius'?)"},
+    {"key_with_terminal_escape.json", "\\x1b[2J\\x1b[31mred", "unknown key"},
+    {"key_wrong_case.json", "objects[0].Type", "unknown key (did you mean 'type'?)"},
+    {"key_all_capitals.json", "objects[0].RADIUS", "unknown key (did you mean 'radius'?)"},
+    {"formula_number_out_of_range.json", "objects[0].formula",
+     "cannot parse at position 19: number out of range '1e999'"},
+    {"surface_asphere_formula.json", "objects[0].front.formula",
+     "an asphere surface has no formula"},
+    {"sellmeier_pole_visible.json", "materials.odd.ior.C[1]",
+     "n² = 1 + Σ B·λ²/(λ² − C) has a pole at λ = √C = 455 nm, inside 360-830 nm (C is in µm²: "
+     "each must be below 0.1296 or above 0.6889)"},
 };
 // clang-format on
 

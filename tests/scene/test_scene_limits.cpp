@@ -144,6 +144,98 @@ TEST(SceneLimits, ObjFileLargerThanTheLimitIsNotRead) {
     fs::remove(path);
 }
 
+// A value nested `depth` levels deep, {"a": {"a": ... 1}}, built without recursion.
+nlohmann::json deep_object(int depth) {
+    nlohmann::json root = 1;
+    for (int i = 0; i < depth; ++i) root = nlohmann::json{{"a", std::move(root)}};
+    return root;
+}
+
+TEST(SceneLimits, ExcerptOfInputIsShortAndFlatHoweverDeep) {
+    const nlohmann::json deep = deep_object(100000);
+    EXPECT_EQ(excerpt(deep), R"({"a": {...}})");
+    EXPECT_EQ(excerpt(nlohmann::json::array({1, nlohmann::json::array({2}), "x"})),
+              R"([1, [...], "x"])");
+    const std::string long_text = excerpt(nlohmann::json(std::string(1000, 'z')));
+    EXPECT_LE(long_text.size(), 60u);
+    EXPECT_EQ(long_text.substr(long_text.size() - 3), "...");
+    EXPECT_EQ(excerpt(nlohmann::json(std::string("a\x1b[31m"))), R"("a\u001b[31m")");
+}
+
+TEST(SceneLimits, MeshFaceHoldingADeepValueIsRefusedWithAnExcerpt) {
+    // The message once quoted the face with dump(), whose recursion overflowed the stack.
+    nlohmann::json root = minimal_scene();
+    root["objects"] = {{{"type", "mesh"},
+                        {"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}},
+                        {"faces", nlohmann::json::array()},
+                        {"material", {{"color", 0.5}}}}};
+    root["objects"][0]["faces"].push_back(deep_object(100000));
+    EXPECT_EQ(
+        refusal(root),
+        R"(objects[0].faces[0]: a face must be an array of at least 3 vertex indices, got {"a": {...}})");
+}
+
+// The message parse_json_strict gives for `text`, or "" if it was accepted.
+std::string json_refusal(const std::string& text) {
+    try {
+        (void)parse_json_strict(text, "s.json");
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(SceneLimits, JsonNestingDeeperThanTheLimitIsRefusedWithItsPosition) {
+    const std::string ok = std::string(kMaxJsonDepth, '[') + std::string(kMaxJsonDepth, ']');
+    EXPECT_EQ(json_refusal(ok), "");
+    EXPECT_EQ(json_refusal("{\"a\":\n" + std::string(100000, '[') + std::string(100000, ']') + "}"),
+              "s.json: invalid JSON: arrays and objects nested more than 512 deep, at line 2, "
+              "column 512 (byte 518)");
+    // Brackets inside strings do not count.
+    EXPECT_EQ(json_refusal("[\"[[[\"," + std::string(600, '[') + "]"),
+              "s.json: invalid JSON: arrays and objects nested more than 512 deep, at line 1, "
+              "column 519 (byte 519)");
+}
+
+TEST(SceneLimits, MillionEmptyObjectsReachTheObjectCountRefusal) {
+    // The duplicate-key check once rescanned the parent after every object: quadratic, so
+    // this file (3 MB) took minutes. Now parsing is linear and the count check answers.
+    std::string text = R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "objects": [)";
+    text.reserve(text.size() + 3 * (kMaxObjects + 1) + 2);
+    for (size_t i = 0; i <= kMaxObjects; ++i) text += i ? ",{}" : "{}";
+    text += "]}";
+    try {
+        (void)parse_scene(text, "s.json");
+        FAIL() << "accepted";
+    } catch (const SceneError& e) {
+        EXPECT_STREQ(e.what(), "objects: holds 1000001 objects, more than the 1000000 allowed");
+    }
+}
+
+TEST(SceneLimits, DuplicateKeyIsNamedByItsPath) {
+    EXPECT_EQ(json_refusal(R"({"objects": [{"x": 1}, {"y": 2, "y": 3}]})"),
+              "objects[1].y: key given twice in the same object");
+}
+
+TEST(SceneLimits, JsonWhoseValuesOutgrowTheMemoryBudgetIsRefused) {
+    // Each number in an array costs 32 bytes of the budget: with 1 MiB, 32767 fit beside the
+    // array itself, one more is refused (the default budget, kMaxJsonValueBytes, works alike).
+    auto numbers = [](size_t n) {
+        std::string text = "[";
+        for (size_t i = 0; i < n; ++i) text += i ? ",0" : "0";
+        return text + "]";
+    };
+    EXPECT_NO_THROW(parse_json_strict(numbers(32767), "s.json", uint64_t{1} << 20));
+    try {
+        (void)parse_json_strict(numbers(32768), "s.json", uint64_t{1} << 20);
+        FAIL() << "accepted";
+    } catch (const SceneError& e) {
+        EXPECT_STREQ(e.what(),
+                     "s.json: too large: its values would take more than 1 MiB of memory once "
+                     "read (stopped after 32769 values)");
+    }
+}
+
 TEST(SceneLimits, MeshTriangleCountSharesTheCountCheck) {
     // A mesh over 10 million triangles is a gigabyte of JSON; the reader refuses it with
     // check_count, whose wording this pins.

@@ -6,6 +6,7 @@
 
 #include "geometry/lens/spherical_surface.h"
 #include "math/quadratic.h"
+#include "util/error.h"
 
 namespace lenslab {
 
@@ -63,8 +64,8 @@ std::optional<LensSolid::Problem> LensSolid::check_prescription(const LensPrescr
     const double a = 0.5 * p.diameter;
     for (const auto& [name, s] : {std::pair{"front", p.front}, std::pair{"back", p.back}}) {
         if (a > s->max_semi_diameter()) {
-            msg << "a " << s->describe() << " surface cannot span the lens diameter " << p.diameter
-                << " (its largest diameter is " << 2 * s->max_semi_diameter() << ")";
+            msg << with_article(s->describe()) << " surface cannot span the lens diameter "
+                << p.diameter << " (its largest diameter is " << 2 * s->max_semi_diameter() << ")";
             return Problem{name, msg.str()};
         }
     }
