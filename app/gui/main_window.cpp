@@ -13,6 +13,10 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
+#include <cstring>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "detector_dock.h"
 #include "json_pointer.h"
@@ -20,6 +24,8 @@
 #include "ray_diagram_dock.h"
 #include "render/image_io.h"
 #include "render_controller.h"
+#include "scene/light_spec.h"
+#include "scene/object_types.h"
 #include "scene_document.h"
 #include "scene_tree.h"
 #include "viewport.h"
@@ -32,62 +38,43 @@ using nlohmann::json;
 
 constexpr int kMaxRecent = 8;
 
-// A new element of each kind, placed where the camera looks.
-json new_element(const QString& kind, const json& at) {
-    if (kind == "sphere") {
-        return {{"type", "sphere"},
-                {"name", "sphere"},
-                {"center", at},
-                {"radius", 0.4},
-                {"material", {{"color", {0.7, 0.7, 0.7}}}}};
+// The declaration of an element of `list` ("objects", "lights") with this `type`, or null.
+const ElementSpec* element_spec(const std::string& list, const std::string& type) {
+    if (list == "lights") return find_light_spec(type);
+    const ObjectTypeEntry* kind = find_object_type(type);
+    return kind ? &kind->spec() : nullptr;
+}
+
+// "sphere", or "sphere 2" (3, ...) when an object of the scene has that name already.
+std::string unique_name(const json& scene, const std::string& wanted) {
+    std::set<std::string> taken;
+    if (scene.contains("objects") && scene["objects"].is_array()) {
+        for (const json& o : scene["objects"]) {
+            if (o.is_object() && o.contains("name") && o["name"].is_string())
+                taken.insert(o["name"].get<std::string>());
+        }
     }
-    if (kind == "triangle") {
-        const double x = at[0], y = at[1], z = at[2];
-        return {{"type", "triangle"},
-                {"name", "triangle"},
-                {"vertices", {{x - 0.5, y - 0.5, z}, {x + 0.5, y - 0.5, z}, {x, y + 0.5, z}}},
-                {"material", {{"color", {0.7, 0.7, 0.7}}}}};
+    std::string name = wanted;
+    for (int n = 2; taken.count(name); ++n) name = wanted + " " + std::to_string(n);
+    return name;
+}
+
+// `element` of `list`, moved by `offset` and named uniquely, ready to append to the scene.
+json placed(const json& scene, const std::string& list, json element, const Vec3& offset) {
+    if (const ElementSpec* spec = element_spec(list, element.value("type", "")))
+        element = moved_element(*spec, std::move(element), offset);
+    if (element.contains("name") && element["name"].is_string())
+        element["name"] = unique_name(scene, element["name"].get<std::string>());
+    return element;
+}
+
+// "Add sphere", "Add lens group", "Add point light": from the declaration's phrase.
+QString add_label(const ElementSpec& spec) {
+    std::string noun = spec.phrase;
+    for (const char* article : {"an ", "a "}) {
+        if (noun.rfind(article, 0) == 0) noun = noun.substr(std::strlen(article));
     }
-    if (kind == "disc" || kind == "rectangle") {
-        // A screen facing +z, marked as a detector.
-        json screen{{"type", kind.toStdString()},
-                    {"name", kind == "disc" ? "detector disc" : "detector screen"},
-                    {"center", at},
-                    {"normal", {0, 0, 1}},
-                    {"material", {{"color", {0.7, 0.7, 0.7}}}},
-                    {"detector", {{"resolution", 64}}}};
-        if (kind == "disc")
-            screen["radius"] = 0.5;
-        else
-            screen["size"] = {1.0, 1.0};
-        return screen;
-    }
-    if (kind == "lens") {
-        return {{"type", "lens"},
-                {"name", "lens"},
-                {"center", at},
-                {"axis", {0, 0, 1}},
-                {"thickness", 0.3},
-                {"diameter", 1.0},
-                {"front", {{"shape", "sphere"}, {"radius", 1.5}}},
-                {"back", {{"shape", "sphere"}, {"radius", -1.5}}},
-                {"material", {{"color", 1}, {"transparency", 1}, {"ior", 1.5}}}};
-    }
-    if (kind == "implicit") {
-        // A glass torus around the vertical axis: (distance from the axis - 0.4)^2 + y^2 <= 0.15^2.
-        return {{"type", "implicit"},
-                {"name", "torus"},
-                {"center", at},
-                {"formula", "(sqrt(x^2 + z^2) - 0.4)^2 + y^2 - 0.15^2"},
-                {"bounds", {{-0.6, -0.2, -0.6}, {0.6, 0.2, 0.6}}},
-                {"material", {{"color", 1}, {"transparency", 1}, {"ior", 1.5}}}};
-    }
-    if (kind == "point") return {{"type", "point"}, {"position", {0, 4, 0}}, {"power", 100}};
-    return {{"type", "beam"},
-            {"origin", {0, 4, 0}},
-            {"direction", {0, -1, 0}},
-            {"radius", 0.3},
-            {"power", 10}};
+    return QObject::tr("Add %1").arg(QString::fromStdString(noun));
 }
 
 }  // namespace
@@ -202,13 +189,14 @@ void MainWindow::build_menus() {
     edit->addSeparator();
     QToolBar* tools = addToolBar(tr("Edit"));
     tools->setObjectName("edit_toolbar");
-    for (const auto& [kind, label] :
-         {std::pair{"sphere", tr("Add sphere")}, std::pair{"triangle", tr("Add triangle")},
-          std::pair{"disc", tr("Add detector disc")},
-          std::pair{"rectangle", tr("Add detector rectangle")}, std::pair{"lens", tr("Add lens")},
-          std::pair{"implicit", tr("Add implicit solid")},
-          std::pair{"point", tr("Add point light")}, std::pair{"beam", tr("Add beam")}}) {
-        QAction* a = edit->addAction(label, this, [this, k = QString(kind)] { add_element(k); });
+    // One action per declared type, each adding the declaration's example.
+    std::vector<const ElementSpec*> addable;
+    for (const ObjectTypeEntry& t : object_types()) addable.push_back(&t.spec());
+    for (const ElementSpec* l : light_specs()) addable.push_back(l);
+    for (const ElementSpec* spec : addable) {
+        const QString kind = QString::fromStdString(spec->example.at("type").get<std::string>());
+        QAction* a = edit->addAction(add_label(*spec), this, [this, kind] { add_element(kind); });
+        a->setObjectName("add:" + kind);
         tools->addAction(a);
     }
     edit->addAction(tr("&Duplicate"), QKeySequence(tr("Ctrl+D")), this,
@@ -345,37 +333,33 @@ void MainWindow::update_recent_menu() {
 
 void MainWindow::add_element(const QString& kind) {
     json edited = m_document->json();
+    const std::string type = kind.toStdString();
+    const std::string list = find_light_spec(type) ? "lights" : "objects";
+    const ElementSpec* spec = element_spec(list, type);
+    if (!spec) return;
+    // Where the camera looks, 3 units ahead.
     const Scene& s = m_document->scene();
     const Vec3 at = s.camera.position + s.camera.direction * 3.0;
-    const bool light = kind == "point" || kind == "beam";
-    const char* list = light ? "lights" : "objects";
     if (!edited.contains(list)) edited[list] = json::array();
-    edited[list].push_back(new_element(kind, json::array({at.x, at.y, at.z})));
+    edited[list].push_back(placed(edited, list, spec->example, at));
     QString error;
     if (!m_document->apply(edited, tr("Add %1").arg(kind), &error)) {
         show_message(error);
         return;
     }
-    m_tree->select_pointer(
-        join_pointer(join_pointer("", list), qsizetype(edited[list].size() - 1)));
+    m_tree->select_pointer(join_pointer(join_pointer("", QString::fromStdString(list)),
+                                        qsizetype(edited[list].size() - 1)));
 }
 
 void MainWindow::duplicate_selected() {
     const QString pointer = m_tree->selected_pointer();
     if (!pointer.startsWith("/objects/") && !pointer.startsWith("/lights/")) return;
     json edited = m_document->json();
-    json copy = edited[json::json_pointer(pointer.toStdString())];
-    if (copy.contains("center")) copy["center"][0] = copy["center"][0].get<double>() + 0.5;
-    if (copy.contains("position")) copy["position"][0] = copy["position"][0].get<double>() + 0.5;
-    if (copy.contains("type") && copy["type"] == "implicit" && !copy.contains("center")) {
-        copy["center"] = {0.5, 0, 0};
-    }
-    if (copy.contains("vertices")) {
-        for (auto& v : copy["vertices"]) v[0] = v[0].get<double>() + 0.5;
-    }
-    if (copy.contains("name")) copy["name"] = copy["name"].get<std::string>() + " copy";
     const std::string list = split_pointer(pointer)[0].toStdString();
-    edited[list].push_back(copy);
+    json copy = edited[json::json_pointer(pointer.toStdString())];
+    if (copy.contains("name") && copy["name"].is_string())
+        copy["name"] = copy["name"].get<std::string>() + " copy";
+    edited[list].push_back(placed(edited, list, std::move(copy), Vec3{0.5, 0, 0}));
     QString error;
     if (!m_document->apply(edited, tr("Duplicate"), &error)) {
         show_message(error);

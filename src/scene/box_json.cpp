@@ -27,6 +27,8 @@ ElementSpec declare_box() {
         vector_param(ParamKind::Direction, "facing", nlohmann::json::array({0, 0, 1}))
             .describe("where its z edges point; perpendicular to up (x = up × facing)")
             .in_editor("Facing (z edges)"));
+    s.example = nlohmann::json::parse(
+        R"json({"type": "box", "name": "glass block", "center": [0, 0, 0], "size": [0.8, 0.5, 0.3], "material": {"color": 1, "transparency": 1, "ior": 1.5}})json");
     return s;
 }
 

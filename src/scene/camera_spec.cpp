@@ -10,7 +10,7 @@ nlohmann::json array_of(const Vec3& v) { return nlohmann::json::array({v.x, v.y,
 
 ElementSpec declare() {
     const CameraSettings d;
-    ElementSpec s{"camera", "the camera", {}};
+    ElementSpec s{"camera", "the camera", {}, {}};
     s.params = {
         point_param("position").describe("the eye").in_editor("Position"),
         vector_param(ParamKind::Point, "look_at", nullptr)

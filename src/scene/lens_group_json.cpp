@@ -26,7 +26,7 @@ struct GroupElement {
 
 ElementSpec declare_group() {
     // The common keys but material (each element names its own) and detector.
-    ElementSpec s{"lens_group", "a lens group", {}};
+    ElementSpec s{"lens_group", "a lens group", {}, {}};
     for (const ParamSpec& p : object_common_spec().params) {
         if (p.key != "material" && p.key != "detector") s.params.push_back(p);
     }
@@ -46,11 +46,13 @@ ElementSpec declare_group() {
     s.params.push_back(nested_param(ParamKind::Array, "elements")
                            .needed()
                            .describe("the elements, front to back (at least one)"));
+    s.example = nlohmann::json::parse(
+        R"json({"type": "lens_group", "name": "doublet", "vertex": [0, 0, 0], "axis": [0, 0, 1], "diameter": 1, "elements": [{"name": "crown", "front": {"shape": "sphere", "radius": 1.8}, "thickness": 0.25, "material": {"color": 1, "transparency": 1, "glass": "N-BK7"}}, {"name": "flint", "front": {"shape": "sphere", "radius": -1.8}, "thickness": 0.1, "back": {"shape": "sphere", "radius": -30}, "material": {"color": 1, "transparency": 1, "glass": "F2"}}]})json");
     return s;
 }
 
 ElementSpec declare_element() {
-    ElementSpec s{"lens_group element", "a lens group element", {}};
+    ElementSpec s{"lens_group element", "a lens group element", {}, {}};
     s.params.push_back(nested_param(ParamKind::String, "name")
                            .meaning_auto("`\"NAME element i\"`")
                            .describe("shown by lenslab trace"));

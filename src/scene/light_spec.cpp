@@ -24,17 +24,19 @@ std::vector<ParamSpec> emission_params(const Rgb& colour) {
 }
 
 ElementSpec declare_point() {
-    ElementSpec s{"point light", "a point light", {}};
+    ElementSpec s{"point light", "a point light", {}, {}};
     s.params = {
         string_param("type", "point").needed().describe("\"point\""),
         point_param("position").describe("where the light is").in_editor("Position"),
     };
     for (ParamSpec& p : emission_params(PointLight{}.color)) s.params.push_back(std::move(p));
+    s.example =
+        nlohmann::json::parse(R"json({"type": "point", "position": [0, 1, 0], "power": 100})json");
     return s;
 }
 
 ElementSpec declare_beam() {
-    ElementSpec s{"beam", "a beam", {}};
+    ElementSpec s{"beam", "a beam", {}, {}};
     s.params = {
         string_param("type", "beam").needed().describe("\"beam\""),
         point_param("origin")
@@ -48,6 +50,8 @@ ElementSpec declare_beam() {
             .in_editor("Beam radius"),
     };
     for (ParamSpec& p : emission_params(BeamLight{}.color)) s.params.push_back(std::move(p));
+    s.example = nlohmann::json::parse(
+        R"json({"type": "beam", "origin": [0, 1, 0], "direction": [0, -1, 0], "radius": 0.3, "power": 10})json");
     return s;
 }
 
@@ -61,6 +65,18 @@ const ElementSpec& point_light_spec() {
 const ElementSpec& beam_spec() {
     static const ElementSpec spec = declare_beam();
     return spec;
+}
+
+const std::vector<const ElementSpec*>& light_specs() {
+    static const std::vector<const ElementSpec*> specs{&point_light_spec(), &beam_spec()};
+    return specs;
+}
+
+const ElementSpec* find_light_spec(const std::string& type) {
+    for (const ElementSpec* s : light_specs()) {
+        if (s->example.value("type", "") == type) return s;
+    }
+    return nullptr;
 }
 
 }  // namespace lenslab

@@ -2,11 +2,18 @@
 // The declarations of the lights without geometry (light.h). `color` or `spectrum`, not
 // both, is a rule between fields left to the reading code (spectral_json.h).
 
+#include <string>
+#include <vector>
+
 #include "scene/param_spec.h"
 
 namespace lenslab {
 
 const ElementSpec& point_light_spec();
 const ElementSpec& beam_spec();
+// The declaration of the light whose `type` is `type` ("point", "beam"), or null.
+const ElementSpec* find_light_spec(const std::string& type);
+// Every light type's declaration, in the order "known:" lists them.
+const std::vector<const ElementSpec*>& light_specs();
 
 }  // namespace lenslab

@@ -8,7 +8,7 @@ namespace {
 
 ElementSpec declare_material() {
     const Material d;
-    ElementSpec s{"material", "a material", {}};
+    ElementSpec s{"material", "a material", {}, {}};
     s.params = {
         albedo_param("color", d.color)
             .describe("diffuse (Lambertian) albedo")
@@ -33,7 +33,7 @@ ElementSpec declare_material() {
 
 ElementSpec declare_emission() {
     const Material d;
-    ElementSpec s{"emission", "an emission", {}};
+    ElementSpec s{"emission", "an emission", {}, {}};
     s.params = {
         colour_param("color", d.emission_color)
             .describe("colour of the emitted light; 1 is D65 daylight white")

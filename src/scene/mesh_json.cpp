@@ -307,6 +307,8 @@ ElementSpec declare_mesh() {
     s.params.push_back(vector_param(ParamKind::Point, "position", json::array({0, 0, 0}))
                            .describe("where the model's origin goes")
                            .in_editor("Position"));
+    s.example = nlohmann::json::parse(
+        R"json({"type": "mesh", "name": "tetrahedron", "position": [0, 0, 0], "vertices": [[0, 0.5, 0], [-0.45, -0.25, 0.25], [0.45, -0.25, 0.25], [0, -0.25, -0.5]], "faces": [[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]], "material": {"color": 0.7}})json");
     return s;
 }
 
@@ -337,6 +339,8 @@ ElementSpec declare_prism() {
     s.params.push_back(direction_or("facing", json::array({0, 0, 1}),
                                     "from the base towards the apex edge; perpendicular to axis",
                                     "Facing (towards apex)"));
+    s.example = nlohmann::json::parse(
+        R"json({"type": "prism", "name": "prism", "center": [0, 0, 0], "apex_angle": 60, "side": 0.6, "height": 0.6, "material": {"color": 1, "transparency": 1, "ior": 1.5}})json");
     return s;
 }
 

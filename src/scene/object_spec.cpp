@@ -7,7 +7,7 @@ namespace lenslab {
 namespace {
 
 ElementSpec declare_common() {
-    ElementSpec s{"object", "an object", {}};
+    ElementSpec s{"object", "an object", {}, {}};
     s.params = {
         string_param("type", "").needed().describe("which kind of object"),
         nested_param(ParamKind::String, "name")
@@ -34,15 +34,20 @@ ElementSpec declare_sphere() {
     s.params.push_back(point_param("center").describe("centre").in_editor("Centre"));
     s.params.push_back(
         number_param("radius", 0).above(0).needed().describe("radius").in_editor("Radius"));
+    s.example = nlohmann::json::parse(
+        R"json({"type": "sphere", "name": "sphere", "center": [0, 0, 0], "radius": 0.4, "material": {"color": 0.7}})json");
     return s;
 }
 
 ElementSpec declare_triangle() {
     ElementSpec s = shape_spec("triangle", "a triangle", true);
     s.params.push_back(nested_param(ParamKind::Array, "vertices")
+                           .of_positions()
                            .needed()
                            .as_written("array of 3 points")
                            .describe("the corners; they must not be collinear"));
+    s.example = nlohmann::json::parse(
+        R"json({"type": "triangle", "name": "triangle", "vertices": [[-0.5, -0.5, 0], [0.5, -0.5, 0], [0, 0.5, 0]], "material": {"color": 0.7}})json");
     return s;
 }
 
@@ -62,6 +67,8 @@ ElementSpec declare_implicit() {
     s.params.push_back(whole_param("steps", ImplicitSolid::kDefaultSteps, 8, 1 << 16)
                            .describe("the march's resolution")
                            .in_editor("March steps"));
+    s.example = nlohmann::json::parse(
+        R"json({"type": "implicit", "name": "torus", "center": [0, 0, 0], "formula": "(sqrt(x^2 + z^2) - 0.4)^2 + y^2 - 0.15^2", "bounds": [[-0.6, -0.2, -0.6], [0.6, 0.2, 0.6]], "material": {"color": 1, "transparency": 1, "ior": 1.5}})json");
     return s;
 }
 
@@ -105,6 +112,8 @@ ElementSpec declare_lens() {
                            .meaning_auto("a fixed perpendicular to `axis`")
                            .describe("prescription form: where the lens's local x axis points")
                            .in_editor("Local x axis"));
+    s.example = nlohmann::json::parse(
+        R"json({"type": "lens", "name": "lens", "center": [0, 0, 0], "axis": [0, 0, 1], "thickness": 0.3, "diameter": 1, "front": {"shape": "sphere", "radius": 1.5}, "back": {"shape": "sphere", "radius": -1.5}, "material": {"color": 1, "transparency": 1, "ior": 1.5}})json");
     return s;
 }
 
@@ -136,7 +145,7 @@ const ElementSpec& implicit_spec() {
 }
 
 ElementSpec shape_spec(std::string name, std::string phrase, bool takes_detector) {
-    ElementSpec s{std::move(name), std::move(phrase), {}};
+    ElementSpec s{std::move(name), std::move(phrase), {}, {}};
     for (const ParamSpec& p : object_common_spec().params) {
         if (takes_detector || p.key != "detector") s.params.push_back(p);
     }

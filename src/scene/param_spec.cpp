@@ -272,4 +272,32 @@ std::string range_text(const ParamSpec& p) {
     }
 }
 
+namespace {
+
+// `p` moved by `offset`, when it is a point [x, y, z] of numbers.
+void move_point(nlohmann::json& p, const Vec3& offset) {
+    if (!p.is_array() || p.size() != 3) return;
+    for (int a = 0; a < 3; ++a) {
+        if (!p[a].is_number()) return;
+    }
+    for (int a = 0; a < 3; ++a) p[a] = p[a].get<double>() + offset[a];
+}
+
+}  // namespace
+
+nlohmann::json moved_element(const ElementSpec& spec, nlohmann::json element, const Vec3& offset) {
+    if (!element.is_object()) return element;
+    for (const ParamSpec& p : spec.params) {
+        auto it = element.find(p.key);
+        if (p.kind == ParamKind::Point) {
+            if (it == element.end() && p.fallback.is_null()) continue;
+            nlohmann::json& point = it != element.end() ? *it : (element[p.key] = p.fallback);
+            move_point(point, offset);
+        } else if (p.positions && it != element.end() && it->is_array()) {
+            for (nlohmann::json& point : *it) move_point(point, offset);
+        }
+    }
+    return element;
+}
+
 }  // namespace lenslab

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "math/vec3.h"
 #include "optics/rgb.h"
 
 namespace lenslab {
@@ -52,7 +53,8 @@ struct ParamSpec {
     std::string label;       // the editor's field label; empty: not in the editor's form
     std::string group;       // the editor's heading above the field ("Photon map")
     bool cli = false;  // `lenslab render --KEY` overrides it (the option names are a contract)
-    int decimals = 6;  // digits the editor shows
+    bool positions = false;  // an array of points that move with the element (its vertices)
+    int decimals = 6;        // digits the editor shows
 
     // Chained setters keep each declaration one readable expression.
     ParamSpec& above(double v) { return (min = Bound{v, true}, *this); }
@@ -71,6 +73,7 @@ struct ParamSpec {
     ParamSpec& on_command_line() { return (cli = true, *this); }
     ParamSpec& needed() { return (required = true, fallback = nullptr, *this); }
     ParamSpec& as_written(std::string words) { return (written_as = std::move(words), *this); }
+    ParamSpec& of_positions() { return (positions = true, *this); }
 
     bool is_integer() const { return kind == ParamKind::WholeNumber; }
     // The command-line option for this key: "max_depth" -> "--max-depth".
@@ -96,6 +99,9 @@ struct ElementSpec {
     std::string name;    // "render", "camera", "sphere"
     std::string phrase;  // "a sphere", for "not a property of a sphere"
     std::vector<ParamSpec> params;
+    // What a new element of this type starts as, around the origin: the editor's "Add" moves
+    // it (moved_element) to where it is put. Null for parts of an element (a surface).
+    nlohmann::json example;
 
     const ParamSpec& param(const std::string& key) const;  // throws std::logic_error
     const ParamSpec* find(const std::string& key) const;
@@ -112,6 +118,11 @@ std::optional<std::string> choice_problem(const ParamSpec& p, const std::string&
 std::string kind_text(const ParamSpec& p);     // "whole number", "number, degrees"
 std::string default_text(const ParamSpec& p);  // "`640`", "**required**", "auto"
 std::string range_text(const ParamSpec& p);    // "1 – 16384", "`>= 0`", "(0, 180)"
+
+// `element` (of type `spec`) moved by `offset`: its Point parameters (a declared default
+// standing in for an absent one) and its arrays of positions. Values of the wrong shape are
+// left for the reader to refuse.
+nlohmann::json moved_element(const ElementSpec& spec, nlohmann::json element, const Vec3& offset);
 
 // Whether the fallback may also be written in a file (not merely implied by absence).
 bool fallback_in_range(const ParamSpec& p);

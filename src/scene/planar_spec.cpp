@@ -27,6 +27,8 @@ ElementSpec declare_disc() {
     s.params.push_back(
         number_param("radius", 0).above(0).needed().describe("radius").in_editor("Radius", 9));
     s.params.push_back(up_param("orients the disc's own coordinates (u, v)"));
+    s.example = nlohmann::json::parse(
+        R"json({"type": "disc", "name": "detector disc", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 0.5, "material": {"color": 0.7}, "detector": {"resolution": 64}})json");
     return s;
 }
 
@@ -38,6 +40,8 @@ ElementSpec declare_rectangle() {
                            .as_written("`[width, height]`, each `> 0`")
                            .describe("width along u, height along v"));
     s.params.push_back(up_param("which way the height runs"));
+    s.example = nlohmann::json::parse(
+        R"json({"type": "rectangle", "name": "detector screen", "center": [0, 0, 0], "normal": [0, 0, 1], "size": [1, 1], "material": {"color": 0.7}, "detector": {"resolution": 64}})json");
     return s;
 }
 
@@ -45,7 +49,7 @@ ElementSpec declare_rectangle() {
 // planar_json.cpp); the cell count's range is declared here all the same.
 ElementSpec declare_detector() {
     // No phrase: a key it does not take is an "unknown key", as in any nested object.
-    ElementSpec s{"detector", "", {}};
+    ElementSpec s{"detector", "", {}, {}};
     s.params.push_back(vector_param(ParamKind::Array, "resolution", 64)
                            .at_least(1)
                            .at_most(1024)

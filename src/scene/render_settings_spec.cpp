@@ -11,7 +11,7 @@ ElementSpec declare() {
     const RenderSettings d;  // the struct's initialisers are the defaults
     const std::string photon_map = "Photon map";
     const std::string sppm = "Progressive photon map (sppm, the view)";
-    ElementSpec s{"render", "the render settings", {}};
+    ElementSpec s{"render", "the render settings", {}, {}};
     s.params = {
         whole_param("width", d.width, 1, kMaxImageSide)
             .describe("Image width in pixels")

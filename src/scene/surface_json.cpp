@@ -33,7 +33,7 @@ ParamSpec k_param() {
 
 ElementSpec declare(const std::string& shape, std::vector<ParamSpec> own) {
     // No phrase: a key no shape takes is an "unknown key", as in any nested object.
-    ElementSpec s{shape + " surface", "", {shape_param(shape)}};
+    ElementSpec s{shape + " surface", "", {shape_param(shape)}, {}};
     for (ParamSpec& p : own) s.params.push_back(std::move(p));
     return s;
 }

@@ -7,6 +7,7 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -14,6 +15,7 @@
 #include "main_window.h"
 #include "property_panel.h"
 #include "render_controller.h"
+#include "scene/object_types.h"
 #include "scene_document.h"
 #include "scene_tree.h"
 #include "viewport.h"
@@ -193,6 +195,36 @@ private slots:
         QCOMPARE(w.viewport()->pick(centre), 0);
         QTest::mouseClick(w.viewport(), Qt::LeftButton, {}, centre);
         QCOMPARE(w.tree()->selected_pointer(), QString("/objects/0"));
+    }
+
+    // The Add actions come from the declared types: each adds its declaration's example
+    // where the camera looks, named apart from what is there ("sphere", then "sphere 2").
+    void every_declared_type_can_be_added() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        const QList<QAction*> adds = w.findChildren<QAction*>(QRegularExpression("^add:"));
+        QCOMPARE(adds.size(), qsizetype(lenslab::object_types().size() + 2));
+        for (QAction* a : adds) {
+            const size_t objects = w.document()->json()["objects"].size();
+            const size_t lights = w.document()->json()["lights"].size();
+            a->trigger();
+            QVERIFY2(
+                w.document()->json()["objects"].size() + w.document()->json()["lights"].size() ==
+                    objects + lights + 1,
+                qPrintable(a->objectName() + ": " + w.status_text()));
+        }
+        QCOMPARE(w.document()->scene().lights().size(), size_t(3));
+        QAction* sphere = w.findChild<QAction*>("add:sphere");
+        QVERIFY(sphere);
+        QCOMPARE(sphere->text(), QString("Add sphere"));
+        sphere->trigger();
+        const json objects = w.document()->json()["objects"];
+        QCOMPARE(objects.back()["name"].get<std::string>(), std::string("sphere 2"));
+        w.duplicate_selected();
+        QCOMPARE(w.document()->json()["objects"].back()["name"].get<std::string>(),
+                 std::string("sphere 2 copy"));
+        QCOMPARE(w.document()->json()["objects"].back()["center"][0].get<double>(),
+                 objects.back()["center"][0].get<double>() + 0.5);
     }
 
     void lens_group_elements_are_edited_in_the_panel() {

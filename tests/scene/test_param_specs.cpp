@@ -422,4 +422,54 @@ TEST(RenderOptions, AreTheDeclaredKeysWithTheirRangesInTheHelp) {
     }
 }
 
+// Each object and light type declares the element the editor's "Add" starts from; placed
+// anywhere, it is a scene the reader accepts, and it lands where it was put.
+TEST(Examples, EveryTypeHasOneTheReaderAcceptsWhereverItIsPut) {
+    std::vector<const ElementSpec*> specs;
+    for (const lenslab::ObjectTypeEntry& t : lenslab::object_types()) specs.push_back(&t.spec());
+    for (const ElementSpec* l : lenslab::light_specs()) specs.push_back(l);
+    ASSERT_EQ(specs.size(), lenslab::object_types().size() + 2);
+    const lenslab::Vec3 at{2, -1, 7};
+    for (const ElementSpec* spec : specs) {
+        SCOPED_TRACE(spec->name);
+        ASSERT_TRUE(spec->example.is_object());
+        const bool light = lenslab::find_light_spec(spec->example.at("type")) == spec;
+        json scene{{"camera", {{"position", {0, 0, 20}}, {"look_at", {0, 0, 0}}}},
+                   {light ? "lights" : "objects", {moved_element(*spec, spec->example, at)}}};
+        lenslab::Scene read;
+        ASSERT_NO_THROW(read = lenslab::scene_from_json(scene)) << scene.dump();
+        if (light) {
+            ASSERT_EQ(read.lights().size(), 1u);
+            continue;
+        }
+        // The object's box holds the point it was put at (every example surrounds its origin).
+        const lenslab::Aabb box = read.bounds();
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_LE(box.lo[a], at[a] + 1e-9);
+            EXPECT_GE(box.hi[a], at[a] - 1e-9);
+        }
+    }
+}
+
+TEST(Examples, MovingAnElementMovesItsPositionsAndNothingElse) {
+    using lenslab::moved_element;
+    const json triangle = moved_element(lenslab::triangle_spec(),
+                                        {{"type", "triangle"},
+                                         {"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}},
+                                         {"material", {{"color", 0.5}}}},
+                                        {1, 2, 3});
+    EXPECT_EQ(triangle["vertices"], json({{1, 2, 3}, {2, 2, 3}, {1, 3, 3}}));
+    EXPECT_EQ(triangle["material"], json({{"color", 0.5}}));
+    // An absent position with a declared default is written out, moved.
+    const json torus = moved_element(lenslab::implicit_spec(), {{"type", "implicit"}}, {0.5, 0, 0});
+    EXPECT_EQ(torus["center"], json({0.5, 0, 0}));
+    const json disc = moved_element(lenslab::disc_spec(),
+                                    {{"center", {1, 1, 1}}, {"normal", {0, 0, 1}}}, {1, 0, 0});
+    EXPECT_EQ(disc["center"], json({2, 1, 1}));
+    EXPECT_EQ(disc["normal"], json({0, 0, 1}));  // a direction stays
+    // A value of the wrong shape is left for the reader to refuse.
+    const json bad = moved_element(lenslab::sphere_spec(), {{"center", "here"}}, {1, 0, 0});
+    EXPECT_EQ(bad["center"], "here");
+}
+
 }  // namespace
