@@ -22,8 +22,8 @@
 namespace lenslab {
 namespace {
 
-constexpr double kN = 1.5, kR = -50.0, kThickness = 5.0, kDiameter = 25.0;
-constexpr double kFocalLength = -kR / (kN - 1.0);            // 100
+constexpr double kLensN = 1.5, kLensR = -50.0, kThickness = 5.0, kDiameter = 25.0;
+constexpr double kFocalLength = -kLensR / (kLensN - 1.0);    // 100
 constexpr double kFocusZ = 0.5 * kThickness + kFocalLength;  // back vertex at +d/2
 
 Scene plano_convex(const std::string& back) {
@@ -36,7 +36,7 @@ Scene plano_convex(const std::string& back) {
                    "front": {"shape": "flat"}, "back": )" +
                        back + R"(,
                    "material": {"transparency": 1, "ior": )" +
-                       std::to_string(kN) + R"(}}]
+                       std::to_string(kLensN) + R"(}}]
     })");
 }
 
@@ -95,7 +95,7 @@ double best_rms(const std::vector<OutRay>& rays) {
 }
 
 TEST(AsphericFocus, HyperbolicPlanoConvexFocusesToAPoint) {
-    const std::string k = std::to_string(-kN * kN);
+    const std::string k = std::to_string(-kLensN * kLensN);
     const std::string forms[] = {
         R"({"shape": "conic", "radius": -50, "k": )" + k + "}",
         R"({"shape": "asphere", "radius": -50, "k": )" + k + R"(, "coefficients": [0]})",

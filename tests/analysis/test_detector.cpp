@@ -17,7 +17,7 @@
 namespace lenslab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kPiDetector = std::numbers::pi;
 
 DetectionResult measure(const Scene& scene, int64_t photons, int threads = 0) {
     RenderControl control;
@@ -34,7 +34,7 @@ const DetectorMeasurement& only(const DetectionResult& r) {
 
 // Unpolarised Fresnel transmittance from index n1 into n2 at incidence angle `theta`
 // (Hecht, Optics, 5th ed., eqs. 4.42-4.43: r_s, r_p; R = (r_s^2 + r_p^2) / 2, T = 1 - R).
-double fresnel_t(double theta, double n1, double n2) {
+double fresnel_t_detector(double theta, double n1, double n2) {
     const double sin_t = n1 / n2 * std::sin(theta);
     const double ci = std::cos(theta), ct = std::sqrt(1 - sin_t * sin_t);
     const double rs = (n1 * ci - n2 * ct) / (n1 * ci + n2 * ct);
@@ -59,8 +59,8 @@ TEST(Detector, LensFocusReceivesTheBeamTimesTheFresnelTransmission) {
         const double h = (i + 0.5) * a / kSteps;
         const double theta1 = std::asin(h / radius);
         const double theta2 = theta1 - std::asin(std::sin(theta1) / n);
-        expected +=
-            fresnel_t(theta1, 1, n) * fresnel_t(theta2, n, 1) * 2 * h * (a / kSteps) / (a * a);
+        expected += fresnel_t_detector(theta1, 1, n) * fresnel_t_detector(theta2, n, 1) * 2 * h *
+                    (a / kSteps) / (a * a);
     }
     // The paraxial back focal distance f - t / n = R / (n - 1) - t / n behind the flat back.
     const double bfd = radius / (n - 1) - 5.3 / n, focus = 2.65 + bfd;
@@ -101,7 +101,7 @@ double cell_irradiance(double power, double d, double u0, double u1, double v0, 
         for (int j = 0; j < k; ++j) {
             const double u = u0 + (i + 0.5) * (u1 - u0) / k, v = v0 + (j + 0.5) * (v1 - v0) / k;
             const double r = std::sqrt(d * d + u * u + v * v);
-            sum += power / (4 * kPi) * d / (r * r * r);
+            sum += power / (4 * kPiDetector) * d / (r * r * r);
         }
     }
     return sum / (k * k);
@@ -158,7 +158,8 @@ TEST(Detector, DiscInterceptsTheFluxOfAGlowingSphere) {
                     {"type": "sphere", "center": [0, 1, 0], "radius": 0.2,
                      "material": {"color": 0, "emission": {"color": 1, "intensity": 10}}}]})");
     const DetectorMeasurement m = only(measure(scene, 400000));
-    const double expected = 2 * kPi * kPi * l * s * s * (1 - d / std::sqrt(d * d + a * a));
+    const double expected =
+        2 * kPiDetector * kPiDetector * l * s * s * (1 - d / std::sqrt(d * d + a * a));
     std::printf("P = %.4f W, expected %.4f W (%+.3f%%)\n", m.total_power, expected,
                 100 * (m.total_power / expected - 1));
     EXPECT_NEAR(m.total_power, expected, 0.015 * expected);

@@ -17,12 +17,12 @@
 namespace lenslab {
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
 double descartes_minimum_deviation(double n) {
     const double i = std::acos(std::sqrt((n * n - 1.0) / 3.0));
     const double r = std::asin(std::sin(i) / n);
-    return (std::numbers::pi + 2 * i - 4 * r) * kDeg;
+    return (std::numbers::pi + 2 * i - 4 * r) * kDegPerRad;
 }
 
 // The deviation at which once-reflected light leaving the drop is densest, for a parallel
@@ -46,7 +46,7 @@ double brightest_deviation(const Scene& scene, double nm) {
                 for (const RayTreeNode& out : bounce.children) {
                     if (out.event != Event::Refract) continue;
                     const double deviation =
-                        std::acos(std::clamp(out.direction.z, -1.0, 1.0)) * kDeg;
+                        std::acos(std::clamp(out.direction.z, -1.0, 1.0)) * kDegPerRad;
                     histogram[std::min(histogram.size() - 1,
                                        static_cast<size_t>(deviation / bin))] += out.weight;
                 }

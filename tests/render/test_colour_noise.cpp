@@ -29,7 +29,7 @@ std::string grey_floor_scene(const std::string& integrator, const std::string& o
            lights + "]}";
 }
 
-Film render(const std::string& json) {
+Film render_json(const std::string& json) {
     RenderControl control;
     return render_scene(parse_scene(json), control).film;
 }
@@ -53,26 +53,26 @@ void expect_grey_in_every_pixel(const Film& film) {
     EXPECT_LT(mean, 1.01);
 }
 
-class ColourNoise : public testing::TestWithParam<const char*> {};
+class ColourNoise : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ColourNoise, WhitePointLightOnGreyFloorIsGreyInEveryPixel) {
-    expect_grey_in_every_pixel(render(grey_floor_scene(
+    expect_grey_in_every_pixel(render_json(grey_floor_scene(
         GetParam(), "", R"({"type": "point", "position": [0, 2, 0.5], "power": 100})")));
     // Any light spectrum gives the floor that light's colour, evenly: here a D65 spectrum.
-    expect_grey_in_every_pixel(render(grey_floor_scene(
+    expect_grey_in_every_pixel(render_json(grey_floor_scene(
         GetParam(), "",
         R"({"type": "point", "position": [0, 2, 0.5], "power": 100, "spectrum": "d65"})")));
 }
 
 TEST_P(ColourNoise, EmittingSphereOnGreyFloorIsGreyInEveryPixel) {
-    expect_grey_in_every_pixel(render(grey_floor_scene(
+    expect_grey_in_every_pixel(render_json(grey_floor_scene(
         GetParam(),
         R"(, {"type": "sphere", "center": [0, 1.5, 1], "radius": 0.2, "material": {"color": 0, "emission": {"intensity": 20}}})",
         "")));
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, ColourNoise,
-                         testing::Values("whitted", "photon_map", "path", "sppm"));
+                         ::testing::Values("whitted", "photon_map", "path", "sppm"));
 
 // The floor through a glass ball: with a constant index it stays grey, with a dispersive
 // glass (N-SF11) each camera sample keeps one wavelength there and the pixels are coloured.
@@ -84,8 +84,8 @@ TEST(ColourNoiseThroughGlass, DispersiveGlassStillSplitsTheColours) {
                 glass + "}}",
             R"({"type": "point", "position": [0, 2, 0.5], "power": 100})");
     };
-    const Film plain = render(ball(R"("ior": 1.5)"));
-    const Film dispersive = render(ball(R"("glass": "N-SF11")"));
+    const Film plain = render_json(ball(R"("ior": 1.5)"));
+    const Film dispersive = render_json(ball(R"("glass": "N-SF11")"));
     // Pixels that see the ball: they differ between the two renders.
     int through = 0, coloured = 0;
     double worst_plain = 1.0;

@@ -61,15 +61,15 @@ Difference difference(const Film& a, const Film& b) {
     return {sum / (3.0 * n), changed / n};
 }
 
-Film render(const Scene& scene) {
+Film render_twin(const Scene& scene) {
     RenderControl control;
     return render_scene(scene, control).film;
 }
 
 void expect_twins(const std::string& analytic, const std::string& equation) {
-    const Film reference = render(scene_with(analytic, 1));
-    const Film twin = render(scene_with(equation, 1));
-    const Film reseeded = render(scene_with(analytic, 2));
+    const Film reference = render_twin(scene_with(analytic, 1));
+    const Film twin = render_twin(scene_with(equation, 1));
+    const Film reseeded = render_twin(scene_with(analytic, 2));
     const Difference twins = difference(reference, twin);
     const Difference noise = difference(reference, reseeded);
     std::printf(

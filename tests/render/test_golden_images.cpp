@@ -18,17 +18,17 @@ namespace {
 
 const std::string kGoldenDir = std::string(LENSLAB_TEST_DATA) + "/golden/";
 
-Film render(const std::string& name, int threads = 0) {
+Film render_golden(const std::string& name, int threads = 0) {
     const Scene scene = load_scene_file(kGoldenDir + name + ".json");
     RenderControl control;
     return render_scene(scene, control, threads).film;
 }
 
-class GoldenImage : public testing::TestWithParam<const char*> {};
+class GoldenImage : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(GoldenImage, MatchesTheReference) {
     const std::string name = GetParam();
-    const Film film = render(name);
+    const Film film = render_golden(name);
     const std::string reference = kGoldenDir + name + ".png";
     if (std::getenv("LENSLAB_UPDATE_GOLDEN")) {
         write_image(film, reference);
@@ -52,7 +52,8 @@ TEST_P(GoldenImage, MatchesTheReference) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GoldenImage,
-                         testing::Values("glass_sphere_inverts", "lens_forms", "mirror_beam_pane"));
+                         ::testing::Values("glass_sphere_inverts", "lens_forms",
+                                           "mirror_beam_pane"));
 
 // The references named *_rgb.png were rendered by the RGB transport of the first version
 // (issue 2). With constant indices, spectral transport must give the same picture: no
@@ -88,7 +89,7 @@ TEST_P(GoldenImage, SpectralAgreesWithTheRgbRender) {
 // A ball lens forms an inverted real image of a distant scene: seen through the ball, the
 // wall's blue lower half appears at the top and the red upper half at the bottom.
 TEST(GoldenImage, GlassSphereShowsTheSceneBehindItUpsideDown) {
-    const Film film = render("glass_sphere_inverts");
+    const Film film = render_golden("glass_sphere_inverts");
     const int c = film.width() / 2;
     auto redness = [&](int x, int y) { return film.at(x, y).r - film.at(x, y).b; };
     // Outside the ball (corners): red above, blue below.

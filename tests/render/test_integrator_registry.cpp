@@ -24,7 +24,7 @@ Scene small_caustic_room() {
     return s;
 }
 
-bool same_pixels(const Film& a, const Film& b) {
+bool same_pixels_registry(const Film& a, const Film& b) {
     if (a.width() != b.width() || a.height() != b.height()) return false;
     for (size_t i = 0; i < a.pixels().size(); ++i) {
         const PixelRgb &p = a.pixels()[i], &q = b.pixels()[i];
@@ -86,7 +86,7 @@ TEST(IntegratorRegistry, AveragedPassesStartWithTheOneSampleImage) {
         const RenderResult once = render_scene(scene, control, 1);
         ProgressiveRender progressive(scene, 2);
         ASSERT_TRUE(progressive.add_pass(control));
-        EXPECT_TRUE(same_pixels(progressive.image(), once.film));
+        EXPECT_TRUE(same_pixels_registry(progressive.image(), once.film));
         EXPECT_EQ(progressive.stats(1.0).photons, once.stats.photons);
         ASSERT_TRUE(progressive.add_pass(control));
         EXPECT_EQ(progressive.passes(), 2);

@@ -13,7 +13,7 @@
 namespace lenslab {
 namespace {
 
-RenderResult render(std::string_view integrator) {
+RenderResult render_with(std::string_view integrator) {
     Scene s = load_scene_file(LENSLAB_SOURCE_DIR "/scenes/caustic_room.json");
     s.render.width = s.render.height = 12;
     s.render.spp = 1;
@@ -37,7 +37,7 @@ TEST(RenderStats, ValueByName) {
 }
 
 TEST(RenderStats, PhotonMapSummarisesItsPhotons) {
-    const RenderStats s = render(integrators::kPhotonMap).stats;
+    const RenderStats s = render_with(integrators::kPhotonMap).stats;
     EXPECT_TRUE(starts_with(
         s.summary,
         "photons: " + std::to_string(int64_t(s.value("photons_emitted"))) + " emitted ("))
@@ -50,7 +50,7 @@ TEST(RenderStats, PhotonMapSummarisesItsPhotons) {
 }
 
 TEST(RenderStats, SppmSummarisesItsPasses) {
-    const RenderStats s = render(integrators::kSppm).stats;
+    const RenderStats s = render_with(integrators::kSppm).stats;
     EXPECT_TRUE(
         starts_with(s.summary, "sppm: 3 passes, " + std::to_string(s.photons) + " photons ("))
         << s.summary;
@@ -62,7 +62,7 @@ TEST(RenderStats, SppmSummarisesItsPasses) {
 
 TEST(RenderStats, RayTracersHaveNothingToSay) {
     for (std::string_view name : {integrators::kWhitted, integrators::kPath}) {
-        const RenderStats s = render(name).stats;
+        const RenderStats s = render_with(name).stats;
         EXPECT_TRUE(s.summary.empty()) << name;
         EXPECT_EQ(s.passes, 0);
         EXPECT_EQ(s.photons, 0);

@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 const std::string kDataDir = std::string(LENSLAB_TEST_DATA) + "/scene/data";
 
-std::string scene_with(const std::string& object) {
+std::string mesh_scene_with(const std::string& object) {
     return R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "objects": [)" + object +
            "]}";
 }
@@ -40,8 +40,8 @@ const TriangleMesh& mesh_of(const Scene& s, int i) {
 
 TEST(MeshJson, InlineCubeWithQuadFacesIsAClosedSolid) {
     const Scene s =
-        parse_scene(scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " +
-                               kCubeFaces + R"(, "material": {"transparency": 1}})"));
+        parse_scene(mesh_scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " +
+                                    kCubeFaces + R"(, "material": {"transparency": 1}})"));
     ASSERT_EQ(s.objects.size(), 1u);
     EXPECT_EQ(s.objects[0].type, ObjectType::Mesh);
     const TriangleMesh& m = mesh_of(s, 0);
@@ -66,11 +66,11 @@ void collect(const RayTreeNode& n, std::vector<std::pair<Vec3, double>>& out) {
 
 TEST(MeshJson, InsideOutMeshIsTurnedOutwardAndRefractsTheSame) {
     const std::string material = R"(, "material": {"color": 1, "transparency": 1, "ior": 1.5}})";
-    const Scene right = parse_scene(scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices +
-                                               ", " + kCubeFaces + material));
+    const Scene right = parse_scene(mesh_scene_with(std::string(R"({"type": "mesh", )") +
+                                                    kCubeVertices + ", " + kCubeFaces + material));
     const Scene inverted =
-        parse_scene(scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " +
-                               kCubeFacesInsideOut + material));
+        parse_scene(mesh_scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " +
+                                    kCubeFacesInsideOut + material));
     SurfaceHit h;
     ASSERT_TRUE(mesh_of(inverted, 0).intersect({{0.5, 0.5, 5}, {0, 0, -1}}, 0, INFINITY, h));
     EXPECT_EQ(h.normal.z, 1.0) << "the inside-out cube was not turned outward";
@@ -101,8 +101,8 @@ TEST(MeshJson, OpenMeshIsAcceptedOnlyWhenOpaque) {
     const std::string open_faces =
         R"("faces": [[0,3,2,1], [0,1,5,4], [2,3,7,6], [0,4,7,3], [1,2,6,5]])";
     const Scene s =
-        parse_scene(scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " +
-                               open_faces + R"(, "material": {"specular": 0.5}})"));
+        parse_scene(mesh_scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " +
+                                    open_faces + R"(, "material": {"specular": 0.5}})"));
     const TriangleMesh& m = mesh_of(s, 0);
     EXPECT_FALSE(m.is_closed());
     EXPECT_EQ(m.open_reason(),
@@ -112,8 +112,9 @@ TEST(MeshJson, OpenMeshIsAcceptedOnlyWhenOpaque) {
         m.intersect({{0.5, 0.5, 0.5}, {0, 0, -1}}, 0, INFINITY, h));  // the floor, from above
 
     try {
-        (void)parse_scene(scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " +
-                                     open_faces + R"(, "material": {"transparency": 0.2}})"));
+        (void)parse_scene(mesh_scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices +
+                                          ", " + open_faces +
+                                          R"(, "material": {"transparency": 0.2}})"));
         FAIL() << "a transparent open mesh was accepted";
     } catch (const SceneError& e) {
         EXPECT_EQ(e.path(), "objects[0].faces");
@@ -124,9 +125,9 @@ TEST(MeshJson, OpenMeshIsAcceptedOnlyWhenOpaque) {
 
 TEST(MeshJson, PlacementScalesRotatesThenMoves) {
     // Model +y goes to +z (up), model +z to -y (facing), so model +x stays +x.
-    const Scene s = parse_scene(
-        scene_with(std::string(R"({"type": "mesh", )") + kCubeVertices + ", " + kCubeFaces +
-                   R"(, "scale": 2, "up": [0, 0, 3], "facing": [0, -1, 0], "position": [10, 0, 0],
+    const Scene s = parse_scene(mesh_scene_with(
+        std::string(R"({"type": "mesh", )") + kCubeVertices + ", " + kCubeFaces +
+        R"(, "scale": 2, "up": [0, 0, 3], "facing": [0, -1, 0], "position": [10, 0, 0],
              "material": {"transparency": 1}})"));
     const Aabb b = mesh_of(s, 0).bounds();
     EXPECT_NEAR(length(b.lo - Vec3{10, -2, 0}), 0.0, 1e-12);
@@ -146,7 +147,7 @@ TEST(MeshJson, ObjFileIsFoundNextToTheSceneFile) {
     EXPECT_EQ(m.triangle_count(), 8u);  // 2 triangles + 3 quads
 
     // It is the same solid as the prism shorthand.
-    const Scene p = parse_scene(scene_with(
+    const Scene p = parse_scene(mesh_scene_with(
         R"({"type": "prism", "apex_angle": 60, "side": 1, "height": 1, "center": [0, 0, 0],
             "material": {"transparency": 1}})"));
     const Aabb a = m.bounds(), b = p.objects[0].shape->bounds();
@@ -177,8 +178,9 @@ TEST(MeshJson, ParseSceneTakesTheFolderForRelativePaths) {
         EXPECT_EQ(e.reason().rfind("cannot read 'wedge.obj': ", 0), 0u) << e.reason();
     }
     // An absolute path needs no folder.
-    EXPECT_NO_THROW(parse_scene(scene_with(R"({"type": "mesh", "file": ")" + kDataDir +
-                                           R"(/wedge.obj", "material": {"transparency": 1}})")));
+    EXPECT_NO_THROW(
+        parse_scene(mesh_scene_with(R"({"type": "mesh", "file": ")" + kDataDir +
+                                    R"(/wedge.obj", "material": {"transparency": 1}})")));
 }
 
 // Problems inside an OBJ file name the file, and its faces and vertices as the file numbers
@@ -189,9 +191,9 @@ TEST(MeshJson, ObjProblemsNameTheFileAndCountFromOne) {
     auto reason_for = [&](const std::string& obj_text, const std::string& material) {
         std::ofstream(dir / "t.obj") << obj_text;
         try {
-            (void)parse_scene(
-                scene_with(R"({"type": "mesh", "file": "t.obj", "material": )" + material + "}"),
-                "t", dir.string());
+            (void)parse_scene(mesh_scene_with(R"({"type": "mesh", "file": "t.obj", "material": )" +
+                                              material + "}"),
+                              "t", dir.string());
         } catch (const SceneError& e) {
             EXPECT_EQ(e.path(), "objects[0].file");
             return e.reason();
@@ -211,8 +213,9 @@ TEST(MeshJson, ObjProblemsNameTheFileAndCountFromOne) {
               0u);
     EXPECT_EQ(reason_for("", "{}").rfind("cannot read 't.obj': it has no faces", 0), 0u);
     try {
-        (void)parse_scene(scene_with(R"({"type": "mesh", "file": "absent.obj", "material": {}})"),
-                          "t", dir.string());
+        (void)parse_scene(
+            mesh_scene_with(R"({"type": "mesh", "file": "absent.obj", "material": {}})"), "t",
+            dir.string());
         FAIL() << "a missing OBJ file was accepted";
     } catch (const SceneError& e) {
         EXPECT_EQ(e.reason(), "cannot read 'absent.obj': No such file or directory (looked for " +
@@ -223,7 +226,7 @@ TEST(MeshJson, ObjProblemsNameTheFileAndCountFromOne) {
 TEST(MeshJson, PrismFacesAreWhereTheDocumentationSays) {
     // Apex 60, side 2: apex-to-base 2 cos 30 = sqrt(3), half base 1. Axis +y, facing +z,
     // centre (0, 1, 0): apex edge at z = sqrt(3)/2, base at z = -sqrt(3)/2, x in [-1, 1].
-    const Scene s = parse_scene(scene_with(
+    const Scene s = parse_scene(mesh_scene_with(
         R"({"type": "prism", "side": 2, "height": 0.5, "center": [0, 1, 0],
             "material": {"transparency": 1, "ior": 1.5}})"));
     const Aabb b = s.objects[0].shape->bounds();

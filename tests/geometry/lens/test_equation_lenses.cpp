@@ -29,8 +29,8 @@ SurfacePtr asphere(double r, double k, std::vector<double> c) {
     return std::make_shared<AsphereSurface>(r, k, std::move(c));
 }
 
-LensPrescription make(double thickness, double diameter, SurfacePtr front, SurfacePtr back,
-                      Vec3 x_axis = {}) {
+LensPrescription make_equation_lens(double thickness, double diameter, SurfacePtr front,
+                                    SurfacePtr back, Vec3 x_axis = {}) {
     return {{0, 0, 0}, {0, 0, 1}, thickness, diameter, std::move(front), std::move(back), x_axis};
 }
 
@@ -43,14 +43,15 @@ struct NamedLens {
 std::vector<NamedLens> equation_lenses() {
     return {
         {"hyperbolic plano-convex",
-         make(5, 20, std::make_shared<FlatSurface>(), conic(-25, -2.25))},
-        {"ellipsoid biconvex", make(6, 20, conic(30, -0.5), conic(-40, 0.8))},
+         make_equation_lens(5, 20, std::make_shared<FlatSurface>(), conic(-25, -2.25))},
+        {"ellipsoid biconvex", make_equation_lens(6, 20, conic(30, -0.5), conic(-40, 0.8))},
         {"asphere meniscus",
-         make(4, 20, asphere(25, -1.2, {1e-5, -2e-8}), asphere(40, 0, {-5e-6}))},
-        {"sag biconcave", make(2, 20, sag("-r^2/60"), sag("r^2/80 + 1e-6*r^4"))},
-        {"sag cylinder lens", make(4, 20, sag("x^2/60"), std::make_shared<FlatSurface>())},
-        {"sag saddle", make(5, 20, sag("(x^2 - y^2)/80"), sag("-(x^2 + 2*y^2)/120"))},
-        {"sag ripple", make(3, 20, sag("0.3*sin(r)^2"), sag("-0.2*(1 - cos(x))"))},
+         make_equation_lens(4, 20, asphere(25, -1.2, {1e-5, -2e-8}), asphere(40, 0, {-5e-6}))},
+        {"sag biconcave", make_equation_lens(2, 20, sag("-r^2/60"), sag("r^2/80 + 1e-6*r^4"))},
+        {"sag cylinder lens",
+         make_equation_lens(4, 20, sag("x^2/60"), std::make_shared<FlatSurface>())},
+        {"sag saddle", make_equation_lens(5, 20, sag("(x^2 - y^2)/80"), sag("-(x^2 + 2*y^2)/120"))},
+        {"sag ripple", make_equation_lens(3, 20, sag("0.3*sin(r)^2"), sag("-0.2*(1 - cos(x))"))},
     };
 }
 
@@ -60,8 +61,8 @@ TEST(EquationLens, ChecksRefuseImpossibleLenses) {
         EXPECT_FALSE(LensSolid::check_prescription(p));
     }
     // An oblate ellipsoid ends at 1 / (|c| sqrt(1 + k)).
-    auto too_wide =
-        LensSolid::check_prescription(make(5, 20, conic(10, 1), std::make_shared<FlatSurface>()));
+    auto too_wide = LensSolid::check_prescription(
+        make_equation_lens(5, 20, conic(10, 1), std::make_shared<FlatSurface>()));
     ASSERT_TRUE(too_wide);
     EXPECT_EQ(too_wide->field, "front");
     EXPECT_EQ(too_wide->reason,
@@ -69,28 +70,29 @@ TEST(EquationLens, ChecksRefuseImpossibleLenses) {
               "14.14213562)");
     // A formula's sphere ends where its square root does.
     auto undefined = LensSolid::check_prescription(
-        make(5, 25.6, sag("10 - sqrt(100 - r^2)"), std::make_shared<FlatSurface>()));
+        make_equation_lens(5, 25.6, sag("10 - sqrt(100 - r^2)"), std::make_shared<FlatSurface>()));
     ASSERT_TRUE(undefined);
     EXPECT_EQ(undefined->field, "front");
     EXPECT_EQ(undefined->reason,
               "sag undefined at r = 10.025 inside the diameter (sqrt of a negative number)");
     // Faces that are not surfaces of revolution cross somewhere off the x axis.
-    auto crossing =
-        LensSolid::check_prescription(make(1, 20, sag("y^2/20"), std::make_shared<FlatSurface>()));
+    auto crossing = LensSolid::check_prescription(
+        make_equation_lens(1, 20, sag("y^2/20"), std::make_shared<FlatSurface>()));
     ASSERT_TRUE(crossing);
     EXPECT_EQ(crossing->field, "thickness");
     EXPECT_NE(crossing->reason.find("the lens surfaces cross inside the diameter: at (x, y) = ("),
               std::string::npos)
         << crossing->reason;
-    auto parallel =
-        LensSolid::check_prescription(make(5, 20, sag("x^2/60"), sag("-x^2/60"), {0, 0, 2}));
+    auto parallel = LensSolid::check_prescription(
+        make_equation_lens(5, 20, sag("x^2/60"), sag("-x^2/60"), {0, 0, 2}));
     ASSERT_TRUE(parallel);
     EXPECT_EQ(parallel->field, "x_axis");
 }
 
 TEST(EquationLens, XAxisTurnsAFaceThatIsNotRound) {
     // A cylinder lens curved along x; turning x_axis to world y curves it along y instead.
-    LensPrescription p = make(4, 20, sag("x^2/60"), std::make_shared<FlatSurface>(), {0, 1, 0});
+    LensPrescription p =
+        make_equation_lens(4, 20, sag("x^2/60"), std::make_shared<FlatSurface>(), {0, 1, 0});
     const LensSolid lens(p);
     SurfaceHit h;
     // Along world y (local x) the front face is curved: at y = 6 it lies 36/60 behind the vertex.
@@ -108,7 +110,8 @@ TEST(EquationLens, XAxisTurnsAFaceThatIsNotRound) {
 TEST(EquationLens, RimOfAFaceThatIsNotRound) {
     // Saddle front: the rim's height changes around it. A ray through the rim at z = 0 from
     // the side hits the rim where the edge is thick enough, with a radial normal.
-    const LensSolid lens(make(5, 20, sag("(x^2 - y^2)/80"), std::make_shared<FlatSurface>()));
+    const LensSolid lens(
+        make_equation_lens(5, 20, sag("(x^2 - y^2)/80"), std::make_shared<FlatSurface>()));
     SurfaceHit h;
     ASSERT_TRUE(lens.intersect({{-30, 0, 1.0}, {1, 0, 0}}, 0, INFINITY, h));
     EXPECT_NEAR(h.point.x, -10, 1e-9);
