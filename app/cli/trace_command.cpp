@@ -21,10 +21,6 @@ struct TraceArgs {
 int run(const TraceArgs& a) {
     const Vec3 d{a.direction[0], a.direction[1], a.direction[2]};
     const Vec3 o{a.origin[0], a.origin[1], a.origin[2]};
-    if (!is_finite(o) || !is_finite(d)) {
-        std::cerr << "lenslab: error: --origin and --direction must be finite numbers\n";
-        return 2;
-    }
     if (!(length(d) > 0)) {
         std::cerr << "lenslab: error: --direction: must be a non-zero vector\n";
         return 2;
