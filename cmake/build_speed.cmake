@@ -60,3 +60,16 @@ if(LENSLAB_LLD)
         add_link_options(-fuse-ld=lld)
     endif()
 endif()
+
+# Unity builds for the library and the command-line tool (opt-in for development, on in the
+# CI presets): each batch of neighbouring sources is one translation unit, so json's and the
+# standard library's headers are parsed once per batch. Helpers at file scope (anonymous
+# namespaces, statics) must have file-specific names.
+option(LENSLAB_UNITY "Compile the library and the command-line tool as unity builds" OFF)
+set(LENSLAB_UNITY_BATCH 8 CACHE STRING "Sources per unity batch of the library and the CLI")
+function(lenslab_unity target)
+    if(LENSLAB_UNITY)
+        set_target_properties(${target} PROPERTIES
+            UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${LENSLAB_UNITY_BATCH})
+    endif()
+endfunction()

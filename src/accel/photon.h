@@ -32,7 +32,9 @@ inline void encode_octahedral(const Vec3& v, uint16_t out[2]) {
     out[1] = quantise(y);
 }
 
-inline Vec3 decode_octahedral(const uint16_t in[2]) {
+// The decoded direction before normalisation: the same direction, length between 1/sqrt(3)
+// and 1, enough where only a sign is wanted (which side a photon came from).
+inline Vec3 decode_octahedral_unnormalised(const uint16_t in[2]) {
     double x = in[0] / 65535.0 * 2.0 - 1.0, y = in[1] / 65535.0 * 2.0 - 1.0;
     const double z = 1.0 - std::abs(x) - std::abs(y);
     if (z < 0) {
@@ -41,7 +43,11 @@ inline Vec3 decode_octahedral(const uint16_t in[2]) {
         x = ox;
         y = oy;
     }
-    return normalize(Vec3{x, y, z});
+    return {x, y, z};
+}
+
+inline Vec3 decode_octahedral(const uint16_t in[2]) {
+    return normalize(decode_octahedral_unnormalised(in));
 }
 
 struct Photon {
@@ -49,12 +55,15 @@ struct Photon {
     float power[3];       // flux carried, W per RGB channel
     uint16_t towards[2];  // unit direction back towards where the photon came from (octahedral)
     PhotonKind kind;
-    uint8_t split_axis;  // used by the kd-tree
-    uint8_t unused[2];
+    uint8_t unused[3];
 
     Vec3 pos() const { return {position[0], position[1], position[2]}; }
     Rgb flux() const { return {power[0], power[1], power[2]}; }
     Vec3 incoming() const { return decode_octahedral(towards); }
+    // Whether the photon arrived from the side `n` points to (no square root: a sign only).
+    bool arrived_from_side(const Vec3& n) const {
+        return dot(decode_octahedral_unnormalised(towards), n) > 0.0;
+    }
 };
 
 static_assert(sizeof(Photon) == 32, "a stored photon must take at most 32 bytes");

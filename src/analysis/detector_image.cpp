@@ -11,10 +11,10 @@ namespace lenslab {
 
 namespace {
 
-constexpr unsigned char kInk[3] = {20, 20, 20};
+constexpr unsigned char kLegendInk[3] = {20, 20, 20};
 constexpr unsigned char kMarker[3] = {0, 220, 255};
 constexpr unsigned char kOffSurface[3] = {205, 205, 205};
-constexpr int kMargin = 16, kBarWidth = 22, kLine = 12;  // line pitch of the 5x7 font
+constexpr int kLegendMargin = 16, kBarWidth = 22, kLine = 12;  // line pitch of the 5x7 font
 
 std::string number(double v) {
     char buf[32];
@@ -84,16 +84,16 @@ Image8 detector_image(const DetectorMeasurement& m, ColourScale scale, int map_s
     int tick_w = 0;
     for (const std::string& t : ticks) tick_w = std::max(tick_w, text_width(t));
 
-    const int map_x = kMargin, map_y = kMargin + 2 * kLine + 6;
+    const int map_x = kLegendMargin, map_y = kLegendMargin + 2 * kLine + 6;
     const int bar_x = map_x + map_w + 14;
-    int img_w = bar_x + kBarWidth + 6 + tick_w + kMargin;
-    img_w = std::max(img_w, kMargin + text_width(title, 2) + kMargin);
-    for (const std::string& f : footer) img_w = std::max(img_w, 2 * kMargin + text_width(f));
-    const int img_h = map_y + map_h + 10 + static_cast<int>(footer.size()) * kLine + kMargin;
+    int img_w = bar_x + kBarWidth + 6 + tick_w + kLegendMargin;
+    img_w = std::max(img_w, kLegendMargin + text_width(title, 2) + kLegendMargin);
+    for (const std::string& f : footer) img_w = std::max(img_w, 2 * kLegendMargin + text_width(f));
+    const int img_h = map_y + map_h + 10 + static_cast<int>(footer.size()) * kLine + kLegendMargin;
 
     Image8 img{img_w, img_h,
                std::vector<unsigned char>(static_cast<size_t>(img_w) * img_h * 3, 255)};
-    draw_text(img, kMargin, kMargin, title, kInk, 2);
+    draw_text(img, kLegendMargin, kLegendMargin, title, kLegendInk, 2);
 
     // The map: each pixel shows the cell under its centre; row 0 is the highest v.
     unsigned char c[3];
@@ -130,15 +130,15 @@ Image8 detector_image(const DetectorMeasurement& m, ColourScale scale, int map_s
         const int y =
             map_y +
             static_cast<int>(std::lround((map_h - 1) * (1.0 - tick_at[static_cast<size_t>(i)])));
-        fill(img, bar_x + kBarWidth, y, bar_x + kBarWidth + 4, y + 1, kInk);
+        fill(img, bar_x + kBarWidth, y, bar_x + kBarWidth + 4, y + 1, kLegendInk);
         draw_text(img, bar_x + kBarWidth + 6, std::clamp(y - 3, map_y - 3, map_y + map_h - 4),
-                  ticks[static_cast<size_t>(i)], kInk);
+                  ticks[static_cast<size_t>(i)], kLegendInk);
     }
-    draw_text(img, bar_x, map_y - kLine, irradiance_unit(m), kInk);
+    draw_text(img, bar_x, map_y - kLine, irradiance_unit(m), kLegendInk);
 
     int y = map_y + map_h + 10;
     for (const std::string& f : footer) {
-        draw_text(img, kMargin, y, f, kInk);
+        draw_text(img, kLegendMargin, y, f, kLegendInk);
         y += kLine;
     }
     return img;

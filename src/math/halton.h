@@ -11,18 +11,35 @@ namespace lenslab {
 
 inline constexpr int kHaltonDimensions = 5;
 
-// The radical inverse of `index` in the `dimension`-th prime (2, 3, 5, 7, 11).
-inline double radical_inverse(int dimension, uint64_t index) {
-    constexpr uint64_t kPrimes[kHaltonDimensions] = {2, 3, 5, 7, 11};
-    const uint64_t base = kPrimes[dimension];
-    const double inv_base = 1.0 / static_cast<double>(base);
+// The radical inverse of `index` in base `Base`. The base is a constant so that the digit
+// divisions compile to multiplications (a 64-bit division by a run-time value costs tens of
+// cycles, and an aimed photon needs about fifty of them).
+template <uint64_t Base>
+double radical_inverse_in_base(uint64_t index) {
+    constexpr double inv_base = 1.0 / static_cast<double>(Base);
     double inv = inv_base, result = 0;
     while (index > 0) {
-        result += static_cast<double>(index % base) * inv;
-        index /= base;
+        result += static_cast<double>(index % Base) * inv;
+        index /= Base;
         inv *= inv_base;
     }
     return result;
+}
+
+// The radical inverse of `index` in the `dimension`-th prime (2, 3, 5, 7, 11).
+inline double radical_inverse(int dimension, uint64_t index) {
+    switch (dimension) {
+        case 0:
+            return radical_inverse_in_base<2>(index);
+        case 1:
+            return radical_inverse_in_base<3>(index);
+        case 2:
+            return radical_inverse_in_base<5>(index);
+        case 3:
+            return radical_inverse_in_base<7>(index);
+        default:
+            return radical_inverse_in_base<11>(index);
+    }
 }
 
 // Point `index` of the sequence, each coordinate shifted by `rotation` modulo 1.

@@ -33,7 +33,10 @@ public:
 
     const PhotonKdTree& direct() const { return m_direct; }
     const PhotonKdTree& caustic() const { return m_caustic; }
-    size_t memory_bytes() const { return m_storage.capacity() * sizeof(Photon); }
+    size_t memory_bytes() const {
+        return m_storage.capacity() * sizeof(Photon) + m_direct.memory_bytes() +
+               m_caustic.memory_bytes();
+    }
 
     // Irradiance (W/m^2 per channel) at `x` on a surface whose normal `n` faces the side
     // being lit, from the photons of `map` that arrived on that side:

@@ -8,7 +8,7 @@ namespace {
 
 nlohmann::json array_of(const Vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
-ElementSpec declare() {
+ElementSpec declare_camera() {
     const CameraSettings d;
     ElementSpec s{"camera", "the camera", {}, {}};
     s.params = {
@@ -35,7 +35,7 @@ ElementSpec declare() {
 }  // namespace
 
 const ElementSpec& camera_spec() {
-    static const ElementSpec spec = declare();
+    static const ElementSpec spec = declare_camera();
     return spec;
 }
 

@@ -1,9 +1,9 @@
 #include "scene/light_source.h"
 
 #include <cmath>
-#include <numbers>
 
 #include "geometry/sphere.h"
+#include "math/constants.h"
 #include "math/frame.h"
 #include "math/sampling.h"
 #include "scene/light.h"
@@ -11,8 +11,6 @@
 namespace lenslab {
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // Isotropic: intensity spectrum / (4 pi) in every direction.
 class PointLightSource final : public Light {

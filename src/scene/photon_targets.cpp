@@ -1,16 +1,14 @@
 #include "scene/photon_targets.h"
 
 #include <cmath>
-#include <numbers>
 
+#include "math/constants.h"
 #include "math/frame.h"
 #include "math/sampling.h"
 
 namespace lenslab {
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 struct Cone {
     Vec3 axis;

@@ -7,7 +7,7 @@ namespace lenslab {
 
 namespace {
 
-ElementSpec declare() {
+ElementSpec declare_render_settings() {
     const RenderSettings d;  // the struct's initialisers are the defaults
     const std::string photon_map = "Photon map";
     const std::string sppm = "Progressive photon map (sppm, the view)";
@@ -134,7 +134,7 @@ ElementSpec declare() {
 }  // namespace
 
 const ElementSpec& render_settings_spec() {
-    static const ElementSpec spec = declare();
+    static const ElementSpec spec = declare_render_settings();
     return spec;
 }
 

@@ -40,16 +40,19 @@ void type_value(QDoubleSpinBox* box, double v) {
 
 // Waits for a frame rendered from the scene as it is now (pass 1 after a restart).
 bool wait_for_fresh_frame(MainWindow& w, int timeout_ms = 20000) {
-    QSignalSpy spy(w.renderer(), &RenderController::frame_ready);
+    // frame_ready is emitted on the render thread; a QSignalSpy would record it there (a
+    // direct connection) while this thread reads its list, so the frames are counted here,
+    // on this thread, through a queued connection.
+    bool fresh = false;
+    const QMetaObject::Connection watch = QObject::connect(
+        w.renderer(), &RenderController::frame_ready, &w,
+        [&fresh](const QImage&, int passes) { fresh = fresh || passes == 1; },
+        Qt::QueuedConnection);
     QElapsedTimer t;
     t.start();
-    while (t.elapsed() < timeout_ms) {
-        if (!spy.wait(timeout_ms - int(t.elapsed()))) return false;
-        for (const auto& args : spy) {
-            if (args.at(1).toInt() == 1) return true;
-        }
-    }
-    return false;
+    while (!fresh && t.elapsed() < timeout_ms) QTest::qWait(5);
+    QObject::disconnect(watch);
+    return fresh;
 }
 
 }  // namespace

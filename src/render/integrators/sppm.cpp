@@ -7,10 +7,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "accel/hash_grid.h"
 #include "accel/photon.h"
+#include "math/constants.h"
 #include "math/rng.h"
 #include "optics/glass.h"
 #include "render/camera.h"
@@ -25,7 +25,6 @@ namespace lenslab {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // The pass wavelengths' rotation uses the stream just below this one, apart from the camera
 // paths' (pixel index) and the photons' (2^62 + photon index). (Streams from here up once
 // rotated the visible points' wavelengths, before their colour became exact.)
