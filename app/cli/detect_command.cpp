@@ -47,7 +47,13 @@ int run(const DetectArgs& a, const RenderOverrides& overrides) {
                   << ": no light to measure (add a point light, a beam or an emitting sphere)\n";
         return 1;
     }
-    check_output_directory(a.output);  // before the measurement, not after it
+    // Before the measurement, not after it: the folder, and the files in it if it exists.
+    check_output_directory(a.output);
+    if (std::filesystem::is_directory(a.output)) {
+        for (const std::string& stem : detector_file_stems(scene))
+            for (const std::string& file : detector_file_paths(a.output, stem))
+                check_output_file(file);
+    }
     DetectionSettings settings;
     settings.photons_per_light = scene.render.photons;
     settings.caustic_photons_per_light = scene.render.caustic_photons;

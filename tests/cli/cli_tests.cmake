@@ -362,3 +362,9 @@ lenslab_cli_test(NAME output.render_through_a_link_to_dev_full
     ARGS render -o ${full_link} --width 8 --height 8 --spp 1 -q
     CHECKS -DEXPECT_EXIT=1 -DMAKE_LINK=${full_link} -DLINK_TO=/dev/full
            "-DSTDERR_LINE=lenslab: error: cannot write '${full_link}': no space left on device")
+# ...and, in a folder that exists, the files it would write.
+set(detect_read_only_dir ${LENSLAB_CLI_OUT}/outputs/detect_read_only)
+lenslab_cli_test(NAME output.detect_onto_a_read_only_file
+    ARGS detect scenes/detector_focus.json -o ${detect_read_only_dir} --photons 100000000
+    CHECKS -DEXPECT_EXIT=1 -DMAKE_FILE=${detect_read_only_dir}/focal_plane.csv -DMAKE_FILE_READ_ONLY=ON
+           "-DSTDERR_LINE=lenslab: error: cannot write '${detect_read_only_dir}/focal_plane.csv': the file is read-only")
