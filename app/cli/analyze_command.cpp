@@ -48,17 +48,8 @@ std::optional<int> find_lens(const Scene& scene, const std::string& name, std::s
     return std::nullopt;
 }
 
-// Written atomically (util/atomic_file.h), so a failed write leaves no half file.
-bool write_file(const std::string& path, const std::string& text) {
-    try {
-        write_text_atomically(path, text);
-        return true;
-    } catch (const FileWriteError&) {
-        return false;
-    }
-}
-
 int run(const AnalyzeArgs& a) {
+    if (!a.svg.empty()) check_output_file(a.svg);  // before the analysis
     const Scene scene = load_scene_file(a.scene, {.require_camera = false});
     std::optional<int> lens;
     if (!a.lens.empty()) {
@@ -88,10 +79,8 @@ int run(const AnalyzeArgs& a) {
         const LensReport report = analyze_lens_system(system, options);
         if (!a.svg.empty()) {
             const std::string svg = ray_diagram_svg(make_ray_diagram(system, report));
-            if (!write_file(a.svg, svg)) {
-                std::cerr << "lenslab: error: " << a.svg << ": cannot write the ray diagram\n";
-                return 1;
-            }
+            // Atomically: a failed write leaves no half file, and says why it failed.
+            write_text_atomically(a.svg, svg);
         }
         if (a.json) {
             nlohmann::ordered_json j = report_json(system, report);

@@ -88,7 +88,7 @@ int run_convergence_bench(const ConvergenceArgs& a) {
     ConvergenceSettings settings = a.settings;
     std::copy(a.region.begin(), a.region.end(), settings.region);
     const std::filesystem::path dir(a.out_dir);
-    std::filesystem::create_directories(dir);
+    create_output_directory(a.out_dir);  // before the measurement, not after it
     const ConvergenceResult r = run_convergence(
         scene, settings, [](const std::string& line) { std::cerr << line << "\n"; });
     write_text_atomically((dir / "convergence.csv").string(), convergence_csv(r));
@@ -166,7 +166,7 @@ bool plot(const std::filesystem::path& dir, const ReportBenchmarkSettings& s,
 int run(const BenchArgs& a) {
     const Scene scene = a.scene.empty() ? default_scene() : load_scene_file(a.scene);
     const std::filesystem::path dir(a.out_dir);
-    std::filesystem::create_directories(dir);
+    create_output_directory(a.out_dir);  // before the measurement, not after it
     const ReportBenchmarkResult r = run_report_benchmark(
         scene, a.settings, [](const std::string& line) { std::cerr << line << "\n"; });
     write_text_atomically((dir / "report.csv").string(), report_benchmark_csv(r));

@@ -277,8 +277,8 @@ int run_bench(const PovrayBenchArgs& a) {
     }
     check_file(a.pov, "--pov");
     check_file(a.scene, "--scene");
+    create_output_directory(a.out_dir);  // before the runs, not after them
     const fs::path dir = fs::absolute(a.out_dir);
-    fs::create_directories(dir);
     const fs::path pov_png = dir / "povray.png", ll_png = dir / "lenslab.png";
     // POV-Ray writes its image in place, so it draws into a temporary name that is renamed
     // once it has finished: povray.png is never half written.

@@ -15,6 +15,7 @@
 #include "render/photon_tracer.h"
 #include "render_overrides.h"
 #include "scene/scene_json.h"
+#include "util/output_path.h"
 
 namespace lenslab::cli {
 
@@ -46,6 +47,13 @@ int run(const DetectArgs& a, const RenderOverrides& overrides) {
                   << ": no light to measure (add a point light, a beam or an emitting sphere)\n";
         return 1;
     }
+    // Before the measurement, not after it: the folder, and the files in it if it exists.
+    check_output_directory(a.output);
+    if (std::filesystem::is_directory(a.output)) {
+        for (const std::string& stem : detector_file_stems(scene))
+            for (const std::string& file : detector_file_paths(a.output, stem))
+                check_output_file(file);
+    }
     DetectionSettings settings;
     settings.photons_per_light = scene.render.photons;
     settings.caustic_photons_per_light = scene.render.caustic_photons;
@@ -75,7 +83,7 @@ int run(const DetectArgs& a, const RenderOverrides& overrides) {
         return 130;
     }
 
-    std::filesystem::create_directories(a.output);
+    create_output_directory(a.output);
     const std::vector<std::string> stems = detector_file_stems(result);
     nlohmann::json doc{{"scene", a.scene},
                        {"photons_per_light", settings.photons_per_light},

@@ -13,6 +13,7 @@
 #include "render/render_session.h"
 #include "render_overrides.h"
 #include "scene/render_settings.h"
+#include "util/output_path.h"
 
 namespace lenslab::cli {
 
@@ -76,6 +77,7 @@ int run(const RenderArgs& a, const RenderOverrides& overrides) {
                   << "': unknown image type (use a .png or .exr file name)\n";
         return 2;
     }
+    check_output_file(a.output);  // before the render: a read-only target fails at once
     const nlohmann::json root = overrides.patched_json(a.scene);
     if (unbounded_passes(overrides, root)) {
         std::cerr << "lenslab: error: --passes 0 means no pass limit, which needs a time budget "

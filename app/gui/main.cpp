@@ -14,6 +14,7 @@
 #include "main_window.h"
 #include "render_controller.h"
 #include "scene_tree.h"
+#include "util/output_path.h"
 
 int main(int argc, char** argv) {
     QApplication app(argc, argv);
@@ -67,6 +68,12 @@ int main(int argc, char** argv) {
             return 2;
         }
         const QString file = parser.value(screenshot);
+        try {
+            lenslab::check_output_file(file.toStdString());  // before the render, not after
+        } catch (const lenslab::FileWriteError& e) {
+            std::fprintf(stderr, "lenslab-gui: error: %s\n", e.what());
+            return 1;
+        }
         QObject::connect(
             window.renderer(), &lenslab::gui::RenderController::frame_ready, &window,
             [&](const QImage&, int done) {

@@ -44,12 +44,15 @@ std::string vec_text(const Vec3& v) {
     return s.str();
 }
 
-}  // namespace
+struct NamedDetector {
+    std::string name;
+    int object;
+};
 
-std::vector<std::string> detector_file_stems(const DetectionResult& result) {
+std::vector<std::string> stems_of(const std::vector<NamedDetector>& detectors) {
     std::vector<std::string> stems;
     std::set<std::string> used;
-    for (const DetectorMeasurement& m : result.detectors) {
+    for (const NamedDetector& m : detectors) {
         std::string s;
         for (char c : m.name)
             s += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
@@ -62,6 +65,26 @@ std::vector<std::string> detector_file_stems(const DetectionResult& result) {
         stems.push_back(s);
     }
     return stems;
+}
+
+}  // namespace
+
+std::vector<std::string> detector_file_stems(const DetectionResult& result) {
+    std::vector<NamedDetector> detectors;
+    for (const DetectorMeasurement& m : result.detectors) detectors.push_back({m.name, m.object});
+    return stems_of(detectors);
+}
+
+std::vector<std::string> detector_file_stems(const Scene& scene) {
+    std::vector<NamedDetector> detectors;
+    for (const int o : detector_objects(scene))
+        detectors.push_back({scene.objects[static_cast<size_t>(o)].name, o});
+    return stems_of(detectors);
+}
+
+std::vector<std::string> detector_file_paths(const std::string& dir, const std::string& stem) {
+    const std::string base = (std::filesystem::path(dir) / stem).string();
+    return {base + ".csv", base + ".exr", base + ".png"};
 }
 
 std::string band_channel_name(const DetectorMeasurement& m, int band) {
@@ -107,8 +130,8 @@ std::string detector_csv(const DetectorMeasurement& m, const DetectionSettings& 
 
 void write_detector_files(const DetectorMeasurement& m, const DetectionSettings& settings,
                           const std::string& dir, const std::string& stem, ColourScale scale) {
-    const std::filesystem::path base = std::filesystem::path(dir) / stem;
-    write_text_atomically(base.string() + ".csv", detector_csv(m, settings));
+    const std::vector<std::string> paths = detector_file_paths(dir, stem);
+    write_text_atomically(paths[0], detector_csv(m, settings));
     // EXR rows run top to bottom: row 0 is the highest v, as in the picture.
     const DetectorGrid& g = m.grid;
     const int nu = g.cells_u(), nv = g.cells_v();
@@ -124,8 +147,8 @@ void write_detector_files(const DetectorMeasurement& m, const DetectionSettings&
             channels[static_cast<size_t>(b) + 1].values[at] =
                 static_cast<float>(m.band_irradiance(b, c));
     }
-    write_exr_channels(nu, nv, channels, base.string() + ".exr");
-    write_png_image(detector_image(m, scale), base.string() + ".png");
+    write_exr_channels(nu, nv, channels, paths[1]);
+    write_png_image(detector_image(m, scale), paths[2]);
 }
 
 nlohmann::json detector_summary_json(const DetectorMeasurement& m) {

@@ -16,6 +16,10 @@ namespace lenslab {
 // File name stems for the detectors: their names made safe for a file system
 // ("focal plane" -> "focal_plane"), made unique by the object index when two collide.
 std::vector<std::string> detector_file_stems(const DetectionResult& result);
+// The same stems from the scene, before anything is measured.
+std::vector<std::string> detector_file_stems(const Scene& scene);
+// The files write_detector_files writes for `stem` into `dir`.
+std::vector<std::string> detector_file_paths(const std::string& dir, const std::string& stem);
 
 std::string detector_csv(const DetectorMeasurement& m, const DetectionSettings& settings);
 // Name of the EXR channel of band `band` ("E_360_490nm"); the total is "E_total".

@@ -4,9 +4,11 @@
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStdIO.h>
 #include <png.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -26,7 +28,8 @@ std::string extension_of(const std::string& path) {
     return ext;
 }
 
-void write_png(const Image8& img, const std::string& path) {
+// `img` as a PNG file `file`; `path` is the name messages give.
+void write_png(const Image8& img, const std::string& file, const std::string& path) {
     png_image image{};
     image.version = PNG_IMAGE_VERSION;
     image.width = static_cast<png_uint_32>(img.width);
@@ -35,39 +38,59 @@ void write_png(const Image8& img, const std::string& path) {
     // libpng's default compression took 0.1 s for a 900x900 render, longer than rendering
     // it without photons; the fast setting writes a file about a fifth larger in a fraction.
     image.flags = PNG_IMAGE_FLAG_FAST;
-    if (!png_image_write_to_file(&image, path.c_str(), 0, img.rgb.data(), 0, nullptr)) {
+    if (!png_image_write_to_file(&image, file.c_str(), 0, img.rgb.data(), 0, nullptr)) {
         throw ImageError("cannot write PNG '" + path + "': " + image.message);
     }
 }
 
-void write_exr(const Film& film, const std::string& path, double scale) {
-    const int w = film.width(), h = film.height();
-    std::vector<float> r(size_t(w) * h), g(r.size()), b(r.size());
-    auto scaled = [scale](float v) {
-        return static_cast<float>(std::min(v * scale, double(std::numeric_limits<float>::max())));
-    };
-    for (size_t i = 0; i < r.size(); ++i) {
-        const PixelRgb& p = film.pixels()[i];
-        r[i] = scaled(p.r);
-        g[i] = scaled(p.g);
-        b[i] = scaled(p.b);
-    }
+// The channels as an OpenEXR file `file`; `path` is the name messages give. The stream is
+// ours, not OpenEXR's, so that its close is checked: the last buffered bytes (and on a small
+// image all of them) reach the disk only then, and a full disk must not pass as success.
+void write_exr_file(const std::string& file, const std::string& path, int width, int height,
+                    const std::vector<ExrChannel>& channels) {
+    std::ofstream stream(file, std::ios::binary | std::ios::trunc);
+    if (!stream) throw ImageError(output_error(path, error_reason(errno)).what());
     try {
-        Imf::Header header(w, h);
-        header.channels().insert("R", Imf::Channel(Imf::FLOAT));
-        header.channels().insert("G", Imf::Channel(Imf::FLOAT));
-        header.channels().insert("B", Imf::Channel(Imf::FLOAT));
-        Imf::OutputFile file(path.c_str(), header);
+        Imf::StdOFStream out(stream, file.c_str());
+        Imf::Header header(width, height);
+        for (const ExrChannel& c : channels)
+            header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+        Imf::OutputFile exr(out, header);
         Imf::FrameBuffer fb;
-        const size_t xs = sizeof(float), ys = sizeof(float) * w;
-        fb.insert("R", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(r.data()), xs, ys));
-        fb.insert("G", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(g.data()), xs, ys));
-        fb.insert("B", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(b.data()), xs, ys));
-        file.setFrameBuffer(fb);
-        file.writePixels(h);
+        const size_t xs = sizeof(float), ys = sizeof(float) * static_cast<size_t>(width);
+        for (const ExrChannel& c : channels) {
+            fb.insert(c.name,
+                      Imf::Slice(Imf::FLOAT,
+                                 const_cast<char*>(reinterpret_cast<const char*>(c.values.data())),
+                                 xs, ys));
+        }
+        exr.setFrameBuffer(fb);
+        exr.writePixels(height);
     } catch (const std::exception& e) {
         throw ImageError("cannot write EXR '" + path + "': " + e.what());
     }
+    errno = 0;
+    stream.close();
+    if (!stream) {
+        throw ImageError(
+            output_error(path, errno ? error_reason(errno) : "the write failed").what());
+    }
+}
+
+void write_exr(const Film& film, const std::string& file, const std::string& path, double scale) {
+    const size_t n = film.pixels().size();
+    std::vector<ExrChannel> channels{
+        {"R", std::vector<float>(n)}, {"G", std::vector<float>(n)}, {"B", std::vector<float>(n)}};
+    auto scaled = [scale](float v) {
+        return static_cast<float>(std::min(v * scale, double(std::numeric_limits<float>::max())));
+    };
+    for (size_t i = 0; i < n; ++i) {
+        const PixelRgb& p = film.pixels()[i];
+        channels[0].values[i] = scaled(p.r);
+        channels[1].values[i] = scaled(p.g);
+        channels[2].values[i] = scaled(p.b);
+    }
+    write_exr_file(file, path, film.width(), film.height(), channels);
 }
 
 // write_atomically (util/atomic_file.h), with a failed rename reported as an ImageError
@@ -84,32 +107,13 @@ void write_via_temporary(const std::string& path, Write write) {
 }  // namespace
 
 void write_png_image(const Image8& image, const std::string& path) {
-    write_via_temporary(path, [&](const std::string& tmp) { write_png(image, tmp); });
+    write_via_temporary(path, [&](const std::string& tmp) { write_png(image, tmp, path); });
 }
 
 void write_exr_channels(int width, int height, const std::vector<ExrChannel>& channels,
                         const std::string& path) {
-    write_via_temporary(path, [&](const std::string& tmp) {
-        try {
-            Imf::Header header(width, height);
-            for (const ExrChannel& c : channels)
-                header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
-            Imf::OutputFile file(tmp.c_str(), header);
-            Imf::FrameBuffer fb;
-            const size_t xs = sizeof(float), ys = sizeof(float) * static_cast<size_t>(width);
-            for (const ExrChannel& c : channels) {
-                fb.insert(
-                    c.name,
-                    Imf::Slice(Imf::FLOAT,
-                               const_cast<char*>(reinterpret_cast<const char*>(c.values.data())),
-                               xs, ys));
-            }
-            file.setFrameBuffer(fb);
-            file.writePixels(height);
-        } catch (const std::exception& e) {
-            throw ImageError("cannot write EXR '" + path + "': " + e.what());
-        }
-    });
+    write_via_temporary(
+        path, [&](const std::string& tmp) { write_exr_file(tmp, path, width, height, channels); });
 }
 
 double linear_to_srgb(double v) {
@@ -147,9 +151,9 @@ void write_image(const Film& film, const std::string& path, double exposure_stop
     }
     write_via_temporary(path, [&](const std::string& tmp) {
         if (ext == ".png") {
-            write_png(to_srgb8(film, exposure_stops), tmp);
+            write_png(to_srgb8(film, exposure_stops), tmp, path);
         } else {
-            write_exr(film, tmp, std::exp2(exposure_stops));
+            write_exr(film, tmp, path, std::exp2(exposure_stops));
         }
     });
 }

@@ -17,18 +17,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
-DetectionResult beam_on_screen() {
+Scene beam_on_screen_scene() {
     // A 1 W beam of radius 0.5 on a 2 x 1 screen (unit mm): 1 / (pi 0.25) W/mm^2 inside.
-    const Scene scene = parse_scene(R"({"camera": {"position": [0, 5, 5], "look_at": [0, 0, 0]},
+    return parse_scene(R"({"camera": {"position": [0, 5, 5], "look_at": [0, 0, 0]},
         "objects": [{"name": "screen: a/b", "type": "rectangle", "center": [0, 0, 2], "normal": [0, 0, -1],
                      "size": [2, 1], "material": {"color": 0.5}, "detector": {"resolution": [8, 4], "unit": "mm"}},
                     {"name": "screen: a/b", "type": "triangle", "vertices": [[5, 0, 2], [6, 0, 2], [5, 1, 2]],
                      "material": {"color": 0.5}, "detector": true}],
         "lights": [{"type": "beam", "origin": [0, 0, -5], "direction": [0, 0, 1], "radius": 0.5, "power": 1}]})");
+}
+
+DetectionResult beam_on_screen() {
     RenderControl control;
     DetectionSettings s;
     s.photons_per_light = 20000;
-    return measure_detectors(scene, s, control);
+    return measure_detectors(beam_on_screen_scene(), s, control);
 }
 
 TEST(DetectorFiles, StemsAreSafeAndUnique) {
@@ -37,6 +40,8 @@ TEST(DetectorFiles, StemsAreSafeAndUnique) {
     ASSERT_EQ(stems.size(), 2u);
     EXPECT_EQ(stems[0], "screen__a_b");
     EXPECT_EQ(stems[1], "screen__a_b_1");
+    // Known from the scene alone, so `lenslab detect` checks its files before measuring.
+    EXPECT_EQ(detector_file_stems(beam_on_screen_scene()), stems);
 }
 
 TEST(DetectorFiles, CsvStatesUnitsAndHoldsEveryCell) {

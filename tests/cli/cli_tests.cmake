@@ -326,3 +326,45 @@ add_test(NAME cli.empty_output_path
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.empty_output_path PROPERTIES TIMEOUT 60 LABELS cli
     PASS_REGULAR_EXPRESSION "lenslab: error: --output: must not be empty")
+
+# Issue 15, output paths (src/util/output_path.h): every command checks where it writes before
+# any work (the progress lines on stderr would break the one-line checks), and writes through
+# symbolic links. Before, `detect -o FILE` measured in full and then failed as an internal error.
+set(detect_onto_file ${LENSLAB_CLI_OUT}/outputs/detect_onto_a_file)
+lenslab_cli_test(NAME output.detect_onto_a_regular_file
+    ARGS detect scenes/detector_focus.json -o ${detect_onto_file} --photons 100000000
+    CHECKS -DEXPECT_EXIT=1 -DMAKE_FILE=${detect_onto_file}
+           "-DSTDERR_LINE=lenslab: error: cannot write into folder '${detect_onto_file}': is not a directory")
+set(bench_onto_file ${LENSLAB_CLI_OUT}/outputs/bench_onto_a_file)
+lenslab_cli_test(NAME output.bench_onto_a_regular_file
+    ARGS bench report -o ${bench_onto_file}
+    CHECKS -DEXPECT_EXIT=1 -DMAKE_FILE=${bench_onto_file}
+           "-DSTDERR_LINE=lenslab: error: cannot write into folder '${bench_onto_file}': is not a directory")
+set(read_only_out ${LENSLAB_CLI_OUT}/outputs/read_only.png)
+lenslab_cli_test(NAME output.render_onto_a_read_only_file
+    ARGS render -o ${read_only_out} --width 8 --height 8 --spp 1
+    CHECKS -DEXPECT_EXIT=1 -DMAKE_FILE=${read_only_out} -DMAKE_FILE_READ_ONLY=ON
+           "-DSTDERR_LINE=lenslab: error: cannot write '${read_only_out}': the file is read-only")
+set(folder_out ${LENSLAB_CLI_OUT}/outputs/a_folder.png)
+file(MAKE_DIRECTORY ${folder_out})
+lenslab_cli_test(NAME output.render_onto_a_folder
+    ARGS render -o ${folder_out} --width 8 --height 8 --spp 1
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: cannot write '${folder_out}': is a directory")
+set(missing_folder_svg ${LENSLAB_CLI_OUT}/outputs/no_such_folder/diagram.svg)
+lenslab_cli_test(NAME output.analyze_svg_into_a_missing_folder
+    ARGS analyze scenes/achromat_doublet.json --svg ${missing_folder_svg}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: cannot write '${missing_folder_svg}': folder '${LENSLAB_CLI_OUT}/outputs/no_such_folder' does not exist")
+# /dev/full fails every write with ENOSPC: a full disk is reported as one, never as success.
+set(full_link ${LENSLAB_CLI_OUT}/outputs/full.png)
+lenslab_cli_test(NAME output.render_through_a_link_to_dev_full
+    ARGS render -o ${full_link} --width 8 --height 8 --spp 1 -q
+    CHECKS -DEXPECT_EXIT=1 -DMAKE_LINK=${full_link} -DLINK_TO=/dev/full
+           "-DSTDERR_LINE=lenslab: error: cannot write '${full_link}': no space left on device")
+# ...and, in a folder that exists, the files it would write.
+set(detect_read_only_dir ${LENSLAB_CLI_OUT}/outputs/detect_read_only)
+lenslab_cli_test(NAME output.detect_onto_a_read_only_file
+    ARGS detect scenes/detector_focus.json -o ${detect_read_only_dir} --photons 100000000
+    CHECKS -DEXPECT_EXIT=1 -DMAKE_FILE=${detect_read_only_dir}/focal_plane.csv -DMAKE_FILE_READ_ONLY=ON
+           "-DSTDERR_LINE=lenslab: error: cannot write '${detect_read_only_dir}/focal_plane.csv': the file is read-only")

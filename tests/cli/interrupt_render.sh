@@ -36,7 +36,7 @@ interrupt() {
     grep -q "render cancelled; nothing written" "$err" || problems+=" no 'render cancelled' message;"
     [ "$ms" -lt 3000 ] || problems+=" took $ms ms to stop;"
     local left
-    left=$(ls "$out_dir" | grep -F "$name.png" || true)
+    left=$(ls -A "$out_dir" | grep -e "$name.png" -e "^\.lenslab-" || true)
     [ -z "$left" ] || problems+=" left files: $left;"
     if [ -n "$problems" ]; then
         echo "FAIL $name:$problems"

@@ -16,6 +16,11 @@
 #   OUTPUT=<path>                  removed before the run, then checked:
 #   OUTPUT_CREATED=ON|OFF          the run must (ON, and it must be a PNG) or must not create it
 #   OUTPUT_STARTS=<text>           ...a created output starts with this text instead (e.g. <svg)
+#   MAKE_FILE=<path>               a regular file made before the run (its folder too), which
+#                                  the run must leave as it was
+#   MAKE_FILE_READ_ONLY=ON         ...with no write permission bit (chmod 444)
+#   MAKE_LINK=<path>               a symbolic link made before the run, to LINK_TO, which must
+#   LINK_TO=<target>               still be a link afterwards
 
 cmake_minimum_required(VERSION 3.25)
 
@@ -31,6 +36,21 @@ if(DEFINED OUTPUT)
     file(REMOVE "${OUTPUT}")
     get_filename_component(output_dir "${OUTPUT}" DIRECTORY)
     file(MAKE_DIRECTORY "${output_dir}")
+endif()
+
+set(made_file_text "lenslab test: this file must be left as it was\n")
+if(DEFINED MAKE_FILE)
+    file(REMOVE "${MAKE_FILE}")
+    file(WRITE "${MAKE_FILE}" "${made_file_text}")
+    if(MAKE_FILE_READ_ONLY)
+        file(CHMOD "${MAKE_FILE}" PERMISSIONS OWNER_READ GROUP_READ WORLD_READ)
+    endif()
+endif()
+if(DEFINED MAKE_LINK)
+    get_filename_component(link_dir "${MAKE_LINK}" DIRECTORY)
+    file(MAKE_DIRECTORY "${link_dir}")
+    file(REMOVE "${MAKE_LINK}")
+    file(CREATE_LINK "${LINK_TO}" "${MAKE_LINK}" SYMBOLIC)
 endif()
 
 execute_process(
@@ -137,6 +157,24 @@ if(DEFINED OUTPUT AND DEFINED OUTPUT_CREATED)
         fail("${OUTPUT} was created although the command failed")
     endif()
     file(REMOVE "${OUTPUT}")
+endif()
+
+if(DEFINED MAKE_FILE)
+    if(IS_DIRECTORY "${MAKE_FILE}" OR NOT EXISTS "${MAKE_FILE}")
+        fail("${MAKE_FILE} is no longer the file made before the run")
+    else()
+        file(READ "${MAKE_FILE}" made_file_now)
+        if(NOT made_file_now STREQUAL made_file_text)
+            fail("${MAKE_FILE} was changed")
+        endif()
+    endif()
+    file(REMOVE "${MAKE_FILE}")
+endif()
+if(DEFINED MAKE_LINK)
+    if(NOT IS_SYMLINK "${MAKE_LINK}")
+        fail("${MAKE_LINK} is no longer a symbolic link")
+    endif()
+    file(REMOVE "${MAKE_LINK}")
 endif()
 
 if(failures)

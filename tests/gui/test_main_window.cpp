@@ -138,7 +138,8 @@ private slots:
         QString error;
         QVERIFY2(w.export_image_to(dir.filePath("view.png"), &error), qPrintable(error));
         QVERIFY2(w.export_image_to(dir.filePath("view.exr"), &error), qPrintable(error));
-        QCOMPARE(QDir(dir.path()).entryList(QDir::Files, QDir::Name),
+        // Hidden ones too: the temporary names start with a dot.
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden, QDir::Name),
                  QStringList({"view.exr", "view.png"}));
         QFile png(dir.filePath("view.png"));
         QVERIFY(png.open(QIODevice::ReadOnly));
@@ -146,7 +147,9 @@ private slots:
         // A folder that does not exist: refused, and nothing is left anywhere.
         QVERIFY(!w.export_image_to(dir.filePath("missing/view.png"), &error));
         QVERIFY2(error.contains("missing/view.png"), qPrintable(error));
-        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Dirs | QDir::NoDotAndDotDot).size(),
+        QCOMPARE(QDir(dir.path())
+                     .entryList(QDir::Files | QDir::Dirs | QDir::Hidden | QDir::NoDotAndDotDot)
+                     .size(),
                  2);
     }
 
