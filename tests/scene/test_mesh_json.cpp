@@ -208,7 +208,7 @@ TEST(MeshJson, ObjProblemsNameTheFileAndCountFromOne) {
     EXPECT_EQ(reason_for(tri + "f 1 2 2\n", "{}"), "t.obj:4: face 1 uses vertex 2 twice");
     // What tinyobjloader, the reader before lenslab's own, took silently: NaN and infinite or
     // unreadable coordinates as 0, fractional indices truncated, an index beyond the integer
-    // range clamped to the last vertex, a two-corner face dropped, and a negative index
+    // range wrapped round to another vertex, a two-corner face dropped, and a negative index
     // reported with another number. Each is refused at its line.
     EXPECT_EQ(reason_for("# a comment\r\n\r\nv nan 0 0\r\n", "{}"),
               "t.obj:3: vertex coordinate 'nan' is not a finite number");

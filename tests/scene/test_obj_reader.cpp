@@ -1,7 +1,7 @@
 // lenslab's strict OBJ reader (src/scene/obj_reader.h): what it reads, and the one message
 // "NAME:LINE: REASON" for each input tinyobjloader, the reader it replaced, took silently
 // (NaN and infinite or unreadable coordinates read as 0, fractional indices truncated, an
-// index beyond the integer range clamped, a face of two corners dropped, a negative index
+// index beyond the integer range wrapped round, a face of two corners dropped, a negative index
 // reported with the wrong number).
 
 #include <gtest/gtest.h>
