@@ -1,5 +1,7 @@
 #include "fuzz_inputs.h"
 
+#include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -7,6 +9,7 @@
 #include "render/camera.h"
 #include "scene/interaction.h"
 #include "scene/json_reader.h"
+#include "scene/obj_reader.h"
 #include "scene/scene_json.h"
 
 namespace lenslab::fuzz {
@@ -53,6 +56,45 @@ void parse_formula_input(std::string_view data) {
         (void)f.why_not_finite(points[1]);
     } catch (const FormulaError&) {
         return;
+    }
+}
+
+void read_obj_input(std::string_view data) {
+    // Small limits, so that inputs of a few kilobytes reach them too.
+    ObjLimits limits;
+    limits.max_vertices = 64;
+    limits.max_triangles = 64;
+    limits.max_face_corners = 16;
+    ObjMesh mesh;
+    try {
+        mesh = read_obj(data, "fuzz.obj", limits);
+    } catch (const ObjError&) {
+        return;
+    }
+    if (mesh.vertices.size() > limits.max_vertices) throw std::logic_error("too many vertices");
+    for (const Vec3& v : mesh.vertices) {
+        if (!is_finite(v) || std::abs(v.x) > limits.max_coordinate ||
+            std::abs(v.y) > limits.max_coordinate || std::abs(v.z) > limits.max_coordinate) {
+            throw std::logic_error("a vertex beyond the coordinate limit");
+        }
+    }
+    size_t triangles = 0;
+    size_t next = 0;
+    for (const ObjFace& face : mesh.faces) {
+        if (face.first != next || face.count < 3 || face.count > limits.max_face_corners ||
+            face.first + face.count > mesh.corners.size()) {
+            throw std::logic_error("a face outside the corner list or of the wrong size");
+        }
+        next += face.count;
+        triangles += face.count - 2;
+    }
+    if (next != mesh.corners.size() || triangles > limits.max_triangles) {
+        throw std::logic_error("corners left over, or too many triangles");
+    }
+    for (const int32_t c : mesh.corners) {
+        if (c < 0 || static_cast<size_t>(c) >= mesh.vertices.size()) {
+            throw std::logic_error("a corner that is not a vertex");
+        }
     }
 }
 

@@ -4,8 +4,8 @@
 // (tests/fuzz/test_fuzz_replay.cpp).
 //
 // Each function returns normally when the input was accepted or refused the documented way
-// (SceneError, FormulaError). Anything else escapes: another exception, a crash, undefined
-// behaviour, a hang or a huge allocation is a finding.
+// (SceneError, FormulaError, ObjError). Anything else escapes: another exception, a crash,
+// undefined behaviour, a hang or a huge allocation is a finding.
 
 #include <string>
 #include <string_view>
@@ -20,5 +20,10 @@ void read_scene_input(std::string_view data, const std::string& base_dir);
 // x, y, z), the rest is the formula. One that parses is evaluated at a few points, and
 // why_not_finite() asked where it is not finite.
 void parse_formula_input(std::string_view data);
+
+// The OBJ reader: read_obj() on the bytes as an OBJ file. A file that reads is checked for
+// what the mesh builder relies on (every corner a defined vertex, every face 3 or more
+// corners, within the limits); a broken promise throws std::logic_error, a finding.
+void read_obj_input(std::string_view data);
 
 }  // namespace lenslab::fuzz

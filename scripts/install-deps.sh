@@ -8,7 +8,6 @@ PACKAGES=(
     libtbb-dev nlohmann-json3-dev libcli11-dev
     libpng-dev libopenexr-dev
     libnanoflann-dev libmuparser-dev libpcg-cpp-dev
-    libtinyobjloader-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     gnuplot-nox colord-data
     qt6-base-dev

@@ -5,7 +5,7 @@
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: the editor
 #      included, no benchmarks) + every test but the 20M-photon convergence test (too slow
 #      sanitized);
-#   3. the libFuzzer targets, 60 s each (scripts/fuzz.sh).
+#   3. the libFuzzer targets, all at once for 60 s (scripts/fuzz.sh).
 # Each stage prints a banner and its time; the first failure stops the run.
 #
 #   scripts/test-all.sh [--fuzz-seconds N]
@@ -44,8 +44,8 @@ cmake --build --preset asan-ci
 ctest --preset asan-ci -E 'CausticErrorShrinksAsPhotonsGrow'
 finished "stage 2/3: AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 
-banner "stage 3/3: libFuzzer runs, scene reader and formula parser, ${fuzz_seconds} s each"
+banner "stage 3/3: libFuzzer runs, scene reader, formula parser and OBJ reader, ${fuzz_seconds} s"
 scripts/fuzz.sh "$fuzz_seconds"
-finished "stage 3/3: libFuzzer runs, scene reader and formula parser, ${fuzz_seconds} s each"
+finished "stage 3/3: libFuzzer runs, scene reader, formula parser and OBJ reader, ${fuzz_seconds} s"
 
 printf '\n==== all stages finished clean in %d s ====\n' $((SECONDS - start_all))

@@ -7,19 +7,16 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <span>
 #include <sstream>
 #include <tuple>
-
-// The double-precision build of tinyobjloader (target tinyobjloader::tinyobjloader_double,
-// which defines TINYOBJLOADER_USE_DOUBLE): geometry stays in double from the file on.
-#include <tiny_obj_loader.h>
-static_assert(sizeof(tinyobj::real_t) == sizeof(double), "link tinyobjloader_double");
 
 #include "geometry/mesh_shapes.h"
 #include "geometry/mesh_topology.h"
 #include "geometry/triangle_mesh.h"
 #include "scene/json_reader.h"
 #include "scene/limits.h"
+#include "scene/obj_reader.h"
 #include "scene/object_spec.h"
 
 namespace lenslab {
@@ -42,7 +39,7 @@ std::string item_path(const std::string& base, size_t i) {
 
 // Fans a polygon from its first corner: (0, 1, 2), (0, 2, 3), ... Exact for convex polygons,
 // and it keeps every polygon edge, so closedness does not depend on the triangulation.
-void add_fan(const std::vector<int32_t>& corners, int32_t face, Polygons& p) {
+void add_fan(std::span<const int32_t> corners, int32_t face, Polygons& p) {
     for (size_t k = 1; k + 1 < corners.size(); ++k) {
         p.geometry.triangles.push_back({corners[0], corners[k], corners[k + 1]});
         p.face_of.push_back(face);
@@ -130,15 +127,7 @@ Polygons read_inline(JsonObjectReader& r) {
     return p;
 }
 
-std::string one_line(std::string text) {
-    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
-    for (char& c : text) {
-        if (c == '\n' || c == '\r') c = ' ';
-    }
-    return text;
-}
-
-Polygons read_obj(JsonObjectReader& r, const std::string& base_dir) {
+Polygons read_obj_file(JsonObjectReader& r, const std::string& base_dir) {
     Polygons p;
     p.key = "file";
     p.index_base = 1;
@@ -161,75 +150,22 @@ Polygons read_obj(JsonObjectReader& r, const std::string& base_dir) {
     text << in.rdbuf();
     if (in.bad()) throw SceneError(path, cannot + "read error" + where);
 
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = false;  // fan-triangulated below, like inline faces
-    config.vertex_color = false;
-    tinyobj::ObjReader reader;
-    // From a string: `mtllib` lines are ignored (the scene's material applies).
-    if (!reader.ParseFromString(text.str(), "", config)) {
-        throw SceneError(path, cannot + one_line(reader.Error()));
+    ObjLimits limits;
+    limits.max_coordinate = kMaxSceneNumber;
+    limits.max_vertices = kMaxMeshTriangles;
+    limits.max_triangles = kMaxMeshTriangles;
+    ObjMesh obj;
+    // `mtllib` and `usemtl` are ignored: the scene's material applies.
+    try {
+        obj = read_obj(text.view(), file, limits);
+    } catch (const ObjError& e) {
+        throw SceneError(path, e.what());  // "FILE:LINE: REASON"
     }
-    const std::vector<double>& xyz = reader.GetAttrib().vertices;
-    const size_t vertex_count = xyz.size() / 3;
-    if (vertex_count > kMaxMeshTriangles) {
-        throw SceneError(path, cannot + "holds " + std::to_string(vertex_count) +
-                                   " vertices, more than the " + std::to_string(kMaxMeshTriangles) +
-                                   " allowed");
-    }
-    p.geometry.vertices.reserve(vertex_count);
-    for (size_t i = 0; i < vertex_count; ++i) {
-        const Vec3 v{xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
-        if (!is_finite(v) || std::abs(v.x) > kMaxSceneNumber || std::abs(v.y) > kMaxSceneNumber ||
-            std::abs(v.z) > kMaxSceneNumber) {
-            throw SceneError(path, cannot + "vertex " + std::to_string(i + 1) +
-                                       " has a coordinate that is not a number between -1e15 "
-                                       "and 1e15");
-        }
-        p.geometry.vertices.push_back(v);
-    }
+    p.geometry.vertices = std::move(obj.vertices);
     // Every group and object of the file is one surface, faces numbered as in the file.
-    int32_t face = 0;
-    std::vector<int32_t> corners;
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-        // tinyobjloader counts a face's corners in a byte: a face of 256 or more corners
-        // would be misread, so refuse it rather than read the wrong faces.
-        size_t corner_total = 0;
-        for (const unsigned char n : shape.mesh.num_face_vertices) corner_total += n;
-        if (corner_total != shape.mesh.indices.size()) {
-            throw SceneError(path, cannot + "a face has more than 255 corners");
-        }
-        size_t next = 0;
-        for (const unsigned char n : shape.mesh.num_face_vertices) {
-            corners.clear();
-            for (size_t k = 0; k < n; ++k) {
-                const int index = shape.mesh.indices[next++].vertex_index;
-                if (index < 0 || static_cast<size_t>(index) >= vertex_count) {
-                    throw SceneError(path, cannot + "face " + std::to_string(face + 1) +
-                                               " refers to vertex " + std::to_string(index + 1) +
-                                               ", but the file has " +
-                                               std::to_string(vertex_count) + " vertices");
-                }
-                for (int32_t c : corners) {
-                    if (c == index) {
-                        throw SceneError(path, cannot + "face " + std::to_string(face + 1) +
-                                                   " uses vertex " + std::to_string(index + 1) +
-                                                   " twice");
-                    }
-                }
-                corners.push_back(index);
-            }
-            if (corners.size() < 3) {
-                throw SceneError(path, cannot + "face " + std::to_string(face + 1) +
-                                           " has fewer than 3 vertices");
-            }
-            add_fan(corners, face, p);
-            ++face;
-            if (p.geometry.triangles.size() > kMaxMeshTriangles) {
-                throw SceneError(path, cannot + "holds more than " +
-                                           std::to_string(kMaxMeshTriangles) +
-                                           " triangles (faces fan-split), more than allowed");
-            }
-        }
+    for (size_t f = 0; f < obj.faces.size(); ++f) {
+        const ObjFace& face = obj.faces[f];
+        add_fan(std::span(obj.corners).subspan(face.first, face.count), static_cast<int32_t>(f), p);
     }
     if (p.geometry.triangles.empty()) throw SceneError(path, cannot + "it has no faces (f lines)");
     return p;
@@ -365,7 +301,7 @@ std::shared_ptr<const Shape> read_mesh(SpecReader& r, const std::string& base_di
     if (!inline_form && !r.has("file")) {
         throw SceneError(r.path(), "a mesh needs either vertices and faces, or file (an OBJ file)");
     }
-    Polygons p = inline_form ? read_inline(r) : read_obj(r, base_dir);
+    Polygons p = inline_form ? read_inline(r) : read_obj_file(r, base_dir);
 
     const double scale = r.real("scale");
     const Vec3 position = r.point("position");

@@ -55,6 +55,9 @@ lenslab_cli_bad_scene(implicit_empty
     "objects[0].formula: f > 0 at every point sampled inside the bounds, so the solid is empty (the inside is where f <= 0)")
 lenslab_cli_bad_scene(triangle_emission
     "objects[0].material: only spheres can emit light (the material has an emission)")
+# A problem inside an OBJ file: the file's name and line after the JSON path, one line.
+lenslab_cli_bad_scene(mesh_obj_nan_vertex
+    "objects[0].file: ../data/obj_nan_vertex.obj:4: vertex coordinate 'nan' is not a finite number")
 
 # A syntax error: the reason is nlohmann's text after the position, so check up to there.
 set(syntax_out ${LENSLAB_CLI_OUT}/syntax_trailing_comma.png)

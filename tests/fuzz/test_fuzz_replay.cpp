@@ -3,7 +3,7 @@
 // (tests/fuzz/corpus/<target>) and every crash or hang the fuzzers ever found
 // (tests/fuzz/regressions/<target>). Under the asan preset this is a sanitized replay too.
 // A finding comes back as a crash, a sanitizer report, or an exception other than the
-// documented SceneError / FormulaError, which fails the test and names the file.
+// documented SceneError / FormulaError / ObjError, which fails the test and names the file.
 
 #include <gtest/gtest.h>
 
@@ -58,6 +58,7 @@ void scene(const std::string& data) {
     lenslab::fuzz::read_scene_input(data, std::string(LENSLAB_SOURCE_DIR) + "/scenes");
 }
 void formula(const std::string& data) { lenslab::fuzz::parse_formula_input(data); }
+void obj(const std::string& data) { lenslab::fuzz::read_obj_input(data); }
 
 TEST(FuzzReplay, SceneCorpus) {
     // The seeds alone are over a hundred files (scenes, bad scenes, the format's examples).
@@ -69,5 +70,10 @@ TEST(FuzzReplay, SceneRegressions) { replay("regressions/scene", scene); }
 TEST(FuzzReplay, FormulaCorpus) { EXPECT_GE(replay("corpus/formula", formula), 50u); }
 
 TEST(FuzzReplay, FormulaRegressions) { replay("regressions/formula", formula); }
+
+// The seeds: the OBJ files of the tests, good and bad, and the reader's forms.
+TEST(FuzzReplay, ObjCorpus) { EXPECT_GE(replay("corpus/obj", obj), 12u); }
+
+TEST(FuzzReplay, ObjRegressions) { replay("regressions/obj", obj); }
 
 }  // namespace

@@ -202,10 +202,29 @@ TEST(MeshJson, ObjProblemsNameTheFileAndCountFromOne) {
     };
     const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
     EXPECT_EQ(reason_for(tri + "f 1 2 9\n", "{}"),
-              "cannot read 't.obj': face 1 refers to vertex 9, but the file has 3 vertices");
+              "t.obj:4: face 1 refers to vertex 9, but only 3 vertices are defined before this "
+              "line");
     EXPECT_EQ(reason_for(tri, "{}"), "cannot read 't.obj': it has no faces (f lines)");
-    EXPECT_EQ(reason_for(tri + "f 1 2 2\n", "{}"),
-              "cannot read 't.obj': face 1 uses vertex 2 twice");
+    EXPECT_EQ(reason_for(tri + "f 1 2 2\n", "{}"), "t.obj:4: face 1 uses vertex 2 twice");
+    // What tinyobjloader, the reader before lenslab's own, took silently: NaN and infinite or
+    // unreadable coordinates as 0, fractional indices truncated, an index beyond the integer
+    // range wrapped round to another vertex, a two-corner face dropped, and a negative index
+    // reported with another number. Each is refused at its line.
+    EXPECT_EQ(reason_for("# a comment\r\n\r\nv nan 0 0\r\n", "{}"),
+              "t.obj:3: vertex coordinate 'nan' is not a finite number");
+    EXPECT_EQ(reason_for("v 0 inf 0\n", "{}"),
+              "t.obj:1: vertex coordinate 'inf' is not a finite number");
+    EXPECT_EQ(reason_for("v abc def ghi\n", "{}"),
+              "t.obj:1: vertex coordinate 'abc' is not a number");
+    EXPECT_EQ(reason_for(tri + "f 1.7 2.2 3.9\n", "{}"),
+              "t.obj:4: vertex index '1.7' is not a whole number");
+    EXPECT_EQ(reason_for(tri + "f 1 2 3\nf 1 2 4294967299\n", "{}"),
+              "t.obj:5: vertex index '4294967299' is beyond the integer range");
+    EXPECT_EQ(reason_for(tri + "f 1 2 3\nf 1 2\n", "{}"),
+              "t.obj:5: a face needs at least 3 corners, got 2");
+    EXPECT_EQ(reason_for(tri + "v 1 1 0\nf -9 -2 -1\n", "{}"),
+              "t.obj:5: face 1 refers to vertex -9, but only 4 vertices are defined before this "
+              "line (-1 is the last, -4 the first)");
     // One triangle is an open surface: fine when opaque, refused when transparent.
     EXPECT_EQ(reason_for(tri + "f 1 2 3\n", R"({"color": 0.5})"), "loaded");
     EXPECT_EQ(reason_for(tri + "f -3 -2 -1\n", R"({"transparency": 1})")

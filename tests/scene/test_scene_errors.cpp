@@ -149,7 +149,23 @@ const BadScene kBadScenes[] = {
     {"mesh_missing_obj.json", "objects[0].file",
      "cannot read 'missing.obj': No such file or directory"},
     {"mesh_broken_obj.json", "objects[0].file",
-     "cannot read '../data/broken.obj': Failed parse `f' line"},
+     "../data/broken.obj:5: face 1 refers to vertex 0, but OBJ numbers them from 1 (or back "
+     "from the last with -1)"},
+    // OBJ input the reader before lenslab's own (tinyobjloader) took silently; the line
+    // numbers count comments, blank lines and CRLF endings.
+    {"mesh_obj_nan_vertex.json", "objects[0].file",
+     "../data/obj_nan_vertex.obj:4: vertex coordinate 'nan' is not a finite number"},
+    {"mesh_obj_word_coordinates.json", "objects[0].file",
+     "../data/obj_word_coordinates.obj:5: vertex coordinate 'abc' is not a number"},
+    {"mesh_obj_fractional_index.json", "objects[0].file",
+     "../data/obj_fractional_index.obj:6: vertex index '1.7' is not a whole number"},
+    {"mesh_obj_index_beyond_int.json", "objects[0].file",
+     "../data/obj_index_beyond_int.obj:6: vertex index '99999999999' is beyond the integer range"},
+    {"mesh_obj_two_corner_face.json", "objects[0].file",
+     "../data/obj_two_corner_face.obj:6: a face needs at least 3 corners, got 2"},
+    {"mesh_obj_negative_index.json", "objects[0].file",
+     "../data/obj_negative_index.obj:7: face 1 refers to vertex -9, but only 4 vertices are "
+     "defined before this line (-1 is the last, -4 the first)"},
     {"mesh_facing_not_perpendicular.json", "objects[0].facing",
      "must be perpendicular to up (the angle between them is 45 degrees)"},
     {"prism_apex_angle_180.json", "objects[0].apex_angle",
