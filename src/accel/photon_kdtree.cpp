@@ -13,6 +13,8 @@ namespace {
 constexpr size_t kParallelBuildThreshold = 1 << 15;
 // Ranges this small are scanned linearly by queries instead of descended.
 constexpr size_t kLeafSize = 16;
+// Photons looked at to choose a range's split axis.
+constexpr size_t kExtentSamples = 256;
 
 // The number of split nodes a tree over `count` photons needs in breadth-first order: the
 // upper half of a range (it holds the median) is the larger, so the deepest leaf is on the
@@ -32,10 +34,14 @@ PhotonKdTree::PhotonKdTree(Photon* photons, size_t count)
 
 void PhotonKdTree::build(size_t node, size_t lo, size_t hi) {
     if (hi - lo <= kLeafSize) return;
+    // The range's extent, from at most about kExtentSamples photons spread over it: the
+    // widest axis needs only a rough extent, and a full scan at every level cost as much as
+    // the median selection itself.
+    const size_t step = std::max<size_t>(1, (hi - lo) / kExtentSamples);
     float box_lo[3] = {std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
                        std::numeric_limits<float>::max()};
     float box_hi[3] = {-box_lo[0], -box_lo[1], -box_lo[2]};
-    for (size_t i = lo; i < hi; ++i) {
+    for (size_t i = lo; i < hi; i += step) {
         for (int a = 0; a < 3; ++a) {
             box_lo[a] = std::min(box_lo[a], m_photons[i].position[a]);
             box_hi[a] = std::max(box_hi[a], m_photons[i].position[a]);
