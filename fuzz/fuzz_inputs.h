@@ -17,8 +17,10 @@ namespace lenslab::fuzz {
 void read_scene_input(std::string_view data, const std::string& base_dir);
 
 // The formula parser: the first byte picks the variables (sag r; sag x, y, r; implicit
-// x, y, z), the rest is the formula. One that parses is evaluated at a few points, and
-// why_not_finite() asked where it is not finite.
+// x, y, z), the rest up to a NUL byte is the formula. One that parses is evaluated at a few
+// fixed points, at the points spelled by the bytes after the NUL (8 bytes a coordinate, any
+// double: NaN, infinities, subnormals), and at points drawn from a stream seeded by the
+// input; why_not_finite() is asked too. Results may be NaN; crashes and UB are findings.
 void parse_formula_input(std::string_view data);
 
 // The OBJ reader: read_obj() on the bytes as an OBJ file. A file that reads is checked for
