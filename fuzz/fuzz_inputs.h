@@ -28,4 +28,10 @@ void parse_formula_input(std::string_view data);
 // corners, within the limits); a broken promise throws std::logic_error, a finding.
 void read_obj_input(std::string_view data);
 
+// The command line: the bytes split at NUL and newline bytes into the arguments after
+// `lenslab`, parsed and validated by cli::CommandLine (every command's options and
+// check_every_option) but not run. A refusal is a CLI::ParseError (fuzz/fuzz_argv_input.cpp,
+// linked only by fuzz_argv and the replay test).
+void parse_argv_input(std::string_view data);
+
 }  // namespace lenslab::fuzz
