@@ -1,11 +1,15 @@
 #include "fuzz_inputs.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "math/formula.h"
+#include "math/rng.h"
 #include "render/camera.h"
 #include "scene/interaction.h"
 #include "scene/json_reader.h"
@@ -15,6 +19,9 @@
 namespace lenslab::fuzz {
 
 namespace {
+
+// The fuzzed formulas use at most three variables (x, y, z).
+constexpr size_t kMaxVariablesUsed = 3;
 
 // Follows a few camera rays through their first specular bounces: the intersection code of
 // every shape the scene holds runs on the user's numbers.
@@ -28,6 +35,33 @@ void trace_some_rays(const Scene& scene) {
             if (!next_interaction(scene, ray, 550.0, it) || it.scattering.count == 0) break;
             ray = {it.point(), it.scattering.branches[bounce % it.scattering.count].direction};
         }
+    }
+}
+
+// Points spelled by the bytes: 8 bytes a coordinate as a double, whatever its bits.
+void append_spelled_points(std::string_view bytes, std::vector<Formula::Values>& points) {
+    constexpr size_t kMostPoints = 16;  // enough to reach any branch; keeps each input quick
+    constexpr size_t kBytesPerPoint = sizeof(double) * kMaxVariablesUsed;
+    for (size_t at = 0; at + kBytesPerPoint <= bytes.size() && points.size() < kMostPoints;
+         at += kBytesPerPoint) {
+        Formula::Values p{};
+        std::memcpy(p.data(), bytes.data() + at, kBytesPerPoint);
+        points.push_back(p);
+    }
+}
+
+// A few points from a stream seeded by the whole input, over many scales and both signs.
+void append_drawn_points(std::string_view data, std::vector<Formula::Values>& points) {
+    uint64_t seed = 14695981039346656037ull;  // FNV-1a
+    for (const char c : data) seed = (seed ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    Rng rng(seed, 0);
+    for (int i = 0; i < 4; ++i) {
+        Formula::Values p{};
+        for (size_t k = 0; k < kMaxVariablesUsed; ++k) {
+            const double scale = std::ldexp(1.0, static_cast<int>(rng.uniform() * 80) - 40);
+            p[k] = (2 * rng.uniform() - 1) * scale;
+        }
+        points.push_back(p);
     }
 }
 
@@ -48,12 +82,17 @@ void parse_formula_input(std::string_view data) {
     static const std::vector<std::string> kVariableSets[] = {
         {"r"}, {"x", "y", "r"}, {"x", "y", "z"}};
     const std::vector<std::string>& names = kVariableSets[static_cast<unsigned char>(data[0]) % 3];
-    std::string text(data.substr(1));
+    const std::string_view rest = data.substr(1);
+    const size_t end = std::min(rest.find('\0'), rest.size());
+    std::string text(rest.substr(0, end));
     try {
         const Formula f(text, names, "(fuzz)");
-        const Formula::Values points[] = {{0, 0, 0, 0}, {1, -2, 0.5, 0}, {-1e300, 1e-300, 3, 0}};
+        std::vector<Formula::Values> points = {
+            {0, 0, 0, 0}, {1, -2, 0.5, 0}, {-1e300, 1e-300, 3, 0}};
+        append_spelled_points(rest.substr(std::min(end + 1, rest.size())), points);
+        append_drawn_points(data, points);
         for (const Formula::Values& p : points) (void)f(p);
-        (void)f.why_not_finite(points[1]);
+        for (const Formula::Values& p : points) (void)f.why_not_finite(p);
     } catch (const FormulaError&) {
         return;
     }

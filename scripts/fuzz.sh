@@ -6,10 +6,10 @@
 #
 # SECONDS is the wall time of the whole run, whatever the number of targets: every target
 # runs for SECONDS, all at the same time. With more targets than cores they share the cores
-# (CI's 2 cores and 3 targets: scene, formula, obj each get about 2/3 of a core), so adding a
-# target does not lengthen the CI stage; it splits the same CPU time more ways. (Before the
-# third target, fuzz_obj, there was one target per core and SECONDS read "per target"; the
-# stage took the same time.)
+# (CI's 2 cores and 4 targets: scene, formula, obj, argv each get about half a core), so
+# adding a target does not lengthen the CI stage; it splits the same CPU time more ways.
+# (Before the third target, fuzz_obj, there was one target per core and SECONDS read "per
+# target"; the stage took the same time.)
 #
 # Seeds: tests/fuzz/corpus/<target> and tests/fuzz/regressions/<target> (read only). Inputs
 # found in this run go to build/fuzz/corpus/<target>; a crash, hang, leak or huge allocation
@@ -22,12 +22,13 @@ seconds="${1:-60}"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz
 
-targets=(scene formula obj)
+targets=(scene formula obj argv)
 # Per target: the longest input tried. A scene needs room; formulas stay at 1024 characters
 # (muparser compiles long ones slowly under the sanitizers, and the 4096-character limit is
 # a plain length check, tested in test_scene_limits); 8192 bytes of OBJ are a few hundred
-# statements, past the fuzz entry point's small limits (fuzz/fuzz_inputs.cpp).
-declare -A max_len=([scene]=16384 [formula]=1024 [obj]=8192)
+# statements, past the fuzz entry point's small limits (fuzz/fuzz_inputs.cpp); 1024 bytes
+# of command line are dozens of options, more than any command takes.
+declare -A max_len=([scene]=16384 [formula]=1024 [obj]=8192 [argv]=1024)
 pids=()
 for target in "${targets[@]}"; do
     work="build/fuzz/corpus/$target"

@@ -4,6 +4,8 @@
 #include <array>
 #include <atomic>
 
+#include "accel/bvh_stats.h"
+
 namespace lenslab {
 
 namespace {
@@ -45,14 +47,19 @@ public:
         const Vec3 extent = centre_box.extent();
         const int axis =
             extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
-        if (count <= m_max_leaf_size || extent[axis] <= 0.0) {
+        if (count <= m_max_leaf_size) {
             m_out.nodes[index].first = begin;
             m_out.nodes[index].count = count;
             return index;
         }
         m_out.nodes[index].axis = axis;
-        const int mid = depth >= kMaxSahDepth ? median_split(begin, end, axis)
-                                              : sah_split(begin, end, axis, centre_box);
+        // Coincident centres (a pile of copies of one triangle) leave no plane to split at:
+        // halve the range by index, or one leaf would hold them all and every ray reaching
+        // it would test each. The negation also catches NaN centres.
+        const bool coincident = !(extent[axis] > 0.0);
+        const int mid = coincident              ? begin + count / 2
+                        : depth >= kMaxSahDepth ? median_split(begin, end, axis)
+                                                : sah_split(begin, end, axis, centre_box);
         build(begin, mid, depth + 1);
         const int right = build(mid, end, depth + 1);
         m_out.nodes[index].first = right;
@@ -133,5 +140,16 @@ BvhLayout build_bvh(const std::vector<Aabb>& boxes, int max_leaf_size) {
 }
 
 uint64_t bvh_build_count() { return g_builds.load(std::memory_order_relaxed); }
+
+BvhStats bvh_stats(const BvhLayout& layout) {
+    BvhStats stats;
+    stats.nodes = layout.nodes.size();
+    for (const BvhNode& n : layout.nodes) {
+        if (n.count == 0) continue;
+        ++stats.leaves;
+        stats.max_leaf_size = std::max(stats.max_leaf_size, static_cast<int>(n.count));
+    }
+    return stats;
+}
 
 }  // namespace lenslab

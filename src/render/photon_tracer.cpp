@@ -160,13 +160,15 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
         direct.reserve(static_cast<size_t>(last - first));
         caustic.reserve(static_cast<size_t>(2 * (last - first)));
         PhotonWalker<MapDeposit> walker(scene, plan, settings.max_depth);
-        for (int64_t i = first; i < last; ++i) {
+        trace_photon_range(first, last, control, [&](int64_t i) {
             walker.trace(i, settings.seed, [&](const PhotonPlan::Photon& p) {
                 return MapDeposit(p, spectra[static_cast<size_t>(p.light)], nullptr, &direct,
                                   &caustic);
             });
-        }
+        });
     });
+    // Cancelled: the render throws the photons away, so do not build a tree over them.
+    if (control.cancelled()) return {};
     // In photon order, direct then caustic.
     std::vector<size_t> offset;
     std::vector<Photon> photons = join_chunks(found, offset);

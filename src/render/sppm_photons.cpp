@@ -115,7 +115,7 @@ PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s,
     for_each_photon_chunk(plan.total(), control, [&](int64_t chunk, int64_t first, int64_t last) {
         const size_t c = static_cast<size_t>(chunk);
         PhotonWalker<PassDeposit> walker(scene, plan, s.max_depth);
-        for (int64_t i = first; i < last; ++i) {
+        trace_photon_range(first, last, control, [&](int64_t i) {
             walker.trace(i, s.seed, [&](const PhotonPlan::Photon& p) {
                 return PassDeposit{scene,
                                    s,
@@ -126,7 +126,7 @@ PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s,
                                    p.start.scale,
                                    static_cast<uint32_t>(chains[c].size())};
             });
-        }
+        });
     });
     PhotonPass pass;
     if (control.cancelled()) return pass;

@@ -3,7 +3,8 @@
 // (tests/fuzz/corpus/<target>) and every crash or hang the fuzzers ever found
 // (tests/fuzz/regressions/<target>). Under the asan preset this is a sanitized replay too.
 // A finding comes back as a crash, a sanitizer report, or an exception other than the
-// documented SceneError / FormulaError / ObjError, which fails the test and names the file.
+// documented SceneError / FormulaError / ObjError / CLI::ParseError, which fails the test and names
+// the file.
 
 #include <gtest/gtest.h>
 
@@ -59,6 +60,7 @@ void scene(const std::string& data) {
 }
 void formula(const std::string& data) { lenslab::fuzz::parse_formula_input(data); }
 void obj(const std::string& data) { lenslab::fuzz::read_obj_input(data); }
+void argv(const std::string& data) { lenslab::fuzz::parse_argv_input(data); }
 
 TEST(FuzzReplay, SceneCorpus) {
     // The seeds alone are over a hundred files (scenes, bad scenes, the format's examples).
@@ -75,5 +77,10 @@ TEST(FuzzReplay, FormulaRegressions) { replay("regressions/formula", formula); }
 TEST(FuzzReplay, ObjCorpus) { EXPECT_GE(replay("corpus/obj", obj), 12u); }
 
 TEST(FuzzReplay, ObjRegressions) { replay("regressions/obj", obj); }
+
+// The seeds: command lines of every command, good and bad, one argument a line.
+TEST(FuzzReplay, ArgvCorpus) { EXPECT_GE(replay("corpus/argv", argv), 12u); }
+
+TEST(FuzzReplay, ArgvRegressions) { replay("regressions/argv", argv); }
 
 }  // namespace
