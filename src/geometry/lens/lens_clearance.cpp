@@ -19,9 +19,7 @@ struct ClearanceProbe {
     const LensSurface& front;
     double spacing;
     // NaN where either sag is undefined, so that the comparisons below skip it.
-    double at(double x, double y) const {
-        return spacing + front.sag_xy(x, y) - back.sag_xy(x, y);
-    }
+    double at(double x, double y) const { return spacing + front.sag_xy(x, y) - back.sag_xy(x, y); }
 };
 
 void keep_if_smaller(Clearance& best, double gap, double x, double y) {
