@@ -74,7 +74,11 @@ void read_scene_input(std::string_view data, const std::string& base_dir) {
     } catch (const SceneError&) {
         return;  // refused with a message: what bad input must get
     }
-    trace_some_rays(scene);
+    try {
+        trace_some_rays(scene);
+    } catch (const UndefinedFormulaError&) {
+        return;  // a formula undefined between the reader's samples: also an error message
+    }
 }
 
 void parse_formula_input(std::string_view data) {

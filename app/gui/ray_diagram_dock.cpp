@@ -152,7 +152,7 @@ void RayDiagramDock::refresh() {
                 .arg(report.paraxial.bfl, 0, 'f', 3)
                 .arg(report.spot_best.rms_radius, 0, 'g', 3)
                 .arg(report.wavelength_nm, 0, 'f', 2));
-    } catch (const SceneError& e) {
+    } catch (const lenslab::Error& e) {  // a SceneError, or a formula undefined where traced
         m_view->set_diagram(std::nullopt);
         m_message->setText(tr("No ray diagram: %1").arg(QString::fromStdString(e.what())));
     }

@@ -41,18 +41,6 @@ double polygon_area(const std::vector<Point2>& p) {
     return 0.5 * std::abs(twice);
 }
 
-// Cells along u and v: given, or square-ish with `long_cells` along the longer side.
-void choose_cells(const DetectorSettings& d, double width, double height, int& nu, int& nv) {
-    if (d.cells_u > 0) {
-        nu = d.cells_u;
-        nv = d.cells_v;
-        return;
-    }
-    const double longer = std::max(width, height);
-    nu = std::max(1, static_cast<int>(std::lround(d.resolution_long * width / longer)));
-    nv = std::max(1, static_cast<int>(std::lround(d.resolution_long * height / longer)));
-}
-
 }  // namespace
 
 double rectangle_disc_overlap(double u0, double u1, double v0, double v1, double r) {
@@ -118,7 +106,7 @@ DetectorGrid DetectorGrid::for_object(const SceneObject& object) {
         throw std::invalid_argument(object.name +
                                     ": only a triangle, disc or rectangle can be a detector");
     }
-    choose_cells(d, g.m_u1 - g.m_u0, g.m_v1 - g.m_v0, g.m_nu, g.m_nv);
+    detector_cells(d, g.m_u1 - g.m_u0, g.m_v1 - g.m_v0, g.m_nu, g.m_nv);
     g.m_area.resize(static_cast<size_t>(g.cell_count()));
     const bool is_disc = dynamic_cast<const Disc*>(shape) != nullptr;
     const bool is_triangle = dynamic_cast<const Triangle*>(shape) != nullptr;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "math/bracketed_newton.h"
 
@@ -20,12 +21,24 @@ bool inside(double v) { return v <= 0.0; }  // NaN counts as outside
 }  // namespace
 
 ImplicitSolid::ImplicitSolid(const std::string& formula, const Aabb& box, int steps,
-                             const Vec3& centre)
+                             const Vec3& centre, std::string owner)
     : m_formula(std::make_shared<Formula>(formula, kImplicitVariables, kImplicitHint)),
       m_box(box),
       m_steps(std::max(1, steps)),
       m_centre(centre),
-      m_diagonal(length(box.extent())) {}
+      m_diagonal(length(box.extent())),
+      m_owner(std::move(owner)) {}
+
+double ImplicitSolid::defined_f(Formula::Evaluator& f, const Vec3& p) const {
+    const double v = f({p.x, p.y, p.z, 0.0});
+    if (std::isnan(v)) {
+        std::ostringstream point;
+        point.precision(10);
+        point << "(x, y, z) = (" << p.x << ", " << p.y << ", " << p.z << ")";
+        throw UndefinedFormulaError(m_owner, *m_formula, point.str(), {p.x, p.y, p.z, 0.0});
+    }
+    return v;
+}
 
 std::optional<std::string> ImplicitSolid::check(const std::string& text) {
     try {
@@ -69,7 +82,7 @@ bool ImplicitSolid::contains(const Vec3& world) const {
     for (int a = 0; a < 3; ++a) {
         if (p[a] < m_box.lo[a] || p[a] > m_box.hi[a]) return false;
     }
-    return inside(f(p));
+    return inside(defined_f(m_formula->local(), p));
 }
 
 bool ImplicitSolid::intersect(const Ray& world_ray, double t_min, double t_max,
@@ -105,13 +118,16 @@ bool ImplicitSolid::intersect(const Ray& world_ray, double t_min, double t_max,
     };
 
     Formula::Evaluator& f = m_formula->local();
+    // Inside the box, where the march samples, f must be a number; the slope's probes may
+    // step just outside it.
     auto phi = [&](double t) {
         const Vec3 p = ray.at(t);
         return f({p.x, p.y, p.z, 0.0});
     };
+    auto defined_phi = [&](double t) { return defined_f(f, ray.at(t)); };
 
     // Entering the box where the solid fills it: the box face is the solid's surface.
-    if (in_range(box_in, t_min, t_max) && axis_in >= 0 && inside(phi(box_in))) {
+    if (in_range(box_in, t_min, t_max) && axis_in >= 0 && inside(defined_phi(box_in))) {
         hit = {box_in, world_ray.at(box_in), face_normal(axis_in, -d[axis_in])};
         return true;
     }
@@ -127,11 +143,11 @@ bool ImplicitSolid::intersect(const Ray& world_ray, double t_min, double t_max,
     };
     const double tolerance = 1e-12 * (m_diagonal + std::abs(lo)) / speed;
 
-    double t0 = lo, f0 = phi(lo);
+    double t0 = lo, f0 = defined_phi(lo);
     while (t0 < hi) {
         const double t1 = std::min(hi, t0 + step);
         if (!(t1 > t0)) break;
-        const double f1 = phi(t1);
+        const double f1 = defined_phi(t1);
         if (inside(f0) != inside(f1) && !std::isnan(f0) && !std::isnan(f1)) {
             const auto root = bracketed_newton(phi_and_slope, t0, t1, f0, f1, tolerance);
             if (root && in_range(*root, t_min, t_max)) {

@@ -27,8 +27,10 @@ public:
 
     // Throws FormulaError for a formula that does not parse or uses variables other than
     // x, y and z. `box` (relative to `centre`) must not be empty in any axis; `steps` >= 1.
+    // `owner` (the formula's JSON path) names it when `intersect` or `contains` meets a
+    // point inside the box where f is not a number: that throws UndefinedFormulaError.
     ImplicitSolid(const std::string& formula, const Aabb& box, int steps = kDefaultSteps,
-                  const Vec3& centre = {});
+                  const Vec3& centre = {}, std::string owner = "");
 
     // What an editor shows while the formula is typed: the reason it would be refused, or
     // nothing (syntax and variables).
@@ -49,11 +51,15 @@ public:
     int steps() const { return m_steps; }
 
 private:
+    // f at a local point inside the box, where NaN is an error in the formula.
+    double defined_f(Formula::Evaluator& f, const Vec3& local) const;
+
     std::shared_ptr<const Formula> m_formula;
     Aabb m_box;  // relative to m_centre
     int m_steps;
     Vec3 m_centre;
     double m_diagonal;
+    std::string m_owner;
 };
 
 }  // namespace lenslab

@@ -225,4 +225,15 @@ std::string Formula::why_not_finite(const Values& values) const {
     return "";
 }
 
+UndefinedFormulaError::UndefinedFormulaError(const std::string& owner, const Formula& formula,
+                                             const std::string& point,
+                                             const std::array<double, 4>& values)
+    : Error([&] {
+          const std::string why = formula.why_not_finite(values);
+          return (owner.empty() ? std::string() : owner + ": ") + "the formula '" + formula.text() +
+                 "' is not a number at " + point + (why.empty() ? "" : " (" + why + ")") +
+                 ", where a ray met it (the scene reader checks formulas only on a grid of "
+                 "sample points, so make it defined everywhere between them)";
+      }()) {}
+
 }  // namespace lenslab

@@ -33,6 +33,19 @@ private:
     std::string m_message;
 };
 
+class Formula;
+
+// A formula that gave no number (NaN) at a point a ray met while rendering or tracing. The
+// scene reader checks formulas only on a grid of sample points, so one may be undefined
+// between them; that is an error in the scene, never empty space. Stops the render or trace.
+class UndefinedFormulaError : public Error {
+public:
+    // `owner` names the formula's place in the scene (its JSON path), `point` the
+    // coordinates, e.g. "(x, y, z) = (1, 2, 3)".
+    UndefinedFormulaError(const std::string& owner, const Formula& formula,
+                          const std::string& point, const std::array<double, 4>& values);
+};
+
 class Formula {
 public:
     // At most this many variables; their values are passed in the order they were declared.

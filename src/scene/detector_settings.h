@@ -3,6 +3,8 @@
 // object (triangle, disc, rectangle) that measures the light arriving on it. The
 // measurement itself is in src/analysis/detector.h.
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -22,5 +24,24 @@ struct DetectorSettings {
     // The scene's length unit, only to label results ("mm": irradiance in W/mm^2).
     std::string unit = "unit";
 };
+
+// Cells along u and v for a detector `width` by `height` (its extent in its own frame):
+// as given, or square-ish with `resolution_long` along the longer side.
+inline void detector_cells(const DetectorSettings& d, double width, double height, int& nu,
+                           int& nv) {
+    if (d.cells_u > 0) {
+        nu = d.cells_u;
+        nv = d.cells_v;
+        return;
+    }
+    const double longer = std::max(width, height);
+    nu = std::max(1, static_cast<int>(std::lround(d.resolution_long * width / longer)));
+    nv = std::max(1, static_cast<int>(std::lround(d.resolution_long * height / longer)));
+}
+
+// A detector's cells must be at least this wide, so that a cell's area, its reciprocal and
+// a disc's squared radius are ordinary (normal) doubles: a 1e-160 disc would otherwise
+// report infinite irradiance. (Scene numbers are at most 1e15, so nothing overflows.)
+inline constexpr double kMinDetectorCell = 1e-100;
 
 }  // namespace lenslab

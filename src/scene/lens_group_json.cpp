@@ -1,7 +1,11 @@
 #include "scene/lens_group_json.h"
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
+#include <optional>
 
+#include "geometry/lens/lens_clearance.h"
 #include "geometry/lens/lens_solid.h"
 #include "scene/json_reader.h"
 #include "scene/limits.h"
@@ -85,6 +89,27 @@ ElementSpec declare_element() {
     return s;
 }
 
+// Refuses element `e` and the next one when they overlap anywhere over their common aperture
+// (checked alone, each is whole; apart on the axis, they may still cross towards the rim).
+// A cemented pair shares one surface and is not checked.
+void check_air_space(const GroupElement& e, const LensPrescription& p, const GroupElement& next,
+                     const LensPrescription& next_p) {
+    const double a = 0.5 * std::min(e.diameter, next.diameter);
+    const Clearance c = smallest_clearance(*p.back, *next_p.front, e.gap, a);
+    if (!(c.gap < -1e-12 * std::max(1.0, e.gap))) return;
+    const bool symmetric =
+        p.back->is_rotationally_symmetric() && next_p.front->is_rotationally_symmetric();
+    const std::string where =
+        symmetric ? "at " + format_number(std::hypot(c.at.x, c.at.y)) + " from the axis"
+                  : "at (x, y) = (" + format_number(c.at.x) + ", " + format_number(c.at.y) + ")";
+    throw SceneError(e.path + ".gap",
+                     e.path + " and " + next.path + " overlap: " + where + " the front of " +
+                         next.path + " lies " + format_number(-c.gap) +
+                         " in front of the back of " + e.path + " (the gap must be at least " +
+                         format_number(e.gap - c.gap) + " for a common diameter of " +
+                         format_number(2 * a) + ", or reduce the diameters)");
+}
+
 }  // namespace
 
 const ElementSpec& lens_group_spec() {
@@ -139,6 +164,7 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
     }
 
     std::vector<SceneObject> objects;
+    std::optional<LensPrescription> previous;  // the element before, while not cemented to it
     double z = 0;  // axial position of the current element's front vertex
     for (size_t i = 0; i < specs.size(); ++i) {
         const GroupElement& e = specs[i];
@@ -159,6 +185,9 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
                                                                    : e.path + "." + problem->field;
             throw SceneError(field, problem->reason);
         }
+        if (previous) check_air_space(specs[i - 1], *previous, e, p);
+        previous.reset();
+        if (e.back) previous = p;
         SceneObject o;
         o.name = e.name;
         o.group = name;

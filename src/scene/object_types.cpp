@@ -110,7 +110,8 @@ std::shared_ptr<const Shape> read_implicit(SpecReader& r) {
     const Vec3 centre = r.point("center");
     std::shared_ptr<ImplicitSolid> solid;
     try {
-        solid = std::make_shared<ImplicitSolid>(formula, box, steps, centre);
+        solid =
+            std::make_shared<ImplicitSolid>(formula, box, steps, centre, r.child_path("formula"));
     } catch (const FormulaError& e) {
         throw SceneError(r.child_path("formula"), e.message());
     }

@@ -196,6 +196,7 @@ SceneObject read_object(const json& j, const std::string& path,
     o.photon_target = r.boolean("photon_target");
     o.shape = kind->read(r, base_dir);
     if (kind->may_detect) o.detector = read_detector(r);
+    if (o.detector) check_detector_size(*o.shape, *o.detector, path);
     o.material = read_material_ref(r, o.name, materials, all);
     if (kind->open_mesh_check) check_mesh_material(r, *o.shape, all[o.material]);
     if (!kind->may_emit) check_not_emitting(r, all[o.material]);

@@ -149,7 +149,7 @@ std::shared_ptr<const LensSurface> read_lens_surface(const nlohmann::json& j,
     }
     const std::string formula = r.text("formula");
     try {
-        return std::make_shared<SagFormulaSurface>(formula, semi_diameter);
+        return std::make_shared<SagFormulaSurface>(formula, semi_diameter, r.child_path("formula"));
     } catch (const FormulaError& e) {
         throw SceneError(r.child_path("formula"), e.message());
     }

@@ -73,6 +73,20 @@ lenslab_cli_test(NAME trace.bad.lens_surfaces_cross
     CHECKS -DEXPECT_EXIT=1
            "-DSTDERR_PREFIX=lenslab: error: tests/scene/bad/lens_surfaces_cross.json: objects[0].thickness: the lens surfaces cross inside the diameter")
 
+# Issue 15: a formula that passes the reader's grid but is not a number where a ray meets it
+# stops the trace or the render (from inside its parallel loop) with one line naming the
+# formula, and no image.
+lenslab_cli_test(NAME trace.formula_nan_at_run_time
+    ARGS trace tests/scene/data/sag_nan_between_samples.json --origin 3.005,0,-10 --direction 0,0,1
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: objects[0].back.formula: the formula '-r^2/40 + 0*sqrt(abs(r - 3.005) - 0.002)' is not a number at r = 3.005 (sqrt of a negative number), where a ray met it (the scene reader checks formulas only on a grid of sample points, so make it defined everywhere between them)")
+set(nan_out ${LENSLAB_CLI_OUT}/implicit_nan_between_samples.png)
+lenslab_cli_test(NAME render.formula_nan_at_run_time
+    ARGS render tests/scene/data/implicit_nan_between_samples.json -o ${nan_out} --width 16 --height 16 --spp 1
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_PREFIX=lenslab: error: objects[0].formula: the formula 'x^2 + y^2 + z^2 - 0.25 + 0*sqrt(abs(z - 0.03) - 0.025)' is not a number at (x, y, z) = ("
+           -DOUTPUT=${nan_out} -DOUTPUT_CREATED=OFF)
+
 # A scene path that does not exist: a failure that names it, and no image.
 set(missing_out ${LENSLAB_CLI_OUT}/missing_scene.png)
 lenslab_cli_test(NAME render.missing_scene

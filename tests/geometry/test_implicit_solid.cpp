@@ -151,3 +151,37 @@ TEST(ImplicitSolid, EveryRayThatEntersExits) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// Issue 15: f valid on the reader's 33^3 grid (z = 0 and 0.0625 are samples) but undefined
+// for 0.005 < z < 0.055. A ray that crosses the slab is an error naming the formula and the
+// point, not empty space.
+TEST(ImplicitSolid, UndefinedWhereARayMarchesIsAnError) {
+    const ImplicitSolid solid("x^2 + y^2 + z^2 - 0.25 + 0*sqrt(abs(z - 0.03) - 0.025)",
+                              {{-1, -1, -1}, {1, 1, 1}}, ImplicitSolid::kDefaultSteps, {},
+                              "objects[0].formula");
+    ASSERT_FALSE(solid.check_values());
+    SurfaceHit hit;
+    try {
+        (void)solid.intersect({{0.7, 0.7, 5}, {0, 0, -1}}, 0, INFINITY, hit);
+        ADD_FAILURE() << "no error";
+    } catch (const UndefinedFormulaError& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.rfind("objects[0].formula: the formula 'x^2 + y^2 + z^2 - 0.25 + "
+                             "0*sqrt(abs(z - 0.03) - 0.025)' is not a number at (x, y, z) = "
+                             "(0.7, 0.7, 0.0",
+                             0),
+                  0u)
+            << what;
+        EXPECT_NE(what.find("(sqrt of a negative number)"), std::string::npos) << what;
+    }
+    EXPECT_THROW((void)solid.contains({0, 0, 0.03}), UndefinedFormulaError);
+    // A ray that meets the sphere before the slab hits it as before.
+    EXPECT_TRUE(solid.intersect({{0, 0, 5}, {0, 0, -1}}, 0, INFINITY, hit));
+    EXPECT_NEAR(hit.t, 4.5, 1e-6);
+}
+
+}  // namespace
+}  // namespace lenslab

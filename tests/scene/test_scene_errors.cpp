@@ -108,6 +108,12 @@ const BadScene kBadScenes[] = {
     {"detector_bands_too_many.json", "objects[0].detector.bands",
      "must be a whole number of bands from 1 to 16 (or an array of band edges in nm), got 17"},
     {"detector_unknown_key.json", "objects[0].detector.resolutoin", "unknown key (did you mean 'resolution'?)"},
+    // Issue 15: cells whose area (or its reciprocal) is not an ordinary number.
+    {"detector_disc_underflow.json", "objects[0].radius",
+     "too small for a detector: its cells would be 3.125e-162 across, and each must be at "
+     "least 1e-100"},
+    {"detector_rectangle_underflow.json", "objects[0].size",
+     "too small for a detector: its cells would be 1.25e-161 across"},
     {"detector_side_unknown.json", "objects[0].detector.side", "unknown side 'top' (known: front, back, both)"},
     {"detector_unit_not_letters.json", "objects[0].detector.unit",
      "must be the name of a length unit in 1 to 16 letters (e.g. \"mm\"), got 'm m'"},
@@ -247,6 +253,17 @@ const BadScene kBadScenes[] = {
      "3.366750419 in front of the front surface; the centre thickness must be at least "
      "5.366750419 for diameter 20 (or reduce the diameter)"},
     {"lens_group_material_on_group.json", "objects[0].material", "not a property of a lens group"},
+    // Issue 15: neighbouring elements apart on the axis but crossing towards the rim, over
+    // the smaller element's aperture.
+    {"lens_group_rim_overlap.json", "objects[0].elements[0].gap",
+     "objects[0].elements[0] and objects[0].elements[1] overlap: at 5 from the axis the front "
+     "of objects[0].elements[1] lies 1.260166538 in front of the back of objects[0].elements[0] "
+     "(the gap must be at least 1.270166538 for a common diameter of 10, or reduce the "
+     "diameters)"},
+    {"lens_group_rim_overlap_smaller_element.json", "objects[0].elements[0].gap",
+     "objects[0].elements[0] and objects[0].elements[1] overlap: at 4 from the axis the front "
+     "of objects[0].elements[1] lies 0.3 in front of the back of objects[0].elements[0] (the "
+     "gap must be at least 0.8 for a common diameter of 8, or reduce the diameters)"},
     // Issue 15: messages quote keys escaped, suggest the right case, and read as English.
     {"key_with_nul.json", "objects[0].ra\\x00dius", "unknown key (did you mean 'radius'?)"},
     {"key_with_terminal_escape.json", "\\x1b[2J\\x1b[31mred", "unknown key"},

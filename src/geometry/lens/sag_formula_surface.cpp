@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "geometry/lens/sag_intersection.h"
 
@@ -14,14 +15,37 @@ namespace {
 const std::vector<std::string> kSagVariables{"x", "y", "r"};
 constexpr const char* kSagHint = "(use r, or x and y)";
 
+std::string sag_formula_number(double v) {
+    std::ostringstream out;
+    out.precision(10);
+    out << v;
+    return out.str();
+}
+
 // The sag and its gradient for one intersection, on the calling thread's evaluator.
 struct FormulaSag {
     Formula::Evaluator& f;
     bool symmetric;
     double h;
+    // Where the lens is (r up to the seam tolerance past its semi-diameter), a sag that is
+    // not a number is an error in the formula, not a miss; `formula` is null when the
+    // caller only wants values (the normal).
+    const Formula* formula = nullptr;
+    const std::string* owner = nullptr;
+    double max_r = 0;
 
     double at(double x, double y, double r) { return f({x, y, r, 0.0}); }
-    double value(double x, double y) { return at(x, y, std::hypot(x, y)); }
+    double value(double x, double y) {
+        const double r = std::hypot(x, y);
+        const double z = at(x, y, r);
+        if (std::isnan(z) && formula && r <= max_r) {
+            const std::string point = symmetric ? "r = " + sag_formula_number(r)
+                                                : "(x, y) = (" + sag_formula_number(x) + ", " +
+                                                      sag_formula_number(y) + ")";
+            throw UndefinedFormulaError(*owner, *formula, point, {x, y, r, 0.0});
+        }
+        return z;
+    }
     double value_and_gradient(double x, double y, double& dx, double& dy) {
         const double r = std::hypot(x, y);
         if (symmetric) {
@@ -30,8 +54,12 @@ struct FormulaSag {
             dx = r > 0.0 ? slope * x / r : 0.0;
             dy = r > 0.0 ? slope * y / r : 0.0;
         } else {
-            dx = (value(x + h, y) - value(x - h, y)) / (2.0 * h);
-            dy = (value(x, y + h) - value(x, y - h)) / (2.0 * h);
+            // Probes a step beyond the rim may be undefined: the gradient is then not finite,
+            // which the root finder survives.
+            dx = (at(x + h, y, std::hypot(x + h, y)) - at(x - h, y, std::hypot(x - h, y))) /
+                 (2.0 * h);
+            dy = (at(x, y + h, std::hypot(x, y + h)) - at(x, y - h, std::hypot(x, y - h))) /
+                 (2.0 * h);
         }
         return value(x, y);
     }
@@ -39,12 +67,14 @@ struct FormulaSag {
 
 }  // namespace
 
-SagFormulaSurface::SagFormulaSurface(const std::string& text, double length_scale)
+SagFormulaSurface::SagFormulaSurface(const std::string& text, double length_scale,
+                                     std::string owner)
     : m_formula(std::make_shared<Formula>(text, kSagVariables, kSagHint)),
       m_symmetric(!m_formula->uses("x") && !m_formula->uses("y")),
       // Central differences err by O(h^2) in truncation and O(eps / h) in rounding; h near
       // eps^(1/3) of the length scale balances them (Press et al., Numerical Recipes, 5.7).
-      m_step(6e-6 * length_scale) {
+      m_step(6e-6 * length_scale),
+      m_owner(std::move(owner)) {
     const double vertex = sag_xy(0.0, 0.0);
     if (!(std::abs(vertex) <= 1e-9 * std::max(1.0, length_scale))) {
         std::ostringstream msg;
@@ -76,12 +106,13 @@ double SagFormulaSurface::max_semi_diameter() const {
 
 bool SagFormulaSurface::intersect(const Ray& ray, const SurfaceSpan& span, double t_min,
                                   double t_max, double& t) const {
-    FormulaSag sag{m_formula->local(), m_symmetric, m_step};
+    FormulaSag sag{m_formula->local(), m_symmetric, m_step,
+                   m_formula.get(),    &m_owner,    span.semi_diameter * (1.0 + kSeamTolerance)};
     return intersect_sag(ray, span, t_min, t_max, t, sag);
 }
 
 Vec3 SagFormulaSurface::normal(const Vec3& p) const {
-    FormulaSag sag{m_formula->local(), m_symmetric, m_step};
+    FormulaSag sag{m_formula->local(), m_symmetric, m_step, nullptr, nullptr, 0.0};
     double dx, dy;
     (void)sag.value_and_gradient(p.x, p.y, dx, dy);
     const Vec3 n{-dx, -dy, 1.0};

@@ -16,8 +16,11 @@ namespace lenslab {
 class SagFormulaSurface final : public LensSurface {
 public:
     // Throws FormulaError (syntax, unknown variable, non-zero sag on the axis).
-    // `length_scale` (the lens's semi-diameter) sets the finite-difference step.
-    explicit SagFormulaSurface(const std::string& text, double length_scale = 1.0);
+    // `length_scale` (the lens's semi-diameter) sets the finite-difference step. `owner`
+    // (the surface's JSON path) names it when `intersect` meets a point inside the lens
+    // where the sag is not a number: that throws UndefinedFormulaError.
+    explicit SagFormulaSurface(const std::string& text, double length_scale = 1.0,
+                               std::string owner = "");
 
     // What an editor shows while the formula is typed: the reason it would be refused, or
     // nothing. Checks the syntax and the variables (not values, which need a diameter).
@@ -39,6 +42,7 @@ private:
     std::shared_ptr<const Formula> m_formula;
     bool m_symmetric;
     double m_step;  // central-difference step
+    std::string m_owner;
 };
 
 }  // namespace lenslab

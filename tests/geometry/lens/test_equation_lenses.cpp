@@ -174,3 +174,33 @@ TEST(EquationLens, EveryRayThatEntersExits) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// Issue 15: a sag valid at every radius the lens samples (513 across r <= 5) but undefined
+// for 3.003 < r < 3.007. A ray meeting the face there is an error naming the formula, not a
+// miss.
+TEST(EquationLens, SagUndefinedWhereARayMeetsItIsAnError) {
+    const auto back = std::make_shared<SagFormulaSurface>(
+        "-r^2/40 + 0*sqrt(abs(r - 3.005) - 0.002)", 5, "objects[0].back.formula");
+    const LensPrescription p = make_equation_lens(3, 10, std::make_shared<FlatSurface>(), back);
+    ASSERT_FALSE(LensSolid::check_prescription(p));
+    const LensSolid lens(p);
+    SurfaceHit hit;
+    try {
+        (void)lens.intersect({{3.005, 0, 10}, {0, 0, -1}}, 0, INFINITY, hit);
+        ADD_FAILURE() << "no error";
+    } catch (const UndefinedFormulaError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "objects[0].back.formula: the formula '-r^2/40 + 0*sqrt(abs(r - 3.005) - "
+                  "0.002)' is not a number at r = 3.005 (sqrt of a negative number), where a "
+                  "ray met it (the scene reader checks formulas only on a grid of sample "
+                  "points, so make it defined everywhere between them)");
+    }
+    // Elsewhere the face is met as before.
+    EXPECT_TRUE(lens.intersect({{1, 0, 10}, {0, 0, -1}}, 0, INFINITY, hit));
+}
+
+}  // namespace
+}  // namespace lenslab
