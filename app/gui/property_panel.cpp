@@ -1,7 +1,7 @@
 #include "property_panel.h"
 
+#include <QApplication>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLineEdit>
@@ -13,6 +13,7 @@
 #include "geometry/implicit_solid.h"
 #include "geometry/lens/sag_formula_surface.h"
 #include "json_pointer.h"
+#include "number_field.h"
 #include "optics/spectrum.h"
 #include "scene/camera_spec.h"
 #include "scene/json_reader.h"
@@ -37,19 +38,6 @@ QStringList to_qt(const std::vector<std::string>& names) {
     QStringList out;
     for (const auto& n : names) out << QString::fromStdString(n);
     return out;
-}
-
-// Spin boxes shrink with the panel instead of sizing themselves for their widest value.
-QDoubleSpinBox* make_spin_box(QWidget* parent, const std::string& name, int decimals, double min,
-                              double max) {
-    auto* box = new QDoubleSpinBox(parent);
-    box->setObjectName(QString::fromStdString("field:" + name));
-    box->setDecimals(decimals);
-    box->setRange(min, max);
-    box->setKeyboardTracking(false);
-    box->setMinimumWidth(40);
-    box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-    return box;
 }
 
 // A colour given as one number means grey; the form always edits three components.
@@ -181,6 +169,21 @@ void PropertyPanel::commit(const std::string& key, const json& value, const QStr
 }
 
 void PropertyPanel::rebuild() {
+    // The field being typed in (or the one a Tab that committed has just moved to) gets focus
+    // back in the new form, so a commit never swallows what is typed next.
+    QString focused;
+    if (QWidget* f = QApplication::focusWidget();
+        f && m_form_widget && m_form_widget->isAncestorOf(f))
+        focused = f->objectName();
+    build_form();
+    if (focused.isEmpty()) return;
+    // Shown now (a layout would show it later) so that it can take focus.
+    if (isVisible()) m_form_widget->show();
+    if (auto* again = m_form_widget->findChild<QWidget*>(focused))
+        again->setFocus(Qt::TabFocusReason);
+}
+
+void PropertyPanel::build_form() {
     if (m_form_widget) {
         // Detached at once (so nothing finds its fields), deleted later: the edit that led
         // here may still be running inside one of them.
@@ -210,44 +213,64 @@ void PropertyPanel::add_heading(const QString& text) {
     m_form->addRow(heading);
 }
 
-void PropertyPanel::add_number(const QString& label, const std::string& key, double fallback,
-                               double min, double max, int decimals) {
-    auto* box = make_spin_box(m_form_widget, key, decimals, min, max);
+NumberField* PropertyPanel::add_number_field(QWidget* parent, const ParamSpec& p,
+                                             const std::string& key, const QString& label) {
+    ParamSpec spec = p;
+    spec.key = key;  // the field's objectName
+    auto* field = new NumberField(spec, parent);
+    connect(field, &NumberField::refused, this, [this, label](const QString& reason) {
+        const QString message = label + ": " + reason;
+        m_error->setText(message);
+        emit edit_refused(message);
+    });
+    return field;
+}
+
+void PropertyPanel::add_number(const QString& label, const ParamSpec& p, const std::string& key) {
+    NumberField* field = add_number_field(m_form_widget, p, key, label);
     const json* v = value_at(key);
-    box->setValue(v && v->is_number() ? v->get<double>() : fallback);
-    connect(box, &QDoubleSpinBox::editingFinished, this,
-            [this, box, key, label] { commit(key, box->value(), label); });
-    m_form->addRow(label, box);
+    const json& d = p.fallback;
+    field->setValue(v && v->is_number() ? v->get<double>() : d.is_number() ? d.get<double>() : 0.0);
+    const bool whole = p.is_integer();
+    connect(field, &NumberField::committed, this, [this, key, label, whole](double x) {
+        if (whole) {
+            commit(key, static_cast<long long>(x), label);
+        } else {
+            commit(key, x, label);
+        }
+    });
+    m_form->addRow(label, field);
+}
+
+void PropertyPanel::add_number(const QString& label, const std::string& key, double fallback,
+                               double min, double max) {
+    add_number(label, number_param(key, fallback).at_least(min).at_most(max), key);
 }
 
 void PropertyPanel::add_integer(const QString& label, const std::string& key, long long fallback,
                                 long long min, long long max) {
-    // QSpinBox holds an int; photon counts beyond it are edited as whole-number doubles.
-    auto* box = make_spin_box(m_form_widget, key, 0, double(min), double(max));
-    const json* v = value_at(key);
-    box->setValue(v && v->is_number() ? v->get<double>() : double(fallback));
-    connect(box, &QDoubleSpinBox::editingFinished, this,
-            [this, box, key, label] { commit(key, static_cast<long long>(box->value()), label); });
-    m_form->addRow(label, box);
+    add_number(label, whole_param(key, fallback, min, max), key);
 }
 
 void PropertyPanel::add_vec3(const QString& label, const std::string& key, const json& fallback,
-                             double min, double max) {
+                             double min, double max, const std::string& doc) {
     auto* row = new QWidget(m_form_widget);
     auto* h = new QHBoxLayout(row);
     h->setContentsMargins(0, 0, 0, 0);
     const json* v = value_at(key);
     const json value = as_triple(v ? *v : fallback);
-    std::array<QDoubleSpinBox*, 3> boxes{};
+    ParamSpec component = number_param(key, 0.0).at_least(min).at_most(max).describe(doc);
+    std::array<NumberField*, 3> fields{};
     for (int i = 0; i < 3; ++i) {
-        boxes[i] = make_spin_box(row, key + "." + "xyz"[i], 6, min, max);
-        boxes[i]->setButtonSymbols(QAbstractSpinBox::NoButtons);  // three abreast must fit
-        boxes[i]->setValue(value.is_array() && value.size() == 3 ? value[i].get<double>() : 0.0);
-        h->addWidget(boxes[i]);
+        fields[i] = add_number_field(row, component, key + "." + "xyz"[i], label);
+        fields[i]->setValue(value.is_array() && value.size() == 3 && value[i].is_number()
+                                ? value[i].get<double>()
+                                : 0.0);
+        h->addWidget(fields[i]);
     }
     for (int i = 0; i < 3; ++i) {
-        connect(boxes[i], &QDoubleSpinBox::editingFinished, this, [this, boxes, key, label] {
-            commit(key, json::array({boxes[0]->value(), boxes[1]->value(), boxes[2]->value()}),
+        connect(fields[i], &NumberField::committed, this, [this, fields, key, label] {
+            commit(key, json::array({fields[0]->value(), fields[1]->value(), fields[2]->value()}),
                    label);
         });
     }
@@ -367,23 +390,12 @@ void PropertyPanel::add_number_list(const QString& label, const std::string& key
 void PropertyPanel::add_param(const ParamSpec& p, const std::string& prefix) {
     const QString label = QString::fromStdString(p.label);
     const std::string key = prefix + p.key;
-    // The declared range; an exclusive end moves in by the field's last digit, and an open
-    // end stops where every scene number does.
-    constexpr double kOpenEnd = kMaxSceneNumber;
-    const double step = std::pow(10.0, -p.decimals);
-    const double low = p.min ? p.min->value + (p.min->exclusive ? step : 0.0)
-                             : (p.kind == ParamKind::Fraction ? 0.0 : -kOpenEnd);
-    const double high = p.max ? p.max->value - (p.max->exclusive ? step : 0.0)
-                              : (p.kind == ParamKind::Fraction ? 1.0 : kOpenEnd);
     const json& d = p.fallback;
     switch (p.kind) {
         case ParamKind::WholeNumber:
-            add_integer(label, key, d.get<long long>(), static_cast<long long>(low),
-                        static_cast<long long>(high));
-            break;
         case ParamKind::Number:
         case ParamKind::Fraction:
-            add_number(label, key, d.is_number() ? d.get<double>() : 0.0, low, high, p.decimals);
+            add_number(label, p, key);
             break;
         case ParamKind::Boolean:
             add_flag(label, key, d.is_boolean() && d.get<bool>() ? tr("yes") : tr("no"));
@@ -395,16 +407,16 @@ void PropertyPanel::add_param(const ParamSpec& p, const std::string& prefix) {
             add_text(label, key, d.is_string() ? d.get<std::string>() : "");
             break;
         case ParamKind::Colour:
-            add_vec3(label, key, as_triple(d), 0, 1e6);
+            add_vec3(label, key, as_triple(d), 0, 1e6, p.doc);
             break;
         case ParamKind::Albedo:
-            add_vec3(label, key, as_triple(d), 0, 1);
+            add_vec3(label, key, as_triple(d), 0, 1, p.doc);
             break;
         case ParamKind::Point:
-            add_vec3(label, key, d.is_null() ? json::array({0, 0, 0}) : d);
+            add_vec3(label, key, d.is_null() ? json::array({0, 0, 0}) : d, -1e6, 1e6, p.doc);
             break;
         case ParamKind::Direction:
-            add_vec3(label, key, d.is_null() ? json::array({0, 0, -1}) : d);
+            add_vec3(label, key, d.is_null() ? json::array({0, 0, -1}) : d, -1e6, 1e6, p.doc);
             break;
         case ParamKind::Object:
         case ParamKind::Array:
@@ -691,9 +703,15 @@ void PropertyPanel::build_spectrum(const std::string& prefix) {
                });
     if (kind == "colour") add_vec3(tr("Colour"), prefix + "color", json::array({1, 1, 1}), 0, 1e6);
     if (kind == "blackbody")
-        add_number(tr("Temperature (K)"), prefix + "spectrum/blackbody", 3000, 500, 100000, 0);
+        add_number(tr("Temperature (K)"), prefix + "spectrum/blackbody", 3000, 500, 100000);
     if (kind == "line")
-        add_number(tr("Wavelength (nm)"), prefix + "spectrum/line", 532, 360, 830, 1);
+        add_number(tr("Wavelength (nm)"),
+                   number_param(prefix + "spectrum/line", 532)
+                       .at_least(360)
+                       .at_most(830)
+                       .in_unit("nm")
+                       .describe("the line's wavelength"),
+                   prefix + "spectrum/line");
 }
 
 }  // namespace lenslab::gui

@@ -24,6 +24,7 @@ class QFormLayout;
 namespace lenslab::gui {
 
 class SceneDocument;
+class NumberField;
 
 class PropertyPanel : public QWidget {
     Q_OBJECT
@@ -41,17 +42,23 @@ signals:
 
 private:
     void rebuild();
+    void build_form();
     // Commits `value` at `key` (a pointer relative to the selected element).
     void commit(const std::string& key, const nlohmann::json& value, const QString& label);
 
     // Field builders; `key` is relative to the selected element, `fallback` is shown when
     // the file leaves the key out (the reader's default).
     void add_number(const QString& label, const std::string& key, double fallback, double min,
-                    double max, int decimals = 6);
+                    double max);
+    // A number field for declared parameter `p`, at `key` (p's key with its prefix).
+    void add_number(const QString& label, const ParamSpec& p, const std::string& key);
+    // A field whose refusals show under the form and in the status bar.
+    NumberField* add_number_field(QWidget* parent, const ParamSpec& p, const std::string& key,
+                                  const QString& label);
     void add_integer(const QString& label, const std::string& key, long long fallback,
                      long long min, long long max);
     void add_vec3(const QString& label, const std::string& key, const nlohmann::json& fallback,
-                  double min = -1e6, double max = 1e6);
+                  double min = -1e6, double max = 1e6, const std::string& doc = "");
     // `on_choose` replaces the default commit (the chosen string at `key`).
     void add_choice(const QString& label, const std::string& key, const std::string& fallback,
                     const QStringList& choices,

@@ -3,7 +3,6 @@
 // disc as a detector from its panel.
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -11,12 +10,14 @@
 
 #include "detector_dock.h"
 #include "main_window.h"
+#include "number_field.h"
 #include "property_panel.h"
 #include "scene_document.h"
 #include "scene_tree.h"
 
 using lenslab::gui::DetectorDock;
 using lenslab::gui::MainWindow;
+using lenslab::gui::NumberField;
 using nlohmann::json;
 
 class TestDetectorDock : public QObject {
@@ -53,9 +54,9 @@ private slots:
         w.tree()->select_pointer("/objects/0");
         QCOMPARE(dock->shown_object(), 1);
         w.tree()->select_pointer("/objects/1");
-        QVERIFY(w.panel()->findChild<QDoubleSpinBox*>("field:radius"));
-        auto* radius = w.panel()->findChild<QDoubleSpinBox*>("field:radius");
-        radius->setValue(0.5);
+        QVERIFY(w.panel()->findChild<NumberField*>("field:radius"));
+        auto* radius = w.panel()->findChild<NumberField*>("field:radius");
+        radius->setText(QString::number(0.5));
         emit radius->editingFinished();
         QCOMPARE(w.document()->json()["objects"][1]["radius"].get<double>(), 0.5);
         QVERIFY(dock->shown_measurement() == nullptr);
@@ -75,9 +76,9 @@ private slots:
         QVERIFY(dock->findChild<QPushButton*>("detector_measure")->isEnabled());
 
         // The panel edits the detector's cells and turns the flag off.
-        auto* cells = w.panel()->findChild<QDoubleSpinBox*>("field:detector/resolution");
+        auto* cells = w.panel()->findChild<NumberField*>("field:detector/resolution");
         QVERIFY(cells);
-        cells->setValue(32);
+        cells->setText(QString::number(32));
         emit cells->editingFinished();
         QCOMPARE(w.document()->json()["objects"][index]["detector"]["resolution"].get<int>(), 32);
         auto* flag = w.panel()->findChild<QComboBox*>("field:detector");
@@ -105,7 +106,7 @@ private slots:
         side->setCurrentText("both");
         emit side->activated(side->currentIndex());
         QCOMPARE(w.document()->json()["objects"][index]["detector"], json({{"side", "both"}}));
-        QVERIFY(w.panel()->findChild<QDoubleSpinBox*>("field:size/1"));
+        QVERIFY(w.panel()->findChild<NumberField*>("field:size/1"));
     }
 };
 

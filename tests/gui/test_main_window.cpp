@@ -3,7 +3,6 @@
 
 #include <QAction>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
@@ -13,6 +12,7 @@
 #include <QtTest>
 
 #include "main_window.h"
+#include "number_field.h"
 #include "property_panel.h"
 #include "render_controller.h"
 #include "scene/object_types.h"
@@ -21,6 +21,7 @@
 #include "viewport.h"
 
 using lenslab::gui::MainWindow;
+using lenslab::gui::NumberField;
 using lenslab::gui::RenderController;
 using nlohmann::json;
 
@@ -28,13 +29,13 @@ namespace {
 
 const QString kSmallScene = QStringLiteral(LENSLAB_TEST_DATA "/gui/small_scene.json");
 
-QDoubleSpinBox* field(MainWindow& w, const QString& name) {
-    return w.panel()->findChild<QDoubleSpinBox*>("field:" + name);
+NumberField* field(MainWindow& w, const QString& name) {
+    return w.panel()->findChild<NumberField*>("field:" + name);
 }
 
-// Sets a spin box as a user would (value, then leaving the field).
-void type_value(QDoubleSpinBox* box, double v) {
-    box->setValue(v);
+// Sets a number field as a user would (its text, then leaving the field).
+void type_value(NumberField* box, double v) {
+    box->setText(lenslab::gui::format_shown(v));
     emit box->editingFinished();
 }
 
@@ -90,7 +91,7 @@ private slots:
         QVERIFY(w.open_file(kSmallScene));
         w.tree()->select_pointer("/objects/0");
         QCOMPARE(w.panel()->pointer(), QString("/objects/0"));
-        QDoubleSpinBox* radius = field(w, "radius");
+        NumberField* radius = field(w, "radius");
         QVERIFY(radius);
         QCOMPARE(radius->value(), 0.5);
 
@@ -167,9 +168,12 @@ private slots:
     void an_invalid_value_is_refused() {
         MainWindow w;
         QVERIFY(w.open_file(kSmallScene));
-        // The spin box cannot hold a negative radius at all...
+        // The field refuses a radius outside the declared range, keeping the scene...
         w.tree()->select_pointer("/objects/0");
-        QVERIFY(field(w, "radius")->minimum() > 0);
+        const json unchanged = w.document()->json();
+        type_value(field(w, "radius"), 0);
+        QCOMPARE(w.document()->json(), unchanged);
+        QVERIFY(!field(w, "radius")->problem().isEmpty());
         // ...and a value the reader refuses (transparency + specular > 1) is not applied.
         w.tree()->select_pointer("/materials/red");
         const json before = w.document()->json();
@@ -237,7 +241,7 @@ private slots:
         MainWindow w;
         QVERIFY(w.open_file(QStringLiteral(LENSLAB_SOURCE_DIR "/scenes/achromat_vs_singlet.json")));
         w.tree()->select_pointer("/objects/1");
-        QDoubleSpinBox* flint = field(w, "elements/1/thickness");
+        NumberField* flint = field(w, "elements/1/thickness");
         QVERIFY(flint);
         QCOMPARE(flint->value(), 2.5);
         QVERIFY(field(w, "elements/0/gap"));           // the crown may be moved off the flint

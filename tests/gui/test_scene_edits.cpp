@@ -4,7 +4,6 @@
 
 #include <QApplication>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -15,6 +14,7 @@
 #include "accel/bvh_build.h"
 #include "json_pointer.h"
 #include "main_window.h"
+#include "number_field.h"
 #include "property_panel.h"
 #include "render_controller.h"
 #include "scene/scene_json.h"
@@ -24,6 +24,7 @@
 
 using lenslab::bvh_build_count;
 using lenslab::gui::MainWindow;
+using lenslab::gui::NumberField;
 using nlohmann::json;
 namespace gui = lenslab::gui;
 
@@ -32,13 +33,13 @@ namespace {
 const QString kSmallScene = QStringLiteral(LENSLAB_TEST_DATA "/gui/small_scene.json");
 const std::string kOddName = "a~b/c";
 
-QDoubleSpinBox* field(MainWindow& w, const QString& name) {
-    return w.panel()->findChild<QDoubleSpinBox*>("field:" + name);
+NumberField* field(MainWindow& w, const QString& name) {
+    return w.panel()->findChild<NumberField*>("field:" + name);
 }
 
-// Sets a spin box as a user would (value, then leaving the field).
-void type_value(QDoubleSpinBox* box, double v) {
-    box->setValue(v);
+// Sets a number field as a user would (its text, then leaving the field).
+void type_value(NumberField* box, double v) {
+    box->setText(lenslab::gui::format_shown(v));
     emit box->editingFinished();
 }
 
@@ -116,7 +117,7 @@ private slots:
         QVERIFY2(w.open_file(path, &error), qPrintable(error));
         QVERIFY(click_item(w, QString::fromStdString(kOddName)));
         QCOMPARE(w.panel()->pointer(), QString("/materials/a~0b~1c"));
-        QDoubleSpinBox* specular = field(w, "specular");
+        NumberField* specular = field(w, "specular");
         QVERIFY(specular);  // the panel is not empty
         QCOMPARE(specular->value(), 0.2);
 
