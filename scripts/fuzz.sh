@@ -50,7 +50,7 @@ for target in "${targets[@]}"; do
     echo "---- fuzz_$target: $result (log: build/fuzz/$target.log)"
     # The summary lines: executions, speed, coverage; everything on a failure.
     if [ "$result" = "clean" ]; then
-        grep -E "^(#[0-9]+ +DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::peak_rss_mb|INFO: seed corpus)" \
+        grep -E "^(#[0-9]+ +DONE|Done [0-9]+ runs|stat::number_of_executed_units|stat::average_exec_per_sec|stat::new_units_added|stat::peak_rss_mb|INFO: seed corpus)" \
             "build/fuzz/$target.log" || true
     else
         tail -n 60 "build/fuzz/$target.log"
