@@ -44,8 +44,8 @@ cmake --build --preset asan-ci
 ctest --preset asan-ci -E 'CausticErrorShrinksAsPhotonsGrow'
 finished "stage 2/3: AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 
-banner "stage 3/3: libFuzzer runs, scene reader, formula parser and OBJ reader, ${fuzz_seconds} s"
+banner "stage 3/3: libFuzzer runs, the four targets at once, ${fuzz_seconds} s"
 scripts/fuzz.sh "$fuzz_seconds"
-finished "stage 3/3: libFuzzer runs, scene reader, formula parser and OBJ reader, ${fuzz_seconds} s"
+finished "stage 3/3: libFuzzer runs, the four targets at once, ${fuzz_seconds} s"
 
 printf '\n==== all stages finished clean in %d s ====\n' $((SECONDS - start_all))
