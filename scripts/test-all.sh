@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # The whole test suite, as CI runs it (README, second command; .ci/run): first the C++
 # files' formatting (scripts/check-format.sh, seconds), then
-#   1. release build + every test;
+#   1. release build + every test, the editor's aside (release-ci preset: build/release-ci);
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: the editor
 #      included, no benchmarks) + every test but the 20M-photon convergence test (too slow
-#      sanitized);
+#      sanitized). The editor is built and its QTest suites run here only: compiling Qt's
+#      headers twice was about a quarter of stage 1's build (docs/performance.md, "Test suite
+#      time");
 #   3. the libFuzzer targets, all at once for 60 s (scripts/fuzz.sh).
 # Each stage prints a banner and its time; the first failure stops the run.
 #
@@ -31,11 +33,11 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0"
 
 scripts/check-format.sh
 
-banner "stage 1/3: release build and tests"
-cmake --preset release
-cmake --build --preset release
-ctest --preset release
-finished "stage 1/3: release build and tests"
+banner "stage 1/3: release build and tests (the editor in stage 2)"
+cmake --preset release-ci
+cmake --build --preset release-ci
+ctest --preset release-ci
+finished "stage 1/3: release build and tests (the editor in stage 2)"
 
 banner "stage 2/3: AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 cmake --preset asan-ci

@@ -92,87 +92,75 @@ bool same_pixels(const Film& a, const Film& b) {
     return true;
 }
 
+// Pixels around the caustic room's caustic: where the line from the light through the glass
+// sphere's centre meets the floor (the ball lens images the light just above the floor).
+Box sppm_caustic_box(int size) {
+    const Scene s = caustic_room(size);
+    const Vec3 light = s.objects.back().shape->bounds().centre();
+    const Vec3 glass = s.objects[s.objects.size() - 2].shape->bounds().centre();
+    const Vec3 on_floor = light + (glass - light) * (light.y / (light.y - glass.y));
+    double x, y;
+    project(s, on_floor, x, y);
+    return {int(x) - 3, int(y) - 3, int(x) + 4, int(y) + 4};
+}
+
 // The caustic room (scenes/caustic_room.json: a closed diffuse room, an emitting sphere and
 // a glass sphere) at 64 x 64: one path-traced reference and one sppm run with the image kept
-// after 1, 8, 64 and 128 passes, shared by the tests below.
-class SppmAgainstPath : public ::testing::Test {
-protected:
-    static constexpr int kSize = 64;
-    static constexpr int kSnapshots[] = {1, 8, 64, 128};
-
-    static void SetUpTestSuite() {
-        Scene s = caustic_room(kSize);
-        s.render.spp = 512;
-        s_path = new Film(render(s, "path").film);
-        s.render.integrator = "sppm";
-        s.render.pass_photons = 5000;
-        ProgressiveRender sppm(s);
-        s_sppm = new std::vector<Film>;
-        RenderControl control;
-        for (int target : kSnapshots) {
-            while (sppm.passes() < target) sppm.add_pass(control);
-            s_sppm->push_back(sppm.image());
-        }
-    }
-    static void TearDownTestSuite() {
-        delete s_path;
-        delete s_sppm;
-    }
-
-    // Pixels around the caustic's centre: where the line from the light through the glass
-    // sphere's centre meets the floor (the ball lens images the light just above the floor).
-    static Box caustic_box() {
-        const Scene s = caustic_room(kSize);
-        const Vec3 light = s.objects.back().shape->bounds().centre();
-        const Vec3 glass = s.objects[s.objects.size() - 2].shape->bounds().centre();
-        const Vec3 on_floor = light + (glass - light) * (light.y / (light.y - glass.y));
-        double x, y;
-        project(s, on_floor, x, y);
-        return {int(x) - 3, int(y) - 3, int(x) + 4, int(y) + 4};
-    }
-
-    static Film* s_path;
-    static std::vector<Film>* s_sppm;
-};
-
-Film* SppmAgainstPath::s_path = nullptr;
-std::vector<Film>* SppmAgainstPath::s_sppm = nullptr;
-
-TEST_F(SppmAgainstPath, TheCausticBoxIsACaustic) {
-    // Most of the light in the box comes through the glass: with the sphere made of black
-    // paint instead (the same shadow, no caustic) the path tracer finds it much darker.
+// after 1, 8, 64 and 128 passes. One test, three checks: the reference is most of its cost
+// (seconds, and a minute under the sanitizers), and each test runs in a process of its own.
+TEST(SppmAgainstPath, AgreesWithThePathTracerAndConverges) {
+    constexpr int kSize = 64;
+    constexpr int kSnapshots[] = {1, 8, 64, 128};
     Scene s = caustic_room(kSize);
-    s.render.spp = 64;
-    for (Material& m : s.materials) {
-        if (m.transparency == 0) continue;
-        m.transparency = 0;
-        m.color = {0, 0, 0};
-        m.finish();
+    s.render.spp = 512;
+    const Film path = render(s, "path").film;
+    s.render.integrator = "sppm";
+    s.render.pass_photons = 5000;
+    ProgressiveRender progressive(s);
+    std::vector<Film> sppm;
+    RenderControl control;
+    for (int target : kSnapshots) {
+        while (progressive.passes() < target) progressive.add_pass(control);
+        sppm.push_back(progressive.image());
     }
-    const Box c = caustic_box();
-    EXPECT_GT(mean_luminance(*s_path, c), 2.0 * mean_luminance(render(s, "path").film, c));
-}
+    const Box caustic = sppm_caustic_box(kSize);
 
-TEST_F(SppmAgainstPath, AgreesWithThePathTracer) {
-    // Both integrators solve the same light transport (direct light, interreflection, the
-    // caustic seen directly and through the glass): after enough passes and samples their
-    // images agree within 3%: over the whole image, in the caustic, and block by block.
-    const Film& sppm = s_sppm->back();
-    const Film& path = *s_path;
-    EXPECT_LT(
-        relative_difference(mean_luminance(sppm, whole(sppm)), mean_luminance(path, whole(path))),
-        0.03);
-    EXPECT_LT(relative_difference(mean_luminance(sppm, caustic_box()),
-                                  mean_luminance(path, caustic_box())),
-              0.03);
-    EXPECT_LT(block_difference(sppm, path), 0.03);
-}
-
-TEST_F(SppmAgainstPath, ErrorFallsAsPassesGrow) {
-    std::vector<double> error;
-    for (const Film& f : *s_sppm) error.push_back(block_difference(f, *s_path));
-    for (size_t i = 1; i < error.size(); ++i) {
-        EXPECT_LT(error[i], error[i - 1]) << "after " << kSnapshots[i] << " passes";
+    {
+        SCOPED_TRACE("the caustic box is a caustic");
+        // Most of the light in the box comes through the glass: with the sphere made of black
+        // paint instead (the same shadow, no caustic) the path tracer finds it much darker.
+        Scene black = caustic_room(kSize);
+        black.render.spp = 64;
+        for (Material& m : black.materials) {
+            if (m.transparency == 0) continue;
+            m.transparency = 0;
+            m.color = {0, 0, 0};
+            m.finish();
+        }
+        EXPECT_GT(mean_luminance(path, caustic),
+                  2.0 * mean_luminance(render(black, "path").film, caustic));
+    }
+    {
+        SCOPED_TRACE("agrees with the path tracer");
+        // Both integrators solve the same light transport (direct light, interreflection, the
+        // caustic seen directly and through the glass): after enough passes and samples their
+        // images agree within 3%: over the whole image, in the caustic, and block by block.
+        const Film& last = sppm.back();
+        EXPECT_LT(relative_difference(mean_luminance(last, whole(last)),
+                                      mean_luminance(path, whole(path))),
+                  0.03);
+        EXPECT_LT(relative_difference(mean_luminance(last, caustic),
+                                      mean_luminance(path, caustic)),
+                  0.03);
+        EXPECT_LT(block_difference(last, path), 0.03);
+    }
+    {
+        SCOPED_TRACE("the error falls as passes grow");
+        std::vector<double> error;
+        for (const Film& f : sppm) error.push_back(block_difference(f, path));
+        for (size_t i = 1; i < error.size(); ++i) {
+            EXPECT_LT(error[i], error[i - 1]) << "after " << kSnapshots[i] << " passes";
+        }
     }
 }
 
