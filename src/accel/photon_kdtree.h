@@ -1,7 +1,7 @@
 #pragma once
 // Balanced kd-tree over photons (Jensen 2001, section 6.3): each range [lo, hi) is split at
 // its median along the axis of its largest extent (the report cycled X, Y, Z; the widest axis
-// gives tighter cells), down to leaves of at most 16 photons. The photons themselves are
+// gives tighter cells), down to leaves of at most 32 photons. The photons themselves are
 // reordered into the leaves; the split planes live apart, 8 bytes each in breadth-first
 // order, so a query walks down a small array that stays in cache and touches photons only in
 // the leaves it scans (reading the median photon at every level was the query's main cost:

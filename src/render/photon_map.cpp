@@ -29,11 +29,11 @@ const char* photon_filter_name(PhotonFilter f) {
     return "cone";
 }
 
-PhotonMap::PhotonMap(std::vector<Photon> photons, size_t direct) : m_storage(std::move(photons)) {
-    Photon* base = m_storage.data();
-    tbb::parallel_invoke(
-        [&] { m_direct = PhotonKdTree(base, direct); },
-        [&] { m_caustic = PhotonKdTree(base + direct, m_storage.size() - direct); });
+PhotonMap::PhotonMap(std::unique_ptr<Photon[]> photons, size_t count, size_t direct)
+    : m_storage(std::move(photons)), m_count(count) {
+    Photon* base = m_storage.get();
+    tbb::parallel_invoke([&] { m_direct = PhotonKdTree(base, direct); },
+                         [&] { m_caustic = PhotonKdTree(base + direct, count - direct); });
 }
 
 Rgb PhotonMap::irradiance(const PhotonKdTree& map, const Vec3& x, const Vec3& n,

@@ -2,6 +2,7 @@
 // The photon maps: one block of stored photons partitioned into the direct map (L D) and
 // the caustic map (L S+ D), each with its kd-tree, and the radiance estimate that reads them.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,17 +26,16 @@ struct GatherSettings {
 class PhotonMap {
 public:
     PhotonMap() = default;
-    // Takes the photons, the `direct` ones first and then the caustic ones, and builds both
-    // kd-trees.
-    PhotonMap(std::vector<Photon> photons, size_t direct);
+    // Takes the `count` photons, the `direct` ones first and then the caustic ones, and builds
+    // both kd-trees.
+    PhotonMap(std::unique_ptr<Photon[]> photons, size_t count, size_t direct);
     PhotonMap(PhotonMap&&) = default;
     PhotonMap& operator=(PhotonMap&&) = default;
 
     const PhotonKdTree& direct() const { return m_direct; }
     const PhotonKdTree& caustic() const { return m_caustic; }
     size_t memory_bytes() const {
-        return m_storage.capacity() * sizeof(Photon) + m_direct.memory_bytes() +
-               m_caustic.memory_bytes();
+        return m_count * sizeof(Photon) + m_direct.memory_bytes() + m_caustic.memory_bytes();
     }
 
     // Irradiance (W/m^2 per channel) at `x` on a surface whose normal `n` faces the side
@@ -47,7 +47,8 @@ public:
                           const GatherSettings& g, std::vector<PhotonNeighbour>& scratch);
 
 private:
-    std::vector<Photon> m_storage;
+    std::unique_ptr<Photon[]> m_storage;
+    size_t m_count = 0;
     PhotonKdTree m_direct, m_caustic;
 };
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "render/chunk_collector.h"
 #include "render/photon_walk.h"
 
 namespace lenslab {
@@ -150,15 +151,13 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
                         " of photon storage", "use fewer photons");
 
     const std::vector<LightSpectrum> spectra = light_spectra(scene);
-    const int64_t chunks = photon_chunks(plan.total());
-    // Per chunk, the direct photons and the caustic ones apart: the maps are then two runs.
-    std::vector<std::vector<Photon>> found(2 * static_cast<size_t>(chunks));
+    const size_t chunks = static_cast<size_t>(photon_chunks(plan.total()));
+    // Per chunk, the direct photons (slot c) and the caustic ones (slot chunks + c) apart:
+    // the maps are then two runs.
+    ChunkCollector<Photon> found(2 * chunks, need / sizeof(Photon));
     for_each_photon_chunk(plan.total(), control, [&](int64_t chunk, int64_t first, int64_t last) {
-        std::vector<Photon>& direct = found[static_cast<size_t>(chunk)];
-        std::vector<Photon>& caustic = found[static_cast<size_t>(chunks + chunk)];
-        // Room for the split photons too: growing a chunk would copy it.
-        direct.reserve(static_cast<size_t>(last - first));
-        caustic.reserve(static_cast<size_t>(2 * (last - first)));
+        std::vector<Photon>& direct = found.scratch(0);
+        std::vector<Photon>& caustic = found.scratch(1);
         PhotonWalker<MapDeposit> walker(scene, plan, settings.max_depth);
         trace_photon_range(first, last, control, [&](int64_t i) {
             walker.trace(i, settings.seed, [&](const PhotonPlan::Photon& p) {
@@ -166,14 +165,16 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
                                   &caustic);
             });
         });
+        found.put(static_cast<size_t>(chunk), direct);
+        found.put(chunks + static_cast<size_t>(chunk), caustic);
     });
     // Cancelled: the render throws the photons away, so do not build a tree over them.
     if (control.cancelled()) return {};
     // In photon order, direct then caustic.
     std::vector<size_t> offset;
-    std::vector<Photon> photons = join_chunks(found, offset);
+    std::unique_ptr<Photon[]> photons = found.join(offset);
     const auto t1 = std::chrono::steady_clock::now();
-    PhotonMap map(std::move(photons), offset[static_cast<size_t>(chunks)]);
+    PhotonMap map(std::move(photons), offset.back(), offset[chunks]);
     const auto t2 = std::chrono::steady_clock::now();
     if (stats) {
         stats->emitted = plan.total();

@@ -149,8 +149,7 @@ TEST(SppmAgainstPath, AgreesWithThePathTracerAndConverges) {
         EXPECT_LT(relative_difference(mean_luminance(last, whole(last)),
                                       mean_luminance(path, whole(path))),
                   0.03);
-        EXPECT_LT(relative_difference(mean_luminance(last, caustic),
-                                      mean_luminance(path, caustic)),
+        EXPECT_LT(relative_difference(mean_luminance(last, caustic), mean_luminance(path, caustic)),
                   0.03);
         EXPECT_LT(block_difference(last, path), 0.03);
     }
