@@ -117,6 +117,7 @@ MainWindow::MainWindow(QWidget* parent)
         m_tree->select_pointer(object >= 0 ? join_pointer("/objects", object) : QString());
     });
     connect(m_panel, &PropertyPanel::edit_refused, this, &MainWindow::show_message);
+    connect(m_panel, &PropertyPanel::pointer_requested, m_tree, &SceneTree::select_pointer);
     connect(m_viewport, &Viewport::edit_refused, this, &MainWindow::show_message);
     connect(m_document, &SceneDocument::changed, this, [this] {
         m_renderer->restart(m_document->scene());

@@ -5,6 +5,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -20,6 +21,7 @@
 #include "scene/lens_group_json.h"
 #include "scene/light_spec.h"
 #include "scene/material.h"
+#include "scene/material_edits.h"
 #include "scene/material_spec.h"
 #include "scene/object_spec.h"
 #include "scene/object_types.h"
@@ -201,7 +203,7 @@ void PropertyPanel::build_form() {
     else if (m_pointer == "/render")
         build_render();
     else if (m_pointer.startsWith("/materials/"))
-        build_material("");
+        build_material_entry();
     else if (m_pointer.startsWith("/objects/"))
         build_object();
     else if (m_pointer.startsWith("/lights/"))
@@ -447,6 +449,73 @@ void PropertyPanel::build_render() {
     build_declared(render_settings_spec());
 }
 
+template <class Edit>
+void PropertyPanel::apply_material_edit(const QString& label, const Edit& edit) {
+    QString select, error;
+    try {
+        const json edited = edit(m_document->json(), select);
+        if (m_document->apply(edited, label, &error)) {
+            m_error->clear();
+            emit pointer_requested(select);
+            return;
+        }
+    } catch (const MaterialEditError& e) {
+        error = QString::fromStdString(e.what());
+    }
+    m_error->setText(error);
+    emit edit_refused(error);
+    rebuild();
+}
+
+void PropertyPanel::build_material_entry() {
+    const std::string name = split_pointer(m_pointer).value(1).toStdString();
+    const auto to_pointer = [](const std::string& material) {
+        return join_pointer("/materials", QString::fromStdString(material));
+    };
+    add_heading(tr("Material"));
+    auto* name_edit = new QLineEdit(QString::fromStdString(name), m_form_widget);
+    name_edit->setObjectName("field:material_name");
+    name_edit->setToolTip(tr("The material's name; renaming it renames every use"));
+    connect(name_edit, &QLineEdit::editingFinished, this, [this, name_edit, name, to_pointer] {
+        const std::string to = name_edit->text().trimmed().toStdString();
+        if (to == name) return;
+        apply_material_edit(tr("Rename material"), [&](const json& doc, QString& select) {
+            select = to_pointer(to);
+            return rename_material(doc, name, to);
+        });
+    });
+    m_form->addRow(tr("Name"), name_edit);
+    auto* buttons = new QWidget(m_form_widget);
+    auto* row = new QHBoxLayout(buttons);
+    row->setContentsMargins(0, 0, 0, 0);
+    const auto add_button = [&](const QString& text, const char* object_name, auto edit) {
+        auto* b = new QPushButton(text, buttons);
+        b->setObjectName(object_name);
+        connect(b, &QPushButton::clicked, this,
+                [this, text, edit] { apply_material_edit(text, edit); });
+        row->addWidget(b);
+    };
+    add_button(tr("New"), "material:new", [to_pointer](const json& doc, QString& select) {
+        std::string added;
+        json out = add_material(doc, "material", &added);
+        select = to_pointer(added);
+        return out;
+    });
+    add_button(tr("Duplicate"), "material:duplicate",
+               [name, to_pointer](const json& doc, QString& select) {
+                   std::string added;
+                   json out = duplicate_material(doc, name, &added);
+                   select = to_pointer(added);
+                   return out;
+               });
+    add_button(tr("Delete"), "material:delete", [name](const json& doc, QString& select) {
+        select = QString();
+        return delete_material(doc, name);
+    });
+    m_form->addRow(buttons);
+    build_material("");
+}
+
 void PropertyPanel::build_material(const std::string& prefix) {
     const ElementSpec& declared = material_spec();
     for (const char* key : {"color", "transparency", "specular"})
@@ -530,6 +599,25 @@ void PropertyPanel::build_material_ref(const QString& label, const std::string& 
     const json* m = value_at(key);
     if (m && m->is_string()) {
         add_choice(label, key, m->get<std::string>(), names);
+        // Materials are shared by name: editing one changes every object that names it.
+        const std::string reference = append_pointer(m_pointer.toStdString(), key);
+        const size_t users = material_users(m_document->json(), m->get<std::string>()).size();
+        auto* unique = new QPushButton(tr("Make unique"), m_form_widget);
+        unique->setObjectName(QString::fromStdString("material:make_unique:" + key));
+        unique->setToolTip(users > 1 ? tr("Give this object a copy of the material, so editing "
+                                          "it changes nothing else (%1 uses share it now)")
+                                           .arg(users)
+                                     : tr("Only this object uses the material"));
+        unique->setEnabled(users > 1);
+        connect(unique, &QPushButton::clicked, this, [this, reference] {
+            apply_material_edit(tr("Make material unique"), [&](const json& doc, QString& select) {
+                std::string added;
+                json out = make_material_unique(doc, reference, &added);
+                select = join_pointer("/materials", QString::fromStdString(added));
+                return out;
+            });
+        });
+        m_form->addRow(QString(), unique);
     } else {
         build_material(key + "/");
     }

@@ -39,6 +39,9 @@ public:
 
 signals:
     void edit_refused(const QString& message);
+    // An edit of the whole document (a material renamed, added, made unique) moved what
+    // should be selected: the tree selects `pointer`.
+    void pointer_requested(const QString& pointer);
 
 private:
     void rebuild();
@@ -84,6 +87,13 @@ private:
     void build_camera();
     void build_render();
     void build_material(const std::string& prefix);
+    // The table's own entry (/materials/NAME): its name and the buttons that add, copy and
+    // delete materials (scene/material_edits.h).
+    void build_material_entry();
+    // Applies a whole-document edit (material_edits.h), or shows why it was refused; then
+    // asks for `select` to be selected.
+    template <class Edit>
+    void apply_material_edit(const QString& label, const Edit& edit);
     void build_object();
     void build_lens();
     void build_lens_group();

@@ -10,6 +10,8 @@ namespace lenslab::gui {
 namespace {
 
 constexpr int kPointerRole = Qt::UserRole;
+// Unnamed objects of one type in a row, from this many on, are folded into one row.
+constexpr size_t kFoldedRun = 4;
 
 QTreeWidgetItem* add_item(QTreeWidgetItem* parent, const QString& text, const QString& pointer) {
     auto* item = new QTreeWidgetItem(parent, {text});
@@ -37,6 +39,8 @@ QString SceneTree::selected_pointer() const {
 void SceneTree::select_pointer(const QString& pointer) {
     for (QTreeWidgetItemIterator it(this); *it; ++it) {
         if ((*it)->data(0, kPointerRole).toString() == pointer) {
+            // An object picked in the view may sit in a folded run.
+            for (QTreeWidgetItem* p = (*it)->parent(); p; p = p->parent()) p->setExpanded(true);
             setCurrentItem(*it);
             return;
         }
@@ -61,14 +65,35 @@ void SceneTree::rebuild() {
     }
     auto* objects = add_item(invisibleRootItem(), tr("Objects"), "");
     if (j.contains("objects")) {
-        for (size_t i = 0; i < j["objects"].size(); ++i) {
-            const auto& o = j["objects"][i];
-            const QString type = QString::fromStdString(o.value("type", "?"));
-            const QString name = o.contains("name")
-                                     ? QString::fromStdString(o["name"].get<std::string>())
-                                     : QString("objects[%1]").arg(i);
-            add_item(objects, QString("%1 (%2)").arg(name, type),
-                     join_pointer("/objects", qsizetype(i)));
+        const auto& list = j["objects"];
+        // A run of unnamed objects of one type (a floor of 128 triangles) is one row,
+        // folded; its objects are its children.
+        const auto unnamed_type = [&](size_t i) {
+            return list[i].contains("name") ? std::string() : list[i].value("type", "?");
+        };
+        for (size_t i = 0; i < list.size();) {
+            size_t end = i + 1;
+            const std::string run_type = unnamed_type(i);
+            while (!run_type.empty() && end < list.size() && unnamed_type(end) == run_type) ++end;
+            QTreeWidgetItem* parent = objects;
+            if (end - i >= kFoldedRun) {
+                parent = add_item(objects,
+                                  tr("%1 × %2 (objects[%3] to objects[%4])")
+                                      .arg(end - i)
+                                      .arg(QString::fromStdString(run_type))
+                                      .arg(i)
+                                      .arg(end - 1),
+                                  "");
+            }
+            for (; i < end; ++i) {
+                const auto& o = list[i];
+                const QString type = QString::fromStdString(o.value("type", "?"));
+                const QString name = o.contains("name")
+                                         ? QString::fromStdString(o["name"].get<std::string>())
+                                         : QString("objects[%1]").arg(i);
+                add_item(parent, QString("%1 (%2)").arg(name, type),
+                         join_pointer("/objects", qsizetype(i)));
+            }
         }
     }
     auto* lights = add_item(invisibleRootItem(), tr("Lights"), "");

@@ -5,6 +5,8 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QFile>
+#include <QLineEdit>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTreeWidgetItemIterator>
@@ -284,6 +286,93 @@ private slots:
     }
 
     // A camera edit the reader refuses is refused without touching the installed scene.
+    // The bug: the default scene's sphere and lens share "glass", so the sphere's
+    // index typed as 2.4 changed the lens too. "Make unique" (a real click) gives the sphere
+    // a copy of its own; the lens keeps 1.5; one undo puts the shared material back.
+    void make_unique_detaches_a_shared_material() {
+        MainWindow w;
+        w.show();
+        w.tree()->select_pointer("/objects/0");  // "glass sphere"
+        auto* unique = w.panel()->findChild<QPushButton*>("material:make_unique:material");
+        QVERIFY(unique);
+        QVERIFY(unique->isEnabled());
+        QTest::mouseClick(unique, Qt::LeftButton);
+        const json& doc = w.document()->json();
+        QCOMPARE(doc["objects"][0]["material"].get<std::string>(), std::string("glass 2"));
+        QCOMPARE(doc["objects"][1]["material"].get<std::string>(), std::string("glass"));
+        QCOMPARE(w.tree()->selected_pointer(), QString("/materials/glass 2"));
+        // The new material's form is shown: its index typed in changes the sphere alone.
+        NumberField* ior = field(w, "ior");
+        QVERIFY(ior);
+        ior->setFocus();
+        ior->selectAll();
+        QTest::keyClicks(ior, "2.4");
+        QTest::keyClick(ior, Qt::Key_Return);
+        const lenslab::Scene& s = w.document()->scene();
+        QCOMPARE(s.material_of(0).index->n_d(), 2.4);
+        QCOMPARE(s.material_of(1).index->n_d(), 1.5);
+        w.document()->undo_stack()->undo();
+        w.document()->undo_stack()->undo();
+        QCOMPARE(w.document()->json()["objects"][0]["material"].get<std::string>(),
+                 std::string("glass"));
+        QVERIFY(!w.document()->json()["materials"].contains("glass 2"));
+    }
+
+    // Materials are created, renamed (every use follows), duplicated and deleted from the
+    // material's own form; deleting one in use is refused with the users named.
+    void materials_are_created_renamed_and_deleted() {
+        MainWindow w;
+        w.show();
+        w.tree()->select_pointer("/materials/glass");
+        auto* name = w.panel()->findChild<QLineEdit*>("field:material_name");
+        QVERIFY(name);
+        name->setFocus();
+        name->selectAll();
+        QTest::keyClicks(name, "crown");
+        QTest::keyClick(name, Qt::Key_Return);
+        QVERIFY(w.document()->json()["materials"].contains("crown"));
+        QVERIFY(!w.document()->json()["materials"].contains("glass"));
+        QCOMPARE(w.document()->json()["objects"][1]["material"].get<std::string>(),
+                 std::string("crown"));
+        QCOMPARE(w.tree()->selected_pointer(), QString("/materials/crown"));
+
+        QTest::mouseClick(w.panel()->findChild<QPushButton*>("material:delete"), Qt::LeftButton);
+        QVERIFY(w.document()->json()["materials"].contains("crown"));
+        QVERIFY2(w.panel()->error_text().contains("'glass sphere', 'glass lens'"),
+                 qPrintable(w.panel()->error_text()));
+
+        QTest::mouseClick(w.panel()->findChild<QPushButton*>("material:new"), Qt::LeftButton);
+        QCOMPARE(w.tree()->selected_pointer(), QString("/materials/material"));
+        QTest::mouseClick(w.panel()->findChild<QPushButton*>("material:duplicate"), Qt::LeftButton);
+        QCOMPARE(w.tree()->selected_pointer(), QString("/materials/material copy"));
+        QTest::mouseClick(w.panel()->findChild<QPushButton*>("material:delete"), Qt::LeftButton);
+        QVERIFY(!w.document()->json()["materials"].contains("material copy"));
+        // The scene the view renders has the materials of the document.
+        QCOMPARE(w.document()->scene().materials.size(), w.document()->json()["materials"].size());
+    }
+
+    // The default scene's floor, 128 unnamed triangles, is one folded row of the tree; an
+    // object of it picked (here by pointer, as the view picks) unfolds it.
+    void a_run_of_unnamed_objects_is_one_row() {
+        MainWindow w;
+        QTreeWidgetItem* objects = nullptr;
+        for (int i = 0; i < w.tree()->topLevelItemCount(); ++i)
+            if (w.tree()->topLevelItem(i)->text(0) == "Objects")
+                objects = w.tree()->topLevelItem(i);
+        QVERIFY(objects);
+        const size_t count = w.document()->json()["objects"].size();
+        QCOMPARE(objects->childCount(), 5);  // four named objects and the floor
+        QTreeWidgetItem* floor = objects->child(4);
+        QCOMPARE(
+            floor->text(0),
+            QString("%1 × triangle (objects[4] to objects[%2])").arg(count - 4).arg(count - 1));
+        QVERIFY(!floor->isExpanded());
+        w.tree()->select_pointer("/objects/9");
+        QVERIFY(floor->isExpanded());
+        QCOMPARE(w.tree()->selected_pointer(), QString("/objects/9"));
+        QCOMPARE(w.panel()->pointer(), QString("/objects/9"));
+    }
+
     void a_bad_camera_edit_is_refused() {
         MainWindow w;
         QVERIFY(w.open_file(kSmallScene));
