@@ -1,6 +1,7 @@
 #include "number_field.h"
 
 #include <QFontMetrics>
+#include <QKeyEvent>
 #include <QWheelEvent>
 #include <algorithm>
 #include <charconv>
@@ -138,6 +139,15 @@ void NumberField::finish_editing() {
     }
     setValue(*parsed.value);
     emit committed(m_value);
+}
+
+void NumberField::keyPressEvent(QKeyEvent* event) {
+    if (event->key() == Qt::Key_Escape && (text() != m_shown || !m_problem.isEmpty())) {
+        setValue(m_value);
+        event->accept();
+        return;
+    }
+    QLineEdit::keyPressEvent(event);
 }
 
 void NumberField::wheelEvent(QWheelEvent* event) {

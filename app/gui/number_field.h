@@ -6,6 +6,7 @@
 // "1.5mm" for a unitless length) is refused rather than stripped. The declared range is
 // checked with the declaration's own words. The wheel acts only on a focused field, in steps
 // of the value's second significant digit. Numbers show with up to 6 significant digits.
+// Escape gives up an edit: the field shows its last good value again.
 
 #include <QLineEdit>
 #include <optional>
@@ -50,6 +51,8 @@ signals:
 
 protected:
     void wheelEvent(QWheelEvent* event) override;
+    // Escape puts the last good value back (and clears a refusal), committing nothing.
+    void keyPressEvent(QKeyEvent* event) override;
 
 private:
     void finish_editing();

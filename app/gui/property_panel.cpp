@@ -363,17 +363,19 @@ void PropertyPanel::add_number_list(const QString& label, const std::string& key
     }
     edit->setText(shown.join(", "));
     // The numbers, or nothing (with the reason shown) when the text is not a list of them.
-    auto parse = [edit, problem, max_count]() -> std::optional<json> {
+    // Each number read as a number field reads one (no stray text stripped, no locale).
+    const ParamSpec element =
+        number_param(key, 0.0).at_least(-kMaxSceneNumber).at_most(kMaxSceneNumber);
+    auto parse = [edit, problem, max_count, element]() -> std::optional<json> {
         json values = json::array();
         QString reason;
         for (const QString& part : edit->text().split(',')) {
-            bool ok = false;
-            const double x = part.trimmed().toDouble(&ok);
-            if (!ok) {
-                reason = tr("not a number: '%1'").arg(part.trimmed());
+            const ParsedNumber x = parse_number(part.trimmed(), element);
+            if (!x.value) {
+                reason = x.problem;
                 break;
             }
-            values.push_back(x);
+            values.push_back(*x.value);
         }
         if (reason.isEmpty() && (values.empty() || values.size() > max_count)) {
             reason = tr("give 1 to %1 numbers separated by commas").arg(max_count);

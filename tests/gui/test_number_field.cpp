@@ -1,6 +1,8 @@
 // The number field (app/gui/number_field.h) alone, then in the property panel through real
 // key and wheel events: each case is a way typing once lost or changed a number (issue 16).
 #include <QApplication>
+#include <QLabel>
+#include <QLineEdit>
 #include <QSignalSpy>
 #include <QTest>
 #include <QWheelEvent>
@@ -129,6 +131,55 @@ private slots:
         QCOMPARE(f.text(), QString("-1.2"));
         QVERIFY(f.problem().isEmpty());
         QVERIFY(f.styleSheet().isEmpty());
+    }
+
+    // Escape gives up what was typed: the last good value is back, a refusal cleared,
+    // nothing committed.
+    void escape_restores_the_last_good_value() {
+        NumberField f(lenslab::number_param("x", 0));
+        f.setValue(1.5);
+        QSignalSpy committed(&f, &NumberField::committed);
+        QTest::keyClick(&f, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(&f, "2.75");
+        QTest::keyClick(&f, Qt::Key_Escape);
+        QCOMPARE(f.text(), QString("1.5"));
+        QTest::keyClick(&f, Qt::Key_Return);
+        QCOMPARE(committed.count(), 0);
+        QTest::keyClick(&f, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(&f, "1.5mm");
+        QTest::keyClick(&f, Qt::Key_Return);
+        QVERIFY(!f.problem().isEmpty());
+        QTest::keyClick(&f, Qt::Key_Escape);
+        QVERIFY(f.problem().isEmpty());
+        QVERIFY(f.styleSheet().isEmpty());
+        QCOMPARE(f.text(), QString("1.5"));
+        QCOMPARE(f.value(), 1.5);
+        QCOMPARE(committed.count(), 0);
+    }
+
+    // The asphere's coefficients are read as number fields read numbers: "1e-3x" or "0.5mm"
+    // refused (not stripped to 0.001 or 0.5), scientific notation taken.
+    void a_coefficient_list_reads_numbers_strictly() {
+        MainWindow w;
+        open_with_lens(w);
+        const json before = w.document()->json();
+        QVERIFY(w.document()->set_value(
+            json::json_pointer("/objects/" + std::to_string(before["objects"].size() - 1) +
+                               "/front"),
+            {{"shape", "asphere"}, {"radius", 2}, {"k", 0}, {"coefficients", {0.0}}}, "asphere",
+            nullptr));
+        QApplication::processEvents();
+        auto* list = w.panel()->findChild<QLineEdit*>("field:front/coefficients");
+        QVERIFY(list);
+        retype(list, "1e-3, 0.5mm");
+        QTest::keyClick(list, Qt::Key_Return);
+        QCOMPARE(lens(w)["front"]["coefficients"], json::array({0.0}));
+        auto* problem = w.panel()->findChild<QLabel*>("list_error:front/coefficients");
+        QVERIFY(problem);
+        QVERIFY2(problem->text().contains("'mm'"), qPrintable(problem->text()));
+        retype(list, "1e-3, -2.5E-5");
+        QTest::keyClick(list, Qt::Key_Return);
+        QCOMPARE(lens(w)["front"]["coefficients"], json::array({1e-3, -2.5e-5}));
     }
 
     // Centre x 0.3, Tab, 0.95, Tab: the panel rebuilt after the first commit, and the second
