@@ -88,7 +88,8 @@ MainWindow::MainWindow(QWidget* parent)
       m_viewport(new Viewport(m_document, this)),
       m_ray_diagram(new RayDiagramDock(m_document, this)),
       m_detector_dock(new DetectorDock(m_document, this)),
-      m_status(new QLabel(this)) {
+      m_status(new QLabel(this)),
+      m_progress(new QProgressBar(this)) {
     setObjectName("main_window");
     setCentralWidget(m_viewport);
 
@@ -109,6 +110,12 @@ MainWindow::MainWindow(QWidget* parent)
     tabifyDockWidget(panel_dock, m_detector_dock);
     panel_dock->raise();
     statusBar()->addWidget(m_status, 1);
+    m_status->setObjectName("render_status");
+    m_progress->setObjectName("render_progress");
+    m_progress->setMaximumWidth(160);
+    m_progress->setTextVisible(false);
+    m_progress->hide();
+    statusBar()->addPermanentWidget(m_progress);
 
     connect(m_tree, &SceneTree::pointer_selected, m_panel, &PropertyPanel::show_pointer);
     connect(m_tree, &SceneTree::pointer_selected, m_ray_diagram, &RayDiagramDock::show_pointer);
@@ -129,13 +136,16 @@ MainWindow::MainWindow(QWidget* parent)
             [this](const QImage& image, int passes, qint64 photons, double seconds,
                    const QString& integrator) {
                 m_viewport->set_image(image);
-                m_status->setText(tr("%1 · passes %2 · photons %3 · %4 s")
-                                      .arg(integrator)
-                                      .arg(passes)
-                                      .arg(photons)
-                                      .arg(seconds, 0, 'f', 1));
+                show_frame(passes, photons, seconds, integrator);
             });
-    connect(m_renderer, &RenderController::render_failed, this, &MainWindow::show_message);
+    connect(m_renderer, &RenderController::render_ended, this, &MainWindow::show_render_end);
+    // A refused render keeps its reason in the status line until the next frame (a message
+    // there would time out and bring the old status back, as if nothing had failed).
+    connect(m_renderer, &RenderController::render_failed, this, [this](const QString& message) {
+        m_status->setText(tr("render failed: %1").arg(message));
+        m_status->setStyleSheet("color: #c0392b;");
+        m_progress->hide();
+    });
 
     build_menus();
     resize(1280, 800);
@@ -231,6 +241,32 @@ void MainWindow::update_title() {
 }
 
 void MainWindow::show_message(const QString& text) { statusBar()->showMessage(text, 10000); }
+
+void MainWindow::show_frame(int passes, qint64 photons, double seconds, const QString& integrator) {
+    const int limit = m_renderer->max_passes();
+    m_integrator = integrator;
+    m_frame_figures = tr("photons %1 · %2 s").arg(photons).arg(seconds, 0, 'f', 1);
+    m_status->setStyleSheet({});
+    m_status->setText(tr("%1 · rendering (pass %2 of %3) · %4")
+                          .arg(integrator)
+                          .arg(passes)
+                          .arg(limit)
+                          .arg(m_frame_figures));
+    m_progress->setRange(0, limit);
+    m_progress->setValue(passes);
+    m_progress->show();
+}
+
+void MainWindow::show_render_end(RenderEnd end, int passes) {
+    if (end == RenderEnd::Failed || end == RenderEnd::Restarted) return;
+    m_progress->hide();
+    if (passes == 0) return;
+    const QString state =
+        end == RenderEnd::Converged
+            ? tr("converged (%1 passes)").arg(passes)
+            : tr("stopped at pass %1 of %2").arg(passes).arg(m_renderer->max_passes());
+    m_status->setText(tr("%1 · %2 · %3").arg(m_integrator, state, m_frame_figures));
+}
 
 bool MainWindow::open_file(const QString& path, QString* error) {
     QString message;

@@ -1,9 +1,11 @@
 #pragma once
 // The editor's main window: scene tree (left), viewport (centre), properties (right),
-// menus for files, edits and rendering, and a status bar with passes, photons and time.
+// menus for files, edits and rendering, and a status bar: the render's state (its pass of
+// the limit, converged, stopped or why it failed), photons and time, and a progress bar.
 
 #include <QLabel>
 #include <QMainWindow>
+#include <QProgressBar>
 
 namespace lenslab::gui {
 
@@ -14,6 +16,7 @@ class RenderController;
 class SceneDocument;
 class SceneTree;
 class Viewport;
+enum class RenderEnd;  // render_controller.h
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -38,6 +41,8 @@ public:
     RayDiagramDock* ray_diagram() const { return m_ray_diagram; }
     DetectorDock* detector_dock() const { return m_detector_dock; }
     QString status_text() const { return m_status->text(); }
+    // Passes done over the pass limit while rendering; hidden otherwise.
+    QProgressBar* progress() const { return m_progress; }
 
     // Adds an object or light of `kind` (sphere, triangle, disc, rectangle, lens, implicit,
     // point, beam) and selects it.
@@ -58,6 +63,10 @@ private:
     bool save_as();
     void export_image();
     void show_message(const QString& text);
+    // The status line: "sppm · rendering (pass 12 of 256) · photons ... · 3.4 s", and the
+    // progress bar beside it.
+    void show_frame(int passes, qint64 photons, double seconds, const QString& integrator);
+    void show_render_end(RenderEnd end, int passes);
 
     SceneDocument* m_document;
     RenderController* m_renderer;
@@ -67,6 +76,8 @@ private:
     RayDiagramDock* m_ray_diagram;
     DetectorDock* m_detector_dock;
     QLabel* m_status;
+    QProgressBar* m_progress;
+    QString m_integrator, m_frame_figures;  // of the last frame: "sppm", "photons N · 3.4 s"
     QMenu* m_recent_menu = nullptr;
 };
 

@@ -96,6 +96,8 @@ void RenderController::run() {
         emit rendering_changed(true);
         QElapsedTimer clock;
         clock.start();
+        RenderEnd end = RenderEnd::Restarted;
+        int passes = 0;
         try {
             ProgressiveRender render(scene);
             for (int pass = 0; pass < m_max_passes; ++pass) {
@@ -117,18 +119,24 @@ void RenderController::run() {
                     m_last = film;
                 }
                 const double seconds = clock.elapsed() / 1000.0;
-                emit frame_ready(to_qimage(film), render.passes(),
-                                 qint64(render.stats(seconds).photons), seconds,
-                                 QString::fromStdString(scene.render.integrator));
+                passes = render.passes();
+                emit frame_ready(to_qimage(film), passes, qint64(render.stats(seconds).photons),
+                                 seconds, QString::fromStdString(scene.render.integrator));
             }
+            if (passes >= m_max_passes) end = RenderEnd::Converged;
         } catch (const std::exception& e) {
+            end = RenderEnd::Failed;
             emit render_failed(QString::fromStdString(e.what()));
         }
+        bool quitting = false;
         {
             QMutexLocker lock(&m_mutex);
             m_busy = false;
+            quitting = m_quit;
+            if (end == RenderEnd::Restarted && m_stop && !m_job) end = RenderEnd::Stopped;
         }
         emit rendering_changed(false);
+        if (!quitting) emit render_ended(end, passes);
     }
 }
 

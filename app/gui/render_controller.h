@@ -20,6 +20,14 @@
 
 namespace lenslab::gui {
 
+// Why a render stopped adding passes.
+enum class RenderEnd {
+    Converged,  // it reached the pass limit
+    Stopped,    // Stop was asked for
+    Restarted,  // a newer scene took its place
+    Failed,     // the integrator refused (render_failed says why)
+};
+
 class RenderController : public QThread {
     Q_OBJECT
 
@@ -48,6 +56,8 @@ signals:
     void frame_ready(const QImage& image, int passes, qint64 photons, double seconds,
                      const QString& integrator);
     void render_failed(const QString& message);
+    // The render ended after `passes` passes (not sent when the editor closes).
+    void render_ended(lenslab::gui::RenderEnd end, int passes);
     void rendering_changed(bool rendering);
 
 protected:

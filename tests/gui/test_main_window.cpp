@@ -69,21 +69,69 @@ private slots:
         QCOMPARE(w.document()->scene().objects.size(), size_t(3));
         QVERIFY(wait_for_fresh_frame(w));
         QVERIFY(!w.viewport()->image().isNull());
-        QVERIFY(w.status_text().contains("passes"));
+        QVERIFY2(w.status_text().contains(" of 256)"), qPrintable(w.status_text()));
+    }
+
+    // The status says what the render is doing: its pass of the limit (and a progress bar),
+    // then "converged" at the limit or "stopped" after Stop, instead of freezing.
+    void the_status_says_rendering_converged_or_stopped() {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.open_file(kSmallScene));
+        w.renderer()->set_max_passes(3);
+        w.renderer()->restart(w.document()->scene(), 0);
+        QTRY_VERIFY_WITH_TIMEOUT(w.status_text().contains("converged (3 passes)"), 30000);
+        QVERIFY2(w.status_text().startsWith("sppm · converged"), qPrintable(w.status_text()));
+        QVERIFY(!w.progress()->isVisible());
+
+        w.renderer()->set_max_passes(100000);
+        w.renderer()->restart(w.document()->scene(), 0);
+        QVERIFY(wait_for_fresh_frame(w));
+        QVERIFY2(w.status_text().contains("rendering (pass"), qPrintable(w.status_text()));
+        QVERIFY(w.progress()->isVisible());
+        QCOMPARE(w.progress()->maximum(), 100000);
+        QAction* stop = nullptr;
+        for (QAction* a : w.findChildren<QAction*>())
+            if (a->text() == "S&top") stop = a;
+        QVERIFY(stop);
+        stop->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(w.status_text().contains("stopped at pass"), 30000);
+        QVERIFY(!w.progress()->isVisible());
+    }
+
+    // A render the integrator refuses (a pass's photons beyond the memory budget) says so
+    // in the status line, and keeps saying so: no message that times out and brings back the
+    // old status as if nothing had failed. The next good render clears it.
+    void a_refused_render_keeps_its_reason_in_the_status() {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.open_file(kSmallScene));
+        QVERIFY(wait_for_fresh_frame(w));
+        json j = w.document()->json();
+        j["render"]["pass_photons"] = int64_t{1} << 30;
+        QVERIFY(w.document()->apply(j, "huge passes", nullptr));
+        QTRY_VERIFY_WITH_TIMEOUT(w.status_text().startsWith("render failed: "), 30000);
+        QVERIFY2(w.status_text().contains("photon"), qPrintable(w.status_text()));
+        QTest::qWait(300);
+        QVERIFY(w.status_text().startsWith("render failed: "));
+        QVERIFY(!w.progress()->isVisible());
+        w.document()->undo_stack()->undo();
+        QVERIFY(wait_for_fresh_frame(w));
+        QVERIFY2(w.status_text().startsWith("sppm · "), qPrintable(w.status_text()));
     }
 
     void the_view_renders_with_sppm_unless_asked_otherwise() {
         MainWindow w;
         QVERIFY(w.open_file(kSmallScene));  // its render block asks for whitted
         QVERIFY(wait_for_fresh_frame(w));
-        QVERIFY2(w.status_text().startsWith("sppm · passes"), qPrintable(w.status_text()));
+        QVERIFY2(w.status_text().startsWith("sppm · "), qPrintable(w.status_text()));
         QAction* own = w.findChild<QAction*>("view_with_scene_integrator");
         QVERIFY(own);
         QVERIFY(!own->isChecked());
         own->trigger();
         QVERIFY(w.renderer()->uses_scene_integrator());
         QVERIFY(wait_for_fresh_frame(w));
-        QVERIFY2(w.status_text().startsWith("whitted · passes"), qPrintable(w.status_text()));
+        QVERIFY2(w.status_text().startsWith("whitted · "), qPrintable(w.status_text()));
     }
 
     void panel_edit_changes_the_scene_renders_and_undoes() {
