@@ -177,16 +177,24 @@ void MainWindow::build_menus() {
     QMenu* examples = file->addMenu(tr("Open &example"));
     for (const QFileInfo& info :
          QDir(LENSLAB_SCENES_DIR).entryInfoList({"*.json"}, QDir::Files, QDir::Name)) {
-        examples->addAction(info.baseName(), this, [this, path = info.absoluteFilePath()] {
-            if (maybe_save()) open_file(path);
-        });
+        // Opened as untitled copies: Save must not overwrite the installed example.
+        QAction* example =
+            examples->addAction(info.baseName(), this, [this, path = info.absoluteFilePath()] {
+                if (maybe_save()) open_file(path, nullptr, true);
+            });
+        example->setObjectName("example:" + info.baseName());
     }
     m_recent_menu = file->addMenu(tr("Open &recent"));
     update_recent_menu();
     file->addSeparator();
     file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { save(); });
-    file->addAction(tr("Save &as..."), QKeySequence::SaveAs, this, [this] { save_as(); });
-    file->addAction(tr("&Export image..."), this, &MainWindow::export_image);
+    // Spelled out: QKeySequence::SaveAs is empty on X11.
+    file->addAction(tr("Save &as..."), QKeySequence(tr("Ctrl+Shift+S")), this,
+                    [this] { save_as(); })
+        ->setObjectName("save_as");
+    file->addAction(tr("&Export image..."), QKeySequence(tr("Ctrl+E")), this,
+                    &MainWindow::export_image)
+        ->setObjectName("export_image");
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -215,9 +223,12 @@ void MainWindow::build_menus() {
     edit->addAction(tr("De&lete"), QKeySequence::Delete, this, &MainWindow::delete_selected);
 
     QMenu* render = menuBar()->addMenu(tr("&Render"));
-    QAction* start = render->addAction(tr("&Start"), this,
+    QAction* start = render->addAction(tr("&Start"), QKeySequence(tr("F5")), this,
                                        [this] { m_renderer->restart(m_document->scene(), 0); });
-    QAction* stop = render->addAction(tr("S&top"), this, [this] { m_renderer->stop_rendering(); });
+    start->setObjectName("render_start");
+    QAction* stop = render->addAction(tr("S&top"), QKeySequence(tr("Shift+F5")), this,
+                                      [this] { m_renderer->stop_rendering(); });
+    stop->setObjectName("render_stop");
     render->addSeparator();
     // The view renders with sppm, which converges to the full light transport; the scene's
     // own integrator (what `lenslab render` uses) is one click away.
@@ -235,8 +246,11 @@ void MainWindow::build_menus() {
 }
 
 void MainWindow::update_title() {
-    const QString name = m_document->path().isEmpty() ? tr("default scene")
-                                                      : QFileInfo(m_document->path()).fileName();
+    QString name = tr("default scene");
+    if (!m_document->path().isEmpty())
+        name = QFileInfo(m_document->path()).fileName();
+    else if (!m_document->copied_from().isEmpty())
+        name = tr("%1 (example, not saved)").arg(QFileInfo(m_document->copied_from()).fileName());
     setWindowTitle(QString("%1%2 — lenslab").arg(name, m_document->is_modified() ? " *" : ""));
 }
 
@@ -268,9 +282,9 @@ void MainWindow::show_render_end(RenderEnd end, int passes) {
     m_status->setText(tr("%1 · %2 · %3").arg(m_integrator, state, m_frame_figures));
 }
 
-bool MainWindow::open_file(const QString& path, QString* error) {
+bool MainWindow::open_file(const QString& path, QString* error, bool as_copy) {
     QString message;
-    if (!m_document->open(path, &message)) {
+    if (!m_document->open(path, &message, as_copy)) {
         if (error) {
             *error = message;
         } else {
@@ -282,7 +296,7 @@ bool MainWindow::open_file(const QString& path, QString* error) {
         show_message(message);
         return false;
     }
-    remember_recent(path);
+    if (!as_copy) remember_recent(path);
     m_tree->select_pointer("/camera");
     return true;
 }

@@ -27,7 +27,8 @@ public:
 
     // Opens a scene file. A broken file leaves the current scene as it is; its error is
     // returned in `error` if given, else shown in a message box.
-    bool open_file(const QString& path, QString* error = nullptr);
+    // `as_copy`: untitled (the examples), so Save asks where (SceneDocument::open).
+    bool open_file(const QString& path, QString* error = nullptr, bool as_copy = false);
     bool save_file(const QString& path, QString* error = nullptr);
     // Writes the current image to `path` (.png or .exr), atomically: a failure leaves no
     // file and no temporary behind. The error is returned in `error` if given, else shown.

@@ -43,6 +43,8 @@ void SceneDocument::load_default() {
     m_json = parse_json_strict(default_scene_text(), "default scene");
     m_scene = scene_from_json(m_json);
     m_path.clear();
+    m_copied_from.clear();
+    m_folder.clear();
     m_undo.clear();
     emit path_changed();
     emit changed();
@@ -55,7 +57,7 @@ SceneUpdate SceneDocument::read_update(const nlohmann::json& j) const {
     const bool alone = j.is_object() && j.contains("camera") &&
                        std::all_of(blocks.begin(), blocks.end(), updatable_alone);
     if (!alone) {
-        update.scene = scene_from_json(j, folder_of(m_path));
+        update.scene = scene_from_json(j, m_folder);
         return update;
     }
     // Read as scene_from_json reads them: an absent block means its defaults.
@@ -80,7 +82,7 @@ bool SceneDocument::check(const nlohmann::json& j, SceneUpdate& out, QString* er
     }
 }
 
-bool SceneDocument::open(const QString& path, QString* error) {
+bool SceneDocument::open(const QString& path, QString* error, bool as_copy) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
         if (error) *error = path + ": cannot open: " + file.errorString();
@@ -105,7 +107,9 @@ bool SceneDocument::open(const QString& path, QString* error) {
     }
     m_json = std::move(j);
     m_scene = std::move(scene);
-    m_path = path;
+    m_path = as_copy ? QString() : path;
+    m_copied_from = as_copy ? path : QString();
+    m_folder = folder_of(path);
     m_undo.clear();
     emit path_changed();
     emit changed();
@@ -121,6 +125,8 @@ bool SceneDocument::save(const QString& path, QString* error) {
         return false;
     }
     m_path = path;
+    m_copied_from.clear();
+    m_folder = folder_of(path);
     m_undo.setClean();
     emit path_changed();
     return true;

@@ -37,13 +37,17 @@ public:
     const nlohmann::json& json() const { return m_json; }
     const Scene& scene() const { return m_scene; }
     const QString& path() const { return m_path; }
+    // The file an untitled copy was opened from (an example), else empty.
+    const QString& copied_from() const { return m_copied_from; }
     bool is_modified() const { return !m_undo.isClean(); }
     QUndoStack* undo_stack() { return &m_undo; }
 
     // Replaces the document with the built-in default scene (not modified, no path).
     void load_default();
-    // Opens a scene file. On failure the current scene is kept and `error` says why.
-    bool open(const QString& path, QString* error);
+    // Opens a scene file. On failure the current scene is kept and `error` says why. As a
+    // copy (the examples): untitled, so Save asks where instead of overwriting the file;
+    // relative file names in it (OBJ meshes) still read from its folder.
+    bool open(const QString& path, QString* error, bool as_copy = false);
     // Writes the document atomically (a temporary file renamed over the target).
     bool save(const QString& path, QString* error);
 
@@ -82,6 +86,8 @@ private:
     nlohmann::json m_json;
     Scene m_scene;
     QString m_path;
+    QString m_copied_from;
+    std::string m_folder;  // where relative file names in the scene are read from
     QUndoStack m_undo;
 };
 

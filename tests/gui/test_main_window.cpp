@@ -91,8 +91,7 @@ private slots:
         QVERIFY(w.progress()->isVisible());
         QCOMPARE(w.progress()->maximum(), 100000);
         QAction* stop = nullptr;
-        for (QAction* a : w.findChildren<QAction*>())
-            if (a->text() == "S&top") stop = a;
+        stop = w.findChild<QAction*>("render_stop");
         QVERIFY(stop);
         stop->trigger();
         QTRY_VERIFY_WITH_TIMEOUT(w.status_text().contains("stopped at pass"), 30000);
@@ -118,6 +117,35 @@ private slots:
         w.document()->undo_stack()->undo();
         QVERIFY(wait_for_fresh_frame(w));
         QVERIFY2(w.status_text().startsWith("sppm · "), qPrintable(w.status_text()));
+    }
+
+    // An example opens as an untitled copy: Save would ask where instead of overwriting the
+    // installed file; the title says so.
+    void an_example_opens_as_an_untitled_copy() {
+        MainWindow w;
+        QAction* example = w.findChild<QAction*>("example:caustic_room");
+        QVERIFY(example);
+        example->trigger();
+        QVERIFY(w.document()->path().isEmpty());
+        QVERIFY(w.document()->copied_from().endsWith("caustic_room.json"));
+        QVERIFY2(w.windowTitle().startsWith("caustic_room.json (example, not saved)"),
+                 qPrintable(w.windowTitle()));
+        QVERIFY(w.document()->scene().objects.size() > 0);
+    }
+
+    // Save As, Export, Start and Stop have keys on every platform (X11 has no standard Save
+    // As key, so the menu showed none).
+    void file_and_render_actions_have_shortcuts() {
+        MainWindow w;
+        const std::pair<const char*, const char*> expected[] = {{"save_as", "Ctrl+Shift+S"},
+                                                                {"export_image", "Ctrl+E"},
+                                                                {"render_start", "F5"},
+                                                                {"render_stop", "Shift+F5"}};
+        for (const auto& [name, keys] : expected) {
+            QAction* a = w.findChild<QAction*>(name);
+            QVERIFY2(a, name);
+            QCOMPARE(a->shortcut(), QKeySequence(keys));
+        }
     }
 
     void the_view_renders_with_sppm_unless_asked_otherwise() {
