@@ -25,6 +25,7 @@ struct AnalyzeArgs {
     std::string svg;
     double aperture = 0;  // beam diameter; 0: the usable aperture
     std::string lens;
+    std::string unit;  // for the ray diagram's labels; empty: "units"
 };
 
 int usage_error(const std::string& message) {
@@ -78,7 +79,9 @@ int run(const AnalyzeArgs& a) {
         }
         const LensReport report = analyze_lens_system(system, options);
         if (!a.svg.empty()) {
-            const std::string svg = ray_diagram_svg(make_ray_diagram(system, report));
+            RayDiagramOptions diagram;
+            diagram.unit = a.unit;
+            const std::string svg = ray_diagram_svg(make_ray_diagram(system, report, diagram));
             // Atomically: a failed write leaves no half file, and says why it failed.
             write_text_atomically(a.svg, svg);
         }
@@ -115,6 +118,9 @@ Action add_analyze_command(CLI::App& app) {
            "--aperture", args->aperture,
            "Diameter of the collimated beam, in the scene's unit (default: all the lens passes)")
         ->check(CLI::PositiveNumber);
+    cmd->add_option("--unit", args->unit,
+                    "The scene's length unit, for the ray diagram's labels (e.g. mm); a scene "
+                    "declares none, so they say \"units\" without it");
     cmd->add_option(
         "--lens", args->lens,
         "Measure this lens (name or objects[i]) and the lenses on its axis; others are ignored");

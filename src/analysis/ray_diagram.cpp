@@ -201,17 +201,18 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     focus(p.z_front_focus, "F");
     focus(p.z_rear_focus, "F'");
 
+    const std::string unit = options.unit.empty() ? "units" : options.unit;
     d.title =
-        "EFL " + fmt("%.2f", p.efl) + " mm, BFL " + fmt("%.2f", p.bfl) + " mm at " +
-        fmt("%.2f", p.wavelength_nm) + " nm" +
+        "EFL " + fmt("%.2f", p.efl) + " " + unit + ", BFL " + fmt("%.2f", p.bfl) + " " + unit +
+        " at " + fmt("%.2f", p.wavelength_nm) + " nm" +
         (fraunhofer_name(p.wavelength_nm).empty() ? ""
                                                   : " (" + fraunhofer_name(p.wavelength_nm) + ")") +
-        "; beam diameter " + fmt("%.2f", 2.0 * h) + " mm";
+        "; beam diameter " + fmt("%.2f", 2.0 * h) + " " + unit;
     d.legend = {{kBlueF, fmt("%.1f nm (F)", kLineF)},
                 {kYellowGreenD, fmt("%.1f nm (d)", kLineD)},
                 {kRedC, fmt("%.1f nm (C)", kLineC)}};
     d.scale_bar = nice_length(0.2 * (d.z_max - d.z_min));
-    d.scale_bar_label = fmt("%g mm", d.scale_bar);
+    d.scale_bar_label = fmt("%g ", d.scale_bar) + unit;
     return d;
 }
 

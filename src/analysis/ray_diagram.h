@@ -69,6 +69,9 @@ struct RayDiagram {
 
 struct RayDiagramOptions {
     int rays_per_fan = 9;  // meridional rays across the aperture, per wavelength
+    // The scene's length unit, for the labels ("mm"); empty: a scene file declares none, so
+    // lengths are labelled "units" rather than a unit the scene may not use.
+    std::string unit;
 };
 
 // The diagram of `system`; `report` gives the paraxial points and the beam's aperture.

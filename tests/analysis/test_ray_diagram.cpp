@@ -29,7 +29,9 @@ const LensSpec kHyperbolic{"hyperbolic",
 TEST(RayDiagram, RaysMeetAtTheFocusOfAPerfectLens) {
     const OpticalSystem system = build_optical_system(lens_scene({kHyperbolic}));
     const LensReport report = analyze_lens_system(system, {});
-    const RayDiagram d = make_ray_diagram(system, report);
+    RayDiagramOptions in_mm;
+    in_mm.unit = "mm";
+    const RayDiagram d = make_ray_diagram(system, report, in_mm);
     int outlines = 0, rays = 0;
     for (const DiagramPath& p : d.paths) {
         if (p.closed) {
@@ -65,6 +67,17 @@ TEST(RayDiagram, RaysMeetAtTheFocusOfAPerfectLens) {
         << d.title;
 }
 
+TEST(RayDiagram, LabelsClaimNoUnitTheSceneDoesNotDeclare) {
+    // A scene file has no length unit: without one given, the title and the scale bar say
+    // "units" (the editor's diagram of a unitless scene said "mm").
+    const LensSpec lens{"LA1509", 0, 3.6, 25.4, sphere(51.5), sphere(0), test::glass("N-BK7")};
+    const OpticalSystem system = build_optical_system(lens_scene({lens}));
+    const RayDiagram d = make_ray_diagram(system, analyze_lens_system(system, {}));
+    EXPECT_EQ(d.title.find("mm"), std::string::npos) << d.title;
+    EXPECT_NE(d.title.find(" units, BFL "), std::string::npos) << d.title;
+    EXPECT_TRUE(d.scale_bar_label.ends_with(" units")) << d.scale_bar_label;
+}
+
 TEST(RayDiagram, DivergingLensShowsItsVirtualFocus) {
     // Thorlabs LC1120 (plano-concave, f = -100): the rays spread, and dashed lines trace
     // them back to the virtual focus in front of the lens.
@@ -88,8 +101,10 @@ TEST(RayDiagram, SvgIsAStandalonePicture) {
     const LensSpec crown{"crown", 0, 4, 25.4, sphere(62.8), sphere(-45.7), test::glass("N-BK7")};
     const LensSpec flint{"flint", 4, 2.5, 25.4, sphere(-45.7), sphere(-128.2), test::glass("SF5")};
     const OpticalSystem system = build_optical_system(lens_scene({crown, flint}));
+    RayDiagramOptions in_mm;
+    in_mm.unit = "mm";
     const std::string svg =
-        ray_diagram_svg(make_ray_diagram(system, analyze_lens_system(system, {})));
+        ray_diagram_svg(make_ray_diagram(system, analyze_lens_system(system, {}), in_mm));
     EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
     EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
     const auto count = [&](const std::string& what) {

@@ -135,7 +135,7 @@ lenslab_cli_test(NAME analyze.json
            "-DSTDOUT_CONTAINS=\"wavelength_nm\": 656.2725")
 set(analyze_svg ${LENSLAB_CLI_OUT}/doublet.svg)
 lenslab_cli_test(NAME analyze.svg
-    ARGS analyze scenes/achromat_doublet.json --svg ${analyze_svg} --aperture 20
+    ARGS analyze scenes/achromat_doublet.json --svg ${analyze_svg} --aperture 20 --unit mm
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=ray diagram written to ${analyze_svg}"
            -DOUTPUT=${analyze_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg")
 lenslab_cli_test(NAME analyze.chosen_lens
