@@ -7,7 +7,7 @@ Its database/data/specs/<maker>/<group>/<NAME>.yml files hold each glass's dispe
 formula's validity range, the extinction coefficient k against wavelength and the catalogue's
 n_d and V_d. This is a maintainer's tool: the build and the tests read only its output.
 
-    tools/convert_glass_catalogues.py DATABASE_DIR [-o data/glass]
+    tools/convert_glass_catalogues.py DATABASE_DIR [-o data/glass] [--revision COMMIT]
 
 DATABASE_DIR is a checkout of the database (the folder holding database/). Each output file
 holds one glass per line, so a new database version shows as a readable diff.
@@ -141,11 +141,13 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("database", type=pathlib.Path, help="checkout of refractiveindex.info-database")
     parser.add_argument("-o", "--output", type=pathlib.Path, default=pathlib.Path("data/glass"))
+    parser.add_argument("--revision", help="the database commit, when DATABASE is not a git "
+                        "checkout (e.g. a `git archive` export)")
     args = parser.parse_args()
     specs = args.database / "database" / "data" / "specs"
     if not specs.is_dir():
         sys.exit(f"{specs}: not found (pass the folder that holds database/)")
-    commit = database_commit(args.database)
+    commit = args.revision or database_commit(args.database)
     args.output.mkdir(parents=True, exist_ok=True)
     total = 0
     for folder, maker in MAKERS.items():
