@@ -113,6 +113,7 @@ int list_builtin(const GlassArgs& a) {
         return 0;
     }
     print_glass_table(found);
+    std::fflush(stdout);  // the table stands even if the catalogues' files are missing
     std::string makers;
     for (const std::string& m : glass_makers()) makers += (makers.empty() ? "" : ", ") + m;
     std::printf(

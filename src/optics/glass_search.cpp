@@ -71,6 +71,8 @@ std::vector<const Glass*> search_glasses(const GlassQuery& query) {
     for (const Glass& g : glass_catalogue()) {
         if (matches(g)) found.push_back(&g);
     }
+    // The built-in materials alone need no catalogue files (they may be missing).
+    if (same_maker(query.maker, "builtin")) return found;
     for (const Glass& g : maker_glasses()) {
         if (matches(g)) found.push_back(&g);
     }

@@ -424,3 +424,10 @@ lenslab_cli_test(NAME glass.bad.no_match
 lenslab_cli_test(NAME glass.bad.name_and_search
     ARGS glass N-BK7 --maker schott
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=excludes --maker")
+# Catalogue files that cannot be found: the built-in table still prints, then one error says
+# where it looked.
+lenslab_cli_test(NAME glass.bad.data_missing
+    ARGS glass
+    CHECKS -DEXPECT_EXIT=1 "-DSTDOUT_CONTAINS=polycarbonate    builtin"
+           "-DSTDERR_LINE=lenslab: error: LENSLAB_GLASS_DATA=/nonexistent/glass: no schott.json there (it must name the folder holding the glass catalogues)")
+set_tests_properties(cli.glass.bad.data_missing PROPERTIES ENVIRONMENT LENSLAB_GLASS_DATA=/nonexistent/glass)
