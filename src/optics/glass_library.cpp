@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <unordered_set>
 
 #include "optics/glass_catalogue_file.h"
 
@@ -43,23 +44,21 @@ std::vector<const Glass*> glasses_named(const std::string& wanted_upper,
 }
 
 // The names nearest to an unknown one: all at the smallest distance, at most five, and only
-// if that distance is a slip (a third of the name or 3 edits, whichever is less).
+// if that distance is a slip (a third of the name, at least 1 and at most 3 edits). A
+// built-in glass that a maker also lists (N-BK7) is offered as the maker's.
 std::string closest_glass_names(const std::string& wanted_upper) {
     std::vector<std::pair<size_t, std::string>> scored;
-    std::vector<std::string> seen;
-    auto consider = [&](const Glass& g) {
-        const std::string label = glass_label(g);
-        if (std::find(seen.begin(), seen.end(), upper_glass_name(g.name)) != seen.end() &&
-            g.maker.empty())
-            return;
-        scored.emplace_back(glass_name_distance(wanted_upper, upper_glass_name(g.name)), label);
-    };
-    // Makers' glasses first, so a built-in of the same name (N-BK7) is shown as SCHOTT's.
+    std::unordered_set<std::string> maker_names;
     for (const Glass& g : maker_glasses()) {
-        consider(g);
-        seen.push_back(upper_glass_name(g.name));
+        const std::string name = upper_glass_name(g.name);
+        scored.emplace_back(glass_name_distance(wanted_upper, name), glass_label(g));
+        maker_names.insert(name);
     }
-    for (const Glass& g : glass_catalogue()) consider(g);
+    for (const Glass& g : glass_catalogue()) {
+        const std::string name = upper_glass_name(g.name);
+        if (!maker_names.count(name))
+            scored.emplace_back(glass_name_distance(wanted_upper, name), glass_label(g));
+    }
     std::stable_sort(scored.begin(), scored.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
     const size_t limit = std::min<size_t>(3, std::max<size_t>(1, wanted_upper.size() / 3));
