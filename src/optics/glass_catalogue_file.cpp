@@ -1,10 +1,12 @@
 #include "optics/glass_catalogue_file.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -124,6 +126,11 @@ Glass catalogue_glass(const json& g, const std::string& maker,
     return glass;
 }
 
+std::string upper_catalogue_name(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
 json parse_catalogue_text(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw GlassDataError(path + ": cannot open the glass catalogue");
@@ -167,6 +174,7 @@ std::vector<Glass> read_glass_catalogue(const std::string& path) {
     if (!doc.contains("glasses") || !doc.at("glasses").is_array())
         throw GlassDataError(path + ": glasses: missing (required, an array)");
     std::vector<Glass> glasses;
+    std::map<std::string, size_t> first_entry;  // upper-cased name -> its index
     const json& list = doc.at("glasses");
     for (size_t i = 0; i < list.size(); ++i) {
         const json& g = list[i];
@@ -175,6 +183,12 @@ std::vector<Glass> read_glass_catalogue(const std::string& path) {
         if (g.contains("name") && g.at("name").is_string())
             entry += " (" + g.at("name").get<std::string>() + ")";
         glasses.push_back(catalogue_glass(g, maker, references, {path, entry}));
+        // MAKER:NAME must name one glass; lookups ignore case, so the check does too.
+        const std::string key = upper_catalogue_name(glasses.back().name);
+        if (const auto [it, fresh] = first_entry.emplace(key, i); !fresh) {
+            throw GlassDataError(path + ": " + entry + ".name: given twice in this catalogue " +
+                                 "(also glasses[" + std::to_string(it->second) + "])");
+        }
     }
     return glasses;
 }

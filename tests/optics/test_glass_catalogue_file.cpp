@@ -86,6 +86,10 @@ TEST(GlassCatalogueFile, MalformedFilesGetOneClearError) {
     EXPECT_EQ(catalogue_file_error("bad_ref", head + R"({"name":"K7","formula":2,
                                    "coefficients":[0,1,0.01],"range_um":[0.3,2.5],"ref":3}]})"),
               ": glasses[0] (K7).ref: must index the file's references");
+    EXPECT_EQ(catalogue_file_error("twice", head + R"({"name":"K7","formula":"tabulated",
+                                   "n":[[0.4,1.5],[0.8,1.49]]},{"name":"k7","formula":"tabulated",
+                                   "n":[[0.4,1.5],[0.8,1.49]]}]})"),
+              ": glasses[1] (k7).name: given twice in this catalogue (also glasses[0])");
     EXPECT_EQ(catalogue_file_error("no_name", head + R"({"formula":2}]})"),
               ": glasses[0].name: missing (required)");
     EXPECT_EQ(catalogue_file_error("short_table", head + R"({"name":"T","formula":"tabulated",
