@@ -526,6 +526,10 @@ void PropertyPanel::build_material(const std::string& prefix) {
     QStringList glasses{tr("constant index")};
     for (const Glass& g : glass_catalogue()) glasses << QString::fromStdString(g.name);
     const json* glass = value_at(prefix + "glass");
+    // A makers' catalogue glass (S-BSL7, HIKARI:SF10) is listed too, so the picker shows it.
+    if (glass && glass->is_string() &&
+        !glasses.contains(QString::fromStdString(glass->get<std::string>())))
+        glasses << QString::fromStdString(glass->get<std::string>());
     const std::string material_key = prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1);
     add_choice(tr("Glass"), prefix + "glass", glass ? glass->get<std::string>() : "constant index",
                glasses, [this, material_key](const std::string& chosen) {

@@ -1,7 +1,6 @@
 #include "optics/glass.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -61,11 +60,6 @@ IndexModelPtr with_range(std::shared_ptr<IndexModel> m, double min_nm, double ma
     m->min_nm = min_nm;
     m->max_nm = max_nm;
     return m;
-}
-
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-    return s;
 }
 
 }  // namespace
@@ -165,14 +159,6 @@ const std::vector<Glass>& glass_catalogue() {
         return g;
     }();
     return catalogue;
-}
-
-const Glass* find_glass(const std::string& name) {
-    const std::string wanted = lower(name);
-    for (const Glass& g : glass_catalogue()) {
-        if (lower(g.name) == wanted) return &g;
-    }
-    return nullptr;
 }
 
 }  // namespace lenslab

@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace lenslab {
@@ -42,12 +43,19 @@ struct Glass {
     std::string description;
     std::string source;  // where the coefficients come from
     IndexModelPtr model;
-    double datasheet_n_d;  // the source's published n_d and V_d, for checking
+    double datasheet_n_d;  // the source's published n_d and V_d, for checking (NaN if none)
     double datasheet_v_d;
+    std::string maker =
+        {};  // "SCHOTT", "OHARA", ... for a maker's catalogue glass; empty if built in
+    // The extinction coefficient k against wavelength (um), where the catalogue gives it
+    // (internal transmittance through d: exp(-4 pi k d / lambda)).
+    std::vector<std::pair<double, double>> k_um = {};
 };
 
+// The built-in materials (optics/glass.cpp); the makers' catalogues are in glass_library.h.
 const std::vector<Glass>& glass_catalogue();
-// Case-insensitive lookup; nullptr if unknown.
+// A glass by name, built-in first, then the makers' catalogues (see lookup_glass in
+// glass_library.h for the rules); nullptr if unknown or ambiguous.
 const Glass* find_glass(const std::string& name);
 
 }  // namespace lenslab

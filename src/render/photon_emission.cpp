@@ -10,7 +10,7 @@ namespace lenslab {
 namespace {
 
 // Streams of the Halton rotations, apart from the photons' own (2^62 + photon index).
-constexpr uint64_t kRotationStreamBase = (uint64_t{1} << 62) - (uint64_t{1} << 20);
+constexpr uint64_t kEmissionRotationStream = (uint64_t{1} << 62) - (uint64_t{1} << 20);
 
 }  // namespace
 
@@ -56,7 +56,7 @@ PhotonPlan::PhotonPlan(const Scene& scene, int64_t emitted_per_light, int64_t ai
         for (size_t l = 0; l < counts.size(); ++l) {
             if (counts[l] == 0 || (stream == 1 && !m_light_aims[l])) continue;
             Range r{m_total, counts[l], static_cast<int>(l), stream == 1, {}};
-            Rng rotation(seed, kRotationStreamBase + l);
+            Rng rotation(seed, kEmissionRotationStream + l);
             for (double& x : r.rotation) x = rotation.uniform();
             m_ranges.push_back(r);
             m_total += counts[l];

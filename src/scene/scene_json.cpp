@@ -115,7 +115,9 @@ Material read_material(const json& j, const std::string& path, const std::string
     if (const json* g = r.find("glass")) {
         const Glass& glass = read_glass(*g, r.child_path("glass"));
         m.index = glass.model;
-        m.glass = glass.name;
+        // A maker's glass is named with its maker (the bench's reports, the ray diagram), a
+        // name lookups take back and that stays unambiguous (SCHOTT:SF10, HIKARI:SF10).
+        m.glass = glass.maker.empty() ? glass.name : glass.maker + ":" + glass.name;
     } else if (const json* n = r.find("ior")) {
         m.index = n->is_number() ? constant_index(r.real("ior"))
                                  : read_index_model(*n, r.child_path("ior"));

@@ -1,5 +1,7 @@
 #include "scene/spectral_json.h"
 
+#include "optics/glass_catalogue_file.h"
+#include "optics/glass_library.h"
 #include "scene/material.h"
 
 namespace lenslab {
@@ -78,11 +80,13 @@ IndexModelPtr read_index_model(const nlohmann::json& j, const std::string& path)
 const Glass& read_glass(const nlohmann::json& j, const std::string& path) {
     if (!j.is_string()) throw SceneError(path, "must be the name of a catalogue glass");
     const std::string name = j.get<std::string>();
-    if (const Glass* g = find_glass(name)) return *g;
-    std::string known;
-    for (const Glass& g : glass_catalogue()) known += (known.empty() ? "" : ", ") + g.name;
-    throw SceneError(path,
-                     "unknown glass '" + name + "' (known: " + known + "; see `lenslab glass`)");
+    try {
+        const GlassLookup found = lookup_glass(name);
+        if (found.glass) return *found.glass;
+        throw SceneError(path, found.error);
+    } catch (const GlassDataError& e) {
+        throw SceneError(path, std::string("cannot look up glass '") + name + "': " + e.what());
+    }
 }
 
 SpectrumPtr read_spectrum(const nlohmann::json& j, const std::string& path) {

@@ -385,3 +385,49 @@ lenslab_cli_test(NAME output.detect_onto_a_read_only_file
     ARGS detect scenes/detector_focus.json -o ${detect_read_only_dir} --photons 100000000
     CHECKS -DEXPECT_EXIT=1 -DMAKE_FILE=${detect_read_only_dir}/focal_plane.csv -DMAKE_FILE_READ_ONLY=ON
            "-DSTDERR_LINE=lenslab: error: cannot write '${detect_read_only_dir}/focal_plane.csv': the file is read-only")
+
+# Issue 17: the makers' glass catalogues, searched and looked up by name.
+lenslab_cli_test(NAME glass.list_names_the_catalogues
+    ARGS glass
+    CHECKS "-DSTDOUT_CONTAINS=and 1635 glasses of SCHOTT, OHARA, CDGM, HOYA, HIKARI, SUMITA")
+lenslab_cli_test(NAME glass.search_by_maker_nd_vd
+    ARGS glass --maker schott --nd 1.5:1.52 --vd 60:70
+    CHECKS "-DSTDOUT_CONTAINS=N-BK7            SCHOTT    1.51680   64.17")
+lenslab_cli_test(NAME glass.search_json
+    ARGS glass --maker OHARA --nd 1.516:1.517 --json
+    CHECKS -DSTDOUT_JSON=ON -DJSON_KEYS=count,glasses "-DSTDOUT_CONTAINS=\"name\": \"S-BSL7\"")
+lenslab_cli_test(NAME glass.search_all
+    ARGS glass --all
+    CHECKS "-DSTDOUT_CONTAINS=K-PSFn214        SUMITA")
+lenslab_cli_test(NAME glass.maker_prefix
+    ARGS glass HIKARI:SF10
+    CHECKS "-DSTDOUT_CONTAINS=SF10 (HIKARI) at 587.562 nm: n = 1.728250")
+lenslab_cli_test(NAME glass.bad.unknown_suggests
+    ARGS glass NBK7
+    CHECKS -DEXPECT_EXIT=1 "-DSTDERR_PREFIX=lenslab: error: unknown glass 'NBK7'"
+           "-DSTDERR_CONTAINS=did you mean N-BK7 (SCHOTT)?")  # (a ';' cannot pass through CMake)
+lenslab_cli_test(NAME glass.bad.shared_name
+    ARGS glass sf10
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_PREFIX=lenslab: error: glass 'sf10' is in several catalogues")
+lenslab_cli_test(NAME glass.bad.range
+    ARGS glass --nd 1.6
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_CONTAINS=--nd: must be MIN:MAX (e.g. 1.5:1.6, either may be left out), got '1.6'")
+lenslab_cli_test(NAME glass.bad.unknown_maker
+    ARGS glass --maker shott
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: --maker: unknown maker 'shott' (makers: builtin, SCHOTT, OHARA, CDGM, HOYA, HIKARI, SUMITA)")
+lenslab_cli_test(NAME glass.bad.no_match
+    ARGS glass --nd 3:4
+    CHECKS -DEXPECT_EXIT=1 "-DSTDERR_LINE=lenslab: error: no glass matches the search")
+lenslab_cli_test(NAME glass.bad.name_and_search
+    ARGS glass N-BK7 --maker schott
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=excludes --maker")
+# Catalogue files that cannot be found: the built-in table still prints, then one error says
+# where it looked.
+lenslab_cli_test(NAME glass.bad.data_missing
+    ARGS glass
+    CHECKS -DEXPECT_EXIT=1 "-DSTDOUT_CONTAINS=polycarbonate    builtin"
+           "-DSTDERR_LINE=lenslab: error: LENSLAB_GLASS_DATA=/nonexistent/glass: no schott.json there (it must name the folder holding the glass catalogues)")
+set_tests_properties(cli.glass.bad.data_missing PROPERTIES ENVIRONMENT LENSLAB_GLASS_DATA=/nonexistent/glass)

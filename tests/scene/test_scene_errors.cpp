@@ -61,6 +61,11 @@ const BadScene kBadScenes[] = {
     // Materials.
     {"unknown_material_name.json", "objects[0].material",
      "unknown material 'glas' (not in materials; did you mean 'glass'?)"},
+    // Glass names (issue 17): the closest catalogue names, or the makers to choose between.
+    {"glass_unknown_name.json", "materials.crown.glass",
+     "unknown glass 'NBK7'; did you mean N-BK7 (SCHOTT)?"},
+    {"glass_shared_name.json", "objects[0].material.glass",
+     "glass 'SF10' is in several catalogues; name one of SCHOTT:SF10, HIKARI:SF10"},
     {"transparency_plus_specular.json", "materials.half_mirror.specular",
      "transparency + specular must be at most 1, got 1.2"},
     {"color_negative.json", "objects[0].material.color[1]", "must be >= 0, got -0.1"},

@@ -98,6 +98,25 @@ TEST(SceneJson, NamedAndInlineMaterials) {
     EXPECT_DOUBLE_EQ(s.material_of(1).diffuse_weight(), 0.8);
 }
 
+TEST(SceneJson, MaterialsTakeTheMakersCatalogueGlasses) {
+    // OHARA's data sheet: S-BSL7 n_d 1.51633; HIKARI's SF10 (1.72825) is not SCHOTT's N-SF10.
+    const Scene s = parse_scene(R"({
+      "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+      "objects": [
+        {"type": "sphere", "center": [0, 0, 0], "radius": 1,
+         "material": {"transparency": 1, "glass": "s-bsl7"}},
+        {"type": "sphere", "center": [3, 0, 0], "radius": 1,
+         "material": {"transparency": 1, "glass": "hikari:sf10"}},
+        {"type": "sphere", "center": [6, 0, 0], "radius": 1,
+         "material": {"transparency": 1, "glass": "N-BK7"}}
+      ]})");
+    EXPECT_NEAR(s.material_of(0).ior(kLineD), 1.51633, 1e-5);
+    EXPECT_EQ(s.material_of(0).glass, "OHARA:S-BSL7");
+    EXPECT_NEAR(s.material_of(1).ior(kLineD), 1.72825, 1e-5);
+    EXPECT_EQ(s.material_of(1).glass, "HIKARI:SF10");
+    EXPECT_EQ(s.material_of(2).glass, "N-BK7");  // the built-in keeps its plain name
+}
+
 TEST(SceneJson, ReportLensEqualsItsPrescription) {
     // curvature_radius 1, aperture_radius 0.6 is the prescription R1 = 1, R2 = -1,
     // thickness 2 (1 - sqrt(1 - 0.36)) = 0.4, diameter 1.2.

@@ -1,0 +1,138 @@
+#include "optics/glass_library.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <unordered_set>
+
+#include "optics/glass_catalogue_file.h"
+
+namespace lenslab {
+
+namespace {
+
+std::string upper_glass_name(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::toupper(c); });
+    return s;
+}
+
+// Levenshtein distance between two upper-cased names, for the suggestions.
+size_t glass_name_distance(const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diagonal = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            const size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+std::vector<const Glass*> glasses_named(const std::string& wanted_upper,
+                                        const std::string& maker_upper) {
+    std::vector<const Glass*> found;
+    for (const Glass& g : maker_glasses()) {
+        if (upper_glass_name(g.name) == wanted_upper &&
+            (maker_upper.empty() || upper_glass_name(g.maker) == maker_upper))
+            found.push_back(&g);
+    }
+    return found;
+}
+
+// The names nearest to an unknown one: all at the smallest distance, at most five, and only
+// if that distance is a slip (a third of the name, at least 1 and at most 3 edits). A
+// built-in glass that a maker also lists (N-BK7) is offered as the maker's.
+std::string closest_glass_names(const std::string& wanted_upper) {
+    std::vector<std::pair<size_t, std::string>> scored;
+    std::unordered_set<std::string> maker_names;
+    for (const Glass& g : maker_glasses()) {
+        const std::string name = upper_glass_name(g.name);
+        scored.emplace_back(glass_name_distance(wanted_upper, name), glass_label(g));
+        maker_names.insert(name);
+    }
+    for (const Glass& g : glass_catalogue()) {
+        const std::string name = upper_glass_name(g.name);
+        if (!maker_names.count(name))
+            scored.emplace_back(glass_name_distance(wanted_upper, name), glass_label(g));
+    }
+    std::stable_sort(scored.begin(), scored.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    const size_t limit = std::min<size_t>(3, std::max<size_t>(1, wanted_upper.size() / 3));
+    std::string out;
+    for (size_t i = 0; i < scored.size() && i < 5; ++i) {
+        if (scored[i].first > limit || scored[i].first != scored.front().first) break;
+        out += (out.empty() ? "" : ", ") + scored[i].second;
+    }
+    return out;
+}
+
+}  // namespace
+
+const std::vector<Glass>& maker_glasses() {
+    static const std::vector<Glass> glasses = [] {
+        const std::filesystem::path dir = glass_data_directory();
+        std::vector<Glass> all;
+        for (const std::string& file : glass_catalogue_files()) {
+            std::vector<Glass> one = read_glass_catalogue((dir / file).string());
+            all.insert(all.end(), std::make_move_iterator(one.begin()),
+                       std::make_move_iterator(one.end()));
+        }
+        return all;
+    }();
+    return glasses;
+}
+
+std::vector<std::string> glass_makers() {
+    std::vector<std::string> makers;
+    for (const Glass& g : maker_glasses()) {
+        if (makers.empty() || makers.back() != g.maker) makers.push_back(g.maker);
+    }
+    return makers;
+}
+
+std::string glass_label(const Glass& g) {
+    return g.maker.empty() ? g.name : g.name + " (" + g.maker + ")";
+}
+
+GlassLookup lookup_glass(const std::string& name) {
+    const std::string wanted = upper_glass_name(name);
+    for (const Glass& g : glass_catalogue()) {
+        if (upper_glass_name(g.name) == wanted) return {&g, {}};
+    }
+    const size_t colon = wanted.find(':');
+    if (colon != std::string::npos) {
+        const std::string maker = wanted.substr(0, colon), glass = wanted.substr(colon + 1);
+        const std::vector<std::string> makers = glass_makers();
+        if (std::find(makers.begin(), makers.end(), maker) == makers.end()) {
+            std::string known;
+            for (const std::string& m : makers) known += (known.empty() ? "" : ", ") + m;
+            return {nullptr, "unknown glass maker '" + name.substr(0, colon) + "' in '" + name +
+                                 "' (makers: " + known + ")"};
+        }
+        const std::vector<const Glass*> found = glasses_named(glass, maker);
+        if (!found.empty()) return {found.front(), {}};
+        const std::string near = closest_glass_names(glass);
+        return {nullptr, "unknown glass '" + name + "'" +
+                             (near.empty() ? "" : "; did you mean " + near + "?")};
+    }
+    const std::vector<const Glass*> found = glasses_named(wanted, "");
+    if (found.size() == 1) return {found.front(), {}};
+    if (found.size() > 1) {
+        std::string choices;
+        for (const Glass* g : found)
+            choices += (choices.empty() ? "" : ", ") + g->maker + ":" + g->name;
+        return {nullptr, "glass '" + name + "' is in several catalogues; name one of " + choices};
+    }
+    const std::string near = closest_glass_names(wanted);
+    return {nullptr,
+            "unknown glass '" + name + "'" +
+                (near.empty() ? " (see `lenslab glass`)" : "; did you mean " + near + "?")};
+}
+
+const Glass* find_glass(const std::string& name) { return lookup_glass(name).glass; }
+
+}  // namespace lenslab
