@@ -28,7 +28,7 @@ namespace {
 // The pass wavelengths' rotation uses the stream just below this one, apart from the camera
 // paths' (pixel index) and the photons' (2^62 + photon index). (Streams from here up once
 // rotated the visible points' wavelengths, before their colour became exact.)
-constexpr uint64_t kRotationStreamBase = uint64_t{1} << 61;
+constexpr uint64_t kSppmRotationStreamBase = uint64_t{1} << 61;
 // Automatic initial radius: this many pixel footprints, at most this share of the scene's
 // diagonal (the photon_map integrator's default radius).
 constexpr double kFootprints = 2.0;
@@ -204,7 +204,7 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
                    splitmix64(r.seed ^ splitmix64(static_cast<uint64_t>(m_stats.passes))), 550, 1,
                    Camera(scene.camera, m_width, m_height)};
     pass.lambda_nm = m_pass_wavelength.sample(
-        pass.index, Rng(r.seed, kRotationStreamBase - 1).uniform(), pass.lambda_pdf);
+        pass.index, Rng(r.seed, kSppmRotationStreamBase - 1).uniform(), pass.lambda_pdf);
 
     // 1. Camera paths to this pass's visible points.
     auto t0 = std::chrono::steady_clock::now();
