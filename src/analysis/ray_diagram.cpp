@@ -201,6 +201,7 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     focus(p.z_front_focus, "F");
     focus(p.z_rear_focus, "F'");
 
+    d.subtitle = "rays from a point at infinity on the axis";
     d.title =
         "EFL " + fmt("%.2f", p.efl) + " mm, BFL " + fmt("%.2f", p.bfl) + " mm at " +
         fmt("%.2f", p.wavelength_nm) + " nm" +

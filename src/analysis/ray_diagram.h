@@ -27,6 +27,7 @@ struct DiagramPoint {
 struct DiagramPath {
     std::vector<DiagramPoint> points;
     DiagramColour stroke;
+    double stroke_opacity = 1.0;
     double width = 1.0;
     double dash = 0.0;  // dash length; 0: solid
     bool closed = false;
@@ -63,6 +64,7 @@ struct RayDiagram {
     std::vector<DiagramText> labels;
     std::vector<LegendEntry> legend;
     std::string title;
+    std::string subtitle;         // what the rays are, under the title
     double scale_bar = 10.0;      // length of the scale bar, in the scene's unit
     std::string scale_bar_label;  // "10 mm"
 };
