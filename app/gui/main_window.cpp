@@ -28,6 +28,7 @@
 #include "scene/object_types.h"
 #include "scene_document.h"
 #include "scene_tree.h"
+#include "section_widget.h"
 #include "viewport.h"
 
 namespace lenslab::gui {
@@ -86,11 +87,16 @@ MainWindow::MainWindow(QWidget* parent)
       m_tree(new SceneTree(m_document, this)),
       m_panel(new PropertyPanel(m_document, this)),
       m_viewport(new Viewport(m_document, this)),
+      m_section(new SectionWidget(m_document, this)),
+      m_views(new QTabWidget(this)),
       m_ray_diagram(new RayDiagramDock(m_document, this)),
       m_detector_dock(new DetectorDock(m_document, this)),
       m_status(new QLabel(this)) {
     setObjectName("main_window");
-    setCentralWidget(m_viewport);
+    m_views->setObjectName("views");
+    m_views->addTab(m_viewport, tr("3-D view"));
+    m_views->addTab(m_section, tr("Section"));
+    setCentralWidget(m_views);
 
     auto* tree_dock = new QDockWidget(tr("Scene"), this);
     tree_dock->setObjectName("scene_dock");
@@ -113,6 +119,12 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_tree, &SceneTree::pointer_selected, m_panel, &PropertyPanel::show_pointer);
     connect(m_tree, &SceneTree::pointer_selected, m_ray_diagram, &RayDiagramDock::show_pointer);
     connect(m_tree, &SceneTree::pointer_selected, m_detector_dock, &DetectorDock::show_pointer);
+    connect(m_tree, &SceneTree::pointer_selected, m_section, &SectionWidget::show_pointer);
+    connect(m_section, &SectionWidget::object_picked, this, [this](int object) {
+        const int entry = object >= 0 ? m_document->scene().objects[object].source : -1;
+        m_tree->select_pointer(entry >= 0 ? join_pointer("/objects", entry) : QString());
+    });
+    connect(m_section, &SectionWidget::edit_refused, this, &MainWindow::show_message);
     connect(m_viewport, &Viewport::object_picked, this, [this](int object) {
         m_tree->select_pointer(object >= 0 ? join_pointer("/objects", object) : QString());
     });
@@ -176,6 +188,8 @@ void MainWindow::build_menus() {
     file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { save(); });
     file->addAction(tr("Save &as..."), QKeySequence::SaveAs, this, [this] { save_as(); });
     file->addAction(tr("&Export image..."), this, &MainWindow::export_image);
+    file->addAction(tr("Export &section as SVG..."), this, &MainWindow::export_section_svg)
+        ->setObjectName("export_section_svg");
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -227,6 +241,27 @@ void MainWindow::update_title() {
     const QString name = m_document->path().isEmpty() ? tr("default scene")
                                                       : QFileInfo(m_document->path()).fileName();
     setWindowTitle(QString("%1%2 — lenslab").arg(name, m_document->is_modified() ? " *" : ""));
+}
+
+bool MainWindow::show_view(const QString& name) {
+    if (name == "3d") {
+        m_views->setCurrentWidget(m_viewport);
+    } else if (name == "section") {
+        m_views->setCurrentWidget(m_section);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+void MainWindow::export_section_svg() {
+    QString path = QFileDialog::getSaveFileName(this, tr("Export section"), QString(),
+                                                tr("SVG pictures (*.svg)"));
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += ".svg";
+    QString error;
+    if (!m_section->export_svg(path, &error))
+        QMessageBox::warning(this, tr("Cannot export"), error);
 }
 
 void MainWindow::show_message(const QString& text) { statusBar()->showMessage(text, 10000); }

@@ -1,9 +1,11 @@
 #pragma once
-// The editor's main window: scene tree (left), viewport (centre), properties (right),
+// The editor's main window: scene tree (left), the 3-D viewport and the 2-D section view
+// as tabs (centre), properties (right),
 // menus for files, edits and rendering, and a status bar with passes, photons and time.
 
 #include <QLabel>
 #include <QMainWindow>
+#include <QTabWidget>
 
 namespace lenslab::gui {
 
@@ -13,6 +15,7 @@ class RayDiagramDock;
 class RenderController;
 class SceneDocument;
 class SceneTree;
+class SectionWidget;
 class Viewport;
 
 class MainWindow : public QMainWindow {
@@ -35,6 +38,9 @@ public:
     SceneTree* tree() const { return m_tree; }
     PropertyPanel* panel() const { return m_panel; }
     Viewport* viewport() const { return m_viewport; }
+    SectionWidget* section_view() const { return m_section; }
+    // Brings the "3d" or "section" view to the front; false for another name.
+    bool show_view(const QString& name);
     RayDiagramDock* ray_diagram() const { return m_ray_diagram; }
     DetectorDock* detector_dock() const { return m_detector_dock; }
     QString status_text() const { return m_status->text(); }
@@ -57,6 +63,7 @@ private:
     bool save();
     bool save_as();
     void export_image();
+    void export_section_svg();
     void show_message(const QString& text);
 
     SceneDocument* m_document;
@@ -64,6 +71,8 @@ private:
     SceneTree* m_tree;
     PropertyPanel* m_panel;
     Viewport* m_viewport;
+    SectionWidget* m_section;
+    QTabWidget* m_views;
     RayDiagramDock* m_ray_diagram;
     DetectorDock* m_detector_dock;
     QLabel* m_status;
