@@ -23,7 +23,8 @@ constexpr double kSectionPickPixels = 5;
 double distance_to_segment(const DiagramPoint& p, const DiagramPoint& a, const DiagramPoint& b) {
     const double dz = b.z - a.z, dy = b.y - a.y;
     const double len2 = dz * dz + dy * dy;
-    const double t = len2 > 0 ? std::clamp(((p.z - a.z) * dz + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0;
+    const double t =
+        len2 > 0 ? std::clamp(((p.z - a.z) * dz + (p.y - a.y) * dy) / len2, 0.0, 1.0) : 0;
     return std::hypot(p.z - a.z - t * dz, p.y - a.y - t * dy);
 }
 

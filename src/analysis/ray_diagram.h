@@ -20,6 +20,11 @@ struct DiagramColour {
     int r = 0, g = 0, b = 0;
 };
 
+// Rays in the colours of their Fraunhofer lines (F, d, C), as optics texts draw them.
+inline constexpr DiagramColour kDiagramBlueF{30, 90, 230};
+inline constexpr DiagramColour kDiagramYellowGreenD{150, 170, 0};
+inline constexpr DiagramColour kDiagramRedC{220, 30, 30};
+
 struct DiagramPoint {
     double z = 0, y = 0;
 };

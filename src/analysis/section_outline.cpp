@@ -16,7 +16,7 @@ namespace {
 
 // Where a flat convex polygon cuts the plane: one segment, or nothing.
 void section_cut_polygon(const Vec3* corners, int count, const SectionPlane& plane,
-                 std::vector<SectionCurve>& out) {
+                         std::vector<SectionCurve>& out) {
     SectionCurve cut;
     for (int i = 0; i < count; ++i) {
         const Vec3& p = corners[i];

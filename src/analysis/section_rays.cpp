@@ -13,7 +13,7 @@ namespace {
 // `count` rays around `centre` in the plane, leaving a circle of `radius` (the section of
 // an emitting sphere, so they do not start inside it).
 void add_section_fan(const Vec3& centre, double radius, int count, const SectionPlane& plane,
-             std::vector<Ray>& out) {
+                     std::vector<Ray>& out) {
     for (int i = 0; i < count; ++i) {
         const double angle = 2 * std::numbers::pi * (i + 0.5) / count;
         const Vec3 d = plane.u * std::cos(angle) + plane.v * std::sin(angle);
@@ -89,7 +89,8 @@ std::vector<Ray> section_start_rays(const Scene& scene, const SectionPlane& plan
     }
     for (const BeamLight& light : scene.beams) {
         const double d = plane.distance(light.origin);
-        if (!direction_in_section_plane(light.direction, plane) || std::abs(d) >= light.radius) continue;
+        if (!direction_in_section_plane(light.direction, plane) || std::abs(d) >= light.radius)
+            continue;
         const Vec3 centre = light.origin - plane.normal() * d;
         const double width = 2 * std::sqrt(light.radius * light.radius - d * d);
         add_section_beam({centre, light.direction, width, fan}, plane, rays);
@@ -99,8 +100,8 @@ std::vector<Ray> section_start_rays(const Scene& scene, const SectionPlane& plan
         const double r = e.sphere->radius();
         if (std::abs(d) >= r) continue;
         // Just outside the sphere's section, so the rays leave the lamp rather than hit it.
-        add_section_fan(e.sphere->centre() - plane.normal() * d, std::sqrt(r * r - d * d) * (1 + 1e-6),
-                fan, plane, rays);
+        add_section_fan(e.sphere->centre() - plane.normal() * d,
+                        std::sqrt(r * r - d * d) * (1 + 1e-6), fan, plane, rays);
     }
     return rays;
 }

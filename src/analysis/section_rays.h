@@ -30,8 +30,8 @@ struct SectionRayOptions {
     // of the scene disperses (the paths would coincide).
     std::vector<double> wavelengths_nm{kLineF, kLineD, kLineC};
     std::optional<SectionBeam> beam;
-    int rays_per_light = 12;  // a fan around each light the plane cuts; 0: none
-    int max_depth = 12;       // bounces followed along one path
+    int rays_per_light = 12;   // a fan around each light the plane cuts; 0: none
+    int max_depth = 12;        // bounces followed along one path
     double min_weight = 0.01;  // fainter branches are not drawn
     double escape_length = 1;  // how far an escaping ray is drawn
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "optics/spectrum.h"
 
@@ -67,6 +68,12 @@ bool section_scene_disperses(const Scene& scene) {
 }  // namespace
 
 DiagramColour wavelength_colour(double nm) {
+    // The ray diagram's colours for its three lines, so the two views agree.
+    const std::pair<double, DiagramColour> lines[] = {
+        {kLineF, kDiagramBlueF}, {kLineD, kDiagramYellowGreenD}, {kLineC, kDiagramRedC}};
+    for (const auto& [line, colour] : lines) {
+        if (std::abs(nm - line) < 1e-3) return colour;
+    }
     Rgb c = xyz_to_linear_srgb(cie_xyz_bar(nm));
     c = {std::max(c.r, 0.0), std::max(c.g, 0.0), std::max(c.b, 0.0)};
     const double peak = std::max({c.r, c.g, c.b, 1e-12});
@@ -102,14 +109,15 @@ SectionView make_section_view(const Scene& scene, const SectionPlane& plane,
     RayTreeOptions tree;
     tree.max_depth = options.rays.max_depth;
     tree.min_weight = options.rays.min_weight;
-    const double reach = std::max(options.rays.escape_length,
-                                  std::hypot(a1 - a0, b1 - b0) + 2 * margin);
+    const double reach =
+        std::max(options.rays.escape_length, std::hypot(a1 - a0, b1 - b0) + 2 * margin);
     std::vector<double> wavelengths = options.rays.wavelengths_nm;
     if (wavelengths.size() > 1 && !section_scene_disperses(scene))
         wavelengths = {wavelengths[wavelengths.size() / 2]};
     for (double nm : wavelengths) {
         tree.wavelength_nm = nm;
-        for (const Ray& r : starts) append_ray_paths(trace_ray_tree(scene, r, tree), nm, reach, view.rays);
+        for (const Ray& r : starts)
+            append_ray_paths(trace_ray_tree(scene, r, tree), nm, reach, view.rays);
     }
     return view;
 }
@@ -171,7 +179,8 @@ RayDiagram section_diagram(const Scene& scene, const SectionView& view, int sele
     for (const SectionRayPath& r : view.rays) {
         if (std::find(seen.begin(), seen.end(), r.wavelength_nm) != seen.end()) continue;
         seen.push_back(r.wavelength_nm);
-        d.legend.push_back({wavelength_colour(r.wavelength_nm), section_format("%.1f nm", r.wavelength_nm)});
+        d.legend.push_back(
+            {wavelength_colour(r.wavelength_nm), section_format("%.1f nm", r.wavelength_nm)});
     }
     d.scale_bar = section_scale_bar_length(d.z_max - d.z_min);
     d.scale_bar_label = section_format("%g (scene units)", d.scale_bar);

@@ -46,7 +46,8 @@ SectionExtent focus_extent(const SectionView& view, int object);
 // `selected` object's outlined in orange, rays coloured by wavelength and faded by weight.
 RayDiagram section_diagram(const Scene& scene, const SectionView& view, int selected = -1);
 
-// A colour of a wavelength (CIE 1931 to sRGB, darkened to show on white).
+// A colour of a wavelength: the ray diagram's for the F, d and C lines, else its CIE 1931
+// colour in sRGB, darkened to show on white.
 DiagramColour wavelength_colour(double nm);
 
 }  // namespace lenslab

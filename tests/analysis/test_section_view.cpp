@@ -67,8 +67,7 @@ TEST(SectionView, ContoursOfASphereCutOffCentreLieOnIt) {
     EXPECT_TRUE(curves[0].closed);
     EXPECT_GT(curves[0].points.size(), 100u);
     const double circle = std::sqrt(0.55 * 0.55 - 0.3 * 0.3);
-    for (const DiagramPoint& p : curves[0].points)
-        EXPECT_NEAR(std::hypot(p.z, p.y), circle, 1e-9);
+    for (const DiagramPoint& p : curves[0].points) EXPECT_NEAR(std::hypot(p.z, p.y), circle, 1e-9);
 }
 
 TEST(SectionView, ATorusCutThroughItsAxisGivesTwoLoops) {
@@ -203,7 +202,8 @@ TEST(SectionView, BeyondTheCriticalAngleTheRayIsTotallyReflected) {
         if (r.points.size() < 2) continue;
         const Vec3 d = normalize(r.points.back() - r.points[r.points.size() - 2]);
         left |= r.points[r.points.size() - 2].y > 0.999 &&
-                std::abs(std::asin(d.x) - std::asin(1.5 * std::sin(40 * std::numbers::pi / 180))) < 1e-9;
+                std::abs(std::asin(d.x) - std::asin(1.5 * std::sin(40 * std::numbers::pi / 180))) <
+                    1e-9;
     }
     EXPECT_TRUE(left);
 }
