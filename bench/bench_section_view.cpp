@@ -17,7 +17,7 @@ void BM_SectionViewDefaultLens(benchmark::State& state) {
     const int lens = 1;  // "glass lens"
     const SectionPlane plane = default_section_plane(scene, lens);
     SectionViewOptions options;  // as the editor draws it
-    options.rays.beam = default_section_beam(scene, lens, 15);
+    options.rays.beam = default_section_beam(scene, lens, plane, 15);
     options.rays.rays_per_light = static_cast<int>(state.range(0));
     size_t paths = 0;
     for (auto _ : state) {

@@ -56,7 +56,7 @@ void SectionWidget::refresh() {
     // While dragging, the plane stays put: the object moves within it.
     if (m_drag_object < 0) m_plane = default_section_plane(scene, m_selected);
     SectionViewOptions options;
-    options.rays.beam = default_section_beam(scene, m_selected, kSectionBeamRays);
+    options.rays.beam = default_section_beam(scene, m_selected, m_plane, kSectionBeamRays);
     m_section = make_section_view(scene, m_plane, options);
     // The frame stays put through edits (a dragged object moves across it) and is fitted
     // again to a new selection or a scene with other objects.

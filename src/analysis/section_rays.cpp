@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "analysis/section_outline.h"
 #include "geometry/lens/lens_solid.h"
 
 namespace lenslab {
@@ -116,10 +117,22 @@ void append_ray_paths(const RayTree& tree, double wavelength_nm, double escape_l
     out.erase(single, out.end());
 }
 
-std::optional<SectionBeam> default_section_beam(const Scene& scene, int object, int rays) {
+std::optional<SectionBeam> default_section_beam(const Scene& scene, int object,
+                                                const SectionPlane& plane, int rays) {
     if (object < 0 || object >= int(scene.objects.size())) return std::nullopt;
     const auto* lens = dynamic_cast<const LensSolid*>(scene.objects[object].shape.get());
-    if (!lens) return std::nullopt;
+    if (!lens) {
+        double a0 = INFINITY, a1 = -INFINITY, b0 = INFINITY, b1 = -INFINITY;
+        for (const SectionCurve& c : section_outline(*scene.objects[object].shape, plane)) {
+            for (const DiagramPoint& p : c.points) {
+                a0 = std::min(a0, p.z), a1 = std::max(a1, p.z);
+                b0 = std::min(b0, p.y), b1 = std::max(b1, p.y);
+            }
+        }
+        if (a0 > a1) return std::nullopt;
+        const double size = std::max(a1 - a0, b1 - b0);
+        return SectionBeam{plane.at(a0 - size, 0.5 * (b0 + b1)), plane.u, 0.8 * (b1 - b0), rays};
+    }
     const LensPrescription& p = lens->prescription();
     Vec3 direction = p.axis;
     std::optional<Vec3> light;

@@ -121,7 +121,7 @@ TEST(SectionView, RaysAgreeWithTheRayTreeOfLenslabTrace) {
     const int lens = section_object_named(scene, "glass lens");
     const SectionPlane plane = default_section_plane(scene, lens);
     SectionViewOptions options;
-    options.rays.beam = default_section_beam(scene, lens, 15);
+    options.rays.beam = default_section_beam(scene, lens, plane, 15);
     options.rays.rays_per_light = 0;
     options.rays.wavelengths_nm = {kLineD};
     const SectionView view = make_section_view(scene, plane, options);
@@ -211,9 +211,10 @@ TEST(SectionView, BeyondTheCriticalAngleTheRayIsTotallyReflected) {
 TEST(SectionView, TheDrawingHasTheOutlinesAndTheRays) {
     const Scene scene = default_scene();
     const int lens = section_object_named(scene, "glass lens");
+    const SectionPlane plane = default_section_plane(scene, lens);
     SectionViewOptions options;
-    options.rays.beam = default_section_beam(scene, lens, 15);
-    const SectionView view = make_section_view(scene, default_section_plane(scene, lens), options);
+    options.rays.beam = default_section_beam(scene, lens, plane, 15);
+    const SectionView view = make_section_view(scene, plane, options);
     ASSERT_TRUE(section_of(view, lens));
     const RayDiagram d = section_diagram(scene, view, lens);
     size_t closed = 0;
@@ -225,6 +226,32 @@ TEST(SectionView, TheDrawingHasTheOutlinesAndTheRays) {
     ASSERT_EQ(d.legend.size(), 1u);
     EXPECT_EQ(d.legend[0].text, "587.6 nm");
     EXPECT_LT(d.z_min, d.z_max);
+}
+
+// Any other object gets a beam across it from the left: a glass ball focuses it.
+TEST(SectionView, ABallSelectedGetsABeamAcrossIt) {
+    const Scene scene = default_scene();
+    const int ball = section_object_named(scene, "glass sphere");
+    const SectionPlane plane = default_section_plane(scene, ball);
+    EXPECT_NEAR(plane.distance({-1.0, 0.78, 0.2}), 0, 1e-12);  // through its centre
+    const std::optional<SectionBeam> beam = default_section_beam(scene, ball, plane, 7);
+    ASSERT_TRUE(beam);
+    EXPECT_NEAR(dot(beam->direction, plane.u), 1, 1e-12);
+    EXPECT_NEAR(beam->width, 0.8 * 1.1, 1e-3);  // 80% of the diameter
+    SectionRayOptions options;
+    options.beam = beam;
+    options.rays_per_light = 0;
+    const std::vector<Ray> starts = section_start_rays(scene, plane, options);
+    ASSERT_EQ(starts.size(), 7u);
+    // The middle ray runs through the centre, undeviated (normal incidence).
+    const RayTree tree = trace_ray_tree(scene, starts[3], {});
+    const RayTreeNode* inside = nullptr;
+    for (const RayTreeNode& c : tree.root.children) {
+        if (c.event == Event::Refract) inside = &c;
+    }
+    ASSERT_TRUE(inside);
+    EXPECT_LT(length(cross(inside->direction, plane.u)), 1e-6);
+    EXPECT_FALSE(default_section_beam(scene, -1, plane));
 }
 
 TEST(SectionView, DispersingGlassSplitsTheBeamIntoItsColours) {
