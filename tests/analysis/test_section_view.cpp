@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <memory>
 #include <numbers>
 
 #include "analysis/section_view.h"
@@ -162,6 +164,67 @@ TEST(SectionView, RaysAgreeWithTheRayTreeOfLenslabTrace) {
         EXPECT_EQ(k, path->points.size());
     }
     EXPECT_GE(through_lens, 2 * 15);  // every beam ray enters and leaves the lens
+}
+
+// What `lenslab trace` prints (its stdout) for a command line.
+std::string section_trace_output(const std::string& command) {
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+    std::string out;
+    char buffer[4096];
+    while (pipe && fgets(buffer, sizeof buffer, pipe.get())) out += buffer;
+    return out;
+}
+
+// The same, through the command itself: its JSON tree for three of the beam's rays
+// (both edges and the middle), followed along the strongest branches.
+TEST(SectionView, RaysAgreeWithLenslabTraceOutput) {
+    const Scene scene = load_scene_file(LENSLAB_SOURCE_DIR "/scenes/default.json");
+    const int lens = section_object_named(scene, "glass lens");
+    const SectionPlane plane = default_section_plane(scene, lens);
+    SectionViewOptions options;
+    options.rays.beam = default_section_beam(scene, lens, plane, 15);
+    options.rays.rays_per_light = 0;
+    options.rays.wavelengths_nm = {kLineD};
+    const SectionView view = make_section_view(scene, plane, options);
+    const std::vector<Ray> starts = section_start_rays(scene, plane, options.rays);
+    ASSERT_EQ(starts.size(), 15u);
+    for (int k : {0, 7, 14}) {
+        const Ray& start = starts[size_t(k)];
+        char args[512];
+        std::snprintf(args, sizeof args,
+                      " trace %s/scenes/default.json --origin %.17g,%.17g,%.17g --direction "
+                      "%.17g,%.17g,%.17g --max-depth %d --min-weight %.17g",
+                      LENSLAB_SOURCE_DIR, start.origin.x, start.origin.y, start.origin.z,
+                      start.direction.x, start.direction.y, start.direction.z,
+                      options.rays.max_depth, options.rays.min_weight);
+        const nlohmann::json out =
+            nlohmann::json::parse(section_trace_output(std::string(LENSLAB_BINARY) + args));
+        const SectionRayPath* path = nullptr;
+        for (const SectionRayPath& p : view.rays) {
+            if (!path && length(p.points[0] - start.origin) < 1e-15) path = &p;
+        }
+        ASSERT_TRUE(path);
+        const nlohmann::json* node = &out.at("tree");
+        size_t compared = 0;
+        for (size_t i = 1; i < path->points.size() && !node->at("children").empty(); ++i) {
+            const nlohmann::json& to = node->at("children")[0].at("to");
+            if (!to.is_null()) {
+                const Vec3 hit{to[0].get<double>(), to[1].get<double>(), to[2].get<double>()};
+                EXPECT_LT(length(path->points[i] - hit), 1e-9) << "ray " << k << ", hit " << i;
+                ++compared;
+            }
+            const nlohmann::json* next = nullptr;
+            for (const nlohmann::json& c : node->at("children")) {
+                const std::string event = c.at("event");
+                if (event == "absorb" || event == "escape") continue;
+                if (!next || c.at("weight").get<double>() > next->at("weight").get<double>())
+                    next = &c;
+            }
+            if (!next) break;
+            node = next;
+        }
+        EXPECT_GE(compared, 3u) << "ray " << k;  // into the lens, out of it, the floor
+    }
 }
 
 // A long glass slab, rays from inside meeting its top face at 40 and 45 degrees: the
