@@ -3,16 +3,20 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHBoxLayout>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QVBoxLayout>
 #include <cstring>
 #include <set>
 #include <string>
@@ -88,6 +92,7 @@ MainWindow::MainWindow(QWidget* parent)
       m_panel(new PropertyPanel(m_document, this)),
       m_viewport(new Viewport(m_document, this)),
       m_section(new SectionWidget(m_document, this)),
+      m_section_tab(new QWidget(this)),
       m_views(new QTabWidget(this)),
       m_ray_diagram(new RayDiagramDock(m_document, this)),
       m_detector_dock(new DetectorDock(m_document, this)),
@@ -95,7 +100,8 @@ MainWindow::MainWindow(QWidget* parent)
     setObjectName("main_window");
     m_views->setObjectName("views");
     m_views->addTab(m_viewport, tr("3-D view"));
-    m_views->addTab(m_section, tr("Section"));
+    build_section_tab();
+    m_views->addTab(m_section_tab, tr("Section"));
     setCentralWidget(m_views);
 
     auto* tree_dock = new QDockWidget(tr("Scene"), this);
@@ -243,11 +249,35 @@ void MainWindow::update_title() {
     setWindowTitle(QString("%1%2 — lenslab").arg(name, m_document->is_modified() ? " *" : ""));
 }
 
+void MainWindow::build_section_tab() {
+    auto* plane = new QComboBox(m_section_tab);
+    plane->setObjectName("section_plane");
+    plane->addItem(tr("Default: the lens's axis, vertical"), int(SectionPlaneChoice::Default));
+    plane->addItem(tr("x-y plane"), int(SectionPlaneChoice::XY));
+    plane->addItem(tr("y-z plane"), int(SectionPlaneChoice::YZ));
+    plane->addItem(tr("z-x plane (seen from above)"), int(SectionPlaneChoice::ZX));
+    connect(plane, &QComboBox::currentIndexChanged, this, [this, plane](int index) {
+        m_section->set_plane_choice(SectionPlaneChoice(plane->itemData(index).toInt()));
+    });
+    auto* export_svg = new QPushButton(tr("Export SVG..."), m_section_tab);
+    export_svg->setObjectName("section_export_svg");
+    connect(export_svg, &QPushButton::clicked, this, &MainWindow::export_section_svg);
+    auto* bar = new QHBoxLayout;
+    bar->addWidget(new QLabel(tr("Plane:"), m_section_tab));
+    bar->addWidget(plane);
+    bar->addStretch(1);
+    bar->addWidget(export_svg);
+    auto* layout = new QVBoxLayout(m_section_tab);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(bar);
+    layout->addWidget(m_section, 1);
+}
+
 bool MainWindow::show_view(const QString& name) {
     if (name == "3d") {
         m_views->setCurrentWidget(m_viewport);
     } else if (name == "section") {
-        m_views->setCurrentWidget(m_section);
+        m_views->setCurrentWidget(m_section_tab);
     } else {
         return false;
     }

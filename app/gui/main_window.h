@@ -64,6 +64,7 @@ private:
     bool save_as();
     void export_image();
     void export_section_svg();
+    void build_section_tab();
     void show_message(const QString& text);
 
     SceneDocument* m_document;
@@ -72,6 +73,7 @@ private:
     PropertyPanel* m_panel;
     Viewport* m_viewport;
     SectionWidget* m_section;
+    QWidget* m_section_tab;  // the section view under its plane chooser and export button
     QTabWidget* m_views;
     RayDiagramDock* m_ray_diagram;
     DetectorDock* m_detector_dock;

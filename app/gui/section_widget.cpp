@@ -44,6 +44,12 @@ void SectionWidget::show_pointer(const QString& pointer) {
     refresh();
 }
 
+void SectionWidget::set_plane_choice(SectionPlaneChoice choice) {
+    m_plane_choice = choice;
+    m_refit = true;
+    refresh();
+}
+
 void SectionWidget::refresh() {
     const Scene& scene = m_document->scene();
     const QStringList tokens = split_pointer(m_pointer);  // {"objects", "3"}: an object
@@ -54,7 +60,7 @@ void SectionWidget::refresh() {
         if (scene.objects[i].source == entry) m_selected = i;
     }
     // While dragging, the plane stays put: the object moves within it.
-    if (m_drag_object < 0) m_plane = default_section_plane(scene, m_selected);
+    if (m_drag_object < 0) m_plane = section_plane(scene, m_selected, m_plane_choice);
     SectionViewOptions options;
     options.rays.beam = default_section_beam(scene, m_selected, m_plane, kSectionBeamRays);
     m_section = make_section_view(scene, m_plane, options);
@@ -119,7 +125,7 @@ void SectionWidget::mousePressEvent(QMouseEvent* event) {
     m_dragged = false;
     m_drag_object = -1;
     const int object = object_at(m_press);
-    if (object < 0) return;
+    if (object < 0 || m_document->scene().objects[object].source < 0) return;
     m_drag_view = fit_diagram_to(m_diagram, size());
     m_drag_object = object;
     m_before = m_document->json();

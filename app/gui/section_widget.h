@@ -22,6 +22,10 @@ public:
 
     // Follows the editor's selection (a JSON pointer such as "/objects/2").
     void show_pointer(const QString& pointer);
+    // The plane shown: through the selected lens's axis (the default) or a plane of the
+    // scene's axes, through the selected object.
+    void set_plane_choice(SectionPlaneChoice choice);
+    SectionPlaneChoice plane_choice() const { return m_plane_choice; }
 
     const SectionView& section() const { return m_section; }
     const RayDiagram& diagram() const { return m_diagram; }
@@ -52,6 +56,7 @@ private:
     SceneDocument* m_document;
     QString m_pointer;
     int m_selected = -1;
+    SectionPlaneChoice m_plane_choice = SectionPlaneChoice::Default;
     SectionPlane m_plane;
     SectionView m_section;
     RayDiagram m_diagram;

@@ -45,4 +45,22 @@ SectionPlane default_section_plane(const Scene& scene, int object) {
     return plane;
 }
 
+SectionPlane section_plane(const Scene& scene, int object, SectionPlaneChoice choice) {
+    SectionPlane plane = default_section_plane(scene, object);
+    switch (choice) {
+        case SectionPlaneChoice::Default:
+            break;
+        case SectionPlaneChoice::XY:
+            plane.u = {1, 0, 0}, plane.v = {0, 1, 0};
+            break;
+        case SectionPlaneChoice::YZ:
+            plane.u = {0, 0, -1}, plane.v = {0, 1, 0};
+            break;
+        case SectionPlaneChoice::ZX:
+            plane.u = {1, 0, 0}, plane.v = {0, 0, -1};
+            break;
+    }
+    return plane;
+}
+
 }  // namespace lenslab

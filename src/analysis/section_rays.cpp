@@ -121,6 +121,8 @@ std::optional<SectionBeam> default_section_beam(const Scene& scene, int object,
                                                 const SectionPlane& plane, int rays) {
     if (object < 0 || object >= int(scene.objects.size())) return std::nullopt;
     const auto* lens = dynamic_cast<const LensSolid*>(scene.objects[object].shape.get());
+    // A lens cut across its axis gets the beam of any other object.
+    if (lens && std::abs(dot(lens->prescription().axis, plane.normal())) > 1e-9) lens = nullptr;
     if (!lens) {
         double a0 = INFINITY, a1 = -INFINITY, b0 = INFINITY, b1 = -INFINITY;
         for (const SectionCurve& c : section_outline(*scene.objects[object].shape, plane)) {

@@ -55,10 +55,11 @@ std::vector<Ray> section_start_rays(const Scene& scene, const SectionPlane& plan
 void append_ray_paths(const RayTree& tree, double wavelength_nm, double escape_length,
                       std::vector<SectionRayPath>& out);
 
-// The beam a section view shows for `object`: for a lens, along its axis across 80% of its
-// aperture, coming from the side of the scene's first light (or from its front); for any
-// other object the plane cuts, along the plane's u across 80% of the height of its
-// cross-section, from the -u side; nothing for -1 or an object the plane misses.
+// The beam a section view shows for `object`: for a lens whose axis lies in the plane,
+// along its axis across 80% of its aperture, coming from the side of the scene's first
+// light (or from its front); for any other object the plane cuts, along the plane's u
+// across 80% of the height of its cross-section, from the -u side; nothing for -1 or an
+// object the plane misses.
 std::optional<SectionBeam> default_section_beam(const Scene& scene, int object,
                                                 const SectionPlane& plane, int rays = 15);
 

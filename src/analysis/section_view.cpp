@@ -133,8 +133,8 @@ SectionExtent focus_extent(const SectionView& view, int object) {
             }
         }
     }
-    if (a0 > a1) return view.extent;
     const double room = std::max(a1 - a0, b1 - b0);
+    if (!(room > 0)) return view.extent;  // missed by the plane, or cut in a single point
     return {a0 - room, a1 + room, b0 - room, b1 + room};
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <utility>
 
 #include "analysis/section_view.h"
 #include "geometry/lens/lens_solid.h"
@@ -58,6 +59,27 @@ TEST(SectionView, DefaultLensOutlineFollowsTheSagOfItsSpheres) {
     }
     EXPECT_NEAR(widest, h, 1e-12);
     EXPECT_GT(curves[0].points.size(), 100u);
+}
+
+TEST(SectionView, ChosenPlanesOfTheAxesThroughTheSelection) {
+    const Scene scene = default_scene();
+    const int lens = section_object_named(scene, "glass lens");
+    const Vec3 centre{0.35, 0.9, 0.9};
+    const std::pair<SectionPlaneChoice, Vec3> normals[] = {{SectionPlaneChoice::XY, {0, 0, 1}},
+                                                           {SectionPlaneChoice::YZ, {1, 0, 0}},
+                                                           {SectionPlaneChoice::ZX, {0, 1, 0}}};
+    for (const auto& [choice, normal] : normals) {
+        const SectionPlane plane = section_plane(scene, lens, choice);
+        EXPECT_LT(length(plane.normal() - normal), 1e-15);
+        EXPECT_LT(length(plane.origin - centre), 1e-15);
+        // The lens is cut across its axis: contoured, and a beam along u instead.
+        const std::vector<SectionCurve> curves = section_outline(*scene.objects[lens].shape, plane);
+        ASSERT_EQ(curves.size(), 1u);
+        EXPECT_TRUE(curves[0].closed);
+        const std::optional<SectionBeam> beam = default_section_beam(scene, lens, plane);
+        ASSERT_TRUE(beam);
+        EXPECT_LT(length(beam->direction - plane.u), 1e-15);
+    }
 }
 
 TEST(SectionView, ContoursOfASphereCutOffCentreLieOnIt) {

@@ -2,6 +2,7 @@
 // while the rays follow, the drawing exports as SVG, and `lenslab-gui --screenshot FILE
 // --view section` writes a picture of the window showing it.
 
+#include <QComboBox>
 #include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
@@ -115,6 +116,32 @@ private slots:
         QVERIFY(svg.contains("stroke-opacity"));  // rays faded by weight
         QVERIFY(svg.contains("587.6 nm"));
         QVERIFY(!view->export_svg(dir.filePath("missing/section.svg"), &error));
+    }
+
+    void the_plane_can_be_chosen() {
+        MainWindow w;
+        QVERIFY(w.show_view("section"));
+        w.tree()->select_pointer("/objects/0");  // the glass ball at (-1, 0.78, 0.2)
+        auto* plane = w.findChild<QComboBox*>("section_plane");
+        QVERIFY(plane);
+        plane->setCurrentIndex(2);  // y-z
+        auto* view = w.section_view();
+        QCOMPARE(view->plane_choice(), lenslab::SectionPlaneChoice::YZ);
+        const lenslab::SectionPlane& p = view->section().plane;
+        QCOMPARE(p.normal().x, 1.0);
+        QCOMPARE(p.origin.x, -1.0);  // through the selected ball
+        // The ball is cut through its centre: a circle of its radius, 0.55.
+        bool ball = false;
+        for (const auto& o : view->section().objects) {
+            if (o.object != 0) continue;
+            ball = true;
+            for (const DiagramPoint& q : o.curves.at(0).points) {
+                const lenslab::Vec3 x = p.at(q);
+                QVERIFY(std::abs(length(x - lenslab::Vec3{-1, 0.78, 0.2}) - 0.55) < 1e-8);
+            }
+        }
+        QVERIFY(ball);
+        QVERIFY(!view->section().rays.empty());  // the beam across it
     }
 
     void screenshot_of_the_section_view() {
