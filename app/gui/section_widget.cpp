@@ -3,6 +3,7 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QSaveFile>
+#include <QWheelEvent>
 #include <cmath>
 
 #include "analysis/ray_diagram_svg.h"
@@ -159,6 +160,19 @@ void SectionWidget::mouseReleaseEvent(QMouseEvent* event) {
     } else {
         emit object_picked(object_at(event->position()));
     }
+}
+
+void SectionWidget::wheelEvent(QWheelEvent* event) {
+    if (m_drag_object >= 0) return;
+    const double factor = std::pow(0.85, event->angleDelta().y() / 120.0);
+    const DiagramPoint at = to_plane(event->position());
+    const auto scale = [&](double v, double centre) { return centre + (v - centre) * factor; };
+    m_extent = {scale(m_extent.a_min, at.z), scale(m_extent.a_max, at.z),
+                scale(m_extent.b_min, at.y), scale(m_extent.b_max, at.y)};
+    m_section.extent = m_extent;
+    m_diagram.z_min = m_extent.a_min, m_diagram.z_max = m_extent.a_max;
+    m_diagram.y_min = m_extent.b_min, m_diagram.y_max = m_extent.b_max;
+    update();
 }
 
 bool SectionWidget::export_svg(const QString& path, QString* error) const {

@@ -47,6 +47,8 @@ protected:
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
+    // Zooms about the point under the cursor; a new selection or plane fits the view again.
+    void wheelEvent(QWheelEvent* event) override;
 
 private:
     void refresh();

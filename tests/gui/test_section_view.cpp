@@ -6,6 +6,7 @@
 #include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
+#include <QWheelEvent>
 #include <QtTest>
 
 #include "main_window.h"
@@ -116,6 +117,38 @@ private slots:
         QVERIFY(svg.contains("stroke-opacity"));  // rays faded by weight
         QVERIFY(svg.contains("587.6 nm"));
         QVERIFY(!view->export_svg(dir.filePath("missing/section.svg"), &error));
+    }
+
+    void the_wheel_zooms_about_the_cursor() {
+        MainWindow w;
+        QVERIFY(w.show_view("section"));
+        w.tree()->select_pointer("/objects/1");
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* view = w.section_view();
+        const lenslab::SectionExtent before = view->section().extent;
+        const QPointF cursor = drawn_centre(*view, 1);
+        const lenslab::DiagramView v = view->placement();
+        const DiagramPoint under{v.z_min + (cursor.x() - v.left) / v.scale,
+                                 v.y_max - (cursor.y() - v.top) / v.scale};
+        QWheelEvent wheel(cursor, view->mapToGlobal(cursor), {}, {0, 120}, Qt::NoButton, {},
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(view, &wheel);
+        const lenslab::SectionExtent after = view->section().extent;
+        // One notch in: 0.85 of the width, the point under the cursor kept.
+        QVERIFY(std::abs((after.a_max - after.a_min) - 0.85 * (before.a_max - before.a_min)) <
+                1e-9);
+        QVERIFY(std::abs((under.z - after.a_min) - 0.85 * (under.z - before.a_min)) < 1e-9);
+        QVERIFY(std::abs((under.y - after.b_min) - 0.85 * (under.y - before.b_min)) < 1e-9);
+        // The extent holds through an edit, and a new selection fits the view again.
+        QString error;
+        QVERIFY(w.document()->set_value(nlohmann::json::json_pointer("/objects/1/aperture_radius"),
+                                        0.45, "aperture", &error));
+        QCOMPARE(view->section().extent.a_min, after.a_min);
+        w.tree()->select_pointer("/objects/0");
+        w.tree()->select_pointer("/objects/1");
+        QVERIFY(view->section().extent.a_max - view->section().extent.a_min >
+                after.a_max - after.a_min);
     }
 
     void the_plane_can_be_chosen() {
