@@ -1,7 +1,8 @@
 // lenslab-gui [SCENE]: the desktop editor.
 // lenslab-gui --screenshot FILE [--passes N] [SCENE]: render N passes, save a grab of the
 // whole window to FILE and exit (for documentation and checks). --measure first measures
-// the detectors and shows the selected one's map.
+// the detectors and shows the selected one's map. --view section shows the 2-D section view
+// (of the --select'ed lens) instead of the 3-D view; its screenshot does not wait for passes.
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -36,8 +37,10 @@ int main(int argc, char** argv) {
     QCommandLineOption measure(
         "measure",
         "Measure the detectors and show the detector dock (with --screenshot: before the grab).");
+    QCommandLineOption view("view", "The view in front: 3d (default) or section.", "VIEW", "3d");
     parser.addOption(select);
     parser.addOption(measure);
+    parser.addOption(view);
     parser.process(app);
 
     lenslab::gui::MainWindow window;
@@ -50,6 +53,12 @@ int main(int argc, char** argv) {
         }
     }
     if (parser.isSet(select)) window.tree()->select_pointer(parser.value(select));
+    if (!window.show_view(parser.value(view))) {
+        std::fprintf(stderr, "lenslab-gui: error: --view must be 3d or section, got '%s'\n",
+                     qPrintable(parser.value(view)));
+        return 2;
+    }
+    const bool section_view = parser.value(view) == "section";
     window.show();
     bool measuring = parser.isSet(measure);
     if (measuring) {
@@ -74,24 +83,29 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "lenslab-gui: error: %s\n", e.what());
             return 1;
         }
-        QObject::connect(
-            window.renderer(), &lenslab::gui::RenderController::frame_ready, &window,
-            [&](const QImage&, int done) {
-                if (done < wanted || measuring) return;
-                // Let the frame reach the viewport and the status bar first.
-                QTimer::singleShot(50, &window, [&] {
-                    // Atomic, like every file lenslab writes.
-                    QSaveFile out(file);
-                    const bool saved = out.open(QIODevice::WriteOnly) &&
-                                       window.grab().toImage().save(
-                                           &out, QFileInfo(file).suffix().toLatin1().constData()) &&
-                                       out.commit();
-                    std::fprintf(saved ? stdout : stderr,
-                                 saved ? "wrote %s\n" : "lenslab-gui: error: cannot write %s\n",
-                                 qPrintable(file));
-                    QApplication::exit(saved ? 0 : 1);
-                });
-            });
+        const auto grab = [&] {
+            // Atomic, like every file lenslab writes.
+            QSaveFile out(file);
+            const bool saved = out.open(QIODevice::WriteOnly) &&
+                               window.grab().toImage().save(
+                                   &out, QFileInfo(file).suffix().toLatin1().constData()) &&
+                               out.commit();
+            std::fprintf(saved ? stdout : stderr,
+                         saved ? "wrote %s\n" : "lenslab-gui: error: cannot write %s\n",
+                         qPrintable(file));
+            QApplication::exit(saved ? 0 : 1);
+        };
+        if (section_view && !measuring) {
+            // The section is drawn from the scene, not from rendered passes.
+            QTimer::singleShot(200, &window, grab);
+        } else {
+            QObject::connect(window.renderer(), &lenslab::gui::RenderController::frame_ready,
+                             &window, [&](const QImage&, int done) {
+                                 if (done < wanted || measuring) return;
+                                 // Let the frame reach the viewport and the status bar first.
+                                 QTimer::singleShot(50, &window, grab);
+                             });
+        }
         QTimer::singleShot(600000, &app, [] {
             std::fprintf(stderr, "lenslab-gui: error: --screenshot timed out\n");
             QApplication::exit(1);

@@ -1,11 +1,13 @@
 #pragma once
-// The editor's main window: scene tree (left), viewport (centre), properties (right),
-// menus for files, edits and rendering, and a status bar: the render's state (its pass of
-// the limit, converged, stopped or why it failed), photons and time, and a progress bar.
+// The editor's main window: scene tree (left), the 3-D viewport and the 2-D section view
+// as tabs (centre), properties (right), menus for files, edits and rendering, and a status
+// bar: the render's state (its pass of the limit, converged, stopped or why it failed),
+// photons and time, and a progress bar.
 
 #include <QLabel>
 #include <QMainWindow>
 #include <QProgressBar>
+#include <QTabWidget>
 
 namespace lenslab::gui {
 
@@ -15,6 +17,7 @@ class RayDiagramDock;
 class RenderController;
 class SceneDocument;
 class SceneTree;
+class SectionWidget;
 class Viewport;
 enum class RenderEnd;  // render_controller.h
 
@@ -39,6 +42,9 @@ public:
     SceneTree* tree() const { return m_tree; }
     PropertyPanel* panel() const { return m_panel; }
     Viewport* viewport() const { return m_viewport; }
+    SectionWidget* section_view() const { return m_section; }
+    // Brings the "3d" or "section" view to the front; false for another name.
+    bool show_view(const QString& name);
     RayDiagramDock* ray_diagram() const { return m_ray_diagram; }
     DetectorDock* detector_dock() const { return m_detector_dock; }
     QString status_text() const { return m_status->text(); }
@@ -63,6 +69,8 @@ private:
     bool save();
     bool save_as();
     void export_image();
+    void export_section_svg();
+    void build_section_tab();
     void show_message(const QString& text);
     // The status line: "sppm · rendering (pass 12 of 256) · photons ... · 3.4 s", and the
     // progress bar beside it.
@@ -74,6 +82,9 @@ private:
     SceneTree* m_tree;
     PropertyPanel* m_panel;
     Viewport* m_viewport;
+    SectionWidget* m_section;
+    QWidget* m_section_tab;  // the section view under its plane chooser and export button
+    QTabWidget* m_views;
     RayDiagramDock* m_ray_diagram;
     DetectorDock* m_detector_dock;
     QLabel* m_status;

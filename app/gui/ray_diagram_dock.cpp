@@ -1,10 +1,9 @@
 #include "ray_diagram_dock.h"
 
-#include <QPainter>
-#include <QPainterPath>
 #include <QVBoxLayout>
 
 #include "analysis/lens_report.h"
+#include "diagram_painter.h"
 #include "json_pointer.h"
 #include "scene/scene_error.h"
 #include "scene_document.h"
@@ -12,8 +11,6 @@
 namespace lenslab::gui {
 
 namespace {
-
-QColor qcolour(const DiagramColour& c) { return QColor(c.r, c.g, c.b); }
 
 // Fewer rays than the command line's report: the dock redraws on every edit.
 constexpr int kSpotRings = 8;
@@ -32,72 +29,11 @@ void RayDiagramView::set_diagram(std::optional<RayDiagram> diagram) {
 
 void RayDiagramView::paintEvent(QPaintEvent*) {
     QPainter painter(this);
-    painter.fillRect(rect(), Qt::white);
-    if (!m_diagram) return;
-    const RayDiagram& d = *m_diagram;
-    painter.setRenderHint(QPainter::Antialiasing);
-    const double top = 28, bottom = 30, margin = 12;
-    const DiagramView v = fit_diagram(d, width(), height(), margin, top, bottom);
-    const auto at = [&](const DiagramPoint& p) { return QPointF(v.x(p.z), v.y(p.y)); };
-
-    // Rays leaving a diverging lens run out of the frame: clip them to the diagram's box.
-    painter.setClipRect(
-        QRectF(QPointF(v.x(d.z_min), v.y(d.y_max)), QPointF(v.x(d.z_max), v.y(d.y_min))));
-    for (const DiagramPath& p : d.paths) {
-        QPolygonF polygon;
-        for (const DiagramPoint& q : p.points) polygon << at(q);
-        QPen pen(qcolour(p.stroke), p.width);
-        if (p.dash > 0) pen.setDashPattern({p.dash / p.width, 0.6 * p.dash / p.width});
-        painter.setPen(pen);
-        if (p.filled) {
-            QColor fill = qcolour(p.fill);
-            fill.setAlphaF(p.fill_opacity);
-            painter.setBrush(fill);
-        } else {
-            painter.setBrush(Qt::NoBrush);
-        }
-        if (p.closed) {
-            painter.drawPolygon(polygon);
-        } else {
-            painter.drawPolyline(polygon);
-        }
+    if (!m_diagram) {
+        painter.fillRect(rect(), Qt::white);
+        return;
     }
-    painter.setClipping(false);
-    painter.setPen(Qt::NoPen);
-    for (const DiagramDot& dot : d.dots) {
-        painter.setBrush(qcolour(dot.colour));
-        painter.drawEllipse(at(dot.at), dot.radius, dot.radius);
-    }
-    QFont font = painter.font();
-    for (const DiagramText& t : d.labels) {
-        font.setPixelSize(int(t.size));
-        painter.setFont(font);
-        painter.setPen(qcolour(t.colour));
-        const QPointF p = at(t.at) + QPointF(t.dx, t.dy);
-        const double w = painter.fontMetrics().horizontalAdvance(QString::fromStdString(t.text));
-        const double x = t.anchor == DiagramText::Anchor::Start ? p.x()
-                         : t.anchor == DiagramText::Anchor::End ? p.x() - w
-                                                                : p.x() - 0.5 * w;
-        painter.drawText(QPointF(x, p.y()), QString::fromStdString(t.text));
-    }
-    // Legend (top) and scale bar (bottom left).
-    font.setPixelSize(11);
-    painter.setFont(font);
-    double x = margin;
-    for (const LegendEntry& e : d.legend) {
-        painter.setPen(QPen(qcolour(e.colour), 2.5));
-        painter.drawLine(QPointF(x, 14), QPointF(x + 22, 14));
-        painter.setPen(Qt::black);
-        painter.drawText(QPointF(x + 27, 18), QString::fromStdString(e.text));
-        x += 40 + painter.fontMetrics().horizontalAdvance(QString::fromStdString(e.text));
-    }
-    const double bar = d.scale_bar * v.scale;
-    const double y = height() - 12;
-    painter.setPen(QPen(Qt::black, 2));
-    painter.drawLine(QPointF(margin, y), QPointF(margin + bar, y));
-    painter.drawLine(QPointF(margin, y - 4), QPointF(margin, y + 4));
-    painter.drawLine(QPointF(margin + bar, y - 4), QPointF(margin + bar, y + 4));
-    painter.drawText(QPointF(margin + bar + 6, y + 4), QString::fromStdString(d.scale_bar_label));
+    paint_diagram(painter, *m_diagram, size(), fit_diagram_to(*m_diagram, size()));
 }
 
 RayDiagramDock::RayDiagramDock(SceneDocument* document, QWidget* parent)

@@ -10,10 +10,6 @@ namespace lenslab {
 
 namespace {
 
-// Rays in the colours of their lines, as optics texts draw them.
-constexpr DiagramColour kBlueF{30, 90, 230};
-constexpr DiagramColour kYellowGreenD{150, 170, 0};
-constexpr DiagramColour kRedC{220, 30, 30};
 constexpr DiagramColour kGlassFill{170, 205, 235};
 constexpr DiagramColour kGlassEdge{40, 80, 130};
 constexpr DiagramColour kInk{30, 30, 30};
@@ -133,7 +129,7 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     const double h = report.aperture_radius;
     const int n = std::max(2, options.rays_per_fan);
     const std::pair<double, DiagramColour> lines[] = {
-        {kLineC, kRedC}, {kLineF, kBlueF}, {kLineD, kYellowGreenD}};
+        {kLineC, kDiagramRedC}, {kLineF, kDiagramBlueF}, {kLineD, kDiagramYellowGreenD}};
     for (const auto& [nm, colour] : lines) {
         for (int k = 0; k < n; ++k) {
             const double y0 = -h + 2.0 * h * k / (n - 1);
@@ -202,15 +198,16 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     focus(p.z_rear_focus, "F'");
 
     const std::string unit = options.unit.empty() ? "units" : options.unit;
+    d.subtitle = "rays from a point at infinity on the axis";
     d.title =
         "EFL " + fmt("%.2f", p.efl) + " " + unit + ", BFL " + fmt("%.2f", p.bfl) + " " + unit +
         " at " + fmt("%.2f", p.wavelength_nm) + " nm" +
         (fraunhofer_name(p.wavelength_nm).empty() ? ""
                                                   : " (" + fraunhofer_name(p.wavelength_nm) + ")") +
         "; beam diameter " + fmt("%.2f", 2.0 * h) + " " + unit;
-    d.legend = {{kBlueF, fmt("%.1f nm (F)", kLineF)},
-                {kYellowGreenD, fmt("%.1f nm (d)", kLineD)},
-                {kRedC, fmt("%.1f nm (C)", kLineC)}};
+    d.legend = {{kDiagramBlueF, fmt("%.1f nm (F)", kLineF)},
+                {kDiagramYellowGreenD, fmt("%.1f nm (d)", kLineD)},
+                {kDiagramRedC, fmt("%.1f nm (C)", kLineC)}};
     d.scale_bar = nice_length(0.2 * (d.z_max - d.z_min));
     d.scale_bar_label = fmt("%g ", d.scale_bar) + unit;
     return d;

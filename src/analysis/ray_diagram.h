@@ -20,6 +20,11 @@ struct DiagramColour {
     int r = 0, g = 0, b = 0;
 };
 
+// Rays in the colours of their Fraunhofer lines (F, d, C), as optics texts draw them.
+inline constexpr DiagramColour kDiagramBlueF{30, 90, 230};
+inline constexpr DiagramColour kDiagramYellowGreenD{150, 170, 0};
+inline constexpr DiagramColour kDiagramRedC{220, 30, 30};
+
 struct DiagramPoint {
     double z = 0, y = 0;
 };
@@ -27,6 +32,7 @@ struct DiagramPoint {
 struct DiagramPath {
     std::vector<DiagramPoint> points;
     DiagramColour stroke;
+    double stroke_opacity = 1.0;
     double width = 1.0;
     double dash = 0.0;  // dash length; 0: solid
     bool closed = false;
@@ -63,6 +69,7 @@ struct RayDiagram {
     std::vector<DiagramText> labels;
     std::vector<LegendEntry> legend;
     std::string title;
+    std::string subtitle;         // what the rays are, under the title
     double scale_bar = 10.0;      // length of the scale bar, in the scene's unit
     std::string scale_bar_label;  // "10 mm"
 };

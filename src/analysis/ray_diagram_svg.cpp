@@ -80,6 +80,7 @@ std::string ray_diagram_svg(const RayDiagram& d, double width, double min_height
         s << "\" fill=\"" << (p.filled ? colour(p.fill) : "none") << "\"";
         if (p.filled && p.fill_opacity < 1) s << " fill-opacity=\"" << num(p.fill_opacity) << "\"";
         s << " stroke=\"" << colour(p.stroke) << "\" stroke-width=\"" << num(p.width) << "\"";
+        if (p.stroke_opacity < 1) s << " stroke-opacity=\"" << num(p.stroke_opacity) << "\"";
         if (p.dash > 0)
             s << " stroke-dasharray=\"" << num(p.dash) << " " << num(0.6 * p.dash) << "\"";
         s << " stroke-linejoin=\"round\"/>\n";
@@ -108,7 +109,7 @@ std::string ray_diagram_svg(const RayDiagram& d, double width, double min_height
         x -= 48;
     }
     s << "<text x=\"" << num(kMargin) << "\" y=\"50\" font-size=\"12\" fill=\"#1e1e1e\">"
-      << "rays from a point at infinity on the axis</text>\n";
+      << escape(d.subtitle) << "</text>\n";
     const double bar = d.scale_bar * v.scale;
     const double y_bar = height - 22;
     s << "<line x1=\"" << num(kMargin) << "\" y1=\"" << num(y_bar) << "\" x2=\""
