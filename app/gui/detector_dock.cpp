@@ -62,7 +62,14 @@ DetectorDock::DetectorDock(SceneDocument* document, QWidget* parent)
     v->addLayout(controls);
     v->addWidget(m_title);
     v->addWidget(m_picture, 1);
-    v->addWidget(m_summary);
+    // The figures (a line per band, per detector) scroll instead of growing the dock past
+    // the window.
+    auto* summary_scroll = new QScrollArea(body);
+    summary_scroll->setObjectName("detector_summary_scroll");
+    summary_scroll->setWidget(m_summary);
+    summary_scroll->setWidgetResizable(true);
+    summary_scroll->setFrameShape(QFrame::NoFrame);
+    v->addWidget(summary_scroll);
     setWidget(body);
 
     connect(m_measure, &QPushButton::clicked, this, &DetectorDock::measure);

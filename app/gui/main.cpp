@@ -50,6 +50,9 @@ int main(int argc, char** argv) {
         if (!window.open_file(args.first(), &error)) {
             std::fprintf(stderr, "lenslab-gui: error: %s\n", qPrintable(error));
             if (parser.isSet(screenshot)) return 1;
+            // The dialog File ▸ Open shows, over the default scene: a status-bar message
+            // went unseen under other text.
+            window.show_open_error(error);
         }
     }
     if (parser.isSet(select)) window.tree()->select_pointer(parser.value(select));
@@ -59,6 +62,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     const bool section_view = parser.value(view) == "section";
+    // Grabs for the documentation have one size whatever the screen or the last session.
+    if (parser.isSet(screenshot)) window.resize(1280, 800);
     window.show();
     bool measuring = parser.isSet(measure);
     if (measuring) {

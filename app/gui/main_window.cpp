@@ -12,11 +12,13 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cstring>
 #include <set>
 #include <string>
@@ -166,7 +168,11 @@ MainWindow::MainWindow(QWidget* parent)
     });
 
     build_menus();
-    resize(1280, 800);
+    // The size it had when last closed, else 1280 x 800 or what the screen has room for.
+    if (!restoreGeometry(QSettings("lenslab", "lenslab-gui").value("geometry").toByteArray())) {
+        const QRect room = screen()->availableGeometry();
+        resize(std::min(1280, room.width() * 9 / 10), std::min(800, room.height() * 9 / 10));
+    }
     resizeDocks({tree_dock, panel_dock}, {230, 420}, Qt::Horizontal);
     update_title();
     m_tree->select_pointer("/camera");
@@ -350,20 +356,24 @@ void MainWindow::show_render_end(RenderEnd end, int passes) {
 bool MainWindow::open_file(const QString& path, QString* error, bool as_copy) {
     QString message;
     if (!m_document->open(path, &message, as_copy)) {
-        if (error) {
+        if (error)
             *error = message;
-        } else {
-            auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open scene"), message,
-                                        QMessageBox::Ok, this);
-            box->setAttribute(Qt::WA_DeleteOnClose);
-            box->open();
-        }
+        else
+            show_open_error(message);
         show_message(message);
         return false;
     }
     if (!as_copy) remember_recent(path);
     m_tree->select_pointer("/camera");
     return true;
+}
+
+void MainWindow::show_open_error(const QString& message) {
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open scene"), message,
+                                QMessageBox::Ok, this);
+    box->setObjectName("open_error");
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
 }
 
 bool MainWindow::save_file(const QString& path, QString* error) {
@@ -400,6 +410,7 @@ bool MainWindow::maybe_save() {
 
 void MainWindow::closeEvent(QCloseEvent* event) {
     if (maybe_save()) {
+        QSettings("lenslab", "lenslab-gui").setValue("geometry", saveGeometry());
         m_renderer->stop_rendering();
         event->accept();
     } else {

@@ -30,6 +30,9 @@ public:
 
     // Opens a scene file. A broken file leaves the current scene as it is; its error is
     // returned in `error` if given, else shown in a message box.
+    // The dialog File ▸ Open shows for a file it cannot open (also for a file given on the
+    // command line).
+    void show_open_error(const QString& message);
     // `as_copy`: untitled (the examples), so Save asks where (SceneDocument::open).
     bool open_file(const QString& path, QString* error = nullptr, bool as_copy = false);
     bool save_file(const QString& path, QString* error = nullptr);

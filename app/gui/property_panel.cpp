@@ -1,12 +1,16 @@
 #include "property_panel.h"
 
 #include <QApplication>
+#include <QColorDialog>
 #include <QComboBox>
+#include <QCompleter>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSlider>
 #include <QSpinBox>
+#include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -15,7 +19,9 @@
 #include "geometry/lens/sag_formula_surface.h"
 #include "json_pointer.h"
 #include "number_field.h"
+#include "optics/glass_library.h"
 #include "optics/spectrum.h"
+#include "render/image_io.h"
 #include "scene/camera_spec.h"
 #include "scene/json_reader.h"
 #include "scene/lens_group_json.h"
@@ -195,6 +201,9 @@ void PropertyPanel::build_form() {
     }
     m_form_widget = new QWidget(this);
     m_form = new QFormLayout(m_form_widget);
+    // A row too wide for the panel (a long label beside three numbers) puts its field under
+    // the label instead of running past the panel's edge.
+    m_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     static_cast<QVBoxLayout*>(layout())->insertWidget(0, m_form_widget);
     const json& doc = m_document->json();
     if (m_pointer.isEmpty() || !doc.contains(json::json_pointer(m_pointer.toStdString()))) return;
@@ -229,7 +238,9 @@ NumberField* PropertyPanel::add_number_field(QWidget* parent, const ParamSpec& p
 }
 
 void PropertyPanel::add_number(const QString& label, const ParamSpec& p, const std::string& key) {
-    NumberField* field = add_number_field(m_form_widget, p, key, label);
+    const bool fraction = p.kind == ParamKind::Fraction;
+    QWidget* row = fraction ? new QWidget(m_form_widget) : nullptr;
+    NumberField* field = add_number_field(row ? row : m_form_widget.data(), p, key, label);
     const json* v = value_at(key);
     const json& d = p.fallback;
     field->setValue(v && v->is_number() ? v->get<double>() : d.is_number() ? d.get<double>() : 0.0);
@@ -241,7 +252,31 @@ void PropertyPanel::add_number(const QString& label, const ParamSpec& p, const s
             commit(key, x, label);
         }
     });
-    m_form->addRow(label, field);
+    if (!fraction) {
+        m_form->addRow(label, field);
+        return;
+    }
+    // A fraction has a slider too, in hundredths. A drag shows its value in the field and
+    // commits once, when released (a commit rebuilds the form, slider included); a click or
+    // a key commits at once.
+    auto* h = new QHBoxLayout(row);
+    h->setContentsMargins(0, 0, 0, 0);
+    auto* slider = new QSlider(Qt::Horizontal, row);
+    slider->setObjectName(QString::fromStdString("slider:" + key));
+    slider->setRange(int(std::lround(100 * field->minimum())), 100);
+    slider->setValue(int(std::lround(100 * field->value())));
+    slider->setToolTip(field->toolTip());
+    h->addWidget(field, 1);
+    h->addWidget(slider, 2);
+    const auto commit_slider = [this, slider, key, label] {
+        commit(key, slider->value() / 100.0, label);
+    };
+    connect(slider, &QSlider::valueChanged, this, [slider, field, commit_slider](int value) {
+        field->setValue(value / 100.0);
+        if (!slider->isSliderDown()) commit_slider();
+    });
+    connect(slider, &QSlider::sliderReleased, this, commit_slider);
+    m_form->addRow(label, row);
 }
 
 void PropertyPanel::add_number(const QString& label, const std::string& key, double fallback,
@@ -255,7 +290,7 @@ void PropertyPanel::add_integer(const QString& label, const std::string& key, lo
 }
 
 void PropertyPanel::add_vec3(const QString& label, const std::string& key, const json& fallback,
-                             double min, double max, const std::string& doc) {
+                             double min, double max, const std::string& doc, bool colour) {
     auto* row = new QWidget(m_form_widget);
     auto* h = new QHBoxLayout(row);
     h->setContentsMargins(0, 0, 0, 0);
@@ -276,7 +311,39 @@ void PropertyPanel::add_vec3(const QString& label, const std::string& key, const
                    label);
         });
     }
+    if (colour) add_colour_button(row, fields, key, label, max);
     m_form->addRow(label, row);
+}
+
+void PropertyPanel::add_colour_button(QWidget* row, const std::array<NumberField*, 3>& fields,
+                                      const std::string& key, const QString& label, double max) {
+    // The triple is linear RGB; the picker (and the swatch) speak sRGB.
+    const auto shown = [fields] {
+        const auto channel = [&](int i) {
+            return int(std::lround(255.0 * linear_to_srgb(fields[i]->value())));
+        };
+        return QColor(channel(0), channel(1), channel(2));
+    };
+    auto* button = new QToolButton(row);
+    button->setObjectName(QString::fromStdString("colour:" + key));
+    button->setToolTip(tr("Pick a colour (the numbers are linear RGB; the picker shows sRGB)"));
+    button->setStyleSheet(
+        QString("QToolButton { background: %1; min-width: 18px; }").arg(shown().name()));
+    connect(button, &QToolButton::clicked, this, [this, shown, key, label, max] {
+        auto* picker = new QColorDialog(shown(), this);
+        picker->setObjectName("colour_picker");
+        picker->setAttribute(Qt::WA_DeleteOnClose);
+        connect(
+            picker, &QColorDialog::colorSelected, this, [this, key, label, max](const QColor& c) {
+                const auto linear = [max](double srgb) {
+                    return std::min(max, srgb_to_linear(srgb));
+                };
+                commit(key, json::array({linear(c.redF()), linear(c.greenF()), linear(c.blueF())}),
+                       label);
+            });
+        picker->open();
+    });
+    row->layout()->addWidget(button);
 }
 
 void PropertyPanel::add_choice(const QString& label, const std::string& key,
@@ -411,10 +478,10 @@ void PropertyPanel::add_param(const ParamSpec& p, const std::string& prefix) {
             add_text(label, key, d.is_string() ? d.get<std::string>() : "");
             break;
         case ParamKind::Colour:
-            add_vec3(label, key, as_triple(d), 0, 1e6, p.doc);
+            add_vec3(label, key, as_triple(d), 0, 1e6, p.doc, true);
             break;
         case ParamKind::Albedo:
-            add_vec3(label, key, as_triple(d), 0, 1, p.doc);
+            add_vec3(label, key, as_triple(d), 0, 1, p.doc, true);
             break;
         case ParamKind::Point:
             add_vec3(label, key, d.is_null() ? json::array({0, 0, 0}) : d, -1e6, 1e6, p.doc);
@@ -522,27 +589,10 @@ void PropertyPanel::build_material(const std::string& prefix) {
     const ElementSpec& declared = material_spec();
     for (const char* key : {"color", "transparency", "specular"})
         add_param(declared.param(key), prefix);
-    // Glass picker: a catalogue glass, or a constant index typed in.
-    QStringList glasses{tr("constant index")};
-    for (const Glass& g : glass_catalogue()) glasses << QString::fromStdString(g.name);
     const json* glass = value_at(prefix + "glass");
-    // A makers' catalogue glass (S-BSL7, HIKARI:SF10) is listed too, so the picker shows it.
-    if (glass && glass->is_string() &&
-        !glasses.contains(QString::fromStdString(glass->get<std::string>())))
-        glasses << QString::fromStdString(glass->get<std::string>());
     const std::string material_key = prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1);
-    add_choice(tr("Glass"), prefix + "glass", glass ? glass->get<std::string>() : "constant index",
-               glasses, [this, material_key](const std::string& chosen) {
-                   json material = *value_at(material_key);
-                   material.erase("glass");
-                   material.erase("ior");
-                   if (chosen == "constant index") {
-                       material["ior"] = 1.5;
-                   } else {
-                       material["glass"] = chosen;
-                   }
-                   commit(material_key, material, tr("glass"));
-               });
+    add_glass_choice(prefix + "glass", material_key,
+                     glass && glass->is_string() ? glass->get<std::string>() : "");
     const json* ior = value_at(prefix + "ior");
     if (!glass && (!ior || ior->is_number())) {
         add_param(declared.param("ior"), prefix);
@@ -560,6 +610,69 @@ void PropertyPanel::build_material(const std::string& prefix) {
     } else {
         add_param(emission_spec().param("color"), prefix + "emission/");
     }
+}
+
+namespace {
+
+// "constant index", the built-in materials, then every maker's glass as a scene names it: its
+// plain name where that finds it, else MAKER:NAME. Computed once (1,635 lookups).
+const QStringList& glass_choices() {
+    static const QStringList names = [] {
+        QStringList out{QObject::tr("constant index")};
+        for (const Glass& g : glass_catalogue()) out << QString::fromStdString(g.name);
+        try {
+            for (const Glass& g : maker_glasses()) {
+                const bool plain = lookup_glass(g.name).glass == &g;
+                out << QString::fromStdString(plain ? g.name : g.maker + ":" + g.name);
+            }
+        } catch (const std::exception&) {
+            // No catalogue files: the built-in materials only (lookups will say why).
+        }
+        return out;
+    }();
+    return names;
+}
+
+}  // namespace
+
+void PropertyPanel::add_glass_choice(const std::string& key, const std::string& material_key,
+                                     const std::string& current) {
+    auto* box = new QComboBox(m_form_widget);
+    box->setObjectName(QString::fromStdString("field:" + key));
+    box->setEditable(true);
+    box->setInsertPolicy(QComboBox::NoInsert);
+    box->setMaxVisibleItems(20);
+    box->addItems(glass_choices());
+    // Typing finds a glass anywhere in its name ("bk7" offers N-BK7, S-BSL7 needs "bsl").
+    box->completer()->setFilterMode(Qt::MatchContains);
+    box->completer()->setCaseSensitivity(Qt::CaseInsensitive);
+    box->completer()->setCompletionMode(QCompleter::PopupCompletion);
+    box->setToolTip(
+        tr("A built-in material or a glass of the SCHOTT, OHARA, CDGM, HOYA, HIKARI "
+           "and SUMITA catalogues (MAKER:NAME where makers share a name); type to "
+           "search. \"constant index\" types an index instead."));
+    box->setCurrentText(QString::fromStdString(current.empty() ? "constant index" : current));
+    const auto choose = [this, box, material_key, current] {
+        const std::string chosen = box->currentText().trimmed().toStdString();
+        if (chosen == current || (current.empty() && chosen == "constant index")) return;
+        json material = *value_at(material_key);
+        material.erase("glass");
+        material.erase("ior");
+        if (chosen == "constant index") {
+            material["ior"] = 1.5;
+        } else if (const GlassLookup found = lookup_glass(chosen); !found.glass) {
+            const QString reason = tr("Glass: %1").arg(QString::fromStdString(found.error));
+            m_error->setText(reason);
+            emit edit_refused(reason);
+            return;
+        } else {
+            material["glass"] = chosen;
+        }
+        commit(material_key, material, tr("glass"));
+    };
+    connect(box, &QComboBox::activated, this, choose);
+    connect(box->lineEdit(), &QLineEdit::editingFinished, this, choose);
+    m_form->addRow(tr("Glass"), box);
 }
 
 void PropertyPanel::build_object() {
@@ -795,7 +908,8 @@ void PropertyPanel::build_spectrum(const std::string& prefix) {
                    if (chosen == "line") element["spectrum"] = {{"line", 532}};
                    commit(owner, element, tr("spectrum"));
                });
-    if (kind == "colour") add_vec3(tr("Colour"), prefix + "color", json::array({1, 1, 1}), 0, 1e6);
+    if (kind == "colour")
+        add_vec3(tr("Colour"), prefix + "color", json::array({1, 1, 1}), 0, 1e6, "", true);
     if (kind == "blackbody")
         add_number(tr("Temperature (K)"), prefix + "spectrum/blackbody", 3000, 500, 100000);
     if (kind == "line")

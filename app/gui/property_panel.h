@@ -11,6 +11,7 @@
 #include <QLabel>
 #include <QPointer>
 #include <QWidget>
+#include <array>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -60,8 +61,13 @@ private:
                                   const QString& label);
     void add_integer(const QString& label, const std::string& key, long long fallback,
                      long long min, long long max);
+    // `colour`: an RGB triple, with a button that opens a colour picker beside it.
     void add_vec3(const QString& label, const std::string& key, const nlohmann::json& fallback,
-                  double min = -1e6, double max = 1e6, const std::string& doc = "");
+                  double min = -1e6, double max = 1e6, const std::string& doc = "",
+                  bool colour = false);
+    // The swatch button beside a colour's three fields; the picker commits linear RGB.
+    void add_colour_button(QWidget* row, const std::array<NumberField*, 3>& fields,
+                           const std::string& key, const QString& label, double max);
     // `on_choose` replaces the default commit (the chosen string at `key`).
     void add_choice(const QString& label, const std::string& key, const std::string& fallback,
                     const QStringList& choices,
@@ -87,6 +93,10 @@ private:
     void build_camera();
     void build_render();
     void build_material(const std::string& prefix);
+    // The glass of the material at `material_key`: an editable list of every glass lenslab
+    // knows, searched as one types; `current` is the glass named now (empty: an index).
+    void add_glass_choice(const std::string& key, const std::string& material_key,
+                          const std::string& current);
     // The table's own entry (/materials/NAME): its name and the buttons that add, copy and
     // delete materials (scene/material_edits.h).
     void build_material_entry();

@@ -122,6 +122,12 @@ double linear_to_srgb(double v) {
     return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
 }
 
+double srgb_to_linear(double v) {
+    if (!(v > 0.0)) return 0.0;
+    if (v >= 1.0) return 1.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
 Image8 to_srgb8(const Film& film, double exposure_stops) {
     const double scale = std::exp2(exposure_stops);
     Image8 img{film.width(), film.height(), {}};

@@ -18,6 +18,8 @@ public:
 
 // Linear value -> sRGB-encoded [0, 1] (IEC 61966-2-1 transfer function).
 double linear_to_srgb(double v);
+// Its inverse on [0, 1]: an sRGB-encoded value (a colour picker's) -> linear.
+double srgb_to_linear(double v);
 
 // Writes `film` to `path`: .png (sRGB, scaled by 2^exposure_stops and clipped) or .exr
 // (linear, exposure also applied). Written atomically (util/atomic_file.h): an interrupted

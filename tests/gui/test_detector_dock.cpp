@@ -3,7 +3,9 @@
 // disc as a detector from its panel.
 
 #include <QComboBox>
+#include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QtTest>
@@ -60,6 +62,20 @@ private slots:
         emit radius->editingFinished();
         QCOMPARE(w.document()->json()["objects"][1]["radius"].get<double>(), 0.5);
         QVERIFY(dock->shown_measurement() == nullptr);
+    }
+
+    // A detector's figures (a line per band) scroll inside the dock instead of stretching it
+    // past the window.
+    void long_results_scroll() {
+        MainWindow w;
+        auto* summary = w.detector_dock()->findChild<QLabel*>("detector_summary");
+        QVERIFY(summary);
+        QStringList lines;
+        for (int i = 0; i < 60; ++i) lines << QString("band %1: 0.123456 W").arg(i);
+        summary->setText(lines.join('\n'));
+        QVERIFY(qobject_cast<QScrollArea*>(summary->parentWidget()->parentWidget()));
+        QVERIFY2(w.detector_dock()->minimumSizeHint().height() < 400,
+                 qPrintable(QString::number(w.detector_dock()->minimumSizeHint().height())));
     }
 
     void a_new_disc_is_a_detector_and_its_flag_can_be_cleared() {

@@ -281,6 +281,19 @@ private slots:
         QCOMPARE(x->text(), QString("-20"));
         QVERIFY(x->minimumWidth() >= x->fontMetrics().horizontalAdvance("-0.000000"));
         QVERIFY(!x->toolTip().isEmpty());
+        // All three fit in the panel as it opens: none runs past its right edge (the z field
+        // of a lens's centre was cut off beside the long labels of the lens's form).
+        QApplication::processEvents();
+        QWidget* shown = w.panel()->parentWidget();  // the scroll area's viewport
+        QVERIFY(shown);
+        for (const char* name : {"center.x", "center.y", "center.z", "axis.z"}) {
+            NumberField* f = field(w, name);
+            QVERIFY2(f, name);
+            const int right = f->mapTo(shown, QPoint(f->width(), 0)).x();
+            QVERIFY2(right <= shown->width(),
+                     qPrintable(
+                         QString("%1 ends at %2 of %3").arg(name).arg(right).arg(shown->width())));
+        }
     }
 };
 

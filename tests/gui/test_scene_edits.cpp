@@ -3,15 +3,19 @@
 // nothing (counted in BVH builds).
 
 #include <QApplication>
+#include <QColorDialog>
 #include <QComboBox>
 #include <QFile>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QTemporaryDir>
+#include <QToolButton>
 #include <QTreeWidgetItemIterator>
 #include <QWheelEvent>
 #include <QtTest>
+#include <cmath>
 
 #include "accel/bvh_build.h"
 #include "json_pointer.h"
@@ -371,6 +375,82 @@ private slots:
         QVERIFY(floor->isExpanded());
         QCOMPARE(w.tree()->selected_pointer(), QString("/objects/9"));
         QCOMPARE(w.panel()->pointer(), QString("/objects/9"));
+    }
+
+    // The material's glass is picked from every glass lenslab knows (the built-in ones and
+    // the six makers' catalogues), by typing part of its name; an unknown name is refused
+    // with the closest ones.
+    void a_catalogue_glass_is_picked_by_typing_its_name() {
+        MainWindow w;
+        w.show();
+        w.tree()->select_pointer("/materials/glass");
+        auto* glass = w.panel()->findChild<QComboBox*>("field:glass");
+        QVERIFY(glass);
+        QVERIFY(glass->isEditable());
+        QVERIFY2(glass->count() > 1000, qPrintable(QString::number(glass->count())));
+        QVERIFY(glass->findText("S-BSL7") >= 0);
+        QVERIFY(glass->findText("HIKARI:SF10") >= 0);  // a name two makers share
+        glass->lineEdit()->setFocus();
+        glass->lineEdit()->selectAll();
+        QTest::keyClicks(glass->lineEdit(), "S-BSL7");
+        QTest::keyClick(glass->lineEdit(), Qt::Key_Return);
+        QCOMPARE(w.document()->json()["materials"]["glass"]["glass"].get<std::string>(),
+                 std::string("S-BSL7"));
+        // OHARA's data sheet: S-BSL7 n_d 1.51633.
+        QVERIFY(std::abs(w.document()->scene().material_of(0).index->n_d() - 1.51633) < 2e-5);
+
+        glass = w.panel()->findChild<QComboBox*>("field:glass");
+        QVERIFY(glass);
+        glass->lineEdit()->setFocus();
+        glass->lineEdit()->selectAll();
+        QTest::keyClicks(glass->lineEdit(), "NBK7");
+        QTest::keyClick(glass->lineEdit(), Qt::Key_Return);
+        QCOMPARE(w.document()->json()["materials"]["glass"]["glass"].get<std::string>(),
+                 std::string("S-BSL7"));
+        QVERIFY2(w.panel()->error_text().contains("N-BK7"), qPrintable(w.panel()->error_text()));
+    }
+
+    // Fractions (transparency, specular) have a slider beside their field: a drag shows its
+    // value and commits once when released; a key commits at once.
+    void a_fraction_has_a_slider() {
+        MainWindow w;
+        w.show();
+        w.tree()->select_pointer("/materials/red_plastic");
+        auto* slider = w.panel()->findChild<QSlider*>("slider:specular");
+        QVERIFY(slider);
+        const double before =
+            w.document()->json()["materials"]["red_plastic"].value("specular", 0.0);
+        QCOMPARE(slider->value(), int(std::lround(100 * before)));
+        slider->setSliderDown(true);
+        slider->setValue(40);
+        QCOMPARE(field(w, "specular")->value(), 0.4);
+        QCOMPARE(w.document()->json()["materials"]["red_plastic"].value("specular", 0.0), before);
+        slider->setSliderDown(false);  // released
+        QCOMPARE(w.document()->json()["materials"]["red_plastic"]["specular"].get<double>(), 0.4);
+        slider = w.panel()->findChild<QSlider*>("slider:specular");
+        QVERIFY(slider);
+        slider->setFocus();
+        QTest::keyClick(slider, Qt::Key_Right);
+        QCOMPARE(w.document()->json()["materials"]["red_plastic"]["specular"].get<double>(), 0.41);
+    }
+
+    // A colour's three numbers have a swatch that opens a colour picker; the picked sRGB
+    // colour is written as linear RGB (sRGB 128 is linear 0.2158).
+    void a_colour_is_picked() {
+        MainWindow w;
+        w.show();
+        w.tree()->select_pointer("/materials/red_plastic");
+        auto* swatch = w.panel()->findChild<QToolButton*>("colour:color");
+        QVERIFY(swatch);
+        QTest::mouseClick(swatch, Qt::LeftButton);
+        auto* picker = w.panel()->findChild<QColorDialog*>("colour_picker");
+        QVERIFY(picker);
+        picker->setCurrentColor(QColor(255, 128, 0));
+        picker->accept();
+        const json c = w.document()->json()["materials"]["red_plastic"]["color"];
+        QCOMPARE(c[0].get<double>(), 1.0);
+        QVERIFY(std::abs(c[1].get<double>() - 0.21586) < 1e-4);
+        QCOMPARE(c[2].get<double>(), 0.0);
     }
 
     void a_bad_camera_edit_is_refused() {
