@@ -19,7 +19,9 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <set>
 #include <string>
 #include <vector>
@@ -28,10 +30,12 @@
 #include "json_pointer.h"
 #include "property_panel.h"
 #include "ray_diagram_dock.h"
+#include "render/camera.h"
 #include "render/image_io.h"
 #include "render_controller.h"
 #include "scene/light_spec.h"
 #include "scene/object_types.h"
+#include "scene/scene_json.h"
 #include "scene_document.h"
 #include "scene_tree.h"
 #include "section_widget.h"
@@ -73,6 +77,34 @@ json placed(const json& scene, const std::string& list, json element, const Vec3
     if (element.contains("name") && element["name"].is_string())
         element["name"] = unique_name(scene, element["name"].get<std::string>());
     return element;
+}
+
+// How far `example` (an object as its declaration gives it, or a light) must move so that it
+// rests on the surface the view's centre looks at, on the camera's side, touching it with
+// its bounding box; a light, or a view of nothing, puts it 3 units ahead of the camera.
+// (New objects all landed 3 units ahead, often inside what was there.)
+Vec3 placement(const Scene& scene, const json& example) {
+    const Vec3 ahead = scene.camera.position + scene.camera.direction * 3.0;
+    Scene alone;
+    try {
+        if (!example.contains("type") || find_light_spec(example["type"].get<std::string>()))
+            return ahead;
+        alone = scene_from_json(json{{"camera", {{"position", {0, 0, 5}}, {"look_at", {0, 0, 0}}}},
+                                     {"objects", json::array({example})}});
+    } catch (const std::exception&) {
+        return ahead;
+    }
+    const Aabb box = alone.bounds();
+    const Camera camera(scene.camera, scene.render.width, scene.render.height);
+    const Ray centre = camera.generate_ray(scene.render.width / 2.0, scene.render.height / 2.0);
+    SceneHit hit;
+    if (box.empty() || !scene.intersect(centre, 0, std::numeric_limits<double>::infinity(), hit))
+        return ahead - box.centre();
+    Vec3 n = hit.surface.normal;
+    if (dot(n, centre.direction) > 0) n = -n;  // the side the camera sees
+    const Vec3 e = box.extent();
+    const double half = 0.5 * (std::abs(e.x * n.x) + std::abs(e.y * n.y) + std::abs(e.z * n.z));
+    return hit.surface.point + n * half - box.centre();
 }
 
 // "Add sphere", "Add lens group", "Add point light": from the declaration's phrase.
@@ -464,11 +496,9 @@ void MainWindow::add_element(const QString& kind) {
     const std::string list = find_light_spec(type) ? "lights" : "objects";
     const ElementSpec* spec = element_spec(list, type);
     if (!spec) return;
-    // Where the camera looks, 3 units ahead.
-    const Scene& s = m_document->scene();
-    const Vec3 at = s.camera.position + s.camera.direction * 3.0;
     if (!edited.contains(list)) edited[list] = json::array();
-    edited[list].push_back(placed(edited, list, spec->example, at));
+    edited[list].push_back(
+        placed(edited, list, spec->example, placement(m_document->scene(), spec->example)));
     QString error;
     if (!m_document->apply(edited, tr("Add %1").arg(kind), &error)) {
         show_message(error);

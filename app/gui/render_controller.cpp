@@ -82,6 +82,11 @@ Film RenderController::last_film() const {
     return m_last;
 }
 
+RenderController::ForgetControl::~ForgetControl() {
+    QMutexLocker lock(&owner->m_mutex);
+    owner->m_control = nullptr;
+}
+
 void RenderController::run() {
     for (;;) {
         Scene scene;
@@ -107,11 +112,10 @@ void RenderController::run() {
                     if (m_quit || m_stop || m_job) break;  // a newer scene waits, or stopped
                     m_control = &control;
                 }
+                // Forgotten before `control` goes, also when the pass throws (a refused render):
+                // restart() would otherwise cancel a dead stack object (ASan caught it).
+                const ForgetControl forget{this};
                 const bool finished = render.add_pass(control);
-                {
-                    QMutexLocker lock(&m_mutex);
-                    m_control = nullptr;
-                }
                 if (!finished) break;
                 const Film film = render.image();
                 {

@@ -65,6 +65,11 @@ protected:
 
 private:
     void start_pending();
+    // Clears m_control when the pass it points to ends, however it ends.
+    struct ForgetControl {
+        RenderController* owner;
+        ~ForgetControl();
+    };
 
     QTimer m_debounce;
     std::optional<Scene> m_next;  // GUI thread only: the scene waiting for the debounce

@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "optics/glass_catalogue_file.h"
+#include "util/edit_distance.h"
 
 namespace lenslab {
 
@@ -14,22 +15,6 @@ namespace {
 std::string upper_glass_name(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::toupper(c); });
     return s;
-}
-
-// Levenshtein distance between two upper-cased names, for the suggestions.
-size_t glass_name_distance(const std::string& a, const std::string& b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diagonal = row[0];
-        row[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j) {
-            const size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
 }
 
 std::vector<const Glass*> glasses_named(const std::string& wanted_upper,
@@ -51,13 +36,13 @@ std::string closest_glass_names(const std::string& wanted_upper) {
     std::unordered_set<std::string> maker_names;
     for (const Glass& g : maker_glasses()) {
         const std::string name = upper_glass_name(g.name);
-        scored.emplace_back(glass_name_distance(wanted_upper, name), glass_label(g));
+        scored.emplace_back(edit_distance(wanted_upper, name), glass_label(g));
         maker_names.insert(name);
     }
     for (const Glass& g : glass_catalogue()) {
         const std::string name = upper_glass_name(g.name);
         if (!maker_names.count(name))
-            scored.emplace_back(glass_name_distance(wanted_upper, name), glass_label(g));
+            scored.emplace_back(edit_distance(wanted_upper, name), glass_label(g));
     }
     std::stable_sort(scored.begin(), scored.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });

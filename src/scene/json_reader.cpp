@@ -6,6 +6,8 @@
 #include <sstream>
 #include <vector>
 
+#include "util/edit_distance.h"
+
 namespace lenslab {
 
 namespace {
@@ -26,26 +28,6 @@ const char* type_name(const nlohmann::json& v) {
             return "a number";
     }
 }
-
-// Levenshtein distance, for "did you mean" suggestions on unknown keys.
-size_t edit_distance(const std::string& a, const std::string& b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diagonal = row[0];
-        row[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j) {
-            const size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
-}
-
-}  // namespace
-
-namespace {
 
 bool equal_ignoring_case(const std::string& a, const std::string& b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {

@@ -15,6 +15,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "main_window.h"
@@ -204,6 +205,32 @@ private slots:
         QVERIFY2(box->text().contains("broken.json"), qPrintable(box->text()));
         QCOMPARE(w.document()->scene().objects.size(), objects);
         box->close();
+    }
+
+    // A new object rests on what the view's centre looks at, on the camera's side, instead
+    // of landing 3 units ahead inside whatever is there: against the ball, outside it; on the
+    // floor, sitting on it.
+    void a_new_object_rests_on_what_the_view_looks_at() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));  // the camera looks at the ball's centre
+        w.add_element("sphere");
+        json added = w.document()->json()["objects"].back();
+        const double r = added["radius"].get<double>();
+        const lenslab::Vec3 c{added["center"][0].get<double>(), added["center"][1].get<double>(),
+                              added["center"][2].get<double>()};
+        const lenslab::Vec3 ball{0, 0.5, 0}, eye{0, 1.5, 4};
+        const double apart = lenslab::length(c - ball);
+        QVERIFY2(apart >= 0.5 + r - 1e-9 && apart <= 0.5 + r * std::sqrt(3.0) + 1e-9,
+                 qPrintable(QString::number(apart)));
+        QVERIFY(lenslab::length(c - eye) < lenslab::length(ball - eye));
+
+        json j = w.document()->json();
+        j["camera"]["look_at"] = {2, 0, 0};  // the floor beside the ball
+        QVERIFY(w.document()->apply(j, "look at the floor", nullptr));
+        w.add_element("sphere");
+        added = w.document()->json()["objects"].back();
+        QVERIFY(std::abs(added["center"][1].get<double>() - added["radius"].get<double>()) < 1e-9);
+        QVERIFY(std::abs(added["center"][0].get<double>() - 2.0) < 1e-6);
     }
 
     void the_view_renders_with_sppm_unless_asked_otherwise() {
