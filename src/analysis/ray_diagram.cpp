@@ -10,8 +10,6 @@ namespace lenslab {
 
 namespace {
 
-constexpr DiagramColour kGlassFill{170, 205, 235};
-constexpr DiagramColour kGlassEdge{40, 80, 130};
 constexpr DiagramColour kInk{30, 30, 30};
 constexpr DiagramColour kGrey{120, 120, 120};
 
@@ -52,9 +50,9 @@ DiagramPath lens_outline(const OpticalSystem& system, const SystemElement& e) {
     }
     p.closed = true;
     p.filled = true;
-    p.fill = kGlassFill;
+    p.fill = kDiagramGlassFill;
     p.fill_opacity = 0.75;
-    p.stroke = kGlassEdge;
+    p.stroke = kDiagramGlassEdge;
     p.width = 1.5;
     return p;
 }
@@ -110,7 +108,7 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
         const SystemSurface& out = system.surfaces[e.last_surface];
         t.at = {0.5 * (in.z + out.z), -e.semi_diameter};
         t.text = short_glass(e.glass);
-        t.colour = kGlassEdge;
+        t.colour = kDiagramGlassEdge;
         t.size = 12;
         // Neighbouring lenses (a cemented doublet) are often thinner than their names:
         // alternate the names between two rows.

@@ -24,6 +24,9 @@ struct DiagramColour {
 inline constexpr DiagramColour kDiagramBlueF{30, 90, 230};
 inline constexpr DiagramColour kDiagramYellowGreenD{150, 170, 0};
 inline constexpr DiagramColour kDiagramRedC{220, 30, 30};
+// Glass drawn in section: its fill and outline (the ray diagram and the section view alike).
+inline constexpr DiagramColour kDiagramGlassFill{170, 205, 235};
+inline constexpr DiagramColour kDiagramGlassEdge{40, 80, 130};
 
 struct DiagramPoint {
     double z = 0, y = 0;

@@ -11,8 +11,6 @@ namespace lenslab {
 
 namespace {
 
-constexpr DiagramColour kSectionGlassFill{170, 205, 235};
-constexpr DiagramColour kSectionGlassEdge{40, 80, 130};
 constexpr DiagramColour kSectionMirror{150, 150, 160};
 constexpr DiagramColour kSectionLamp{255, 200, 40};
 constexpr DiagramColour kSectionSelected{255, 140, 0};
@@ -28,8 +26,8 @@ void section_material_style(const Material& m, DiagramPath& path) {
         path.fill = kSectionLamp;
         path.stroke = {180, 120, 0};
     } else if (m.transparency > 0) {
-        path.fill = kSectionGlassFill;
-        path.stroke = kSectionGlassEdge;
+        path.fill = kDiagramGlassFill;
+        path.stroke = kDiagramGlassEdge;
         path.fill_opacity = 0.6;
     } else if (m.specular > 0) {
         path.fill = kSectionMirror;
