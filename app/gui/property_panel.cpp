@@ -884,10 +884,12 @@ void PropertyPanel::build_implicit() {
 void PropertyPanel::build_light() {
     const json& l = *value_at("");
     const std::string type = l.value("type", "");
-    add_heading(QString::fromStdString(type) + tr(" light"));
-    // The colour is one of the spectrum's forms, edited with it.
-    build_declared(type == "point" ? point_light_spec() : beam_spec(), {"color"});
-    build_spectrum("");
+    const ElementSpec* spec = find_light_spec(type);
+    add_heading(QString::fromStdString(spec ? spec->name : type));
+    if (!spec) return;  // the scene reader names the unknown type
+    // The colour is one of the spectrum's forms, edited with it; a laser has its wavelength.
+    build_declared(*spec, {"color"});
+    if (type != "laser") build_spectrum("");
 }
 
 void PropertyPanel::build_spectrum(const std::string& prefix) {

@@ -179,8 +179,7 @@ void SceneDocument::install(const nlohmann::json& json, SceneUpdate update) {
     } else {
         if (update.camera) m_scene.camera = *update.camera;
         if (update.render) m_scene.render = *update.render;
-        if (update.lights)
-            m_scene.set_lights(std::move(update.lights->points), std::move(update.lights->beams));
+        if (update.lights) m_scene.set_lights(std::move(*update.lights));
     }
     m_json = json;
     emit changed();

@@ -22,6 +22,17 @@ void add_section_fan(const Vec3& centre, double radius, int count, const Section
     }
 }
 
+// `count` rays from `apex` within `half_angle` (radians) of `axis`, which lies in the plane:
+// a spot light's cone cut by the plane.
+void add_section_cone(const Vec3& apex, const Vec3& axis, double half_angle, int count,
+                      const SectionPlane& plane, std::vector<Ray>& out) {
+    const Vec3 across = normalize(cross(plane.normal(), axis));
+    for (int i = 0; i < count; ++i) {
+        const double angle = half_angle * (2.0 * (i + 0.5) / count - 1.0);
+        out.push_back({apex, axis * std::cos(angle) + across * std::sin(angle)});
+    }
+}
+
 void add_section_beam(const SectionBeam& beam, const SectionPlane& plane, std::vector<Ray>& out) {
     const Vec3 across = normalize(cross(plane.normal(), beam.direction));
     for (int i = 0; i < beam.rays; ++i) {
@@ -87,6 +98,13 @@ std::vector<Ray> section_start_rays(const Scene& scene, const SectionPlane& plan
     for (const PointLight& light : scene.point_lights) {
         if (std::abs(plane.distance(light.position)) < 1e-9)
             add_section_fan(light.position, 0.0, fan, plane, rays);
+    }
+    for (const SpotLight& light : scene.spots) {
+        if (std::abs(plane.distance(light.position)) < 1e-9 &&
+            direction_in_section_plane(light.direction, plane)) {
+            add_section_cone(light.position, light.direction,
+                             light.cone_angle * std::numbers::pi / 180, fan, plane, rays);
+        }
     }
     for (const BeamLight& light : scene.beams) {
         const double d = plane.distance(light.origin);

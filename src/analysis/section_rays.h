@@ -45,8 +45,8 @@ struct SectionRayPath {
     bool tir = false;   // the path continues after a total internal reflection
 };
 
-// The start rays: the beam's, then a fan from each point light and beam and each emitting
-// sphere that the plane cuts.
+// The start rays: the beam's, then a fan from each point light, spot (within its cone), beam
+// and emitting sphere that the plane cuts.
 std::vector<Ray> section_start_rays(const Scene& scene, const SectionPlane& plane,
                                     const SectionRayOptions& options);
 

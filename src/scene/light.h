@@ -4,6 +4,8 @@
 // D65, laser line), normalised to the radiant power of D65 white, so a spectrum changes the
 // colour and not the energy.
 
+#include <vector>
+
 #include "math/vec3.h"
 #include "optics/rgb.h"
 #include "optics/spectrum.h"
@@ -28,6 +30,27 @@ struct BeamLight {
     Rgb color{1, 1, 1};
     double power = 0;
     SpectrumPtr spectrum;  // as for PointLight
+};
+
+// Spot light: a point source whose intensity fills a cone of half-angle `cone_angle` around
+// `direction`, full up to `cone_angle - falloff` and fading smoothly (smoothstep in the
+// cosine, as pbrt-v4's spot light) to nothing at the cone's edge. `power` is the flux it
+// sends into the cone, so a narrower cone is brighter, not dimmer.
+struct SpotLight {
+    Vec3 position;
+    Vec3 direction;          // unit, the cone's axis
+    double cone_angle = 30;  // degrees, (0, 90]
+    double falloff = 0;      // degrees, [0, cone_angle]
+    Rgb color{1, 1, 1};
+    double power = 0;
+    SpectrumPtr spectrum;  // as for PointLight
+};
+
+// The lights without geometry a scene holds (a laser is a beam with a line spectrum).
+struct SceneLights {
+    std::vector<PointLight> points;
+    std::vector<BeamLight> beams;
+    std::vector<SpotLight> spots;
 };
 
 }  // namespace lenslab

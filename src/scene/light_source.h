@@ -77,9 +77,11 @@ using LightPtr = std::shared_ptr<const Light>;
 
 struct PointLight;
 struct BeamLight;
+struct SpotLight;
 class Sphere;
 LightPtr make_point_light(const PointLight& l);
 LightPtr make_beam_light(const BeamLight& b);
+LightPtr make_spot_light(const SpotLight& s);  // spot_light_source.cpp
 // A Lambertian sphere of spectral radiance `radiance`.
 LightPtr make_sphere_light(std::shared_ptr<const Sphere> sphere, SpectrumPtr radiance);
 

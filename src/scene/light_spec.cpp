@@ -1,5 +1,6 @@
 #include "scene/light_spec.h"
 
+#include "optics/spectrum.h"
 #include "scene/light.h"
 
 namespace lenslab {
@@ -7,12 +8,13 @@ namespace lenslab {
 namespace {
 
 // What every light takes besides where it is.
-std::vector<ParamSpec> emission_params(const Rgb& colour) {
+std::vector<ParamSpec> emission_params(const Rgb& colour,
+                                       std::string power_meaning = "radiant flux (W)") {
     return {
         number_param("power", 0)
             .above(0)
             .needed()
-            .describe("radiant flux (W)")
+            .describe(std::move(power_meaning))
             .in_editor("Power (W)"),
         colour_param("color", colour)
             .describe("the light's colour; 1 is D65 daylight white")
@@ -55,7 +57,75 @@ ElementSpec declare_beam() {
     return s;
 }
 
+ElementSpec declare_laser() {
+    ElementSpec s{"laser", "a laser", {}, {}};
+    s.params = {
+        string_param("type", "laser").needed().describe("\"laser\""),
+        point_param("position")
+            .describe("centre of the beam's exit aperture")
+            .in_editor("Position"),
+        direction_param("direction").describe("where the beam goes").in_editor("Direction"),
+        number_param("radius", 0)
+            .above(0)
+            .needed()
+            .describe("radius of the beam")
+            .in_editor("Beam radius"),
+        number_param("power", 0)
+            .above(0)
+            .needed()
+            .describe("radiant flux (W)")
+            .in_editor("Power (W)"),
+        number_param("wavelength", 532)
+            .at_least(kLambdaMinNm)
+            .at_most(kLambdaMaxNm)
+            .in_unit("nm")
+            .describe("the laser line (0.1 nm wide)")
+            .in_editor("Wavelength (nm)"),
+        nested_param(ParamKind::Object, "spectrum")
+            .as_written("spectrum")
+            .describe("instead of wavelength: any spectrum, as for a point light"),
+    };
+    s.example = nlohmann::json::parse(
+        R"json({"type": "laser", "position": [0, 1, 0], "direction": [1, 0, 0], "radius": 0.02, "power": 1, "wavelength": 532})json");
+    return s;
+}
+
+ElementSpec declare_spot() {
+    ElementSpec s{"spot light", "a spot light", {}, {}};
+    s.params = {
+        string_param("type", "spot").needed().describe("\"spot\""),
+        point_param("position").describe("where the light is").in_editor("Position"),
+        direction_param("direction").describe("the cone's axis").in_editor("Direction"),
+        number_param("cone_angle", SpotLight{}.cone_angle)
+            .above(0)
+            .at_most(90)
+            .in_unit("degrees")
+            .describe("half-angle of the lit cone")
+            .in_editor("Cone angle"),
+        number_param("falloff", SpotLight{}.falloff)
+            .at_least(0)
+            .in_unit("degrees")
+            .describe("width of the soft edge inside the cone (at most cone_angle)")
+            .in_editor("Falloff"),
+    };
+    for (ParamSpec& p : emission_params(SpotLight{}.color, "radiant flux (W) sent into the cone"))
+        s.params.push_back(std::move(p));
+    s.example = nlohmann::json::parse(
+        R"json({"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "cone_angle": 20, "power": 10})json");
+    return s;
+}
+
 }  // namespace
+
+const ElementSpec& laser_spec() {
+    static const ElementSpec spec = declare_laser();
+    return spec;
+}
+
+const ElementSpec& spot_light_spec() {
+    static const ElementSpec spec = declare_spot();
+    return spec;
+}
 
 const ElementSpec& point_light_spec() {
     static const ElementSpec spec = declare_point();
@@ -68,7 +138,8 @@ const ElementSpec& beam_spec() {
 }
 
 const std::vector<const ElementSpec*>& light_specs() {
-    static const std::vector<const ElementSpec*> specs{&point_light_spec(), &beam_spec()};
+    static const std::vector<const ElementSpec*> specs{&point_light_spec(), &beam_spec(),
+                                                       &laser_spec(), &spot_light_spec()};
     return specs;
 }
 

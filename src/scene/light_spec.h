@@ -11,7 +11,9 @@ namespace lenslab {
 
 const ElementSpec& point_light_spec();
 const ElementSpec& beam_spec();
-// The declaration of the light whose `type` is `type` ("point", "beam"), or null.
+const ElementSpec& laser_spec();
+const ElementSpec& spot_light_spec();
+// The declaration of the light whose `type` is `type` ("point", "beam", ...), or null.
 const ElementSpec* find_light_spec(const std::string& type);
 // Every light type's declaration, in the order "known:" lists them.
 const std::vector<const ElementSpec*>& light_specs();

@@ -22,9 +22,10 @@ void Scene::build() {
     find_lights_and_targets();
 }
 
-void Scene::set_lights(std::vector<PointLight> points, std::vector<BeamLight> beam_lights) {
-    point_lights = std::move(points);
-    beams = std::move(beam_lights);
+void Scene::set_lights(SceneLights lights) {
+    point_lights = std::move(lights.points);
+    beams = std::move(lights.beams);
+    spots = std::move(lights.spots);
     find_lights_and_targets();
 }
 
@@ -37,6 +38,7 @@ void Scene::find_lights_and_targets() {
     }
     for (const PointLight& l : point_lights) m_lights.push_back(make_point_light(l));
     for (const BeamLight& b : beams) m_lights.push_back(make_beam_light(b));
+    for (const SpotLight& s : spots) m_lights.push_back(make_spot_light(s));
     m_light_sampler = LightSampler(m_lights);
 
     std::vector<BoundingSphere> targets;

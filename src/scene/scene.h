@@ -64,13 +64,14 @@ public:
     std::vector<Material> materials;
     std::vector<SceneObject> objects;
     std::vector<PointLight> point_lights;
-    std::vector<BeamLight> beams;
+    std::vector<BeamLight> beams;  // beams and lasers
+    std::vector<SpotLight> spots;
 
     // Builds the acceleration structure and the emitter list; call after filling the fields.
     void build();
-    // Replaces the point lights and beams of a built scene, keeping its acceleration
+    // Replaces the lights without geometry of a built scene, keeping its acceleration
     // structure (an editor's light edit).
-    void set_lights(std::vector<PointLight> points, std::vector<BeamLight> beam_lights);
+    void set_lights(SceneLights lights);
 
     bool intersect(const Ray& ray, double t_min, double t_max, SceneHit& hit) const;
     bool occluded(const Ray& ray, double t_min, double t_max) const;
@@ -82,7 +83,7 @@ public:
     const Material* medium_beyond(int object, const Vec3& point, const Vec3& outward_normal) const;
     // Objects whose material emits light: spheres (the report's lights).
     const std::vector<SphereEmitter>& emitters() const { return m_emitters; }
-    // Every light: emitting spheres first, then point lights, then beams.
+    // Every light: emitting spheres first, then point lights, beams, spots.
     const std::vector<LightPtr>& lights() const { return m_lights; }
     const LightSampler& light_sampler() const { return m_light_sampler; }
     // The objects photons are aimed at, and whether `object` is one of them.

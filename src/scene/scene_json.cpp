@@ -223,8 +223,33 @@ void read_light(const json& j, const std::string& path, SceneLights& lights) {
         b.power = r.real("power");
         b.spectrum = light_spectrum(r, b.color, b.power);
         lights.beams.push_back(b);
+    } else if (type == "laser") {
+        SpecReader r(j, path, laser_spec());
+        BeamLight b;
+        b.origin = r.point("position");
+        b.direction = r.unit_vector("direction");
+        b.radius = r.real("radius");
+        b.power = r.real("power");
+        b.spectrum = laser_spectrum(r, r.real("wavelength"), b.power);
+        lights.beams.push_back(b);
+    } else if (type == "spot") {
+        SpecReader r(j, path, spot_light_spec());
+        SpotLight l;
+        l.position = r.point("position");
+        l.direction = r.unit_vector("direction");
+        l.cone_angle = r.real("cone_angle");
+        l.falloff = r.real("falloff");
+        if (l.falloff > l.cone_angle) {
+            throw SceneError(r.child_path("falloff"), "must be at most cone_angle (" +
+                                                          format_number(l.cone_angle) + "), got " +
+                                                          format_number(l.falloff));
+        }
+        l.power = r.real("power");
+        l.spectrum = light_spectrum(r, l.color, l.power);
+        lights.spots.push_back(l);
     } else {
-        throw SceneError(path + ".type", "unknown light type '" + type + "' (known: point, beam)");
+        throw SceneError(path + ".type",
+                         "unknown light type '" + type + "' (known: point, beam, laser, spot)");
     }
 }
 
@@ -279,6 +304,7 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
         SceneLights lights = lights_from_json(*jl);
         scene.point_lights = std::move(lights.points);
         scene.beams = std::move(lights.beams);
+        scene.spots = std::move(lights.spots);
     }
     scene.build();
     return scene;

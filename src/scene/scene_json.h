@@ -33,10 +33,6 @@ CameraSettings camera_from_json(const nlohmann::json& camera);
 
 // A scene's `lights` array alone, checked as scene_from_json checks it: an editor changing a
 // light need not rebuild the objects. Throws SceneError.
-struct SceneLights {
-    std::vector<PointLight> points;
-    std::vector<BeamLight> beams;
-};
 SceneLights lights_from_json(const nlohmann::json& lights);
 
 // Reads and parses a scene file; relative paths in it are relative to the file's folder.

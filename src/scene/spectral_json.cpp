@@ -126,4 +126,14 @@ SpectrumPtr light_spectrum(JsonObjectReader& r, Rgb& color, double power) {
     return scaled_spectrum(illuminant_from_rgb(color), power);
 }
 
+SpectrumPtr laser_spectrum(JsonObjectReader& r, double wavelength_nm, double power) {
+    if (const nlohmann::json* s = r.find("spectrum")) {
+        if (r.has("wavelength"))
+            throw SceneError(r.child_path("wavelength"),
+                             "give either wavelength or spectrum, not both");
+        return scaled_spectrum(read_spectrum(*s, r.child_path("spectrum")), power);
+    }
+    return scaled_spectrum(line_spectrum(wavelength_nm, 0.1), power);
+}
+
 }  // namespace lenslab

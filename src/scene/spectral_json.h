@@ -21,5 +21,8 @@ SpectrumPtr read_spectrum(const nlohmann::json& j, const std::string& path);
 // The light's spectral power: its `spectrum` if given (then `color` must not be), else its
 // colour as D65-based illuminant; times `power`.
 SpectrumPtr light_spectrum(JsonObjectReader& r, Rgb& color, double power);
+// A laser's: its `spectrum` if given (then `wavelength` must not be), else a line at
+// `wavelength_nm` (its `wavelength`, read and checked by the caller), 0.1 nm wide.
+SpectrumPtr laser_spectrum(JsonObjectReader& r, double wavelength_nm, double power);
 
 }  // namespace lenslab

@@ -339,6 +339,27 @@ TEST(SectionView, ABallSelectedGetsABeamAcrossIt) {
     EXPECT_FALSE(default_section_beam(scene, -1, plane));
 }
 
+// A spot light in the plane sends its fan only inside its cone, symmetric about its axis.
+TEST(SectionView, ASpotsFanStaysInItsCone) {
+    const Scene scene = parse_scene(R"({
+      "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+      "lights": [{"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0],
+                  "cone_angle": 25, "power": 1}]
+    })");
+    const SectionPlane plane{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    SectionRayOptions options;
+    options.rays_per_light = 8;
+    const std::vector<Ray> starts = section_start_rays(scene, plane, options);
+    ASSERT_EQ(starts.size(), 8u);
+    double sum_x = 0;
+    for (const Ray& r : starts) {
+        EXPECT_LT(std::acos(-r.direction.y), 25 * std::numbers::pi / 180);
+        EXPECT_NEAR(r.direction.z, 0, 1e-12);
+        sum_x += r.direction.x;
+    }
+    EXPECT_NEAR(sum_x, 0, 1e-12);
+}
+
 TEST(SectionView, DispersingGlassSplitsTheBeamIntoItsColours) {
     const Scene scene = parse_scene(R"({
       "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},

@@ -22,6 +22,7 @@
 #include "number_field.h"
 #include "property_panel.h"
 #include "render_controller.h"
+#include "scene/light_spec.h"
 #include "scene/object_types.h"
 #include "scene_document.h"
 #include "scene_tree.h"
@@ -374,7 +375,8 @@ private slots:
         MainWindow w;
         QVERIFY(w.open_file(kSmallScene));
         const QList<QAction*> adds = w.findChildren<QAction*>(QRegularExpression("^add:"));
-        QCOMPARE(adds.size(), qsizetype(lenslab::object_types().size() + 2));
+        QCOMPARE(adds.size(),
+                 qsizetype(lenslab::object_types().size() + lenslab::light_specs().size()));
         for (QAction* a : adds) {
             const size_t objects = w.document()->json()["objects"].size();
             const size_t lights = w.document()->json()["lights"].size();
@@ -384,7 +386,8 @@ private slots:
                     objects + lights + 1,
                 qPrintable(a->objectName() + ": " + w.status_text()));
         }
-        QCOMPARE(w.document()->scene().lights().size(), size_t(3));
+        // The small scene's one light and one of each type.
+        QCOMPARE(w.document()->scene().lights().size(), 1 + lenslab::light_specs().size());
         QAction* sphere = w.findChild<QAction*>("add:sphere");
         QVERIFY(sphere);
         QCOMPARE(sphere->text(), QString("Add sphere"));

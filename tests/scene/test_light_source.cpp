@@ -61,6 +61,69 @@ TEST(LightSource, PowerAndIrradianceMatchTheClosedForms) {
     EXPECT_FALSE(sphere.sample_li({0, 3.1, 0}, rng, s));  // inside
 }
 
+// A spot light's cone: E = Phi / (2 pi (1 - cos theta0) r^2) on the axis of a hard-edged
+// one, the smoothstep's half-way value half-way through a soft edge, nothing outside; and its
+// photons carry Phi between them, which holds only if the intensity's normalisation (the
+// smoothstep integrating to half its interval in the cosine) is right.
+TEST(LightSource, SpotLightFillsItsConeWithItsPower) {
+    const Scene scene = lights_scene(
+        R"({"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "cone_angle": 30, "power": 3},
+        {"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "cone_angle": 40,
+         "falloff": 20, "power": 3})");
+    ASSERT_EQ(scene.lights().size(), 3u);
+    const Light& hard = *scene.lights()[1];
+    const Light& soft = *scene.lights()[2];
+    EXPECT_NEAR(hard.power(), 3, 1e-9);
+
+    Rng rng(3, 1);
+    LightSample s;
+    const double cos30 = std::cos(kPi / 6);
+    ASSERT_TRUE(hard.sample_li({0, 0, 0}, rng, s));
+    EXPECT_NEAR(s.distance, 2, 1e-12);
+    EXPECT_NEAR(s.factor, 1 / (2 * kPi * (1 - cos30) * 4), 1e-12);
+    // 2 tan 29.9 degrees from the axis is inside, 2 tan 30.1 outside.
+    EXPECT_TRUE(hard.sample_li({2 * std::tan(29.9 * kPi / 180), 0, 0}, rng, s));
+    EXPECT_FALSE(hard.sample_li({2 * std::tan(30.1 * kPi / 180), 0, 0}, rng, s));
+    EXPECT_FALSE(hard.sample_li({0, 3, 0}, rng, s));  // behind it
+
+    // The soft edge runs from 20 to 40 degrees; at the cosine half-way between, the
+    // smoothstep is 1/2.
+    const double cos20 = std::cos(kPi / 9), cos40 = std::cos(2 * kPi / 9);
+    const double axis_intensity = 1 / (2 * kPi * ((1 - cos20) + (cos20 - cos40) / 2));
+    ASSERT_TRUE(soft.sample_li({0, 1, 0}, rng, s));
+    EXPECT_NEAR(s.factor, axis_intensity, 1e-12);
+    const double mid = std::acos(0.5 * (cos20 + cos40));
+    ASSERT_TRUE(soft.sample_li({std::sin(mid), 2 - std::cos(mid), 0}, rng, s));
+    EXPECT_NEAR(s.factor, 0.5 * axis_intensity, 1e-9);
+
+    // Photons: on average each carries the whole flux (scale 1).
+    for (const Light* light : {&hard, &soft}) {
+        double sum = 0;
+        constexpr int kPhotons = 200000;
+        for (int i = 0; i < kPhotons; ++i) {
+            const PhotonStart p = light->sample_le(rng);
+            EXPECT_LE(std::acos(-p.ray.direction.y), (light == &hard ? 30 : 40) * kPi / 180 + 1e-9);
+            sum += p.scale;
+        }
+        EXPECT_NEAR(sum / kPhotons, 1.0, 3e-3);
+    }
+}
+
+// A laser is a beam of one line: the same spectrum as the beam written out in full.
+TEST(LightSource, LaserIsABeamOfOneLine) {
+    const Scene scene = lights_scene(
+        R"({"type": "laser", "position": [0, 0, -2], "direction": [0, 0, 1], "radius": 0.01,
+            "power": 2, "wavelength": 632.8},
+        {"type": "beam", "origin": [0, 0, -2], "direction": [0, 0, 1], "radius": 0.01,
+            "power": 2, "spectrum": {"line": 632.8, "width": 0.1}})");
+    ASSERT_EQ(scene.beams.size(), 2u);
+    const Spectrum& laser = *scene.beams[0].spectrum;
+    const Spectrum& beam = *scene.beams[1].spectrum;
+    for (double nm = 630; nm <= 636; nm += 0.05) EXPECT_EQ(laser.eval(nm), beam.eval(nm)) << nm;
+    EXPECT_EQ(laser.eval(600), 0.0);
+    EXPECT_NEAR(scene.lights()[1]->power(), 2, 1e-9);
+}
+
 TEST(LightSource, PhotonsAreSharedByPower) {
     // The glowing sphere sends pi L 4 pi R^2 = 19.7 W; the points 10 W and 30 W.
     const Scene scene = lights_scene(R"({"type": "point", "position": [0, 2, 0], "power": 10},

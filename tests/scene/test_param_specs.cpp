@@ -102,6 +102,15 @@ std::vector<Case> cases() {
                             {"direction", {0, -1, 0}},
                             {"radius", 0.1},
                             {"power", 1}}};
+    json with_laser = scene;
+    with_laser["lights"] = {{{"type", "laser"},
+                             {"position", {0, 2, 0}},
+                             {"direction", {0, -1, 0}},
+                             {"radius", 0.01},
+                             {"power", 1}}};
+    json with_spot = scene;
+    with_spot["lights"] = {
+        {{"type", "spot"}, {"position", {0, 2, 0}}, {"direction", {0, -1, 0}}, {"power", 1}}};
     json with_implicit = scene;
     with_implicit["objects"] = {{{"type", "implicit"},
                                  {"formula", "x^2 + y^2 + z^2 - 0.25"},
@@ -194,6 +203,18 @@ std::vector<Case> cases() {
         {lenslab::beam_spec,
          "A beam (`\"type\": \"beam\"`):",
          with_beam,
+         "/lights/0",
+         "lights[0]",
+         {}},
+        {lenslab::laser_spec,
+         "A laser (`\"type\": \"laser\"`):",
+         with_laser,
+         "/lights/0",
+         "lights[0]",
+         {}},
+        {lenslab::spot_light_spec,
+         "A spot light (`\"type\": \"spot\"`):",
+         with_spot,
          "/lights/0",
          "lights[0]",
          {}},
@@ -428,7 +449,7 @@ TEST(Examples, EveryTypeHasOneTheReaderAcceptsWhereverItIsPut) {
     std::vector<const ElementSpec*> specs;
     for (const lenslab::ObjectTypeEntry& t : lenslab::object_types()) specs.push_back(&t.spec());
     for (const ElementSpec* l : lenslab::light_specs()) specs.push_back(l);
-    ASSERT_EQ(specs.size(), lenslab::object_types().size() + 2);
+    ASSERT_EQ(specs.size(), lenslab::object_types().size() + 4);
     const lenslab::Vec3 at{2, -1, 7};
     for (const ElementSpec* spec : specs) {
         SCOPED_TRACE(spec->name);

@@ -241,7 +241,7 @@ const BadScene kBadScenes[] = {
     {"mesh_obj_device.json", "objects[0].file",
      "cannot read '/dev/zero': is not a regular file (a device or a pipe)"},
     // Lights.
-    {"unknown_light_type.json", "lights[1].type", "unknown light type 'spot' (known: point, beam)"},
+    {"unknown_light_type.json", "lights[1].type", "unknown light type 'torch' (known: point, beam, laser, spot)"},
     {"beam_with_position.json", "lights[0].position", "not a property of a beam"},
     {"point_light_zero_power.json", "lights[0].power", "must be > 0, got 0"},
     {"lens_group_cemented_with_back.json", "objects[0].elements[0].back",
