@@ -37,7 +37,9 @@ RenderController::~RenderController() {
 
 void RenderController::restart(const Scene& scene, int delay_ms) {
     Scene preview = scene;
-    if (!m_use_scene_integrator) preview.render.integrator = integrators::kView;
+    // The path tracer alone renders an atmosphere so far.
+    if (!m_use_scene_integrator)
+        preview.render.integrator = scene.atmosphere ? integrators::kPath : integrators::kView;
     const int largest = std::max(preview.render.width, preview.render.height);
     if (largest > m_preview_size) {
         const double s = double(m_preview_size) / largest;

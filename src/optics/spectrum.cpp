@@ -270,6 +270,7 @@ SpectrumPtr reflectance_from_rgb(const Rgb& rgb) {
 }
 
 BandWeights reflectance_bands(const Rgb& rgb) { return calibration().weights(rgb, 1.0); }
+BandWeights coefficient_bands(const Rgb& rgb) { return calibration().weights(rgb, INFINITY); }
 
 BandColour illuminant_band_colour(const Rgb& rgb) {
     const auto weights = calibration().weights(rgb, INFINITY);

@@ -133,6 +133,9 @@ using SpectrumPtr = std::shared_ptr<const Spectrum>;
 SpectrumPtr reflectance_from_rgb(const Rgb& rgb);
 // The band weights of reflectance_from_rgb(rgb).
 BandWeights reflectance_bands(const Rgb& rgb);
+// The same for a quantity with no upper bound (an absorption or scattering coefficient):
+// band weights that render back to `rgb`, each >= 0.
+BandWeights coefficient_bands(const Rgb& rgb);
 // An illuminant: D65 times the bands; renders to `rgb` (so [1, 1, 1] is D65 white, Y = 1).
 SpectrumPtr illuminant_from_rgb(const Rgb& rgb);
 SampledSpectrum illuminant_from_rgb(const Rgb& rgb, const SampledWavelengths& w);

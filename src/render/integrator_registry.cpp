@@ -8,6 +8,7 @@
 #include "render/integrators/sppm.h"
 #include "render/integrators/whitted.h"
 #include "scene/render_settings.h"
+#include "scene/scene_error.h"
 
 namespace lenslab {
 
@@ -84,8 +85,28 @@ std::vector<std::string> integrator_names() {
     return names;
 }
 
+namespace {
+
+// Media are traced by the path integrator alone so far: the others would render the scene
+// as if the air were clear.
+void check_integrator_renders(const Scene& scene) {
+    if (scene.atmosphere && scene.render.integrator != integrators::kPath) {
+        throw SceneError("atmosphere",
+                         "is rendered by the path integrator so far (use "
+                         "\"integrator\": \"path\" or --integrator path)");
+    }
+}
+
+}  // namespace
+
 std::unique_ptr<Integrator> make_integrator(const Scene& scene) {
+    check_integrator_renders(scene);
     return integrator_info(scene.render.integrator).make(scene);
+}
+
+std::unique_ptr<ProgressiveIntegrator> make_progressive_integrator(const Scene& scene) {
+    check_integrator_renders(scene);
+    return integrator_info(scene.render.integrator).make_progressive(scene);
 }
 
 }  // namespace lenslab

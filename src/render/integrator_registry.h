@@ -37,6 +37,9 @@ const IntegratorInfo& integrator_info(std::string_view name);
 std::vector<std::string> integrator_names();
 
 // The integrator the scene's render block asks for.
+// The scene's integrator; throws SceneError when it cannot render the scene (an atmosphere
+// for any but the path integrator).
 std::unique_ptr<Integrator> make_integrator(const Scene& scene);
+std::unique_ptr<ProgressiveIntegrator> make_progressive_integrator(const Scene& scene);
 
 }  // namespace lenslab

@@ -24,6 +24,16 @@ void LightSum::add(const Spectrum& s, double factor) {
     }
 }
 
+void LightSum::add(const Spectrum& s, double factor, const BandWeights& bands) {
+    if (m_dispersed) {
+        m_hero += s.eval(m_hero_nm) * factor * bands[band_of(m_hero_nm)];
+    } else {
+        BandColour c = s.band_colour();
+        for (int b = 0; b < 3; ++b) c.band[b] *= factor * bands[b];
+        m_bands += c;
+    }
+}
+
 void LightSum::add_illuminant(const Rgb& rgb) {
     if (rgb.is_black()) return;
     if (m_dispersed) {

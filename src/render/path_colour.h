@@ -58,6 +58,8 @@ public:
         : m_hero_nm(path.hero_nm()), m_dispersed(path.dispersed()) {}
 
     void add(const Spectrum& s, double factor);
+    // The same, weighted in each band by `bands` (light attenuated by a coloured medium).
+    void add(const Spectrum& s, double factor, const BandWeights& bands);
     // Adds illuminant_from_rgb(rgb): how photon-map estimates, which are colours, are lit.
     void add_illuminant(const Rgb& rgb);
     LightSum& operator*=(double s);

@@ -9,7 +9,7 @@ namespace lenslab {
 ProgressiveRender::ProgressiveRender(const Scene& scene, int threads)
     : m_scene(scene), m_threads(threads) {
     m_scene.render.spp = 1;
-    m_integrator = integrator_info(m_scene.render.integrator).make_progressive(m_scene);
+    m_integrator = make_progressive_integrator(m_scene);
 }
 
 ProgressiveRender::~ProgressiveRender() = default;

@@ -15,6 +15,7 @@
 #include "scene/light_sampler.h"
 #include "scene/light_source.h"
 #include "scene/material.h"
+#include "scene/medium.h"
 #include "scene/photon_targets.h"
 #include "scene/render_settings.h"
 
@@ -66,6 +67,8 @@ public:
     std::vector<PointLight> point_lights;
     std::vector<BeamLight> beams;  // beams and lasers
     std::vector<SpotLight> spots;
+    // The medium filling the space outside every object (fog in the room), if any.
+    std::optional<Medium> atmosphere;
 
     // Builds the acceleration structure and the emitter list; call after filling the fields.
     void build();

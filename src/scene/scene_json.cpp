@@ -264,8 +264,9 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
 
 Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
                       const SceneReadOptions& options) {
-    JsonObjectReader r(
-        root, "", {"version", "description", "camera", "render", "materials", "objects", "lights"});
+    JsonObjectReader r(root, "",
+                       {"version", "description", "camera", "render", "materials", "objects",
+                        "lights", "atmosphere"});
     const int version = r.integer("version", 1, 1, 1000);
     if (version != 1) throw SceneError("version", "this lenslab reads version 1 scene files");
     (void)r.string("description", "");
@@ -275,6 +276,10 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
     if (const json* jr = r.find("render")) read_render(*jr, scene.render);
     std::map<std::string, int> by_name;
     if (const json* jm = r.find("materials")) by_name = read_materials(*jm, scene.materials);
+    if (const json* ja = r.find("atmosphere")) {
+        scene.atmosphere = read_medium(*ja, "atmosphere");
+        if (scene.atmosphere->is_clear()) scene.atmosphere.reset();
+    }
     if (const json* jo = r.find("objects")) {
         if (!jo->is_array()) throw SceneError("objects", "must be an array");
         check_count(jo->size(), kMaxObjects, "objects", "objects");

@@ -23,6 +23,7 @@
 #include "scene/lens_group_json.h"
 #include "scene/light_spec.h"
 #include "scene/material_spec.h"
+#include "scene/medium.h"
 #include "scene/mesh_json.h"
 #include "scene/object_spec.h"
 #include "scene/object_types.h"
@@ -111,6 +112,8 @@ std::vector<Case> cases() {
     json with_spot = scene;
     with_spot["lights"] = {
         {{"type", "spot"}, {"position", {0, 2, 0}}, {"direction", {0, -1, 0}}, {"power", 1}}};
+    json with_atmosphere = scene;
+    with_atmosphere["atmosphere"] = {{"scattering", 0.1}};
     json with_implicit = scene;
     with_implicit["objects"] = {{{"type", "implicit"},
                                  {"formula", "x^2 + y^2 + z^2 - 0.25"},
@@ -218,6 +221,7 @@ std::vector<Case> cases() {
          "/lights/0",
          "lights[0]",
          {}},
+        {lenslab::medium_spec, "## Atmosphere", with_atmosphere, "/atmosphere", "atmosphere", {}},
         {lenslab::object_common_spec, "## Objects", scene, "/objects/0", "objects[0]", {}},
         {lenslab::sphere_spec, "### Sphere", scene, "/objects/0", "objects[0]", common},
         {lenslab::implicit_spec, "### Implicit solid", with_implicit, "/objects/0", "objects[0]",

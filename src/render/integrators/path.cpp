@@ -3,7 +3,9 @@
 #include <numbers>
 
 #include "math/rng.h"
+#include "optics/phase_function.h"
 #include "render/direct_light.h"
+#include "render/medium_transport.h"
 #include "render/path_colour.h"
 #include "scene/interaction.h"
 
@@ -22,10 +24,33 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
     Ray ray = camera_ray;
     bool seen_from_camera = true;  // no diffuse bounce yet: the camera sees this chain
     bool count_emission = true;    // the last event was the camera or a specular one
+    const Medium* atmosphere = scene.atmosphere ? &*scene.atmosphere : nullptr;
     for (int bounce = 0;; ++bounce) {
         Interaction it;
         // Refraction follows the hero wavelength (the others are dropped at a dispersive one).
-        if (!next_interaction(scene, ray, path.hero_nm(), it)) {
+        const bool hit = next_interaction(scene, ray, path.hero_nm(), it);
+        // The atmosphere fills the space outside the objects: the ray crosses it unless it is
+        // leaving a solid (it meets the back of a surface).
+        if (atmosphere && (!hit || dot(ray.direction, it.normal()) < 0.0)) {
+            const FreeFlight f =
+                sample_free_flight(*atmosphere, hit ? it.hit.surface.t : INFINITY, rng);
+            path *= f.weight;
+            if (f.scattered) {
+                if (bounce >= scene.render.max_depth) break;
+                const Vec3 p = ray.at(f.t);
+                const HenyeyGreenstein phase(atmosphere->g);
+                LightSum e(path);
+                add_direct_light(
+                    scene, atmosphere, p, scene.render.light_samples, rng,
+                    [&](const Vec3& wi) { return phase.eval(dot(wi, ray.direction)); }, e);
+                l += path.of(e);
+                ray = {p, phase.sample(ray.direction, rng.uniform(), rng.uniform())};
+                seen_from_camera = false;
+                count_emission = false;
+                continue;
+            }
+        }
+        if (!hit) {
             if (seen_from_camera && m_background) l += path.of(*m_background);
             break;
         }
@@ -42,9 +67,15 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
         const bool diffuse = s.diffuse > 0.0 && !m.color.is_black();
         if (diffuse) {
             LightSum e(path);
-            for_each_direct_light(
-                scene, p, facing, scene.render.light_samples, rng,
-                [&](const Spectrum& light, double factor) { e.add(light, factor); });
+            if (atmosphere) {
+                add_direct_light(
+                    scene, atmosphere, p, scene.render.light_samples, rng,
+                    [&](const Vec3& wi) { return dot(facing, wi); }, e);
+            } else {
+                for_each_direct_light(
+                    scene, p, facing, scene.render.light_samples, rng,
+                    [&](const Spectrum& light, double factor) { e.add(light, factor); });
+            }
             e *= 1.0 / std::numbers::pi;
             if (seen_from_camera && m_ambient) e.add(*m_ambient, 1.0);
             PathColour reflected = path;

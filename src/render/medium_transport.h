@@ -1,0 +1,37 @@
+#pragma once
+// Light travelling through a participating medium (scene/medium.h), for the tracers: where
+// it next scatters, and the direct light that reaches a point through the medium.
+//
+// The medium's coefficients differ by band (spectrum.h), so one distance is drawn for all
+// three: a band is picked at random and the distance drawn from its exponential, with the
+// weights divided by the average density of the three (one-sample multiple importance
+// sampling over the bands, as pbrt-v4 does over wavelengths). In a grey medium this is plain
+// exponential free-flight sampling; in a coloured one no band's weight grows without bound.
+
+#include <functional>
+
+#include "math/rng.h"
+#include "render/path_colour.h"
+#include "scene/medium.h"
+#include "scene/scene.h"
+
+namespace lenslab {
+
+struct FreeFlight {
+    bool scattered = false;       // the light scattered before `t_max`
+    double t = 0;                 // where, when it did
+    BandWeights weight{1, 1, 1};  // what multiplies the throughput in each band
+};
+
+// Light leaving along a ray through `medium` with the next surface at `t_max` (INFINITY:
+// none). Scattered: weight = sigma_s T(t) / density(t); passed: T(t_max) / P(pass).
+FreeFlight sample_free_flight(const Medium& medium, double t_max, Rng& rng);
+
+// The light reaching `p` straight from each light (unoccluded), attenuated by `medium` (none:
+// nullptr) along the way, each sample weighted by `angular(wi)` (wi towards the light): the
+// cosine at a surface, the phase function at a point in a medium; <= 0 drops the sample.
+// Added to `e` as the spectrum of each light times its weights.
+void add_direct_light(const Scene& scene, const Medium* medium, const Vec3& p, int samples,
+                      Rng& rng, const std::function<double(const Vec3& wi)>& angular, LightSum& e);
+
+}  // namespace lenslab
