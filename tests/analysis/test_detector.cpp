@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "analysis/detector.h"
+#include "scene/scene_error.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {
@@ -126,6 +127,16 @@ TEST(Detector, PointLightIrradianceFollowsInverseSquareAndCosine) {
                     100 * (m.irradiance(c) / expected - 1));
         EXPECT_NEAR(m.irradiance(c), expected, 0.04 * expected);
     }
+}
+
+// Detector photons do not cross media yet: a scene with fog is refused, not measured clear.
+TEST(Detector, RefusesAnAtmosphere) {
+    const Scene scene = parse_scene(R"({"camera": {"position": [0, 5, 5], "look_at": [0, 0, 0]},
+        "atmosphere": {"scattering": 0.1},
+        "objects": [{"type": "rectangle", "center": [0, 0, 0], "normal": [0, 1, 0], "size": [4, 4],
+                     "material": {"color": 0.5}, "detector": true}],
+        "lights": [{"type": "point", "position": [0, 1, 0], "power": 100}]})");
+    EXPECT_THROW((void)measure(scene, 1000), SceneError);
 }
 
 TEST(Detector, DiscInterceptsTheSolidAngleItSubtendsOfAPointLight) {
