@@ -301,7 +301,7 @@ void MainWindow::build_menus() {
         tools->addAction(a);
     }
     QAction* floor = edit->addAction(tr("Add &floor"), this, &MainWindow::add_floor);
-    floor->setObjectName("add:floor");
+    floor->setObjectName("add_floor");  // not a declared type (those are "add:TYPE")
     tools->addAction(floor);
     edit->addAction(tr("&Duplicate"), QKeySequence(tr("Ctrl+D")), this,
                     &MainWindow::duplicate_selected);

@@ -280,7 +280,7 @@ private slots:
         ShownWindow s;
         QVERIFY(s.open());
         const lenslab::Aabb before = s.w.document()->scene().bounds();
-        auto* add_floor = s.w.findChild<QAction*>("add:floor");
+        auto* add_floor = s.w.findChild<QAction*>("add_floor");
         QVERIFY(add_floor);
         add_floor->trigger();
         const json& floor = s.w.document()->json()["objects"].back();
