@@ -1,16 +1,19 @@
 // One redraw of the editor's section view as a drag makes it: the default lens selected,
 // the section model rebuilt (15 rays across the lens, the lamp's fan) and the widget
-// painted at the size it has in the default window. The issue asks for under 20 ms.
+// painted at the size it has in the default window. The issue asks for under 20 ms. And a
+// frame of a handle drag in the 3-D view (BM_ViewportHandleDragFrame).
 // Runs on Qt's offscreen platform unless QT_QPA_PLATFORM says otherwise.
 
 #include <benchmark/benchmark.h>
 
 #include <QApplication>
 #include <QImage>
+#include <QMouseEvent>
 #include <cstdlib>
 
 #include "scene_document.h"
 #include "section_widget.h"
+#include "viewport.h"
 
 namespace {
 
@@ -44,7 +47,33 @@ void BM_SectionWidgetDragFrame(benchmark::State& state) {
     }
 }
 
+// A frame of a handle drag in the 3-D view: the lens moved along x by its arrow (the edit
+// read and checked), its outline traced again and the view painted with outline, light
+// icons and handles. The render itself runs on its own thread and is not counted.
+void BM_ViewportHandleDragFrame(benchmark::State& state) {
+    lenslab::gui::SceneDocument document;
+    lenslab::gui::Viewport view(&document);
+    view.resize(614, 455);  // the 3-D tab of a 1280x800 window
+    view.show_pointer("/objects/1");
+    QImage image(view.size(), QImage::Format_ARGB32_Premultiplied);
+    const QPointF grip = view.handles()->arrow_grip(0);
+    QMouseEvent press(QEvent::MouseButtonPress, grip, grip, Qt::LeftButton, Qt::LeftButton, {});
+    QApplication::sendEvent(&view, &press);
+    int step = 0;
+    for (auto _ : state) {
+        const QPointF at = grip + QPointF(10 + (++step % 20), 0);
+        QMouseEvent move(QEvent::MouseMove, at, at, Qt::NoButton, Qt::LeftButton, {});
+        QApplication::sendEvent(&view, &move);
+        view.render(&image);
+    }
+    QMouseEvent release(QEvent::MouseButtonRelease, grip, grip, Qt::LeftButton, Qt::NoButton, {});
+    QApplication::sendEvent(&view, &release);
+    state.counters["outline_cells"] =
+        double(view.outline().image.width()) * view.outline().image.height();
+}
+
 BENCHMARK(BM_SectionWidgetRedraw)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ViewportHandleDragFrame)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SectionWidgetDragFrame)->Unit(benchmark::kMillisecond);
 
 }  // namespace

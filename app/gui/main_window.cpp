@@ -27,7 +27,9 @@
 #include <vector>
 
 #include "detector_dock.h"
+#include "image_export.h"
 #include "json_pointer.h"
+#include "placement.h"
 #include "property_panel.h"
 #include "ray_diagram_dock.h"
 #include "render/camera.h"
@@ -97,14 +99,26 @@ Vec3 placement(const Scene& scene, const json& example) {
     const Aabb box = alone.bounds();
     const Camera camera(scene.camera, scene.render.width, scene.render.height);
     const Ray centre = camera.generate_ray(scene.render.width / 2.0, scene.render.height / 2.0);
-    SceneHit hit;
-    if (box.empty() || !scene.intersect(centre, 0, std::numeric_limits<double>::infinity(), hit))
-        return ahead - box.centre();
-    Vec3 n = hit.surface.normal;
-    if (dot(n, centre.direction) > 0) n = -n;  // the side the camera sees
-    const Vec3 e = box.extent();
-    const double half = 0.5 * (std::abs(e.x * n.x) + std::abs(e.y * n.y) + std::abs(e.z * n.z));
-    return hit.surface.point + n * half - box.centre();
+    if (box.empty()) return ahead;
+    return resting_offset(scene, box, centre).value_or(ahead - box.centre());
+}
+
+// A floor: a thin box (one object, not triangles) under everything the scene holds, its top
+// where the lowest object ends (y is up, as the camera's default), four times as wide as the
+// scene so its edges stay out of most views.
+json floor_under(const Scene& scene, const json& document) {
+    const Aabb box = scene.bounds();
+    const Vec3 centre = box.empty() ? Vec3{0, 0, 0} : box.centre();
+    const Vec3 extent = box.empty() ? Vec3{0, 0, 0} : box.extent();
+    const double widest = std::max({extent.x, extent.y, extent.z});
+    const double side = widest > 0 ? 4 * widest : 10.0;
+    const double thickness = side / 100;
+    const double top = box.empty() ? 0.0 : box.lo.y;
+    return json{{"type", "box"},
+                {"name", unique_name(document, "floor")},
+                {"center", {centre.x, top - thickness / 2, centre.z}},
+                {"size", {side, thickness, side}},
+                {"material", {{"color", 0.7}}}};
 }
 
 // "Add sphere", "Add lens group", "Add point light": from the declaration's phrase.
@@ -167,6 +181,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_tree, &SceneTree::pointer_selected, m_ray_diagram, &RayDiagramDock::show_pointer);
     connect(m_tree, &SceneTree::pointer_selected, m_detector_dock, &DetectorDock::show_pointer);
     connect(m_tree, &SceneTree::pointer_selected, m_section, &SectionWidget::show_pointer);
+    connect(m_tree, &SceneTree::pointer_selected, m_viewport, &Viewport::show_pointer);
     connect(m_section, &SectionWidget::object_picked, this, [this](int object) {
         const int entry = object >= 0 ? m_document->scene().objects[object].source : -1;
         m_tree->select_pointer(entry >= 0 ? join_pointer("/objects", entry) : QString());
@@ -175,11 +190,20 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_viewport, &Viewport::object_picked, this, [this](int object) {
         m_tree->select_pointer(object >= 0 ? join_pointer("/objects", object) : QString());
     });
+    connect(m_viewport, &Viewport::light_picked, this,
+            [this](int light) { m_tree->select_pointer(join_pointer("/lights", light)); });
+    // A drag ended (perhaps where it began, changing nothing): the full render at once.
+    connect(m_viewport, &Viewport::interaction_finished, this,
+            [this] { m_renderer->restart(m_document->scene(), 0); });
     connect(m_panel, &PropertyPanel::edit_refused, this, &MainWindow::show_message);
     connect(m_panel, &PropertyPanel::pointer_requested, m_tree, &SceneTree::select_pointer);
     connect(m_viewport, &Viewport::edit_refused, this, &MainWindow::show_message);
     connect(m_document, &SceneDocument::changed, this, [this] {
-        m_renderer->restart(m_document->scene());
+        // While the view is dragged, a coarse frame at once for every step.
+        if (m_viewport->is_interacting())
+            m_renderer->restart(m_document->scene(), 0, RenderQuality::Draft);
+        else
+            m_renderer->restart(m_document->scene());
         update_title();
     });
     connect(m_document->undo_stack(), &QUndoStack::cleanChanged, this, &MainWindow::update_title);
@@ -276,6 +300,9 @@ void MainWindow::build_menus() {
         a->setObjectName("add:" + kind);
         tools->addAction(a);
     }
+    QAction* floor = edit->addAction(tr("Add &floor"), this, &MainWindow::add_floor);
+    floor->setObjectName("add_floor");  // not a declared type (those are "add:TYPE")
+    tools->addAction(floor);
     edit->addAction(tr("&Duplicate"), QKeySequence(tr("Ctrl+D")), this,
                     &MainWindow::duplicate_selected);
     edit->addAction(tr("De&lete"), QKeySequence::Delete, this, &MainWindow::delete_selected);
@@ -457,13 +484,13 @@ void MainWindow::export_image() {
 }
 
 bool MainWindow::export_image_to(const QString& path, QString* error) {
-    try {
-        write_image(m_renderer->last_film(), path.toStdString());
-    } catch (const std::exception& e) {
+    QString message;
+    if (!export_scene_image(m_document->scene(), path, this, &message)) {
         if (error)
-            *error = QString::fromStdString(e.what());
+            *error = message;
         else
-            QMessageBox::warning(this, tr("Cannot export"), QString::fromStdString(e.what()));
+            QMessageBox::warning(this, tr("Cannot export"), message);
+        show_message(message);
         return false;
     }
     show_message(tr("wrote %1").arg(path));
@@ -504,8 +531,26 @@ void MainWindow::add_element(const QString& kind) {
         show_message(error);
         return;
     }
-    m_tree->select_pointer(join_pointer(join_pointer("", QString::fromStdString(list)),
-                                        qsizetype(edited[list].size() - 1)));
+    const qsizetype index = qsizetype(edited[list].size() - 1);
+    m_tree->select_pointer(join_pointer(join_pointer("", QString::fromStdString(list)), index));
+    if (list == "objects") {
+        // It rests where the view's centre looks; the next click in the view moves it there.
+        m_viewport->arm_placement(int(index));
+        show_message(
+            tr("Click in the 3-D view to place the new %1 (Esc: leave it here).").arg(kind));
+    }
+}
+
+void MainWindow::add_floor() {
+    json edited = m_document->json();
+    if (!edited.contains("objects")) edited["objects"] = json::array();
+    edited["objects"].push_back(floor_under(m_document->scene(), edited));
+    QString error;
+    if (!m_document->apply(edited, tr("Add floor"), &error)) {
+        show_message(error);
+        return;
+    }
+    m_tree->select_pointer(join_pointer("/objects", qsizetype(edited["objects"].size() - 1)));
 }
 
 void MainWindow::duplicate_selected() {

@@ -36,8 +36,10 @@ public:
     // `as_copy`: untitled (the examples), so Save asks where (SceneDocument::open).
     bool open_file(const QString& path, QString* error = nullptr, bool as_copy = false);
     bool save_file(const QString& path, QString* error = nullptr);
-    // Writes the current image to `path` (.png or .exr), atomically: a failure leaves no
-    // file and no temporary behind. The error is returned in `error` if given, else shown.
+    // Renders the scene at its own resolution with its own integrator, behind a progress
+    // dialog that can cancel it, and writes it to `path` (.png or .exr), atomically: a failure
+    // leaves no file and no temporary behind. The error is returned in `error` if given,
+    // else shown.
     bool export_image_to(const QString& path, QString* error = nullptr);
 
     SceneDocument* document() const { return m_document; }
@@ -57,6 +59,8 @@ public:
     // Adds an object or light of `kind` (sphere, triangle, disc, rectangle, lens, implicit,
     // point, beam) and selects it.
     void add_element(const QString& kind);
+    // A box floor under the scene's objects (Edit ▸ Add floor), selected.
+    void add_floor();
     void duplicate_selected();
     void delete_selected();
 

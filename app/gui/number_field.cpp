@@ -81,12 +81,14 @@ NumberField::NumberField(const ParamSpec& p, QWidget* parent) : QLineEdit(parent
 }
 
 void NumberField::setValue(double v) {
+    const bool had_problem = !m_problem.isEmpty();
     m_value = v;
     m_shown = format_shown(v);
     m_problem.clear();
     setStyleSheet({});
     setToolTip(documentation());
     setText(m_shown);
+    if (had_problem) emit problem_cleared();
 }
 
 double NumberField::minimum() const {

@@ -48,6 +48,8 @@ signals:
     void committed(double value);
     // The text was refused for `reason`; the field keeps its last good value.
     void refused(const QString& reason);
+    // A refusal it showed no longer applies: a good value shows again (typed, or Escape).
+    void problem_cleared();
 
 protected:
     void wheelEvent(QWheelEvent* event) override;

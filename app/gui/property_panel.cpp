@@ -138,7 +138,11 @@ PropertyPanel::PropertyPanel(SceneDocument* document, QWidget* parent)
     m_error->setStyleSheet("color: #c0392b;");
     layout->addStretch(1);
     layout->addWidget(m_error);
-    connect(document, &SceneDocument::changed, this, &PropertyPanel::rebuild);
+    // A refusal is about the document as it was: any change that went in makes it stale.
+    connect(document, &SceneDocument::changed, this, [this] {
+        m_error->clear();
+        rebuild();
+    });
 }
 
 void PropertyPanel::show_pointer(const QString& pointer) {
@@ -233,6 +237,11 @@ NumberField* PropertyPanel::add_number_field(QWidget* parent, const ParamSpec& p
         const QString message = label + ": " + reason;
         m_error->setText(message);
         emit edit_refused(message);
+    });
+    // Fixed without a commit (the same value typed again, or Escape): the refusal goes too,
+    // when it is this field's.
+    connect(field, &NumberField::problem_cleared, this, [this, label] {
+        if (m_error->text().startsWith(label + ": ")) m_error->clear();
     });
     return field;
 }

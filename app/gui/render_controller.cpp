@@ -35,14 +35,16 @@ RenderController::~RenderController() {
     wait();
 }
 
-void RenderController::restart(const Scene& scene, int delay_ms) {
+void RenderController::restart(const Scene& scene, int delay_ms, RenderQuality quality) {
     Scene preview = scene;
     // The path tracer alone renders an atmosphere so far.
     if (!m_use_scene_integrator)
         preview.render.integrator = scene.atmosphere ? integrators::kPath : integrators::kView;
     const int largest = std::max(preview.render.width, preview.render.height);
-    if (largest > m_preview_size) {
-        const double s = double(m_preview_size) / largest;
+    const int limit = quality == RenderQuality::Draft ? std::max(1, m_preview_size / kDraftDivisor)
+                                                      : m_preview_size;
+    if (largest > limit) {
+        const double s = double(limit) / largest;
         preview.render.width = std::max(1, int(std::lround(preview.render.width * s)));
         preview.render.height = std::max(1, int(std::lround(preview.render.height * s)));
     }

@@ -28,6 +28,10 @@ enum class RenderEnd {
     Failed,     // the integrator refused (render_failed says why)
 };
 
+// Full: the preview size; Draft: a quarter of it in each direction, for frames that must come
+// at once while something is dragged (16 times fewer pixels).
+enum class RenderQuality { Full, Draft };
+
 class RenderController : public QThread {
     Q_OBJECT
 
@@ -37,7 +41,8 @@ public:
     ~RenderController() override;
 
     // Schedules a render of `scene` (debounced by `delay_ms`; 0 starts at once).
-    void restart(const Scene& scene, int delay_ms = 120);
+    void restart(const Scene& scene, int delay_ms = 120,
+                 RenderQuality quality = RenderQuality::Full);
     // Stops after cancelling the pass in flight; the last frame stays.
     void stop_rendering();
     bool is_rendering() const;
@@ -74,6 +79,7 @@ private:
     QTimer m_debounce;
     std::optional<Scene> m_next;  // GUI thread only: the scene waiting for the debounce
     int m_preview_size;
+    static constexpr int kDraftDivisor = 4;
     int m_max_passes = 256;
     bool m_use_scene_integrator = false;
 

@@ -19,4 +19,14 @@ Ray Camera::generate_ray(double px, double py) const {
     return {m_origin, normalize(m_forward + m_right * sx + m_up * sy)};
 }
 
+bool Camera::project(const Vec3& p, double& px, double& py) const {
+    const Vec3 d = p - m_origin;
+    const double depth = dot(d, m_forward);
+    if (depth <= 1e-12) return false;
+    const double sx = dot(d, m_right) / depth, sy = dot(d, m_up) / depth;
+    px = (sx / m_half_width + 1.0) * 0.5 * m_width;
+    py = (1.0 - sy / m_half_height) * 0.5 * m_height;
+    return true;
+}
+
 }  // namespace lenslab

@@ -1,8 +1,12 @@
 #include "scene/param_spec.h"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <optional>
 #include <stdexcept>
 
+#include "geometry/plane_frame.h"
 #include "scene/json_reader.h"
 
 namespace lenslab {
@@ -283,6 +287,28 @@ void move_point(nlohmann::json& p, const Vec3& offset) {
     for (int a = 0; a < 3; ++a) p[a] = p[a].get<double>() + offset[a];
 }
 
+// `v` turned by `angle` about the unit `k` (Rodrigues' formula).
+Vec3 spec_turned_vector(const Vec3& v, const Vec3& k, double angle) {
+    return v * std::cos(angle) + cross(k, v) * std::sin(angle) +
+           k * (dot(k, v) * (1 - std::cos(angle)));
+}
+
+// `p` as a vector, when it is [x, y, z] of numbers; other shapes are left for the reader.
+std::optional<Vec3> spec_vector_of(const nlohmann::json& p) {
+    if (!p.is_array() || p.size() != 3) return std::nullopt;
+    for (int a = 0; a < 3; ++a) {
+        if (!p[a].is_number()) return std::nullopt;
+    }
+    return Vec3{p[0].get<double>(), p[1].get<double>(), p[2].get<double>()};
+}
+
+void spec_rewrite_vector(nlohmann::json& p, const std::function<Vec3(const Vec3&)>& f) {
+    if (const std::optional<Vec3> v = spec_vector_of(p)) {
+        const Vec3 out = f(*v);
+        p = nlohmann::json::array({out.x, out.y, out.z});
+    }
+}
+
 }  // namespace
 
 nlohmann::json moved_element(const ElementSpec& spec, nlohmann::json element, const Vec3& offset) {
@@ -298,6 +324,45 @@ nlohmann::json moved_element(const ElementSpec& spec, nlohmann::json element, co
         }
     }
     return element;
+}
+
+nlohmann::json rotated_element(const ElementSpec& spec, nlohmann::json element, const Vec3& pivot,
+                               const Vec3& axis, double angle) {
+    if (!element.is_object()) return element;
+    const auto turn_point = [&](const Vec3& p) {
+        return pivot + spec_turned_vector(p - pivot, axis, angle);
+    };
+    const auto turn_direction = [&](const Vec3& d) { return spec_turned_vector(d, axis, angle); };
+    // A flat shape's automatic up, as the reader would choose it from the normal now.
+    const ParamSpec* up = spec.find("up");
+    if (up && up->fallback.is_null() && spec.find("normal") && !element.contains("up") &&
+        element.contains("normal")) {
+        if (const std::optional<Vec3> normal = spec_vector_of(element["normal"])) {
+            const Vec3 u = default_plane_up(normalize(*normal));
+            element["up"] = nlohmann::json::array({u.x, u.y, u.z});
+        }
+    }
+    for (const ParamSpec& p : spec.params) {
+        auto it = element.find(p.key);
+        const bool point = p.kind == ParamKind::Point, direction = p.kind == ParamKind::Direction;
+        if (point || direction) {
+            if (it == element.end() && !p.fallback.is_array()) continue;
+            nlohmann::json& v = it != element.end() ? *it : (element[p.key] = p.fallback);
+            if (point)
+                spec_rewrite_vector(v, turn_point);
+            else
+                spec_rewrite_vector(v, turn_direction);
+        } else if (p.positions && it != element.end() && it->is_array()) {
+            for (nlohmann::json& v : *it) spec_rewrite_vector(v, turn_point);
+        }
+    }
+    return element;
+}
+
+bool element_turns(const ElementSpec& spec) {
+    return std::any_of(spec.params.begin(), spec.params.end(), [](const ParamSpec& p) {
+        return p.kind == ParamKind::Direction || p.positions;
+    });
 }
 
 }  // namespace lenslab

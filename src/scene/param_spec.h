@@ -124,6 +124,16 @@ std::string range_text(const ParamSpec& p);    // "1 – 16384", "`>= 0`", "(0, 
 // left for the reader to refuse.
 nlohmann::json moved_element(const ElementSpec& spec, nlohmann::json element, const Vec3& offset);
 
+// `element` (of type `spec`) turned by `angle` radians about the line through `pivot` along
+// the unit `axis`: its points and positions turn about the line, its directions (axis,
+// normal, up, facing) with it. An absent direction with a declared default is written out
+// turned; a flat shape's automatic up too, else a turn about its normal would not show.
+nlohmann::json rotated_element(const ElementSpec& spec, nlohmann::json element, const Vec3& pivot,
+                               const Vec3& axis, double angle);
+// Whether rotated_element can turn an element of this type: it has a direction or positions
+// (a sphere has neither; an implicit solid's formula does not turn).
+bool element_turns(const ElementSpec& spec);
+
 // Whether the fallback may also be written in a file (not merely implied by absence).
 bool fallback_in_range(const ParamSpec& p);
 

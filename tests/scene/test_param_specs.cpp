@@ -476,6 +476,40 @@ TEST(Examples, EveryTypeHasOneTheReaderAcceptsWhereverItIsPut) {
     }
 }
 
+// A quarter turn about +y through (1, 0, 0): x -> -z about the pivot, and directions turn.
+TEST(Examples, RotatingAnElementTurnsItsPointsAndDirections) {
+    using lenslab::rotated_element;
+    const double quarter = std::acos(0.0);
+    const auto near = [](const json& got, std::initializer_list<double> want) {
+        std::vector<double> w(want);
+        for (size_t a = 0; a < 3; ++a) EXPECT_NEAR(got[a].get<double>(), w[a], 1e-12) << got;
+    };
+    const json lens =
+        rotated_element(lenslab::lens_spec(), {{"center", {2, 1, 0}}, {"axis", {1, 0, 0}}},
+                        {1, 0, 0}, {0, 1, 0}, quarter);
+    near(lens["center"], {1, 1, -1});
+    near(lens["axis"], {0, 0, -1});
+    const json triangle =
+        rotated_element(lenslab::triangle_spec(), {{"vertices", {{1, 0, 0}, {2, 0, 0}, {1, 1, 0}}}},
+                        {1, 0, 0}, {0, 1, 0}, quarter);
+    near(triangle["vertices"][1], {1, 0, -1});
+    near(triangle["vertices"][2], {1, 1, 0});
+    // A box's absent up and facing are written out turned; a rectangle's automatic up too,
+    // so a turn about its normal shows.
+    const json box = rotated_element(lenslab::box_spec(), {{"center", {1, 0, 0}}}, {1, 0, 0},
+                                     {0, 1, 0}, quarter);
+    near(box["facing"], {1, 0, 0});
+    near(box["up"], {0, 1, 0});
+    const json rectangle =
+        rotated_element(lenslab::rectangle_spec(), {{"center", {0, 0, 0}}, {"normal", {0, 0, 1}}},
+                        {0, 0, 0}, {0, 0, 1}, quarter);
+    near(rectangle["normal"], {0, 0, 1});
+    near(rectangle["up"], {-1, 0, 0});
+    EXPECT_TRUE(lenslab::element_turns(lenslab::lens_spec()));
+    EXPECT_FALSE(lenslab::element_turns(lenslab::sphere_spec()));
+    EXPECT_FALSE(lenslab::element_turns(lenslab::implicit_spec()));
+}
+
 TEST(Examples, MovingAnElementMovesItsPositionsAndNothingElse) {
     using lenslab::moved_element;
     const json triangle = moved_element(lenslab::triangle_spec(),
