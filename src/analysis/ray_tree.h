@@ -30,7 +30,7 @@ struct RayTreeNode {
 struct RayTreeOptions {
     int max_depth = 16;               // specular bounces followed along any one path
     double min_weight = 1e-3;         // branches carrying less are dropped (counted as truncated)
-    double wavelength_nm = 587.5618;  // vacuum wavelength traced (default: the d line)
+    double wavelength_nm = 587.5618;  // wavelength traced, in air (default: the d line)
 };
 
 struct RayTree {
