@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "analysis/detector.h"
@@ -56,7 +57,10 @@ TEST(GlassAbsorption, SlabPassesTheBeerLambertShareOfABeam) {
         SCOPED_TRACE(nm);
         const double tau = internal_transmittance(sf57.k_um, nm, 50.0);
         const double expected = slab_transmittance(sf57.model->n(nm), tau);
-        EXPECT_NEAR(slab_detector_power(nm, 50.0, 1.0), expected, 0.01 * expected);
+        const double measured = slab_detector_power(nm, 50.0, 1.0);
+        std::printf("%g nm: tau_i(50 mm) = %.4f, slab T = %.4f, detector %.4f W (%+.2f%%)\n", nm,
+                    tau, expected, measured, 100 * (measured / expected - 1));
+        EXPECT_NEAR(measured, expected, 0.01 * expected);
         // The same slab in centimetres: 5 units of 10 mm.
         EXPECT_NEAR(slab_detector_power(nm, 5.0, 10.0), expected, 0.01 * expected);
     }
