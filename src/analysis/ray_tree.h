@@ -13,7 +13,8 @@
 namespace lenslab {
 
 // One event: the light went from `from` to `to`, met `object`, did `event` there and left
-// along `direction` carrying `weight` (fraction of the traced ray's power). At a dielectric
+// along `direction` carrying `weight` (fraction of the traced ray's power, after what glass
+// with absorption data took on the way: RayTree::absorbed counts it). At a dielectric
 // the ray splits: the reflected and the refracted branch are siblings with the same segment.
 // The root is the start of the ray (event "start", from = to = origin).
 struct RayTreeNode {

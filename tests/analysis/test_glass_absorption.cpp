@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "analysis/detector.h"
+#include "analysis/ray_tree.h"
 #include "optics/absorption.h"
 #include "optics/glass_library.h"
 #include "scene/scene_json.h"
@@ -66,6 +67,27 @@ TEST(GlassAbsorption, SlabPassesTheBeerLambertShareOfABeam) {
     }
     EXPECT_LT(internal_transmittance(sf57.k_um, 430, 50), 0.65);  // the test means something
     EXPECT_GT(internal_transmittance(sf57.k_um, 480, 50), 0.78);
+}
+
+TEST(GlassAbsorption, TraceCountsWhatTheGlassAbsorbs) {
+    // `lenslab trace`'s tree: the ray through both faces of 50 mm of N-SF57 at normal incidence
+    // keeps (1 - R)^2 tau_i of its power, and the summary's absorbed share holds the rest.
+    const Scene scene = parse_scene(R"({"camera": {"position": [0, 0, -100], "look_at": [0, 0, 0]},
+        "objects": [{"type": "box", "center": [0, 0, 0], "size": [40, 40, 50],
+                     "material": {"transparency": 1, "glass": "SCHOTT:N-SF57"}}]})");
+    const Glass& sf57 = *lookup_glass("SCHOTT:N-SF57").glass;
+    RayTreeOptions options;
+    options.wavelength_nm = 430;
+    const RayTree tree = trace_ray_tree(scene, {{0, 0, -60}, {0, 0, 1}}, options);
+    const double n = sf57.model->n(430), r = (n - 1) * (n - 1) / ((n + 1) * (n + 1));
+    const double tau = internal_transmittance(sf57.k_um, 430, 50);
+    const RayTreeNode& in = tree.root.children.at(1);  // reflected first, then refracted
+    ASSERT_EQ(in.event, Event::Refract);
+    const RayTreeNode& out = in.children.at(1);
+    ASSERT_EQ(out.event, Event::Refract);
+    EXPECT_NEAR(out.weight, (1 - r) * (1 - r) * tau, 1e-12);
+    EXPECT_NEAR(tree.escaped + tree.absorbed + tree.truncated, 1.0, 1e-12);
+    EXPECT_GT(tree.absorbed, 0.9 * (1 - r) * (1 - tau));
 }
 
 }  // namespace
