@@ -109,8 +109,10 @@ Action add_analyze_command(CLI::App& app) {
         "analyze",
         "Optical bench: focal lengths, aberrations and a ray diagram of the lenses on one axis");
     cmd->add_option("scene", args->scene, "Scene file (JSON); a camera is not needed")->required();
-    cmd->add_option("-w,--wavelength", args->wavelength_nm,
-                    "Vacuum wavelength in nm for the figures (default: the d line, 587.56 nm)")
+    cmd->add_option(
+           "-w,--wavelength", args->wavelength_nm,
+           "Wavelength in air in nm for the figures (default: the d line, 587.56 nm; in vacuum "
+           "for a scene with \"ambient\": \"vacuum\")")
         ->check(CLI::PositiveNumber);
     cmd->add_flag("--json", args->json, "Print the figures as JSON");
     cmd->add_option("--svg", args->svg, "Write a ray diagram (SVG) to this file");

@@ -1,6 +1,10 @@
 #include "cli_parse.h"
 
 #include <cmath>
+#include <iostream>
+
+#include "optics/glass_catalogue_file.h"
+#include "optics/user_glass_catalogues.h"
 
 namespace lenslab::cli {
 
@@ -43,6 +47,27 @@ CommandLine::CommandLine()
     m_commands = {{"render", add_render_command(m_app)},   {"trace", add_trace_command(m_app)},
                   {"bench", add_bench_command(m_app)},     {"glass", add_glass_command(m_app)},
                   {"analyze", add_analyze_command(m_app)}, {"detect", add_detect_command(m_app)}};
+    // A user's AGF glass catalogue for every command that reads a scene or looks up a glass.
+    for (const char* name : {"render", "trace", "glass", "analyze", "detect"}) {
+        m_app.get_subcommand(name)
+            ->add_option("--catalogue", m_catalogues,
+                         "A Zemax AGF glass catalogue whose glasses scenes and lookups may name "
+                         "(NAME or FILESTEM:NAME); repeat for several")
+            ->check(CLI::ExistingFile);
+    }
+    for (auto& [name, action] : m_commands) {
+        action = [this, inner = std::move(action)]() -> int {
+            for (const std::string& file : m_catalogues) {
+                try {
+                    load_user_glass_catalogue(file);
+                } catch (const GlassDataError& e) {
+                    std::cerr << "lenslab: error: --catalogue: " << e.what() << "\n";
+                    return 1;
+                }
+            }
+            return inner();
+        };
+    }
     check_every_option(m_app);
 }
 

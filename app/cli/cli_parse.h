@@ -29,6 +29,7 @@ public:
 private:
     CLI::App m_app;
     std::vector<std::pair<std::string, Action>> m_commands;  // by subcommand name
+    std::vector<std::string> m_catalogues;                   // --catalogue FILE, loaded first
 };
 
 }  // namespace lenslab::cli

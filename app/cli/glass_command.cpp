@@ -8,10 +8,14 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "optics/absorption.h"
 #include "optics/glass.h"
 #include "optics/glass_catalogue_file.h"
 #include "optics/glass_library.h"
+#include "optics/glass_map.h"
 #include "optics/glass_search.h"
+#include "render/image_io.h"
+#include "util/atomic_file.h"
 
 namespace lenslab::cli {
 
@@ -23,6 +27,7 @@ struct GlassArgs {
     bool json = false;
     bool all = false;
     std::string maker, nd, vd;
+    std::string map;  // --map FILE.svg or FILE.png
 };
 
 // "1.5:1.6" for --nd and --vd, refused at parse time with the option's name.
@@ -78,6 +83,25 @@ bool known_maker(const std::string& maker) {
     return !search_glasses(q).empty();
 }
 
+// The filtered glasses as the glass map, SVG or PNG by the file's extension.
+int draw_map(const GlassArgs& a, const std::vector<const Glass*>& found) {
+    const std::string ext = a.map.size() >= 4 ? a.map.substr(a.map.size() - 4) : std::string();
+    const bool svg = ext == ".svg" || ext == ".SVG", png = ext == ".png" || ext == ".PNG";
+    if (!svg && !png) {
+        std::cerr << "lenslab: error: --map: '" << a.map
+                  << "' must end in .svg or .png (the map's format)\n";
+        return 1;
+    }
+    if (svg) {
+        write_text_atomically(a.map, glass_map_svg(found));
+    } else {
+        write_png_image(glass_map_image(found), a.map);
+    }
+    std::printf("wrote %s: %zu glasses on the map (n_d against V_d)\n", a.map.c_str(),
+                glasses_on_map(found).size());
+    return 0;
+}
+
 int search_catalogues(const GlassArgs& a) {
     GlassQuery query;
     query.maker = a.maker;
@@ -95,6 +119,7 @@ int search_catalogues(const GlassArgs& a) {
         std::cerr << "lenslab: error: no glass matches the search\n";
         return 1;
     }
+    if (!a.map.empty()) return draw_map(a, found);
     if (a.json) {
         print_glass_json(found);
     } else {
@@ -123,6 +148,35 @@ int list_builtin(const GlassArgs& a) {
     return 0;
 }
 
+// Where `lenslab glass NAME` gives the internal transmittance through 10 mm, the thickness
+// the makers' data sheets print it for.
+constexpr double kTransmittanceWavelengthsNm[] = {400, 450, 500, 550, 600, 650, 700};
+constexpr double kTransmittanceThicknessMm = 10;
+
+nlohmann::ordered_json transmittance_json(const Glass& g) {
+    const auto& k = glass_k_data(g);
+    if (k.empty()) return nullptr;
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (double nm : kTransmittanceWavelengthsNm) {
+        list.push_back({{"wavelength_nm", nm},
+                        {"tau", internal_transmittance(k, nm, kTransmittanceThicknessMm)}});
+    }
+    return list;
+}
+
+void print_transmittance(const Glass& g) {
+    const auto& k = glass_k_data(g);
+    if (k.empty()) {
+        std::printf("internal transmittance: no absorption data (the glass does not absorb)\n");
+        return;
+    }
+    std::printf("internal transmittance through 10 mm:");
+    for (double nm : kTransmittanceWavelengthsNm) {
+        std::printf(" %g nm %.4f%s", nm, internal_transmittance(k, nm, kTransmittanceThicknessMm),
+                    nm == kTransmittanceWavelengthsNm[6] ? "\n" : ",");
+    }
+}
+
 int print_index(const GlassArgs& a) {
     const GlassLookup found = lookup_glass(a.name);
     if (!found.glass) {
@@ -143,12 +197,14 @@ int print_index(const GlassArgs& a) {
                                        {"wavelength_nm", a.wavelength_nm},
                                        {"n", m.n(a.wavelength_nm)},
                                        {"n_d", m.n_d()},
-                                       {"V_d", m.abbe_number()}};
+                                       {"V_d", m.abbe_number()},
+                                       {"transmittance_10mm", transmittance_json(*g)}};
         std::cout << j.dump(2) << "\n";
     } else {
         std::printf("%s at %g nm: n = %.6f\nn_d = %.5f, V_d = %.2f (%s; source: %s)\n",
                     glass_label(*g).c_str(), a.wavelength_nm, m.n(a.wavelength_nm), m.n_d(),
                     m.abbe_number(), m.describe().c_str(), g->source.c_str());
+        print_transmittance(*g);
     }
     return 0;
 }
@@ -156,7 +212,7 @@ int print_index(const GlassArgs& a) {
 int run(const GlassArgs& a) {
     try {
         if (!a.name.empty()) return print_index(a);
-        if (a.all || !a.maker.empty() || !a.nd.empty() || !a.vd.empty())
+        if (a.all || !a.map.empty() || !a.maker.empty() || !a.nd.empty() || !a.vd.empty())
             return search_catalogues(a);
         return list_builtin(a);
     } catch (const GlassDataError& e) {
@@ -177,10 +233,12 @@ Action add_glass_command(CLI::App& app) {
         "name", args->name,
         "Glass (e.g. N-BK7, or MAKER:NAME such as HIKARI:SF10); omit to list or search");
     cmd->add_option("-w,--wavelength", args->wavelength_nm,
-                    "Vacuum wavelength in nm (default: the d line, 587.56 nm)")
+                    "Wavelength in air in nm (default: the d line, 587.56 nm)")
         ->check(CLI::PositiveNumber);
     cmd->add_flag("--json", args->json,
-                  "Print {name, maker, wavelength_nm, n, n_d, V_d} as JSON; with a list or "
+                  "Print {name, maker, wavelength_nm, n, n_d, V_d, transmittance_10mm: "
+                  "[{wavelength_nm, tau}] or null} as JSON (tau: internal transmittance through "
+                  "10 mm, from the catalogue's k); with a list or "
                   "search, {count, glasses: [{name, maker, n_d, V_d, min_nm, max_nm}]}");
     CLI::Option* maker =
         cmd->add_option("--maker", args->maker,
@@ -193,7 +251,12 @@ Action add_glass_command(CLI::App& app) {
         cmd->add_option("--vd", args->vd, "Only glasses whose V_d is in MIN:MAX, e.g. 50:70")
             ->check(value_range_check());
     CLI::Option* all = cmd->add_flag("--all", args->all, "List every glass of every catalogue");
-    for (CLI::Option* search : {maker, nd, vd, all}) name->excludes(search);
+    CLI::Option* map = cmd->add_option(
+        "--map", args->map,
+        "Draw the glass map (n_d against V_d, V_d decreasing to the right, one colour per "
+        "maker) of the glasses --maker/--nd/--vd select (all without them) to FILE.svg or "
+        "FILE.png");
+    for (CLI::Option* search : {maker, nd, vd, all, map}) name->excludes(search);
     return [args] { return run(*args); };
 }
 

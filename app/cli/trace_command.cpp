@@ -58,8 +58,10 @@ Action add_trace_command(CLI::App& app) {
                     "Branches carrying less of the ray's power are dropped")
         ->check(CLI::Range(kMinBranchWeight, 1.0))
         ->capture_default_str();
-    cmd->add_option("-w,--wavelength", args->options.wavelength_nm,
-                    "Vacuum wavelength in nm for dispersive materials (default: the d line)")
+    cmd->add_option(
+           "-w,--wavelength", args->options.wavelength_nm,
+           "Wavelength in nm (in air; in vacuum for a scene with \"ambient\": \"vacuum\") for "
+           "dispersive materials (default: the d line)")
         ->check(CLI::Range(kLambdaMinNm, 2500.0))
         ->capture_default_str();
     return [args] { return run(*args); };

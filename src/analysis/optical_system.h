@@ -59,7 +59,7 @@ struct OpticalSystem {
     std::vector<std::string> ignored;
 
     double last_vertex() const { return surfaces.back().z; }
-    // Refractive index of the medium in front of / behind surface i at a vacuum wavelength.
+    // Refractive index of the medium in front of / behind surface i at a wavelength (in air).
     double n_before(size_t i, double nm) const;
     double n_after(size_t i, double nm) const;
     // Largest semi-diameter of any element: the scale of the system across the axis.

@@ -17,7 +17,7 @@ public:
     void follow(RayTreeNode& parent, int depth) {
         const Vec3 origin = parent.to.value_or(parent.from);
         const Ray ray{origin, parent.direction};
-        const double w = parent.weight;
+        double w = parent.weight;
         Interaction it;
         if (!next_interaction(m_scene, ray, m_options.wavelength_nm, it)) {
             parent.children.push_back(
@@ -25,6 +25,10 @@ public:
             m_tree.escaped += w;
             return;
         }
+        // Light absorbed inside glass on the way here (Beer-Lambert) counts as absorbed.
+        const double kept = segment_transmittance(it, ray.direction, m_options.wavelength_nm);
+        m_tree.absorbed += w * (1.0 - kept);
+        w *= kept;
         const Vec3& p = it.point();
         const int object = it.hit.object;
         const Scattering& s = it.scattering;

@@ -13,7 +13,8 @@
 namespace lenslab {
 
 // One event: the light went from `from` to `to`, met `object`, did `event` there and left
-// along `direction` carrying `weight` (fraction of the traced ray's power). At a dielectric
+// along `direction` carrying `weight` (fraction of the traced ray's power, after what glass
+// with absorption data took on the way: RayTree::absorbed counts it). At a dielectric
 // the ray splits: the reflected and the refracted branch are siblings with the same segment.
 // The root is the start of the ray (event "start", from = to = origin).
 struct RayTreeNode {
@@ -30,7 +31,7 @@ struct RayTreeNode {
 struct RayTreeOptions {
     int max_depth = 16;               // specular bounces followed along any one path
     double min_weight = 1e-3;         // branches carrying less are dropped (counted as truncated)
-    double wavelength_nm = 587.5618;  // vacuum wavelength traced (default: the d line)
+    double wavelength_nm = 587.5618;  // wavelength traced, in air (default: the d line)
 };
 
 struct RayTree {

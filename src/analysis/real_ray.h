@@ -23,7 +23,7 @@ struct RealRay {
     const Vec3& exit_point() const { return points.back(); }
 };
 
-// Traces `ray` (system coordinates, unit direction with d.z > 0) at a vacuum wavelength.
+// Traces `ray` (system coordinates, unit direction with d.z > 0) at a wavelength (in air).
 RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double wavelength_nm);
 
 // Where a ray leaving along `direction` from `point` crosses the plane z = z_plane (x, y).

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "optics/air_index.h"
+
 namespace lenslab {
 
 namespace {
@@ -121,7 +123,10 @@ const std::vector<Glass>& glass_catalogue() {
                      1.48656, 84.47});
         // I. H. Malitson, "Interspecimen comparison of the refractive index of fused silica",
         // J. Opt. Soc. Am. 55, 1205 (1965): Sellmeier with C_i = (0.0684043, 0.1162414,
-        // 9.896161 um)^2, 0.21 to 3.71 um; n_d 1.45846, V_d 67.82 as tabulated there.
+        // 9.896161 um)^2, 0.21 to 3.71 um; n_d 1.45846, V_d 67.82 as tabulated there. Kept as
+        // it is, relative to air: the makers' air-relative data agree with it (Corning 7980,
+        // Heraeus Suprasil: n_d 1.4585; Crystran 1.45804 at 600 nm), and a vacuum-to-air
+        // conversion would move n_d by -4e-4, away from them.
         g.push_back({"fused-silica", "fused silica (SiO2 glass)", "Malitson, JOSA 55, 1205 (1965)",
                      with_range(sellmeier_index({0.6961663, 0.4079426, 0.8974794},
                                                 {0.0684043 * 0.0684043, 0.1162414 * 0.1162414,
@@ -130,14 +135,18 @@ const std::vector<Glass>& glass_catalogue() {
                      1.45846, 67.82});
         // M. Daimon, A. Masumura, "Measurement of the refractive index of distilled water
         // from the near-infrared region to the ultraviolet region", Appl. Opt. 46, 3811
-        // (2007), four-term Sellmeier at 20 degC, 0.182 to 1.129 um. Reference values: the
-        // CRC Handbook gives n_D = 1.333 at 20 degC; V_d about 55.8.
+        // (2007), four-term Sellmeier at 20 degC, 0.182 to 1.129 um. Their index is absolute
+        // (against vacuum, at vacuum wavelengths): converted to standard air like every other
+        // material (air_index.h). Reference values: n_D = 1.33299 at 20 degC relative to air
+        // (Tilton & Taylor, J. Res. NBS 20, 419 (1938), the refractometers' calibration
+        // value); V_d about 55.8.
         g.push_back(
-            {"water", "distilled water at 20 degC", "Daimon & Masumura, Appl. Opt. 46, 3811 (2007)",
-             with_range(
+            {"water", "distilled water at 20 degC",
+             "Daimon & Masumura, Appl. Opt. 46, 3811 (2007), converted to air",
+             relative_to_air(with_range(
                  sellmeier_index({5.684027565e-1, 1.726177391e-1, 2.086189578e-2, 1.130748688e-1},
                                  {5.101829712e-3, 1.821153936e-2, 2.620722293e-2, 1.069792721e1}),
-                 182, 1129),
+                 182, 1129)),
              1.3330, 55.8});
         // F. Peter, "Uber Brechungsindizes und Absorptionskonstanten des Diamanten zwischen
         // 644 und 226 mu", Z. Phys. 15, 358 (1923): n^2 = 1 + 0.3306 l^2/(l^2 - 0.175^2)

@@ -15,7 +15,8 @@ inline constexpr double kLineD = 587.5618, kLineF = 486.1327, kLineC = 656.2725;
 class IndexModel {
 public:
     virtual ~IndexModel() = default;
-    // Refractive index at a vacuum wavelength in nm.
+    // Refractive index relative to standard air (20 degC, 1 atm) at a wavelength in air in
+    // nm, as glass catalogues give it (air_index.h; a scene with "ambient": "vacuum" converts).
     virtual double n(double nm) const = 0;
     // False only for a constant index: then refraction does not split wavelengths.
     virtual bool dispersive() const { return true; }

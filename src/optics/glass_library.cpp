@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "optics/glass_catalogue_file.h"
+#include "optics/user_glass_catalogues.h"
 #include "util/edit_distance.h"
 
 namespace lenslab {
@@ -88,6 +89,7 @@ GlassLookup lookup_glass(const std::string& name) {
     for (const Glass& g : glass_catalogue()) {
         if (upper_glass_name(g.name) == wanted) return {&g, {}};
     }
+    if (const Glass* user = find_user_glass(wanted)) return {user, {}};
     const size_t colon = wanted.find(':');
     if (colon != std::string::npos) {
         const std::string maker = wanted.substr(0, colon), glass = wanted.substr(colon + 1);
@@ -119,5 +121,19 @@ GlassLookup lookup_glass(const std::string& name) {
 }
 
 const Glass* find_glass(const std::string& name) { return lookup_glass(name).glass; }
+
+}  // namespace lenslab
+
+namespace lenslab {
+
+const std::vector<std::pair<double, double>>& glass_k_data(const Glass& g) {
+    if (!g.k_um.empty() || !g.maker.empty() || g.source.rfind("SCHOTT", 0) != 0) return g.k_um;
+    try {
+        if (const Glass* twin = lookup_glass("SCHOTT:" + g.name).glass) return twin->k_um;
+    } catch (const GlassDataError&) {
+        // Without the catalogue files the built-in glass keeps its index and is clear.
+    }
+    return g.k_um;
+}
 
 }  // namespace lenslab

@@ -23,10 +23,17 @@ struct GlassLookup {
 };
 
 // Names are matched ignoring case: a built-in material first (its name is kept for scenes
-// written before the catalogues), then a maker's glass whose name is unique across makers,
+// written before the catalogues), then a user catalogue's (user_glass_catalogues.h: NAME or
+// CATALOGUE:NAME), then a maker's glass whose name is unique across makers,
 // or "MAKER:NAME" for one maker's. An unknown name's error suggests the closest names; a name
 // several makers use lists the MAKER:NAME forms to choose from.
 GlassLookup lookup_glass(const std::string& name);
+
+// The glass's extinction coefficient k against wavelength (um): its own, or for a built-in
+// SCHOTT glass (N-BK7, N-SF11, ...) the SCHOTT catalogue's for the same name, so the short
+// name absorbs as the catalogue says. Empty when no data is known (or the catalogue files
+// cannot be read).
+const std::vector<std::pair<double, double>>& glass_k_data(const Glass& g);
 
 // "N-BK7 (SCHOTT)" for a maker's glass, the plain name for a built-in one.
 std::string glass_label(const Glass& g);

@@ -106,6 +106,8 @@ struct MapDeposit {
         return false;
     }
 
+    void attenuate(double t) { carry(t); }
+
     void carry(double w) {
         power = power * w;
         scale *= w;

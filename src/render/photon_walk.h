@@ -13,6 +13,7 @@
 //   diffuse_probability(it)  of the diffuse event in roulette
 //   diffuse(it, ray, p, depth, rng)  roulette chose it: false ends the path, true goes on
 //                          along `ray` (set by the policy)
+//   attenuate(t)           Beer-Lambert: it kept the fraction t of its power through glass
 //   scale, carry(w)        splitting only: its share of its light, and a branch keeping `w`
 // Each photon draws from its own random stream, so it takes the same path whoever traces it.
 
@@ -122,6 +123,12 @@ private:
         if (!next_interaction(m_scene, ray, nm, it)) return false;
         if (depth == 0 && !m_plan.counts(m_scene, m_photon->light, m_photon->aimed, it.hit.object))
             return false;
+        if (absorption_before(it, ray.direction)) {
+            // Absorption depends on wavelength: a photon still carrying the whole spectrum
+            // (emitted inside the glass) takes one first.
+            if (policy.lambda_nm == 0) policy.disperse(*m_rng);
+            policy.attenuate(segment_transmittance(it, ray.direction, policy.lambda_nm));
+        }
         policy.arrive(it, ray.direction, depth);
         if (policy.lambda_nm == 0 && it.scattering.dispersive) {
             // From here the path depends on wavelength: take one.

@@ -69,6 +69,8 @@ struct PassDeposit {
         hits.push_back(h);
     }
 
+    void attenuate(double t) { power *= t; }
+
     double diffuse_probability(const Interaction& it) const {
         return diffuse_continuation(it.scattering, *it.material);
     }

@@ -19,6 +19,15 @@ struct Interaction {
     const Vec3& normal() const { return hit.surface.normal; }  // outward
 };
 
+// The absorbing medium the ray crossed to reach the interaction along `d`: the solid it is
+// leaving, or the cemented neighbour it comes from; nullptr when that medium does not absorb
+// (air, a glass without k data), so clear glass costs two pointer tests per hit.
+const Absorption* absorption_before(const Interaction& it, const Vec3& d);
+
+// The Beer-Lambert fraction of light left after the segment that reached `it` along `d`, at
+// `lambda_nm`: 1 through a medium that does not absorb.
+double segment_transmittance(const Interaction& it, const Vec3& d, double lambda_nm);
+
 // How the interaction's surface splits light arriving along `d` at `lambda_nm`.
 Scattering scatter_at(const Interaction& it, const Vec3& d, double lambda_nm);
 

@@ -11,6 +11,7 @@
 
 #include <string>
 
+#include "optics/absorption.h"
 #include "optics/glass.h"
 #include "optics/rgb.h"
 #include "optics/spectrum.h"
@@ -24,6 +25,9 @@ struct Material {
     double specular = 0.0;
     IndexModelPtr index = constant_index(1.5);
     std::string glass;  // catalogue name when the index came from the catalogue
+    // Beer-Lambert attenuation of light inside, when the glass has k data; null (and free)
+    // otherwise. Set by the scene reader, which knows the scene's length unit.
+    AbsorptionPtr absorption;
     Rgb emission_color{1.0, 1.0, 1.0};
     double emission_intensity = 0.0;  // radiance scale, W m^-2 sr^-1
     SpectrumPtr emission_spectrum;  // set when the emission gives a spectrum, else from the colour

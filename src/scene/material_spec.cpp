@@ -23,7 +23,7 @@ ElementSpec declare_material() {
         number_param("ior", d.ior(kLineD))
             .above(0)
             .as_written("number, or a dispersion model")
-            .describe("refractive index of the inside, or a dispersion model")
+            .describe("refractive index of the inside (relative to the ambient medium), or a model")
             .in_editor("Refractive index"),
         nested_param(ParamKind::String, "glass").describe("a catalogue glass, e.g. N-BK7"),
         nested_param(ParamKind::Object, "emission").describe("light emitted by the surface"),

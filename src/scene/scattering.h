@@ -68,7 +68,7 @@ inline Vec3 sample_diffuse_direction(const Vec3& facing, Rng& rng) {
         sample_cosine_hemisphere(rng.uniform(), rng.uniform()));
 }
 
-// Medium around the objects: air, taken as vacuum-like n = 1.
+// Medium around the objects: air, n = 1 (indices are relative to it, as catalogues give them).
 inline constexpr double kOutsideIor = 1.0;
 
 // `d`: unit arriving direction; `outward_normal`: unit, out of the solid (for an open
@@ -76,8 +76,8 @@ inline constexpr double kOutsideIor = 1.0;
 // transparent surface is a thin pane: light passes straight through, and its two faces
 // reflect (R'_s + R'_p) / 2 of it, R' = 2R / (1 + R) per polarisation (incoherent multiple
 // reflections, Hecht section 9.7; absorption neglected).
-// The index is taken at `lambda_nm` (vacuum wavelength). `beyond` is the transparent solid
-// on the other side of a closed surface (a cemented element, Scene::medium_beyond), or
+// The index is taken at `lambda_nm` (in air; see optics/air_index.h). `beyond` is the transparent
+// solid on the other side of a closed surface (a cemented element, Scene::medium_beyond), or
 // nullptr for air: the interface then refracts by the ratio of the two glasses' indices.
 Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& outward_normal,
                    double lambda_nm, const Material* beyond = nullptr);

@@ -13,11 +13,13 @@
 #include <sstream>
 
 #include "scene/camera_spec.h"
+#include "scene/glass_catalogues_json.h"
 #include "scene/json_reader.h"
 #include "scene/lens_group_json.h"
 #include "scene/light_spec.h"
 #include "scene/limits.h"
 #include "scene/material_spec.h"
+#include "scene/medium_convention.h"
 #include "scene/mesh_json.h"
 #include "scene/object_types.h"
 #include "scene/planar_json.h"
@@ -266,11 +268,16 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
                       const SceneReadOptions& options) {
     JsonObjectReader r(root, "",
                        {"version", "description", "camera", "render", "materials", "objects",
-                        "lights", "atmosphere"});
+                        "lights", "atmosphere", "ambient", "length_unit_mm", "glass_catalogues"});
     const int version = r.integer("version", 1, 1, 1000);
     if (version != 1) throw SceneError("version", "this lenslab reads version 1 scene files");
     (void)r.string("description", "");
+    const SceneMediumConvention convention{
+        r.choice("ambient", "air", {"air", "vacuum"}) == "vacuum",
+        r.positive("length_unit_mm", 1.0)};
 
+    // Before the materials: they may name the catalogues' glasses.
+    if (const json* jc = r.find("glass_catalogues")) read_glass_catalogues(*jc, base_dir);
     Scene scene;
     if (options.require_camera || r.has("camera")) read_camera(r.require("camera"), scene.camera);
     if (const json* jr = r.find("render")) read_render(*jr, scene.render);
@@ -305,6 +312,7 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
         check_count(scene.objects.size(), kMaxObjects, "objects",
                     "objects (lens group elements counted one by one)");
     }
+    apply_medium_convention(convention, scene.materials);
     if (const json* jl = r.find("lights")) {
         SceneLights lights = lights_from_json(*jl);
         scene.point_lights = std::move(lights.points);

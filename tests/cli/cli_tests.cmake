@@ -431,3 +431,23 @@ lenslab_cli_test(NAME glass.bad.data_missing
     CHECKS -DEXPECT_EXIT=1 "-DSTDOUT_CONTAINS=polycarbonate    builtin"
            "-DSTDERR_LINE=lenslab: error: LENSLAB_GLASS_DATA=/nonexistent/glass: no schott.json there (it must name the folder holding the glass catalogues)")
 set_tests_properties(cli.glass.bad.data_missing PROPERTIES ENVIRONMENT LENSLAB_GLASS_DATA=/nonexistent/glass)
+
+# Issue 17: a user's AGF catalogue on the command line, and the internal transmittance.
+lenslab_cli_test(NAME glass.user_catalogue
+    ARGS glass MY-CROWN --catalogue tests/cli/data/user.agf
+    CHECKS "-DSTDOUT_CONTAINS=MY-CROWN (USER) at 587.562 nm: n = 1.516800")
+lenslab_cli_test(NAME glass.bad.catalogue_line
+    ARGS glass N-BK7 --catalogue tests/cli/data/bad.agf
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: --catalogue: tests/cli/data/bad.agf:2: a CD coefficient must be a number, got 'oops'")
+lenslab_cli_test(NAME glass.transmittance_json
+    ARGS glass SCHOTT:N-SF57 --json
+    CHECKS -DSTDOUT_JSON=ON -DJSON_KEYS=name,maker,wavelength_nm,n,n_d,V_d,transmittance_10mm
+           "-DSTDOUT_CONTAINS=\"wavelength_nm\": 400.0")
+set(glass_map_svg ${LENSLAB_CLI_OUT}/glass_map.svg)
+lenslab_cli_test(NAME glass.map_svg
+    ARGS glass --map ${glass_map_svg} --maker schott --nd 1.5:1.52 --vd 60:70
+    CHECKS -DOUTPUT=${glass_map_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg" "-DSTDOUT_CONTAINS=glasses on the map (n_d against V_d)")
+lenslab_cli_test(NAME glass.bad.map_extension
+    ARGS glass --map ${LENSLAB_CLI_OUT}/glass_map.jpg
+    CHECKS -DEXPECT_EXIT=1 "-DSTDERR_PREFIX=lenslab: error: --map:")

@@ -54,6 +54,11 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
             if (seen_from_camera && m_background) l += path.of(*m_background);
             break;
         }
+        if (absorption_before(it, ray.direction)) {
+            // Beer-Lambert depends on wavelength: only the hero goes on, dimmed by it.
+            path.disperse();
+            path *= segment_transmittance(it, ray.direction, path.hero_nm());
+        }
         if (it.scattering.dispersive) path.disperse();
         const Material& m = *it.material;
         const Vec3& p = it.point();

@@ -132,10 +132,14 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
             if (m_background) add(*m_background);
             break;
         }
-        if (!vp.dispersed && it.scattering.dispersive) {
+        // Beer-Lambert inside absorbing glass depends on wavelength, like a dispersive
+        // refraction: either leaves the pass wavelength alone on the path.
+        const bool absorbed_on_the_way = absorption_before(it, ray.direction) != nullptr;
+        if (!vp.dispersed && (it.scattering.dispersive || absorbed_on_the_way)) {
             vp.dispersed = true;
             it.scattering = scatter_at(it, ray.direction, pass.lambda_nm);
         }
+        if (absorbed_on_the_way) beta *= segment_transmittance(it, ray.direction, pass.lambda_nm);
         vp.path_length += it.hit.surface.t;
         const Material& m = *it.material;
         const Vec3& p = it.point();

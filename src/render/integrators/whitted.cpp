@@ -24,14 +24,20 @@ void WhittedIntegrator::add_diffuse_irradiance(LightSum& e, const Vec3& p, const
                           [&](const Spectrum& s, double factor) { e.add(s, factor); });
 }
 
-Rgb WhittedIntegrator::trace(const Ray& ray, int depth, double weight, const PathColour& path,
+Rgb WhittedIntegrator::trace(const Ray& ray, int depth, double weight, const PathColour& arriving,
                              Rng& rng) const {
     const Scene& scene = m_scene;
     Interaction it;
     // Refraction follows the hero wavelength; the others ride along until a dispersive
     // refraction splits them off.
-    if (!next_interaction(scene, ray, path.hero_nm(), it))
-        return m_background ? path.of(*m_background) : Rgb{};
+    if (!next_interaction(scene, ray, arriving.hero_nm(), it))
+        return m_background ? arriving.of(*m_background) : Rgb{};
+    PathColour path = arriving;
+    if (absorption_before(it, ray.direction)) {
+        // Beer-Lambert depends on wavelength: only the hero goes on, dimmed by it.
+        path.disperse();
+        path *= segment_transmittance(it, ray.direction, path.hero_nm());
+    }
     const Material& m = *it.material;
     const Vec3& p = it.point();
     const Vec3& n = it.normal();
