@@ -47,7 +47,8 @@ ImportedLens import_lens_file(const std::string& path, const std::string& name) 
                             "files (by their extension)");
     }
     const std::vector<std::string> lines = decode_lens_file_lines(read_lens_file_bytes(path), path);
-    const LensFilePrescription p = extension == ".ZMX" ? read_zmx(lines, path) : read_seq(lines, path);
+    const LensFilePrescription p =
+        extension == ".ZMX" ? read_zmx(lines, path) : read_seq(lines, path);
     ImportedLens lens = lens_group_from_prescription(p, name);
     check_imported_lens(lens, path);
     return lens;

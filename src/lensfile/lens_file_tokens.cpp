@@ -47,6 +47,16 @@ double lens_file_number(const std::string& word, const std::string& file, int li
     return value;
 }
 
+double lens_file_number_shifted(const std::string& word, int shift, const std::string& file,
+                                int line, const std::string& what) {
+    (void)lens_file_number(word, file, line, what);  // the word's own errors first
+    const size_t e = word.find_first_of("eE");
+    const int exponent = e == std::string::npos ? 0 : std::stoi(word.substr(e + 1));
+    std::string shifted = word.substr(0, e);
+    shifted.append("e").append(std::to_string(exponent + shift));
+    return lens_file_number(shifted, file, line, what);
+}
+
 std::string lens_file_upper(std::string word) {
     for (char& c : word) {
         if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');

@@ -68,6 +68,13 @@ private:
         return lens_file_number(m_words[i], m_file, m_line, m_words[0] + " " + what);
     }
 
+    // Zemax wavelengths are in um; read as nm by moving the decimal point, exactly.
+    double micrometres_as_nm(size_t i) const {
+        (void)number(i, "wavelength (um)");
+        return lens_file_number_shifted(m_words[i], 3, m_file, m_line,
+                                        m_words[0] + " wavelength (um)");
+    }
+
     LensFileSurface& surface() {
         if (m_lens.surfaces.empty()) refuse(m_words[0] + " before the first SURF");
         return m_lens.surfaces.back();
@@ -148,7 +155,7 @@ private:
         if (k == "WAVM") return wavelength();
         if (k == "WAVL") {
             for (size_t i = 1; i < m_words.size(); ++i)
-                m_lens.wavelengths_nm.push_back(1000.0 * number(i, "wavelength (um)"));
+                m_lens.wavelengths_nm.push_back(micrometres_as_nm(i));
             return;
         }
         if (k == "PWAV") {
@@ -246,11 +253,11 @@ private:
 
     void wavelength() {
         const int i = static_cast<int>(number(1, "wavelength number"));
-        const double um = number(2, "wavelength (um)");
+        const double nm = micrometres_as_nm(2);
         if (i < 1 || i > 48) refuse("WAVM: wavelength number " + std::to_string(i));
         auto& w = m_lens.wavelengths_nm;
         if (static_cast<int>(w.size()) < i) w.resize(i, 0.0);
-        w[i - 1] = 1000.0 * um;
+        w[i - 1] = nm;
     }
 
     void finish() {

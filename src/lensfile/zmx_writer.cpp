@@ -1,11 +1,13 @@
 #include "lensfile/zmx_writer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <functional>
 #include <set>
 #include <vector>
 
+#include "lensfile/lens_file_glass.h"
 #include "scene/scene_error.h"
 
 namespace lenslab {
@@ -30,6 +32,16 @@ double zmx_exact_preimage(double target, double guess,
     return guess;
 }
 
+// One surface as written: its shape, the distance after it, the glass after it.
+struct ZmxSurface {
+    json shape;
+    std::string path;
+    double after = 0;
+    std::string glass;
+    double semi_diameter = 0;
+    bool stop = false;
+};
+
 struct ZmxElement {
     std::string path;
     json front, back;  // back null: cemented to the next
@@ -52,7 +64,7 @@ public:
         line(out, "  TYPE STANDARD");
         line(out, "  CURV 0");
         line(out, "  DISZ INFINITY");
-        int n = 1;
+        std::vector<ZmxSurface> surfaces;
         for (size_t i = 0; i < m_elements.size(); ++i) {
             const ZmxElement& e = m_elements[i];
             double sd = 0.5 * e.diameter;
@@ -60,23 +72,22 @@ public:
             if (i > 0 && m_elements[i - 1].back.is_null()) {
                 sd = 0.5 * std::min(e.diameter, m_elements[i - 1].diameter);
             }
-            surface(out, n++, e.front, e.path + ".front", e.thickness, glass(e), sd);
+            surfaces.push_back({e.front, e.path + ".front", e.thickness, glass(e), sd, false});
             if (!e.back.is_null()) {
                 const double after = i + 1 < m_elements.size() ? e.gap : image_distance();
-                surface(out, n++, e.back, e.path + ".back", after, "", 0.5 * e.diameter);
+                surfaces.push_back({e.back, e.path + ".back", after, "", 0.5 * e.diameter, false});
             }
         }
-        line(out, "SURF " + std::to_string(n));
+        place_stop(surfaces);
+        for (size_t i = 0; i < surfaces.size(); ++i)
+            surface(out, static_cast<int>(i) + 1, surfaces[i]);
+        line(out, "SURF " + std::to_string(surfaces.size() + 1));
         line(out, "  TYPE STANDARD");
         line(out, "  CURV 0");
         line(out, "  DISZ 0");
-        std::string header;
         if (!m_makers.empty()) {
-            std::string gcat = "GCAT";
-            for (const std::string& m : m_makers) gcat += " " + m;
             // GCAT belongs with the system data, before the surfaces.
-            const size_t at = out.find("SURF 0");
-            out.insert(at, gcat + "\n");
+            out.insert(out.find("SURF 0"), catalogue_line() + "\n");
         }
         return out;
     }
@@ -143,7 +154,11 @@ private:
             std::string g = m["glass"].get<std::string>();
             const size_t colon = g.find(':');
             if (colon != std::string::npos) {
-                m_makers.insert(g.substr(0, colon));
+                const std::string maker = g.substr(0, colon);
+                if (std::find(m_makers.begin(), m_makers.end(), maker) == m_makers.end()) {
+                    m_makers.push_back(maker);
+                }
+                m_glasses.push_back({g.substr(colon + 1), g});
                 g = g.substr(colon + 1);
             }
             return g;
@@ -163,10 +178,12 @@ private:
                          "file has no glass for it");
     }
 
-    void surface(std::string& out, int n, const json& s, const std::string& path, double after,
-                 const std::string& glass_name, double sd) {
+    void surface(std::string& out, int n, const ZmxSurface& z) {
+        const json& s = z.shape;
+        const std::string& path = z.path;
         const std::string shape = s.value("shape", std::string());
         line(out, "SURF " + std::to_string(n));
+        if (z.stop) line(out, "  STOP");
         line(out, std::string("  TYPE ") + (shape == "asphere" ? "EVENASPH" : "STANDARD"));
         if (shape == "flat") {
             line(out, "  CURV 0");
@@ -188,9 +205,9 @@ private:
                               shortest_number_text(a[i].get<double>()));
             }
         }
-        line(out, "  DISZ " + shortest_number_text(after));
-        if (!glass_name.empty()) line(out, "  GLAS " + glass_name);
-        line(out, "  DIAM " + shortest_number_text(sd));
+        line(out, "  DISZ " + shortest_number_text(z.after));
+        if (!z.glass.empty()) line(out, "  GLAS " + z.glass);
+        line(out, "  DIAM " + shortest_number_text(z.semi_diameter));
     }
 
     void system_data(std::string& out) {
@@ -243,10 +260,73 @@ private:
         if (!waves.empty()) line(out, "PWAV " + std::to_string(primary));
     }
 
+    // GCAT with the makers in an order under which every glass name reads back as the same
+    // maker's glass (SF2 is a SCHOTT and a HIKARI glass): the reader tries them in order.
+    std::string catalogue_line() {
+        std::vector<std::string> order = m_makers;
+        const auto reads_back = [&](const std::vector<std::string>& makers) {
+            std::vector<LensFileWarning> ignored;
+            for (const auto& [name, full] : m_glasses) {
+                try {
+                    if (resolve_lens_file_glass(name, makers, "", 0, ignored) != full) return false;
+                } catch (const LensFileError&) {
+                    return false;
+                }
+            }
+            return true;
+        };
+        std::vector<std::string> sorted = order;
+        std::sort(sorted.begin(), sorted.end());
+        if (!reads_back(order)) {
+            do {
+                if (reads_back(sorted)) {
+                    order = sorted;
+                    break;
+                }
+            } while (std::next_permutation(sorted.begin(), sorted.end()));
+        }
+        std::string text = "GCAT";
+        for (const std::string& m : order) text.append(" ").append(m);
+        return text;
+    }
+
+    // The stop of the bench data, where the reader will find it again: on a surface at its
+    // position, else a flat surface of its own before the lens or in an air space, the space
+    // split so that both the stop's position and the space read back as the same numbers.
+    void place_stop(std::vector<ZmxSurface>& surfaces) const {
+        if (!m_bench.is_object() || !m_bench.contains("stop_position")) return;
+        const double at = m_bench["stop_position"].get<double>();
+        const double sd = m_bench.value("stop_semi_diameter", 0.0);
+        ZmxSurface stop{json{{"shape", "flat"}}, "bench.stop_position", 0, "", sd, true};
+        if (at < 0) {
+            stop.after = -at;
+            surfaces.insert(surfaces.begin(), stop);
+            return;
+        }
+        double z = 0;  // as the reader sums the thicknesses
+        for (size_t i = 0; i < surfaces.size(); ++i) {
+            if (z == at) {
+                surfaces[i].stop = true;
+                return;
+            }
+            const double next = z + surfaces[i].after;
+            if (surfaces[i].glass.empty() && at > z && (at < next || i + 1 == surfaces.size())) {
+                const double space = surfaces[i].after;
+                const double a = zmx_exact_preimage(at, at - z, [z](double x) { return z + x; });
+                stop.after = zmx_exact_preimage(space, space - a, [a](double x) { return a + x; });
+                surfaces[i].after = a;
+                surfaces.insert(surfaces.begin() + static_cast<long>(i) + 1, stop);
+                return;
+            }
+            z = next;
+        }
+    }
+
     const json& m_materials;
     const json& m_bench;
     std::vector<ZmxElement> m_elements;
-    std::set<std::string> m_makers;
+    std::vector<std::string> m_makers;  // in the order the glasses name them
+    std::vector<std::pair<std::string, std::string>> m_glasses;  // GLAS name, MAKER:NAME
 };
 
 }  // namespace

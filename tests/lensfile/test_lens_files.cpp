@@ -12,10 +12,10 @@
 //   clear semi-apertures 14.7, 10.8, 11.6, stop 10.3; EFL 101.181.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "analysis/optical_system.h"
 #include "analysis/paraxial.h"
