@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "lensfile/lens_file_glass.h"
+#include "optics/glass.h"
+#include "optics/glass_library.h"
 
 namespace lenslab {
 
@@ -19,11 +22,13 @@ std::string prescription_surface_label(size_t i) { return "surface " + std::to_s
 
 class GroupBuilder {
 public:
-    GroupBuilder(const LensFilePrescription& p) : m_p(p), m_s(p.surfaces), m_mm(p.unit_mm) {}
+    explicit GroupBuilder(const LensFilePrescription& p)
+        : m_p(p), m_s(p.surfaces), m_mm(p.unit_mm) {}
 
     ImportedLens build(const std::string& name) {
         check_ends();
         ImportedLens out;
+        estimate_semi_diameters(out.warnings);
         ordered_json elements = ordered_json::array();
         double group_diameter = 0.0;
         // Axial positions (mm) of the surfaces from surface 1, for the stop's place.
@@ -46,7 +51,7 @@ public:
                 refuse(front.line, prescription_surface_label(i) + ": a glass thickness of " +
                                        number_text(front.thickness) + " (must be > 0)");
             }
-            const double sd = std::max(front.semi_diameter, back.semi_diameter) * m_mm;
+            const double sd = std::max(semi_diameter(i), semi_diameter(i + 1)) * m_mm;
             if (!(sd > 0.0)) {
                 refuse(front.line, "the element from " + prescription_surface_label(i) + " to " +
                                        prescription_surface_label(i + 1) +
@@ -131,6 +136,76 @@ private:
                 refuse(m_s[i].line, prescription_surface_label(i) + ": an infinite thickness");
             }
         }
+    }
+
+    // The index after surface j at the primary wavelength (air: 1).
+    double index_after(size_t j) const {
+        const LensFileSurface& s = m_s[j];
+        if (s.glass.empty()) return s.model_nd > 0.0 ? s.model_nd : 1.0;
+        std::vector<LensFileWarning> ignored;
+        const std::string name =
+            resolve_lens_file_glass(s.glass, m_p.catalogues, m_p.file, s.glass_line, ignored);
+        const double nm =
+            m_p.wavelengths_nm.empty() ? kLineD : m_p.wavelengths_nm[m_p.primary_wavelength];
+        return lookup_glass(name).glass->model->n(nm);
+    }
+
+    // CODE V files often give no semi-apertures (CODE V finds them from the pupil, the fields
+    // and the vignetting factors). Where none is given and the entrance pupil is, each surface
+    // gets the largest height of the paraxial rim rays of every field (chief ray plus or minus
+    // the marginal ray, cut by VUY and VLY), the usual first estimate of a clear aperture.
+    void estimate_semi_diameters(std::vector<LensFileWarning>& warnings) {
+        const size_t image = m_s.size() - 1;
+        bool missing = false;
+        for (size_t j = 1; j < image; ++j) missing = missing || m_s[j].semi_diameter == 0.0;
+        if (!missing || m_p.aperture_type != "entrance_pupil_diameter" || !(m_p.aperture > 0)) {
+            return;
+        }
+        // Two rays from surface 1: A at the pupil's rim parallel to the axis, B through the
+        // vertex at unit slope; the chief ray is the mix of them that crosses the stop's centre.
+        std::vector<double> ya(m_s.size()), yb(m_s.size());
+        double a_y = 0.5 * m_p.aperture, a_u = 0.0, b_y = 0.0, b_u = 1.0, n = 1.0;
+        size_t stop = 1;
+        for (size_t j = 1; j < image; ++j) {
+            if (m_s[j].stop) stop = j;
+            ya[j] = a_y, yb[j] = b_y;
+            const double c = m_s[j].radius == 0.0 ? 0.0 : 1.0 / m_s[j].radius;
+            const double n2 = index_after(j);
+            a_u = (n * a_u - a_y * c * (n2 - n)) / n2;
+            b_u = (n * b_u - b_y * c * (n2 - n)) / n2;
+            n = n2;
+            a_y += a_u * m_s[j].thickness;
+            b_y += b_u * m_s[j].thickness;
+        }
+        // Each y field's beam: its chief ray, and its rim rays cut by the vignetting factors.
+        std::vector<double> angles = {0.0};
+        if (m_p.field_type == "angle") angles = m_p.fields_y.empty() ? angles : m_p.fields_y;
+        double largest = 0.0;
+        for (size_t j = 1; j < image; ++j) {
+            if (m_s[j].semi_diameter != 0.0) continue;
+            double sd = std::abs(ya[j]);
+            for (size_t f = 0; f < angles.size(); ++f) {
+                const double beta = std::tan(angles[f] * 3.14159265358979323846 / 180.0);
+                const double alpha = ya[stop] != 0.0 ? -beta * yb[stop] / ya[stop] : 0.0;
+                const double chief = alpha * ya[j] + beta * yb[j];
+                const double up = f < m_p.vignetting_upper.size() ? m_p.vignetting_upper[f] : 0.0;
+                const double low = f < m_p.vignetting_lower.size() ? m_p.vignetting_lower[f] : 0.0;
+                sd = std::max({sd, std::abs(chief + (1.0 - up) * ya[j]),
+                               std::abs(chief - (1.0 - low) * ya[j])});
+                largest = std::max(largest, std::abs(angles[f]));
+            }
+            m_s_estimate[j] = sd;
+        }
+        warnings.push_back({0,
+                            "no semi-apertures given: each surface's is the largest height of "
+                            "the paraxial rim rays (entrance pupil " +
+                                number_text(m_p.aperture) + ", fields up to " +
+                                number_text(largest) + " degrees, vignetting as given)"});
+    }
+
+    double semi_diameter(size_t j) const {
+        const auto it = m_s_estimate.find(j);
+        return it != m_s_estimate.end() ? it->second : m_s[j].semi_diameter;
     }
 
     // A surface with air on both sides bends no light: left out, said when it is not flat.
@@ -235,7 +310,7 @@ private:
         for (size_t j = 1; j + 1 < m_s.size(); ++j) {
             if (!m_s[j].stop) continue;
             out["stop_position"] = z[j] - z[first];
-            out["stop_semi_diameter"] = m_s[j].semi_diameter * m_mm;
+            out["stop_semi_diameter"] = semi_diameter(j) * m_mm;
         }
         if (b.contains("image_distance")) out["image_distance"] = b["image_distance"];
         b = out;
@@ -244,6 +319,7 @@ private:
     const LensFilePrescription& m_p;
     const std::vector<LensFileSurface>& m_s;
     double m_mm;
+    std::map<size_t, double> m_s_estimate;  // estimated semi-diameters, in the file's unit
 };
 
 }  // namespace

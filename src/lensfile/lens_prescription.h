@@ -38,6 +38,9 @@ struct LensFilePrescription {
     // "angle" (degrees), "object_height", "paraxial_image_height", "real_image_height".
     std::string field_type = "angle";
     std::vector<double> fields_x, fields_y;
+    // CODE V's vignetting factors per y field (VUY, VLY): the fraction of the pupil cut off at
+    // the top and the bottom; empty: none.
+    std::vector<double> vignetting_upper, vignetting_lower;
     // "entrance_pupil_diameter", "f_number" (image space), "object_na"; empty: none given.
     std::string aperture_type;
     double aperture = 0.0;

@@ -13,9 +13,9 @@ namespace {
 // lens: understood, and passed over.
 const std::set<std::string>& seq_session_commands() {
     static const std::set<std::string> commands = {
-        "LEN", "INI", "WTW", "WTF", "VUY", "VLY", "VUX", "VLX", "CCY", "THC", "GLC", "PIM",
-        "GO",  "SPH", "CON", "ASP", "END", "DES", "DER", "PUX", "PUY", "PUI", "PCX", "PCY",
-        "PCI", "SEL", "CCX", "CCK", "CCA", "CCB", "CCC", "CCD", "CCE", "CCF", "CCG", "TEL"};
+        "LEN", "INI", "WTW", "WTF", "VUX", "VLX", "CCY", "THC", "GLC", "PIM", "GO",  "SPH",
+        "CON", "ASP", "END", "DES", "DER", "PUX", "PUY", "PUI", "PCX", "PCY", "PCI", "SEL",
+        "CCX", "CCK", "CCA", "CCB", "CCC", "CCD", "CCE", "CCF", "CCG", "TEL"};
     return commands;
 }
 
@@ -211,6 +211,10 @@ private:
                                 : c == "YOB" ? "object_height"
                                              : "paraxial_image_height";
             m_lens.fields_y = numbers("field");
+            return;
+        }
+        if (c == "VUY" || c == "VLY") {
+            (c == "VUY" ? m_lens.vignetting_upper : m_lens.vignetting_lower) = numbers("factor");
             return;
         }
         if (c == "XAN" || c == "XOB" || c == "XIM") {

@@ -281,5 +281,17 @@ TEST(LensFiles, LinesNotUnderstoodAreWarningsWithTheirLine) {
     EXPECT_EQ(seq.warnings[1].line, 7);
 }
 
+TEST(LensFiles, MissingSemiAperturesComeFromTheParaxialMarginalRay) {
+    // The triplet's first element with the stop on its back face and no CIR: the stop's
+    // semi-aperture is the marginal ray's height there. Smith (p. 119) traces the paraxial
+    // marginal ray at y = 14.6 and finds 13.724943 at surface 2 (slope -0.148315, n_d 1.61272).
+    const ImportedLens lens = lens_from_text(
+        "EPD 29.2\nWL 587.5618\nS 37.40 5.90 SK4_SCHOTT\nS -341.48 12.93\n  STO\nSI 0 0\n", "seq");
+    EXPECT_NEAR(lens.bench["stop_semi_diameter"].get<double>(), 13.724943, 2e-5);
+    EXPECT_DOUBLE_EQ(lens.group["elements"][0]["diameter"].get<double>(), 29.2);
+    ASSERT_EQ(lens.warnings.size(), 1u);
+    EXPECT_EQ(lens.warnings[0].message.rfind("no semi-apertures given", 0), 0u);
+}
+
 }  // namespace
 }  // namespace lenslab
