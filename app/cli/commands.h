@@ -31,5 +31,7 @@ Action add_bench_povray_command(CLI::App& bench);
 Action add_glass_command(CLI::App& app);
 Action add_analyze_command(CLI::App& app);
 Action add_detect_command(CLI::App& app);
+Action add_import_command(CLI::App& app);
+Action add_export_command(CLI::App& app);
 
 }  // namespace lenslab::cli

@@ -168,6 +168,9 @@ std::string unknown_object_type_message(const std::string& name) {
         names.push_back(e.name);
         known += (known.empty() ? "" : ", ") + e.name;
     }
+    // Read by scene_from_json beside lens_group (a file's lens, not a declared shape).
+    names.push_back("lens_file");
+    known += ", lens_file";
     const std::string best = closest_match(name, names);
     return "unknown object type '" + name + "' (known: " + known +
            (best.empty() ? "" : "; did you mean '" + best + "'?") + ")";

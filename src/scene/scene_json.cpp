@@ -15,6 +15,7 @@
 #include "scene/camera_spec.h"
 #include "scene/glass_catalogues_json.h"
 #include "scene/json_reader.h"
+#include "scene/lens_file_json.h"
 #include "scene/lens_group_json.h"
 #include "scene/light_spec.h"
 #include "scene/limits.h"
@@ -268,13 +269,19 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
                       const SceneReadOptions& options) {
     JsonObjectReader r(root, "",
                        {"version", "description", "camera", "render", "materials", "objects",
-                        "lights", "atmosphere", "ambient", "length_unit_mm", "glass_catalogues"});
+                        "lights", "atmosphere", "ambient", "length_unit_mm", "glass_catalogues",
+                        "bench"});
     const int version = r.integer("version", 1, 1, 1000);
     if (version != 1) throw SceneError("version", "this lenslab reads version 1 scene files");
     (void)r.string("description", "");
     const SceneMediumConvention convention{
         r.choice("ambient", "air", {"air", "vacuum"}) == "vacuum",
         r.positive("length_unit_mm", 1.0)};
+    // The system data of an imported lens file (wavelengths, fields, aperture), kept for
+    // `lenslab export`; nothing here reads them.
+    if (const json* b = r.find("bench"); b && !b->is_object()) {
+        throw SceneError("bench", "must be an object (the system data of an imported lens file)");
+    }
 
     // Before the materials: they may name the catalogues' glasses.
     if (const json* jc = r.find("glass_catalogues")) read_glass_catalogues(*jc, base_dir);
@@ -292,13 +299,17 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
         check_count(jo->size(), kMaxObjects, "objects", "objects");
         for (size_t i = 0; i < jo->size(); ++i) {
             const std::string path = index_path("objects", i);
-            if (peek_type((*jo)[i], path) == "lens_group") {
+            const std::string type = peek_type((*jo)[i], path);
+            if (type == "lens_group" || type == "lens_file") {
+                const json group = type == "lens_file"
+                                       ? lens_group_from_lens_file((*jo)[i], path, base_dir)
+                                       : (*jo)[i];
                 const auto material = [&](JsonObjectReader& element, const std::string& owner) {
                     const int m = read_material_ref(element, owner, by_name, scene.materials);
                     check_not_emitting(element, scene.materials[m]);
                     return m;
                 };
-                for (SceneObject& o : read_lens_group((*jo)[i], path, material)) {
+                for (SceneObject& o : read_lens_group(group, path, material)) {
                     o.source = static_cast<int>(i);
                     scene.objects.push_back(std::move(o));
                 }

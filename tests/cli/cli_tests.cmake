@@ -451,3 +451,27 @@ lenslab_cli_test(NAME glass.map_svg
 lenslab_cli_test(NAME glass.bad.map_extension
     ARGS glass --map ${LENSLAB_CLI_OUT}/glass_map.jpg
     CHECKS -DEXPECT_EXIT=1 "-DSTDERR_PREFIX=lenslab: error: --map:")
+# `import` and `export`: lens files in and out (tests/lensfile has the numbers).
+set(lensfile_data tests/lensfile/data)
+set(import_out ${LENSLAB_CLI_OUT}/AC254-100-A.json)
+lenslab_cli_test(NAME import.zmx
+    ARGS import ${lensfile_data}/AC254-100-A.zmx -o ${import_out}
+    CHECKS -DEXPECT_EXIT=zero
+           "-DSTDERR_CONTAINS=2 element(s) from ${lensfile_data}/AC254-100-A.zmx written to ${import_out}"
+           -DOUTPUT=${import_out} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS={")
+lenslab_cli_test(NAME import.seq_to_stdout
+    ARGS import ${lensfile_data}/cooke_triplet.seq
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DSTDOUT_CONTAINS=\"glass\": \"SCHOTT:SF2\"")
+lenslab_cli_test(NAME import.bad.unknown_surface_type
+    ARGS import ${lensfile_data}/bad_unknown_surface.zmx -o ${LENSLAB_CLI_OUT}/bad_surface.json
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: ${lensfile_data}/bad_unknown_surface.zmx:14: surface type 'TOROIDAL' cannot be represented (lenslab reads STANDARD, EVENASPH and COORDBRK)"
+           -DOUTPUT=${LENSLAB_CLI_OUT}/bad_surface.json -DOUTPUT_CREATED=OFF)
+lenslab_cli_test(NAME analyze.lens_file
+    ARGS analyze ${lensfile_data}/triplet_scene.json
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=3 lenses, 6 surfaces on one axis")
+set(export_out ${LENSLAB_CLI_OUT}/triplet.zmx)
+lenslab_cli_test(NAME export.zmx
+    ARGS export ${lensfile_data}/cooke_triplet.json --object triplet -o ${export_out}
+    CHECKS -DEXPECT_EXIT=zero "-DSTDERR_CONTAINS=triplet written to ${export_out}"
+           -DOUTPUT=${export_out} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=MODE SEQ")

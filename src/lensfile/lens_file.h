@@ -1,0 +1,25 @@
+#pragma once
+// Lens files in, lens files out: a Zemax .zmx or CODE V .seq file read as a lens_group (by
+// its extension), checked as the scene reader checks a lens_group; and a lens_group written
+// back as a .zmx file.
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "lensfile/lens_group_from_prescription.h"
+
+namespace lenslab {
+
+// Reads the lens file at `path` (.zmx or .seq, any case) into a lens_group named `name`, and
+// checks it builds (a surface crossing its neighbour is refused with the element's line).
+// Throws LensFileError.
+ImportedLens import_lens_file(const std::string& path, const std::string& name);
+
+// The scene fragment `lenslab import` writes: the lens_group at the origin along +z, and the
+// file's system data under "bench".
+nlohmann::ordered_json imported_scene_json(const ImportedLens& lens, const std::string& path);
+
+// "FILE:LINE: warning: message" lines, one per warning.
+std::string lens_file_warnings_text(const ImportedLens& lens, const std::string& path);
+
+}  // namespace lenslab

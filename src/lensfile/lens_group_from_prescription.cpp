@@ -1,0 +1,331 @@
+#include "lensfile/lens_group_from_prescription.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "lensfile/lens_file_glass.h"
+#include "optics/glass.h"
+#include "optics/glass_library.h"
+
+namespace lenslab {
+
+namespace {
+
+using nlohmann::ordered_json;
+
+bool prescription_has_glass(const LensFileSurface& s) {
+    return !s.glass.empty() || s.model_nd > 0.0;
+}
+
+std::string prescription_surface_label(size_t i) { return "surface " + std::to_string(i); }
+
+class GroupBuilder {
+public:
+    explicit GroupBuilder(const LensFilePrescription& p)
+        : m_p(p), m_s(p.surfaces), m_mm(p.unit_mm) {}
+
+    ImportedLens build(const std::string& name) {
+        check_ends();
+        ImportedLens out;
+        estimate_semi_diameters(out.warnings);
+        ordered_json elements = ordered_json::array();
+        double group_diameter = 0.0;
+        // Axial positions (mm) of the surfaces from surface 1, for the stop's place.
+        std::vector<double> z(m_s.size(), 0.0);
+        for (size_t i = 2; i + 1 < m_s.size(); ++i) z[i] = z[i - 1] + m_s[i - 1].thickness * m_mm;
+        const size_t image = m_s.size() - 1;
+        size_t first = 0, last_back = 0;
+        for (size_t i = 1; i < image; ++i) {
+            if (!prescription_has_glass(m_s[i])) continue;
+            if (!first) first = i;
+            const LensFileSurface& front = m_s[i];
+            const LensFileSurface& back = m_s[i + 1];
+            if (i + 1 == image) {
+                refuse(front.glass_line ? front.glass_line : front.line,
+                       "the glass after " + prescription_surface_label(i) +
+                           " runs to the image surface: the file is cut short, or the lens has "
+                           "no last surface");
+            }
+            if (!(front.thickness > 0.0)) {
+                refuse(front.line, prescription_surface_label(i) + ": a glass thickness of " +
+                                       number_text(front.thickness) + " (must be > 0)");
+            }
+            const double sd = std::max(semi_diameter(i), semi_diameter(i + 1)) * m_mm;
+            if (!(sd > 0.0)) {
+                refuse(front.line, "the element from " + prescription_surface_label(i) + " to " +
+                                       prescription_surface_label(i + 1) +
+                                       " has no semi-diameter (Zemax DIAM, CODE V CIR)");
+            }
+            check_span(i, sd);
+            check_span(i + 1, sd);
+            ordered_json e;
+            e["front"] = surface_json(i);
+            e["thickness"] = front.thickness * m_mm;
+            e["diameter"] = 2.0 * sd;
+            group_diameter = std::max(group_diameter, 2.0 * sd);
+            e["material"] = material_json(front, out.warnings);
+            if (!prescription_has_glass(back)) {
+                e["back"] = surface_json(i + 1);
+                // The air to the next glass, through any surfaces in air between.
+                size_t next = i + 1;
+                double gap = 0.0;
+                while (next < image && !prescription_has_glass(m_s[next])) {
+                    gap += m_s[next].thickness * m_mm;
+                    if (next > i + 1) in_air(next, out.warnings);
+                    ++next;
+                }
+                if (next < image) {
+                    if (!(gap > 0.0)) {
+                        refuse(m_s[i + 1].line, "an air space of " + number_text(gap) + " after " +
+                                                    prescription_surface_label(i + 1) +
+                                                    " (must be > 0)");
+                    }
+                    e["gap"] = gap;
+                } else {
+                    last_back = i + 1;
+                    out.bench["image_distance"] = gap;
+                }
+            }
+            elements.push_back(e);
+            out.element_lines.push_back(front.line);
+        }
+        if (!first) refuse(0, "no glass between the object and the image: no lens to import");
+        for (size_t j = 1; j < first; ++j) in_air(j, out.warnings);
+        (void)last_back;
+
+        out.group["name"] = name;
+        out.group["type"] = "lens_group";
+        out.group["diameter"] = group_diameter;
+        out.group["elements"] = elements;
+        bench(out.bench, z, first);
+        out.warnings.insert(out.warnings.begin(), m_p.warnings.begin(), m_p.warnings.end());
+        std::stable_sort(
+            out.warnings.begin(), out.warnings.end(),
+            [](const LensFileWarning& a, const LensFileWarning& b) { return a.line < b.line; });
+        return out;
+    }
+
+private:
+    [[noreturn]] void refuse(int line, const std::string& reason) const {
+        throw LensFileError(m_p.file, line, reason);
+    }
+
+    static std::string number_text(double v) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.10g", v);
+        return text;
+    }
+
+    void check_ends() const {
+        if (m_s.size() < 3) {
+            refuse(0, "only " + std::to_string(m_s.size()) +
+                          " surface(s): a lens file lists the object, the lens surfaces and the "
+                          "image (the file is cut short?)");
+        }
+        if (prescription_has_glass(m_s[0])) {
+            refuse(m_s[0].glass_line, "the object space is glass; a lens_group stands in air");
+        }
+        const LensFileSurface& image = m_s.back();
+        if (prescription_has_glass(image)) {
+            refuse(image.glass_line,
+                   "the last surface has glass after it: the file is cut short (no image surface)");
+        }
+        for (size_t i = 1; i + 1 < m_s.size(); ++i) {
+            if (!std::isfinite(m_s[i].thickness)) {
+                refuse(m_s[i].line, prescription_surface_label(i) + ": an infinite thickness");
+            }
+        }
+    }
+
+    // The index after surface j at the primary wavelength (air: 1).
+    double index_after(size_t j) const {
+        const LensFileSurface& s = m_s[j];
+        if (s.glass.empty()) return s.model_nd > 0.0 ? s.model_nd : 1.0;
+        std::vector<LensFileWarning> ignored;
+        const std::string name =
+            resolve_lens_file_glass(s.glass, m_p.catalogues, m_p.file, s.glass_line, ignored);
+        const double nm =
+            m_p.wavelengths_nm.empty() ? kLineD : m_p.wavelengths_nm[m_p.primary_wavelength];
+        return lookup_glass(name).glass->model->n(nm);
+    }
+
+    // CODE V files often give no semi-apertures (CODE V finds them from the pupil, the fields
+    // and the vignetting factors). Where none is given and the entrance pupil is, each surface
+    // gets the largest height of the paraxial rim rays of every field (chief ray plus or minus
+    // the marginal ray, cut by VUY and VLY), the usual first estimate of a clear aperture.
+    void estimate_semi_diameters(std::vector<LensFileWarning>& warnings) {
+        const size_t image = m_s.size() - 1;
+        bool missing = false;
+        for (size_t j = 1; j < image; ++j) missing = missing || m_s[j].semi_diameter == 0.0;
+        if (!missing || m_p.aperture_type != "entrance_pupil_diameter" || !(m_p.aperture > 0)) {
+            return;
+        }
+        // Two rays from surface 1: A at the pupil's rim parallel to the axis, B through the
+        // vertex at unit slope; the chief ray is the mix of them that crosses the stop's centre.
+        std::vector<double> ya(m_s.size()), yb(m_s.size());
+        double a_y = 0.5 * m_p.aperture, a_u = 0.0, b_y = 0.0, b_u = 1.0, n = 1.0;
+        size_t stop = 1;
+        for (size_t j = 1; j < image; ++j) {
+            if (m_s[j].stop) stop = j;
+            ya[j] = a_y, yb[j] = b_y;
+            const double c = m_s[j].radius == 0.0 ? 0.0 : 1.0 / m_s[j].radius;
+            const double n2 = index_after(j);
+            a_u = (n * a_u - a_y * c * (n2 - n)) / n2;
+            b_u = (n * b_u - b_y * c * (n2 - n)) / n2;
+            n = n2;
+            a_y += a_u * m_s[j].thickness;
+            b_y += b_u * m_s[j].thickness;
+        }
+        // Each y field's beam: its chief ray, and its rim rays cut by the vignetting factors.
+        std::vector<double> angles = {0.0};
+        if (m_p.field_type == "angle") angles = m_p.fields_y.empty() ? angles : m_p.fields_y;
+        double largest = 0.0;
+        for (size_t j = 1; j < image; ++j) {
+            if (m_s[j].semi_diameter != 0.0) continue;
+            double sd = std::abs(ya[j]);
+            for (size_t f = 0; f < angles.size(); ++f) {
+                const double beta = std::tan(angles[f] * 3.14159265358979323846 / 180.0);
+                const double alpha = ya[stop] != 0.0 ? -beta * yb[stop] / ya[stop] : 0.0;
+                const double chief = alpha * ya[j] + beta * yb[j];
+                const double up = f < m_p.vignetting_upper.size() ? m_p.vignetting_upper[f] : 0.0;
+                const double low = f < m_p.vignetting_lower.size() ? m_p.vignetting_lower[f] : 0.0;
+                sd = std::max({sd, std::abs(chief + (1.0 - up) * ya[j]),
+                               std::abs(chief - (1.0 - low) * ya[j])});
+                largest = std::max(largest, std::abs(angles[f]));
+            }
+            m_s_estimate[j] = sd;
+        }
+        warnings.push_back({0,
+                            "no semi-apertures given: each surface's is the largest height of "
+                            "the paraxial rim rays (entrance pupil " +
+                                number_text(m_p.aperture) + ", fields up to " +
+                                number_text(largest) + " degrees, vignetting as given)"});
+    }
+
+    double semi_diameter(size_t j) const {
+        const auto it = m_s_estimate.find(j);
+        return it != m_s_estimate.end() ? it->second : m_s[j].semi_diameter;
+    }
+
+    // A surface with air on both sides bends no light: left out, said when it is not flat.
+    void in_air(size_t j, std::vector<LensFileWarning>& warnings) const {
+        const LensFileSurface& s = m_s[j];
+        if (s.radius != 0.0 || !s.even_terms.empty()) {
+            warnings.push_back({s.line, prescription_surface_label(j) +
+                                            " has air on both sides and bends no light; left out"});
+        }
+    }
+
+    // A face must exist out to the element's semi-diameter: |R| / sqrt(1 + k) for a conic.
+    void check_span(size_t i, double sd) const {
+        const LensFileSurface& s = m_s[i];
+        if (s.radius == 0.0) return;
+        const double r = std::abs(s.radius) * m_mm;
+        const double widest = 1.0 + s.conic > 0.0 ? r / std::sqrt(1.0 + s.conic) : INFINITY;
+        if (sd > widest * (1.0 + 1e-12)) {
+            refuse(s.radius_line ? s.radius_line : s.line,
+                   prescription_surface_label(i) + ": radius " + number_text(s.radius * m_mm) +
+                       (s.conic != 0.0 ? " with conic " + number_text(s.conic) : "") +
+                       " mm is undefined beyond " + number_text(widest) +
+                       " mm from the axis, inside its element's semi-diameter " + number_text(sd) +
+                       " mm");
+        }
+    }
+
+    ordered_json surface_json(size_t i) const {
+        const LensFileSurface& s = m_s[i];
+        std::vector<double> terms = s.even_terms;
+        while (!terms.empty() && terms.back() == 0.0) terms.pop_back();
+        if (!terms.empty() && terms[0] != 0.0) {
+            refuse(s.line, prescription_surface_label(i) +
+                               ": an aspheric r^2 term; lenslab's asphere starts at r^4 (fold "
+                               "it into the curvature)");
+        }
+        if (terms.size() > 8) {
+            refuse(s.line, prescription_surface_label(i) +
+                               ": aspheric terms beyond r^16 cannot be represented");
+        }
+        if (s.radius == 0.0) {
+            if (!terms.empty()) {
+                refuse(s.line, prescription_surface_label(i) +
+                                   ": aspheric terms on a flat base cannot be represented");
+            }
+            return {{"shape", "flat"}};
+        }
+        const double radius = s.radius * m_mm;
+        if (terms.empty()) {
+            if (s.conic == 0.0) return {{"shape", "sphere"}, {"radius", radius}};
+            return {{"shape", "conic"}, {"radius", radius}, {"k", s.conic}};
+        }
+        // The r^(2m) term scales as length^(1 - 2m).
+        ordered_json coefficients = ordered_json::array();
+        for (size_t m = 1; m < terms.size(); ++m) {
+            coefficients.push_back(terms[m] * std::pow(m_mm, 1.0 - 2.0 * (m + 1)));
+        }
+        return {{"shape", "asphere"},
+                {"radius", radius},
+                {"k", s.conic},
+                {"coefficients", coefficients}};
+    }
+
+    ordered_json material_json(const LensFileSurface& s,
+                               std::vector<LensFileWarning>& warnings) const {
+        ordered_json m = {{"color", 1}, {"transparency", 1}};
+        if (!s.glass.empty()) {
+            m["glass"] =
+                resolve_lens_file_glass(s.glass, m_p.catalogues, m_p.file, s.glass_line, warnings);
+        } else if (s.model_vd > 0.0) {
+            m["ior"] = {{"model", "abbe"}, {"n_d", s.model_nd}, {"V_d", s.model_vd}};
+        } else {
+            m["ior"] = s.model_nd;
+        }
+        return m;
+    }
+
+    void bench(ordered_json& b, const std::vector<double>& z, size_t first) const {
+        ordered_json out;
+        out["unit"] = "mm";
+        if (!m_p.wavelengths_nm.empty()) {
+            out["wavelengths"] = m_p.wavelengths_nm;
+            out["primary_wavelength"] = m_p.wavelengths_nm[m_p.primary_wavelength];
+        }
+        const bool heights = m_p.field_type != "angle";
+        const auto scaled = [&](std::vector<double> v) {
+            if (heights) {
+                for (double& x : v) x *= m_mm;
+            }
+            return v;
+        };
+        if (!m_p.fields_y.empty() || !m_p.fields_x.empty()) {
+            out["field_type"] = m_p.field_type;
+            out["fields_x"] = scaled(m_p.fields_x);
+            out["fields_y"] = scaled(m_p.fields_y);
+        }
+        if (!m_p.aperture_type.empty()) {
+            out["aperture_type"] = m_p.aperture_type;
+            out["aperture"] =
+                m_p.aperture_type == "entrance_pupil_diameter" ? m_p.aperture * m_mm : m_p.aperture;
+        }
+        for (size_t j = 1; j + 1 < m_s.size(); ++j) {
+            if (!m_s[j].stop) continue;
+            out["stop_position"] = z[j] - z[first];
+            out["stop_semi_diameter"] = semi_diameter(j) * m_mm;
+        }
+        if (b.contains("image_distance")) out["image_distance"] = b["image_distance"];
+        b = out;
+    }
+
+    const LensFilePrescription& m_p;
+    const std::vector<LensFileSurface>& m_s;
+    double m_mm;
+    std::map<size_t, double> m_s_estimate;  // estimated semi-diameters, in the file's unit
+};
+
+}  // namespace
+
+ImportedLens lens_group_from_prescription(const LensFilePrescription& p, const std::string& name) {
+    return GroupBuilder(p).build(name);
+}
+
+}  // namespace lenslab

@@ -1,0 +1,52 @@
+#pragma once
+// A sequential lens prescription as lens design programs write it (Zemax .zmx, CODE V .seq):
+// the surfaces from the object to the image, each with the medium that follows it, and the
+// system data that go with them (wavelengths, fields, aperture). The readers fill it in the
+// file's own units; lens_group_from_prescription turns it into a lenslab lens_group.
+
+#include <string>
+#include <vector>
+
+#include "lensfile/lens_file_error.h"
+
+namespace lenslab {
+
+struct LensFileSurface {
+    int line = 0;            // where the surface starts in the file
+    int radius_line = 0;     // where its curvature or radius was given (0: not given)
+    int glass_line = 0;      // where its glass was given
+    double radius = 0.0;     // vertex radius of curvature, signed; 0: flat
+    double thickness = 0.0;  // axial distance to the next surface (may be infinite: object)
+    double conic = 0.0;
+    // Even asphere terms: r^2, r^4, r^6, ... (index 0 is the r^2 term).
+    std::vector<double> even_terms;
+    std::string glass;  // the medium after the surface; empty: air
+    // A model glass given by its index and Abbe number (Zemax ___BLANK), when glass is empty.
+    double model_nd = 0.0, model_vd = 0.0;
+    double semi_diameter = 0.0;  // 0: not given
+    bool stop = false;
+};
+
+struct LensFilePrescription {
+    std::string file;    // as named to the reader, for messages
+    std::string format;  // "zmx" or "seq"
+    std::string title;
+    double unit_mm = 1.0;                 // millimetres per length unit of the file
+    std::vector<std::string> catalogues;  // glass catalogues the file names (Zemax GCAT)
+    std::vector<double> wavelengths_nm;
+    int primary_wavelength = 0;  // index into wavelengths_nm
+    // "angle" (degrees), "object_height", "paraxial_image_height", "real_image_height".
+    std::string field_type = "angle";
+    std::vector<double> fields_x, fields_y;
+    // CODE V's vignetting factors per y field (VUY, VLY): the fraction of the pupil cut off at
+    // the top and the bottom; empty: none.
+    std::vector<double> vignetting_upper, vignetting_lower;
+    // "entrance_pupil_diameter", "f_number" (image space), "object_na"; empty: none given.
+    std::string aperture_type;
+    double aperture = 0.0;
+    // Object, optical surfaces, image, in order.
+    std::vector<LensFileSurface> surfaces;
+    std::vector<LensFileWarning> warnings;
+};
+
+}  // namespace lenslab

@@ -1,0 +1,18 @@
+#pragma once
+// CODE V sequence files (.seq), the commands textbook and patent prescriptions use: SO, S,
+// SI (radius or, after RDM N, curvature; thickness; glass), RDY, THI, GLA, STO, K and the
+// aspheric terms A to G, CIR (semi-aperture), DIM, WL, REF, EPD, FNO, NA, NAO, and the fields
+// YAN/XAN, YOB/XOB, YIM/XIM. What cannot be represented (REFL mirrors, decentres and tilts,
+// other surface types) is refused with its line; other commands are kept as warnings.
+
+#include <string>
+#include <vector>
+
+#include "lensfile/lens_prescription.h"
+
+namespace lenslab {
+
+// Reads the decoded lines of the .seq file `file`; throws LensFileError.
+LensFilePrescription read_seq(const std::vector<std::string>& lines, const std::string& file);
+
+}  // namespace lenslab
