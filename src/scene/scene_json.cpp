@@ -267,10 +267,10 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
 
 Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
                       const SceneReadOptions& options) {
-    JsonObjectReader r(root, "",
-                       {"version", "description", "camera", "render", "materials", "objects",
-                        "lights", "atmosphere", "ambient", "length_unit_mm", "glass_catalogues",
-                        "bench"});
+    JsonObjectReader r(
+        root, "",
+        {"version", "description", "camera", "render", "materials", "objects", "lights",
+         "atmosphere", "ambient", "length_unit_mm", "glass_catalogues", "bench"});
     const int version = r.integer("version", 1, 1, 1000);
     if (version != 1) throw SceneError("version", "this lenslab reads version 1 scene files");
     (void)r.string("description", "");
