@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "optics/phase_function.h"
+
 namespace lenslab {
 
 FreeFlight sample_free_flight(const Medium& medium, double t_max, Rng& rng) {
@@ -32,9 +34,11 @@ FreeFlight sample_free_flight(const Medium& medium, double t_max, Rng& rng) {
 }
 
 void add_direct_light(const Scene& scene, const Medium* medium, const Vec3& p, int samples,
-                      Rng& rng, const std::function<double(const Vec3& wi)>& angular, LightSum& e) {
+                      Rng& rng, const std::function<double(const Vec3& wi)>& angular, LightSum& e,
+                      bool delta_lights) {
     const double eps = surface_epsilon(p);
     scene.light_sampler().for_each(rng, [&](const Light& light, double weight) {
+        if (!delta_lights && light.is_delta()) return;
         // A point or a beam is exact in one sample; an area light takes `samples`.
         const int count = light.is_delta() ? 1 : samples;
         for (int s = 0; s < count; ++s) {
@@ -47,6 +51,26 @@ void add_direct_light(const Scene& scene, const Medium* medium, const Vec3& p, i
             e.add(light.spectrum(), ls.factor * a * weight / count, tr);
         }
     });
+}
+
+void add_delta_in_scattering(const Scene& scene, const Medium& medium, const Ray& ray, double t_max,
+                             Rng& rng, LightSum& e) {
+    const HenyeyGreenstein phase(medium.g);
+    for (const LightPtr& light : scene.lights()) {
+        if (!light->is_delta()) continue;
+        double t, pdf;
+        if (!light->sample_in_scattering(ray, t_max, rng.uniform(), t, pdf)) continue;
+        const Vec3 p = ray.at(t);
+        LightSample ls;
+        if (!light->sample_li(p, rng, ls)) continue;
+        const double eps = surface_epsilon(p);
+        if (scene.occluded({p, ls.wi}, eps, ls.distance - eps)) continue;
+        const BandWeights to_camera = medium.transmittance(t);
+        const BandWeights from_light = medium.transmittance(ls.distance);
+        BandWeights bands;
+        for (int b = 0; b < 3; ++b) bands[b] = medium.scattering[b] * to_camera[b] * from_light[b];
+        e.add(light->spectrum(), ls.factor * phase.eval(dot(ls.wi, ray.direction)) / pdf, bands);
+    }
 }
 
 }  // namespace lenslab

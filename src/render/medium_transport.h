@@ -1,6 +1,7 @@
 #pragma once
 // Light travelling through a participating medium (scene/medium.h), for the tracers: where
-// it next scatters, and the direct light that reaches a point through the medium.
+// it next scatters, the direct light that reaches a point through the medium, and the light
+// of point lights, spots and beams scattered into a ray on its way.
 //
 // The medium's coefficients differ by band (spectrum.h), so one distance is drawn for all
 // three: a band is picked at random and the distance drawn from its exponential, with the
@@ -31,7 +32,17 @@ FreeFlight sample_free_flight(const Medium& medium, double t_max, Rng& rng);
 // nullptr) along the way, each sample weighted by `angular(wi)` (wi towards the light): the
 // cosine at a surface, the phase function at a point in a medium; <= 0 drops the sample.
 // Added to `e` as the spectrum of each light times its weights.
+// `delta_lights` false leaves out points, spots and beams (add_delta_in_scattering's part).
 void add_direct_light(const Scene& scene, const Medium* medium, const Vec3& p, int samples,
-                      Rng& rng, const std::function<double(const Vec3& wi)>& angular, LightSum& e);
+                      Rng& rng, const std::function<double(const Vec3& wi)>& angular, LightSum& e,
+                      bool delta_lights = true);
+
+// The light of the delta lights (points, spots, beams) scattered once into a ray's segment
+// [0, t_max) in `medium`: one distance per light from Light::sample_in_scattering, weighted
+// by sigma_s, the transmittance from the ray's origin and from the light, and the phase
+// function. A laser a few millimetres wide is all but never met by free-flight scattering
+// points; sampled along the chord the ray cuts through it, it shows at once.
+void add_delta_in_scattering(const Scene& scene, const Medium& medium, const Ray& ray, double t_max,
+                             Rng& rng, LightSum& e);
 
 }  // namespace lenslab

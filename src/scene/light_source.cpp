@@ -1,5 +1,6 @@
 #include "scene/light_source.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/sphere.h"
@@ -46,6 +47,11 @@ public:
     }
 
     bool is_delta() const override { return true; }
+
+    bool sample_in_scattering(const Ray& ray, double t_max, double u, double& t,
+                              double& pdf) const override {
+        return sample_equiangular(ray, t_max, m_position, u, t, pdf);
+    }
 
     bool worth_aiming(const PhotonTargets& targets) const override {
         return targets.solid_angle(m_position) < 4.0 * kPi;
@@ -94,6 +100,34 @@ public:
 
     bool is_delta() const override { return true; }
 
+    // Uniform along the chord of the ray inside the beam's cylinder, ahead of its disc.
+    bool sample_in_scattering(const Ray& ray, double t_max, double u, double& t,
+                              double& pdf) const override {
+        double t0 = 0.0, t1 = t_max;
+        // Ahead of the disc: dot(o + t d - origin, direction) > 0.
+        const double along0 = dot(ray.origin - m_origin, m_direction);
+        const double along_rate = dot(ray.direction, m_direction);
+        if (!clip_halfline(along0, along_rate, t0, t1)) return false;
+        // Inside the cylinder: |v + t w|^2 <= r^2, v and w the parts across the axis.
+        const Vec3 v = (ray.origin - m_origin) - m_direction * along0;
+        const Vec3 w = ray.direction - m_direction * along_rate;
+        const double a = length_squared(w), b = dot(v, w),
+                     c = length_squared(v) - m_radius * m_radius;
+        if (a < 1e-300) {
+            if (c > 0.0) return false;  // parallel to the axis, outside the beam
+        } else {
+            const double disc = b * b - a * c;
+            if (disc <= 0.0) return false;
+            const double root = std::sqrt(disc);
+            t0 = std::max(t0, (-b - root) / a);
+            t1 = std::min(t1, (-b + root) / a);
+        }
+        if (!(t1 > t0) || !std::isfinite(t1)) return false;
+        t = t0 + u * (t1 - t0);
+        pdf = 1.0 / (t1 - t0);
+        return true;
+    }
+
     bool worth_aiming(const PhotonTargets& targets) const override {
         return targets.plane_area(m_origin, m_direction) < kPi * m_radius * m_radius;
     }
@@ -104,6 +138,18 @@ private:
         sample_disc_concentric(u1, u2, x, y);
         const Frame f = Frame::from_axis(m_direction);
         return m_origin + (f.u * x + f.v * y) * m_radius;
+    }
+
+    // Narrows [t0, t1] to where along0 + t * rate > 0; false when nothing is left.
+    static bool clip_halfline(double along0, double rate, double& t0, double& t1) {
+        if (rate > 0.0) {
+            t0 = std::max(t0, -along0 / rate);
+        } else if (rate < 0.0) {
+            t1 = std::min(t1, -along0 / rate);
+        } else if (along0 <= 0.0) {
+            return false;
+        }
+        return t1 > t0;
     }
 
     Vec3 m_origin, m_direction;
@@ -178,6 +224,20 @@ private:
 };
 
 }  // namespace
+
+bool sample_equiangular(const Ray& ray, double t_max, const Vec3& light, double u, double& t,
+                        double& pdf) {
+    const double delta = dot(light - ray.origin, ray.direction);
+    const double d = length(light - ray.at(delta));
+    if (!(d > 1e-12)) return false;
+    const double theta_a = std::atan2(-delta, d);
+    const double theta_b = std::isfinite(t_max) ? std::atan2(t_max - delta, d) : 0.5 * kPi;
+    if (!(theta_b > theta_a)) return false;
+    const double offset = d * std::tan(theta_a + u * (theta_b - theta_a));
+    t = std::clamp(delta + offset, 0.0, t_max);
+    pdf = d / ((theta_b - theta_a) * (d * d + offset * offset));
+    return t < t_max;
+}
 
 LightPtr make_point_light(const PointLight& l) { return std::make_shared<PointLightSource>(l); }
 LightPtr make_beam_light(const BeamLight& b) { return std::make_shared<BeamLightSource>(b); }

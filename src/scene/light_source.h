@@ -62,6 +62,16 @@ public:
     virtual bool sample_li(const Vec3& p, Rng& rng, LightSample& out) const = 0;
     // One sample of sample_li is exact (a point or a beam), not an estimate.
     virtual bool is_delta() const = 0;
+    // A distance along `ray` (unit direction), in [0, t_max), where light of this delta light
+    // scattered by a medium into the ray is worth gathering, and its density per unit length
+    // (`u` uniform in [0, 1)). False when none can be (the ray misses a beam). Points and
+    // spots: equiangular sampling (Kulla and Fajardo 2012), density proportional to
+    // 1 / distance^2; beams: uniform along the chord the ray cuts through the beam.
+    virtual bool sample_in_scattering(const Ray& ray, double t_max, double u, double& t,
+                                      double& pdf) const {
+        (void)ray, (void)t_max, (void)u, (void)t, (void)pdf;
+        return false;
+    }
 
 protected:
     // radiant_watts(spectrum()), integrated once: photon plans and the light sampler ask for
@@ -82,6 +92,12 @@ class Sphere;
 LightPtr make_point_light(const PointLight& l);
 LightPtr make_beam_light(const BeamLight& b);
 LightPtr make_spot_light(const SpotLight& s);  // spot_light_source.cpp
+// Equiangular sampling of a distance along `ray` within [0, t_max) towards the point `light`
+// (Kulla and Fajardo 2012, "Importance sampling techniques for path tracing in participating
+// media"): density D / ((theta_b - theta_a) (D^2 + (t - delta)^2)), D the ray's distance from
+// the light and delta where it passes closest. False when the ray runs through the light.
+bool sample_equiangular(const Ray& ray, double t_max, const Vec3& light, double u, double& t,
+                        double& pdf);
 // A Lambertian sphere of spectral radiance `radiance`.
 LightPtr make_sphere_light(std::shared_ptr<const Sphere> sphere, SpectrumPtr radiance);
 

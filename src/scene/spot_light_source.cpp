@@ -69,6 +69,11 @@ public:
 
     bool is_delta() const override { return true; }
 
+    bool sample_in_scattering(const Ray& ray, double t_max, double u, double& t,
+                              double& pdf) const override {
+        return sample_equiangular(ray, t_max, m_position, u, t, pdf);
+    }
+
     bool worth_aiming(const PhotonTargets& targets) const override {
         return targets.solid_angle(m_position) < cone_solid_angle();
     }

@@ -93,6 +93,31 @@ TEST(PathInMedium, SingleScatteringMatchesTheAirlightIntegral) {
     EXPECT_NEAR(mean, expected, 0.02 * expected);
 }
 
+// A camera ray crossing a laser-like beam at right angles through its axis gathers, from
+// single isotropic scattering (the same integral as the airlight's, with the beam's
+// irradiance P / (pi r^2) arriving along it from its disc 10 units away):
+//   L = sigma / (4 pi) * P / (pi r^2) * exp(-10 sigma) * integral over the chord
+//       [D - r, D + r] of exp(-sigma t) dt.
+TEST(PathInMedium, SingleScatteringFromABeamMatchesItsClosedForm) {
+    const double sigma = 0.05, power = 2, r = 0.2, d = 5;
+    Scene scene = parse_scene(R"({
+      "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 0.001},
+      "render": {"width": 2, "height": 2, "spp": 64, "max_depth": 1, "integrator": "path"},
+      "atmosphere": {"scattering": 0.05},
+      "lights": [{"type": "beam", "origin": [-10, 0, 0], "direction": [1, 0, 0],
+                  "radius": 0.2, "power": 2}]
+    })");
+    RenderControl control;
+    const RenderResult result = render_scene(scene, control);
+    double mean = 0;
+    for (const PixelRgb& p : result.film.pixels()) mean += p.g / result.film.pixels().size();
+    const double white = spectrum_to_rgb(*scene.beams[0].spectrum).g / power;
+    const double chord = (std::exp(-sigma * (d - r)) - std::exp(-sigma * (d + r))) / sigma;
+    const double expected = sigma / (4 * kPiMedium) * power / (kPiMedium * r * r) *
+                            std::exp(-10 * sigma) * chord * white;
+    EXPECT_NEAR(mean, expected, 0.01 * expected);
+}
+
 // Other integrators would render the scene as if the air were clear: they refuse it.
 TEST(PathInMedium, OtherIntegratorsRefuseAnAtmosphere) {
     Scene scene = parse_scene(R"({

@@ -32,17 +32,23 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
         // The atmosphere fills the space outside the objects: the ray crosses it unless it is
         // leaving a solid (it meets the back of a surface).
         if (atmosphere && (!hit || dot(ray.direction, it.normal()) < 0.0)) {
-            const FreeFlight f =
-                sample_free_flight(*atmosphere, hit ? it.hit.surface.t : INFINITY, rng);
+            const double t_max = hit ? it.hit.surface.t : INFINITY;
+            if (bounce < scene.render.max_depth) {
+                LightSum in_scattered(path);
+                add_delta_in_scattering(scene, *atmosphere, ray, t_max, rng, in_scattered);
+                l += path.of(in_scattered);
+            }
+            const FreeFlight f = sample_free_flight(*atmosphere, t_max, rng);
             path *= f.weight;
             if (f.scattered) {
                 if (bounce >= scene.render.max_depth) break;
                 const Vec3 p = ray.at(f.t);
                 const HenyeyGreenstein phase(atmosphere->g);
                 LightSum e(path);
+                // Points, spots and beams: add_delta_in_scattering's, on every segment.
                 add_direct_light(
                     scene, atmosphere, p, scene.render.light_samples, rng,
-                    [&](const Vec3& wi) { return phase.eval(dot(wi, ray.direction)); }, e);
+                    [&](const Vec3& wi) { return phase.eval(dot(wi, ray.direction)); }, e, false);
                 l += path.of(e);
                 ray = {p, phase.sample(ray.direction, rng.uniform(), rng.uniform())};
                 seen_from_camera = false;
