@@ -17,6 +17,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -290,16 +291,30 @@ void MainWindow::build_menus() {
     edit->addSeparator();
     QToolBar* tools = addToolBar(tr("Edit"));
     tools->setObjectName("edit_toolbar");
-    // One action per declared type, each adding the declaration's example.
-    std::vector<const ElementSpec*> addable;
-    for (const ObjectTypeEntry& t : object_types()) addable.push_back(&t.spec());
-    for (const ElementSpec* l : light_specs()) addable.push_back(l);
-    for (const ElementSpec* spec : addable) {
-        const QString kind = QString::fromStdString(spec->example.at("type").get<std::string>());
-        QAction* a = edit->addAction(add_label(*spec), this, [this, kind] { add_element(kind); });
-        a->setObjectName("add:" + kind);
-        tools->addAction(a);
-    }
+    // One action per declared type, each adding the declaration's example; on the toolbar
+    // they drop down from two buttons, objects and lights, so the bar fits a laptop screen.
+    std::vector<const ElementSpec*> objects;
+    for (const ObjectTypeEntry& t : object_types()) objects.push_back(&t.spec());
+    const auto add_menu = [&](const QString& title, const QString& name,
+                              const std::vector<const ElementSpec*>& specs) {
+        auto* menu = new QMenu(title, this);
+        for (const ElementSpec* spec : specs) {
+            const QString kind =
+                QString::fromStdString(spec->example.at("type").get<std::string>());
+            QAction* a =
+                edit->addAction(add_label(*spec), this, [this, kind] { add_element(kind); });
+            a->setObjectName("add:" + kind);
+            menu->addAction(a);
+        }
+        auto* button = new QToolButton(tools);
+        button->setObjectName(name);
+        button->setText(title);
+        button->setMenu(menu);
+        button->setPopupMode(QToolButton::InstantPopup);
+        tools->addWidget(button);
+    };
+    add_menu(tr("Add object"), "add_object_button", objects);
+    add_menu(tr("Add light"), "add_light_button", light_specs());
     QAction* floor = edit->addAction(tr("Add &floor"), this, &MainWindow::add_floor);
     floor->setObjectName("add_floor");  // not a declared type (those are "add:TYPE")
     tools->addAction(floor);
