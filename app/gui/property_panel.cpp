@@ -409,8 +409,13 @@ void PropertyPanel::add_text(const QString& label, const std::string& key,
 void PropertyPanel::add_formula(
     const QString& label, const std::string& key, const std::string& fallback,
     const std::function<std::optional<std::string>(const std::string&)>& check) {
-    const auto [box, edit, problem] =
+    // Named copies, not a structured binding: lambdas capture them (clang 14, which builds the
+    // sanitizer stage, cannot capture structured bindings).
+    const CheckedLineEdit field =
         make_checked_line_edit(m_form_widget, key, "formula_error:" + key);
+    QWidget* box = field.box;
+    QLineEdit* edit = field.edit;
+    QLabel* problem = field.problem;
     const json* current = value_at(key);
     edit->setText(QString::fromStdString(
         current && current->is_string() ? current->get<std::string>() : fallback));
@@ -430,8 +435,12 @@ void PropertyPanel::add_formula(
 
 void PropertyPanel::add_number_list(const QString& label, const std::string& key,
                                     const json& fallback, size_t max_count) {
-    const auto [box, edit, problem] =
-        make_checked_line_edit(m_form_widget, key, "list_error:" + key);
+    // Named copies, not a structured binding: lambdas capture them (clang 14, which builds the
+    // sanitizer stage, cannot capture structured bindings).
+    const CheckedLineEdit field = make_checked_line_edit(m_form_widget, key, "list_error:" + key);
+    QWidget* box = field.box;
+    QLineEdit* edit = field.edit;
+    QLabel* problem = field.problem;
     const json* current = value_at(key);
     QStringList shown;
     for (const json& x : (current && current->is_array() ? *current : fallback)) {

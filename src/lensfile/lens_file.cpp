@@ -17,7 +17,7 @@ namespace {
 // Builds the group as a scene would, so a lens the scene reader refuses is refused here,
 // at the line of the element concerned.
 void check_imported_lens(const ImportedLens& lens, const std::string& path) {
-    nlohmann::json scene = {{"objects", {lens.group}}};
+    nlohmann::json scene = {{"objects", nlohmann::json::array({lens.group})}};
     scene["objects"][0]["vertex"] = {0, 0, 0};
     scene["objects"][0]["axis"] = {0, 0, 1};
     try {
@@ -67,7 +67,7 @@ nlohmann::ordered_json imported_scene_json(const ImportedLens& lens, const std::
     scene["version"] = 1;
     scene["description"] = "Imported from " + std::filesystem::path(path).filename().string() +
                            " by lenslab import; lengths in mm";
-    scene["objects"] = {group};
+    scene["objects"] = nlohmann::ordered_json::array({group});
     scene["bench"] = lens.bench;
     return scene;
 }

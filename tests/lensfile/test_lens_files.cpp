@@ -122,8 +122,8 @@ TEST(LensFiles, CookeTripletFromZemaxAndCodeVIsTheLensTypedByHand) {
     EXPECT_DOUBLE_EQ(zmx.bench["stop_position"].get<double>(), 5.90 + 12.93 + 2.50 + 2.00);
     EXPECT_DOUBLE_EQ(seq.bench["stop_position"].get<double>(), 5.90 + 12.93 + 2.50 + 2.00);
     EXPECT_EQ(zmx.bench["stop_semi_diameter"], 10.3);
-    EXPECT_EQ(seq.bench["fields_y"], json({0, 7, 11.86}));
-    EXPECT_EQ(zmx.bench["fields_y"], json({0, 7, 11.86}));
+    EXPECT_EQ(seq.bench["fields_y"], nlohmann::ordered_json({0, 7, 11.86}));
+    EXPECT_EQ(zmx.bench["fields_y"], nlohmann::ordered_json({0, 7, 11.86}));
     // Smith's EFL from the catalogue glasses' n_d, within 0.5%.
     const double efl = imported_efl(seq, "cooke_triplet.seq");
     std::printf("Cooke triplet imported: EFL %.4f mm (Smith 101.181)\n", efl);

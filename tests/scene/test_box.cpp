@@ -20,7 +20,7 @@ using nlohmann::json;
 json scene_with(const json& object) {
     return {{"camera", {{"position", {0, 0, 5}}, {"look_at", {0, 0, 0}}}},
             {"materials", {{"glass", {{"transparency", 1}, {"ior", 1.5}}}}},
-            {"objects", {object}}};
+            {"objects", json::array({object})}};
 }
 
 json slab(double thickness) {

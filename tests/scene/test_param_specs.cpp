@@ -95,7 +95,7 @@ std::vector<Case> cases() {
     const json scene = {{"camera", camera},
                         {"render", {{"time", 1}}},  // so passes 0 alone is not what refuses a value
                         {"materials", {{"m", {{"emission", {{"intensity", 1}}}}}}},
-                        {"objects", {sphere}},
+                        {"objects", json::array({sphere})},
                         {"lights", {{{"type", "point"}, {"position", {0, 2, 0}}, {"power", 1}}}}};
     json with_beam = scene;
     with_beam["lights"] = {{{"type", "beam"},

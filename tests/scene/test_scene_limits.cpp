@@ -58,7 +58,7 @@ TEST(SceneLimits, LensGroupElementsCountAsObjects) {
     group["elements"] = nlohmann::json::array();
     group["elements"].get_ref<nlohmann::json::array_t&>().resize(kMaxObjects + 1);
     nlohmann::json root = minimal_scene();
-    root["objects"] = {group};
+    root["objects"] = nlohmann::json::array({group});
     EXPECT_EQ(refusal(root),
               "objects[0].elements: holds 1000001 elements, more than the 1000000 allowed");
 }
