@@ -14,51 +14,17 @@ namespace lenslab {
 namespace {
 
 // Isotropic: intensity spectrum / (4 pi) in every direction.
-class PointLightSource final : public Light {
+class PointLightSource final : public PointSourceLight {
 public:
-    explicit PointLightSource(const PointLight& l) : Light(l.spectrum), m_position(l.position) {}
-
-    double power() const override { return spectrum_watts(); }
-
-    PhotonStart sample_le(Rng& rng) const override {
-        const double u1 = rng.uniform(), u2 = rng.uniform();
-        return {{m_position, sample_uniform_sphere(u1, u2)}, &spectrum(), 1.0};
-    }
-
-    PhotonStart sample_le_towards(const PhotonTargets& targets, const AimSample& u) const override {
-        const double u0 = u[0], u1 = u[1], u2 = u[2];
-        Vec3 dir;
-        double pdf;
-        if (!targets.sample_direction(m_position, u0, u1, u2, 4.0 * kPi, dir, pdf)) {
-            return {{m_position, sample_uniform_sphere(u1, u2)}, &spectrum(), 1.0};
-        }
-        // Intensity 1 / (4 pi) per unit spectrum, over the direction's density.
-        return {{m_position, dir}, &spectrum(), 1.0 / (4.0 * kPi * pdf)};
-    }
-
-    bool sample_li(const Vec3& p, Rng&, LightSample& out) const override {
-        const Vec3 to_light = m_position - p;
-        const double dist2 = length_squared(to_light);
-        if (!(dist2 > 0.0)) return false;
-        out.distance = std::sqrt(dist2);
-        out.wi = to_light / out.distance;
-        out.factor = 1.0 / (4.0 * kPi * dist2);  // E = I cos / r^2, I = Phi / (4 pi)
-        return true;
-    }
-
-    bool is_delta() const override { return true; }
-
-    bool sample_in_scattering(const Ray& ray, double t_max, double u, double& t,
-                              double& pdf) const override {
-        return sample_equiangular(ray, t_max, m_position, u, t, pdf);
-    }
-
-    bool worth_aiming(const PhotonTargets& targets) const override {
-        return targets.solid_angle(m_position) < 4.0 * kPi;
-    }
+    explicit PointLightSource(const PointLight& l) : PointSourceLight(l.spectrum, l.position) {}
 
 private:
-    Vec3 m_position;
+    double intensity(const Vec3&) const override { return 1.0 / (4.0 * kPi); }
+    Vec3 sample_direction(double u1, double u2, double& pdf) const override {
+        pdf = 1.0 / (4.0 * kPi);
+        return sample_uniform_sphere(u1, u2);
+    }
+    double emission_solid_angle() const override { return 4.0 * kPi; }
 };
 
 // Parallel rays along `direction` from a disc: irradiance spectrum / (pi r^2) across it.
@@ -224,6 +190,46 @@ private:
 };
 
 }  // namespace
+
+PhotonStart PointSourceLight::sample_le(Rng& rng) const {
+    const double u1 = rng.uniform(), u2 = rng.uniform();
+    double pdf;
+    const Vec3 dir = sample_direction(u1, u2, pdf);
+    return photon_towards(dir, pdf);
+}
+
+PhotonStart PointSourceLight::sample_le_towards(const PhotonTargets& targets,
+                                                const AimSample& u) const {
+    Vec3 dir;
+    double pdf;
+    if (!targets.sample_direction(m_position, u[0], u[1], u[2], emission_solid_angle(), dir,
+                                  pdf)) {
+        dir = sample_direction(u[1], u[2], pdf);
+    }
+    // The intensity over the direction's density: 0 where the light sends nothing.
+    return photon_towards(dir, pdf);
+}
+
+bool PointSourceLight::worth_aiming(const PhotonTargets& targets) const {
+    return targets.solid_angle(m_position) < emission_solid_angle();
+}
+
+bool PointSourceLight::sample_li(const Vec3& p, Rng&, LightSample& out) const {
+    const Vec3 to_light = m_position - p;
+    const double dist2 = length_squared(to_light);
+    if (!(dist2 > 0.0)) return false;
+    out.distance = std::sqrt(dist2);
+    out.wi = to_light / out.distance;
+    const double i = intensity(-out.wi);
+    if (i <= 0.0) return false;
+    out.factor = i / dist2;  // E = I cos / r^2
+    return true;
+}
+
+bool PointSourceLight::sample_in_scattering(const Ray& ray, double t_max, double u, double& t,
+                                            double& pdf) const {
+    return sample_equiangular(ray, t_max, m_position, u, t, pdf);
+}
 
 bool sample_equiangular(const Ray& ray, double t_max, const Vec3& light, double u, double& t,
                         double& pdf) {

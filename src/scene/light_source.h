@@ -83,6 +83,41 @@ private:
     double m_spectrum_watts;
 };
 
+// A light sending everything from one point (point and spot lights): its light falls off as
+// 1 / r^2, photons are aimed from the point, and in a medium its in-scattering is sampled
+// equiangularly. A kind gives its intensity, its own direction sampling and the solid angle
+// it fills.
+class PointSourceLight : public Light {
+public:
+    PointSourceLight(SpectrumPtr spectrum, const Vec3& position)
+        : Light(std::move(spectrum)), m_position(position) {}
+
+    double power() const override { return spectrum_watts(); }
+    PhotonStart sample_le(Rng& rng) const override;
+    PhotonStart sample_le_towards(const PhotonTargets& targets, const AimSample& u) const override;
+    bool worth_aiming(const PhotonTargets& targets) const override;
+    bool sample_li(const Vec3& p, Rng& rng, LightSample& out) const override;
+    bool is_delta() const override { return true; }
+    bool sample_in_scattering(const Ray& ray, double t_max, double u, double& t,
+                              double& pdf) const override;
+
+protected:
+    const Vec3& position() const { return m_position; }
+    // Radiant intensity towards the unit `dir`, per unit of spectrum().
+    virtual double intensity(const Vec3& dir) const = 0;
+    // A direction of the light's own sampling from two uniform numbers, with its density.
+    virtual Vec3 sample_direction(double u1, double u2, double& pdf) const = 0;
+    // The solid angle its light fills: aiming pays where the targets subtend less.
+    virtual double emission_solid_angle() const = 0;
+
+private:
+    PhotonStart photon_towards(const Vec3& dir, double pdf) const {
+        return {{m_position, dir}, &spectrum(), intensity(dir) / pdf};
+    }
+
+    Vec3 m_position;
+};
+
 using LightPtr = std::shared_ptr<const Light>;
 
 struct PointLight;

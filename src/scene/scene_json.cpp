@@ -217,23 +217,17 @@ void read_light(const json& j, const std::string& path, SceneLights& lights) {
         l.power = r.real("power");
         l.spectrum = light_spectrum(r, l.color, l.power);
         lights.points.push_back(l);
-    } else if (type == "beam") {
-        SpecReader r(j, path, beam_spec());
+    } else if (type == "beam" || type == "laser") {
+        // A laser is a beam of one line, placed by its `position`.
+        const bool laser = type == "laser";
+        SpecReader r(j, path, laser ? laser_spec() : beam_spec());
         BeamLight b;
-        b.origin = r.point("origin");
+        b.origin = r.point(laser ? "position" : "origin");
         b.direction = r.unit_vector("direction");
         b.radius = r.real("radius");
         b.power = r.real("power");
-        b.spectrum = light_spectrum(r, b.color, b.power);
-        lights.beams.push_back(b);
-    } else if (type == "laser") {
-        SpecReader r(j, path, laser_spec());
-        BeamLight b;
-        b.origin = r.point("position");
-        b.direction = r.unit_vector("direction");
-        b.radius = r.real("radius");
-        b.power = r.real("power");
-        b.spectrum = laser_spectrum(r, r.real("wavelength"), b.power);
+        b.spectrum = laser ? laser_spectrum(r, r.real("wavelength"), b.power)
+                           : light_spectrum(r, b.color, b.power);
         lights.beams.push_back(b);
     } else if (type == "spot") {
         SpecReader r(j, path, spot_light_spec());
