@@ -139,8 +139,9 @@ std::string first_order_table(const OpticalSystem& system, const FirstOrder& f) 
 std::string seidel_table(const OpticalSystem& system, const Seidel& s) {
     std::ostringstream out;
     char line[256];
-    out << "Seidel sums (wavefront units; colour between " << number_text(s.short_nm) << " and "
-        << number_text(s.long_nm) << " nm)\n";
+    char colour[96];
+    std::snprintf(colour, sizeof colour, "%.2f and %.2f nm", s.short_nm, s.long_nm);
+    out << "Seidel sums (wavefront units; colour between " << colour << ")\n";
     std::snprintf(line, sizeof line, "  %7s %12s %12s %12s %12s %12s %12s %12s\n", "surface", "S_I",
                   "S_II", "S_III", "S_IV", "S_V", "C_I", "C_II");
     out << line;

@@ -196,6 +196,11 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
         << ": collimated beam on the axis, diameter " << length(2.0 * r.aperture_radius) << ", "
         << r.rays << " rays";
     if (r.rays_lost > 0) out << " (" << r.rays_lost << " clipped or totally reflected)";
+    // A pupil wider than the lenses pass: the beam is what passes, so say so.
+    if (r.first_order.entrance_pupil.diameter > 2.0 * r.aperture_radius * (1.0 + 1e-9)) {
+        out << " (narrower than the entrance pupil, "
+            << length(r.first_order.entrance_pupil.diameter) << ": the lenses pass no more)";
+    }
     out << "\n";
     row("RMS spot radius at the paraxial focus", r.spot_paraxial.rms_radius,
         "geometric radius " + length(r.spot_paraxial.geometric_radius));
