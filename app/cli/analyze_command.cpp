@@ -168,7 +168,8 @@ Action add_analyze_command(CLI::App& app) {
             ->check(CLI::PositiveNumber);
     cmd->add_option("--stop", args->stop,
                     "The aperture stop: a surface, counted from 1 along the light (default: 1, "
-                    "the first surface)");
+                    "the first surface)")
+        ->check(whole_number<int>());
     CLI::Option* epd =
         cmd->add_option("--epd", args->epd,
                         "Entrance pupil diameter (default: the beam of --aperture with the stop "

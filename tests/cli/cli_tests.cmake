@@ -188,6 +188,9 @@ lenslab_cli_test(NAME analyze.bad.stop_out_of_range
     ARGS analyze ${analyze_triplet} --stop 99
     CHECKS -DEXPECT_EXIT=2
            "-DSTDERR_LINE=lenslab: error: --stop 99: the system has 6 surfaces, numbered 1 to 6")
+lenslab_cli_test(NAME analyze.bad.stop_not_whole
+    ARGS analyze ${analyze_triplet} --stop 1.5
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--stop: must be a whole number, got '1.5'")
 lenslab_cli_test(NAME analyze.bad.epd_and_f_number
     ARGS analyze ${analyze_triplet} --epd 10 --f-number 4
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--epd excludes --f-number")
