@@ -1,7 +1,7 @@
 #pragma once
 // Seidel (third-order) aberration sums, surface by surface, from the paraxial marginal and
-// chief rays (Welford, Aberrations of Optical Systems, 1986, ch. 8, eqs. 8.19-8.26 and
-// sections 8.5 (aspheric surfaces) and 8.6 (chromatic terms)):
+// chief rays (Welford, Aberrations of Optical Systems, 1986, ch. 8: the surface
+// contributions, the aspheric terms and the primary chromatic terms):
 //   A = n i = n (u + y c),  Ā = n (ū + ȳ c),  Δ(x) = x' - x across the surface,
 //   S_I   = -A² y Δ(u/n)                 spherical aberration
 //   S_II  = -A Ā y Δ(u/n)                coma
@@ -15,7 +15,9 @@
 // for the two wavelengths of the chromatic block. A conic (or an even asphere's conic and
 // A4 term) adds to the sphere's sums the term of its fourth-order sag beyond the sphere's,
 //   δS_I = 8 a4 y⁴ (n' - n), a4 = k c³ / 8 + A4,   δS_II = 8 a4 y³ ȳ (n' - n),
-//   δS_III = 8 a4 y² ȳ² (n' - n), δS_V = 8 a4 y ȳ³ (n' - n) (Welford section 8.5).
+//   δS_III = 8 a4 y² ȳ² (n' - n), δS_V = 8 a4 y ȳ³ (n' - n). The S_V form and the aspheric
+// term's scale are checked in tests/analysis/test_seidel.cpp (a published table, and a
+// hyperboloid whose term must cancel the sphere's S_I).
 // The sums are in wavefront units (W040 = S_I / 8 and so on) at the aperture and field of
 // the marginal and chief rays; the transverse forms are in the paraxial image plane.
 
@@ -38,8 +40,9 @@ struct SeidelSums {
 };
 
 // Transverse aberrations in the paraxial image plane at the edge of the pupil and field,
-// from the sums (Welford section 8.3; the same factors as rayoptics'
-// seidel_to_transverse_aberration), n' u' the image-space marginal ray:
+// from the sums (Welford ch. 8; the same factors as rayoptics'
+// seidel_to_transverse_aberration, whose figures the tests reproduce), n' u' the image-space
+// marginal ray:
 //   spherical S_I / (2 n'u'); sagittal coma S_II / (2 n'u'), tangential coma three times
 //   that; tangential field (3 S_III + S_IV) / (2 n'u'), sagittal field (S_III + S_IV) /
 //   (2 n'u'), Petzval S_IV / (2 n'u'), distortion S_V / (2 n'u'); axial colour C_I / (n'u'),

@@ -2,8 +2,8 @@
 // - the Cooke triplet of sasian_triplet.h against the third-order table the rayoptics page
 //   prints (`compute_third_order`, six decimals) and its transverse forms;
 // - a thin singlet against Welford's thin-lens formulas (Aberrations of Optical Systems,
-//   1986, section 8.4, eqs. 8.40-8.44: shape factor B = (c1 + c2) / (c1 - c2), conjugate
-//   factor C = (u1 + u2') / (u1 - u2'), power K, stop at the lens);
+//   1986, ch. 8, the thin lens in air with the stop at it: shape factor
+//   B = (c1 + c2) / (c1 - c2), conjugate factor C = (u1 + u2') / (u1 - u2'), power K);
 // - distortion of a symmetric system at unit magnification with the stop at its centre:
 //   zero, paraxially and for the real chief ray;
 // - a plano-hyperbolic lens (flat face first, conic k = -n² behind): the conic's term
@@ -145,7 +145,7 @@ TEST(SeidelThinLens, MatchesWelfordsThinLensFormulas) {
 // about the cemented plane. With the stop there and the object where the image is its
 // mirror (magnification -1), every ray through the stop's centre leaves as the mirror image
 // of how it came, so the image height is exactly minus the object height: no distortion, in
-// third order (Welford section 8.7's symmetry principle: S_II, S_V, C_II vanish) and for the
+// third order (the symmetry principle, Welford ch. 8: S_II, S_V, C_II vanish) and for the
 // real ray.
 OpticalSystem symmetric_pair() {
     return build_optical_system(lens_scene({
