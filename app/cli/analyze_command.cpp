@@ -2,6 +2,7 @@
 // chromatic aberration and spot sizes of the lenses on one axis, as a table or JSON, and a
 // ray diagram as SVG.
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -21,12 +22,23 @@ namespace {
 struct AnalyzeArgs {
     std::string scene;
     double wavelength_nm = kLineD;
+    std::vector<double> wavelengths;  // the primary is the middle one
     bool json = false;
     std::string svg;
     double aperture = 0;  // beam diameter; 0: the usable aperture
     std::string lens;
     std::string unit;  // for the ray diagram's labels; empty: "units"
+    int stop = 1;      // 1-based surface index, as lens design programs count
+    double epd = 0, f_number = 0;
+    double object_distance = 0;  // 0: the object at infinity
+    std::vector<double> fields, field_heights;
+    bool seidel = false;
 };
+
+// The middle of the wavelengths as given (for an even count, the one before the middle).
+double primary_wavelength(const std::vector<double>& wavelengths) {
+    return wavelengths[(wavelengths.size() - 1) / 2];
+}
 
 int usage_error(const std::string& message) {
     std::cerr << "lenslab: error: " << message << "\n";
@@ -63,11 +75,35 @@ int run(const AnalyzeArgs& a) {
     }
     try {
         const OpticalSystem system = build_optical_system(scene, lens);
+        const int surfaces = static_cast<int>(system.surfaces.size());
+        if (a.stop < 1 || a.stop > surfaces) {
+            return usage_error("--stop " + std::to_string(a.stop) + ": the system has " +
+                               std::to_string(surfaces) + " surfaces, numbered 1 to " +
+                               std::to_string(surfaces));
+        }
+        for (double angle : a.fields) {
+            if (!(std::abs(angle) < 90.0)) {
+                return usage_error("--fields: " + format_number(angle) +
+                                   " degrees is not a field angle (between -90 and 90)");
+            }
+        }
         LensReportOptions options;
-        options.wavelength_nm = a.wavelength_nm;
+        options.wavelength_nm =
+            a.wavelengths.empty() ? a.wavelength_nm : primary_wavelength(a.wavelengths);
+        options.wavelengths = a.wavelengths;
+        FirstOrderOptions& first = options.first_order;
+        first.stop = a.stop - 1;
+        first.epd = a.epd;
+        first.f_number = a.f_number;
+        if (a.object_distance > 0) {
+            first.object_distance = a.object_distance;
+            if (!a.field_heights.empty()) first.fields = a.field_heights;
+        } else if (!a.fields.empty()) {
+            first.fields = a.fields;
+        }
         if (a.aperture > 0) {
-            check_wavelength(system, a.wavelength_nm, "--wavelength");
-            const double usable = usable_aperture_radius(system, a.wavelength_nm);
+            check_wavelength(system, options.wavelength_nm, "--wavelength");
+            const double usable = usable_aperture_radius(system, options.wavelength_nm);
             if (0.5 * a.aperture > usable * (1.0 + 1e-9)) {
                 char usable_text[32];
                 std::snprintf(usable_text, sizeof usable_text, "%.6g", 2.0 * usable);
@@ -91,7 +127,8 @@ int run(const AnalyzeArgs& a) {
             if (!a.svg.empty()) j["svg"] = a.svg;
             std::cout << j.dump(2) << "\n";
         } else {
-            std::cout << "lenslab analyze " << a.scene << ": " << report_table(system, report);
+            std::cout << "lenslab analyze " << a.scene << ": "
+                      << report_table(system, report, a.seidel);
             if (!a.svg.empty()) std::cout << "\nray diagram written to " << a.svg << "\n";
         }
         return 0;
@@ -109,17 +146,57 @@ Action add_analyze_command(CLI::App& app) {
         "analyze",
         "Optical bench: focal lengths, aberrations and a ray diagram of the lenses on one axis");
     cmd->add_option("scene", args->scene, "Scene file (JSON); a camera is not needed")->required();
-    cmd->add_option(
-           "-w,--wavelength", args->wavelength_nm,
-           "Wavelength in air in nm for the figures (default: the d line, 587.56 nm; in vacuum "
-           "for a scene with \"ambient\": \"vacuum\")")
-        ->check(CLI::PositiveNumber);
+    CLI::Option* wavelength =
+        cmd->add_option("-w,--wavelength", args->wavelength_nm,
+                        "Wavelength in air in nm for the figures (default: the d line, 587.56 "
+                        "nm; in vacuum for a scene with \"ambient\": \"vacuum\")")
+            ->check(CLI::PositiveNumber);
+    cmd->add_option("--wavelengths", args->wavelengths,
+                    "Wavelengths in nm, comma-separated (e.g. 486.1327,587.5618,656.2725): the "
+                    "middle one is the primary, for every single-wavelength figure; the "
+                    "shortest and longest give the chromatic block and the Seidel colour sums "
+                    "(default: the F and C lines)")
+        ->delimiter(',')
+        ->check(CLI::PositiveNumber)
+        ->excludes(wavelength);
     cmd->add_flag("--json", args->json, "Print the figures as JSON");
     cmd->add_option("--svg", args->svg, "Write a ray diagram (SVG) to this file");
-    cmd->add_option(
-           "--aperture", args->aperture,
-           "Diameter of the collimated beam, in the scene's unit (default: all the lens passes)")
-        ->check(CLI::PositiveNumber);
+    CLI::Option* aperture =
+        cmd->add_option("--aperture", args->aperture,
+                        "Diameter of the collimated beam, in the scene's unit (default: all the "
+                        "lens passes)")
+            ->check(CLI::PositiveNumber);
+    cmd->add_option("--stop", args->stop,
+                    "The aperture stop: a surface, counted from 1 along the light (default: 1, "
+                    "the first surface)")
+        ->check(whole_number<int>());
+    CLI::Option* epd =
+        cmd->add_option("--epd", args->epd,
+                        "Entrance pupil diameter (default: the beam of --aperture with the stop "
+                        "on the first surface, else the stop surface's rim)")
+            ->check(CLI::PositiveNumber)
+            ->excludes(aperture);
+    cmd->add_option("--f-number", args->f_number,
+                    "F-number: sets the entrance pupil diameter to EFL / N")
+        ->check(CLI::PositiveNumber)
+        ->excludes(aperture)
+        ->excludes(epd);
+    CLI::Option* distance =
+        cmd->add_option("--object-distance", args->object_distance,
+                        "Distance from the object to the first vertex (default: the object at "
+                        "infinity)")
+            ->check(CLI::PositiveNumber);
+    cmd->add_option("--fields", args->fields,
+                    "Field angles in degrees, comma-separated, for an object at infinity "
+                    "(default: 0); the chief ray comes from the largest")
+        ->delimiter(',')
+        ->excludes(distance);
+    cmd->add_option("--field-heights", args->field_heights,
+                    "Object heights, comma-separated, for an object at --object-distance")
+        ->delimiter(',')
+        ->needs(distance);
+    cmd->add_flag("--seidel", args->seidel,
+                  "Print the Seidel sums surface by surface (JSON always has them)");
     cmd->add_option("--unit", args->unit,
                     "The scene's length unit, for the ray diagram's labels (e.g. mm); a scene "
                     "declares none, so they say \"units\" without it");

@@ -1,9 +1,11 @@
 #include "analysis/lens_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
+#include "analysis/first_order_report.h"
 #include "scene/scene_error.h"
 
 namespace lenslab {
@@ -47,19 +49,40 @@ std::string fraunhofer_name(double nm) {
 }
 
 LensReport analyze_lens_system(const OpticalSystem& system, const LensReportOptions& options) {
-    check_wavelength(system, options.wavelength_nm, "--wavelength");
-    check_wavelength(system, kLineF, "the F line");
-    check_wavelength(system, kLineC, "the C line");
+    check_wavelength(system, options.wavelength_nm,
+                     options.wavelengths.empty() ? "--wavelength" : "--wavelengths");
     LensReport r;
     r.wavelength_nm = options.wavelength_nm;
+    r.wavelengths = options.wavelengths.empty() ? std::vector<double>{options.wavelength_nm}
+                                                : options.wavelengths;
+    for (double nm : r.wavelengths) check_wavelength(system, nm, "--wavelengths");
+    if (r.wavelengths.size() >= 2) {
+        r.short_nm = *std::min_element(r.wavelengths.begin(), r.wavelengths.end());
+        r.long_nm = *std::max_element(r.wavelengths.begin(), r.wavelengths.end());
+    } else {
+        check_wavelength(system, kLineF, "the F line");
+        check_wavelength(system, kLineC, "the C line");
+    }
     r.paraxial = paraxial_trace(system, options.wavelength_nm);
-    r.paraxial_F = paraxial_trace(system, kLineF);
-    r.paraxial_C = paraxial_trace(system, kLineC);
+    r.paraxial_F = paraxial_trace(system, r.short_nm);
+    r.paraxial_C = paraxial_trace(system, r.long_nm);
     r.chromatic_shift_FC = r.paraxial_F.bfl - r.paraxial_C.bfl;
 
-    r.aperture_radius = options.aperture_radius > 0
-                            ? options.aperture_radius
-                            : usable_aperture_radius(system, options.wavelength_nm);
+    const double usable = usable_aperture_radius(system, options.wavelength_nm);
+    r.aperture_radius = options.aperture_radius > 0 ? options.aperture_radius : usable;
+    FirstOrderOptions first = options.first_order;
+    first.wavelength_nm = options.wavelength_nm;
+    if (first.epd <= 0 && first.f_number <= 0 && first.stop == 0) {
+        first.epd = 2.0 * r.aperture_radius;
+    }
+    r.first_order = first_order(system, r.paraxial, first);
+    r.seidel = seidel_sums(system, r.first_order, r.short_nm, r.long_nm);
+    r.real_chief = trace_real_chief_ray(system, r.first_order);
+    // The axial beam fills the entrance pupil, as far as the lenses let it through.
+    if (options.aperture_radius <= 0) {
+        r.aperture_radius = std::min(usable, 0.5 * r.first_order.entrance_pupil.diameter);
+    }
+
     const std::vector<ExitRay> rays = trace_collimated_beam(
         system, options.wavelength_nm, r.aperture_radius, options.spot_rings, &r.rays_lost);
     r.rays = static_cast<int>(rays.size()) + r.rays_lost;
@@ -95,6 +118,11 @@ nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport
         lenses.push_back({{"object", e.path}, {"name", e.name}, {"glass", e.glass}});
     }
     const ParaxialResult& p = r.paraxial;
+    ordered_json first = first_order_json(system, r.first_order);
+    first["real_chief_ray"] = r.real_chief
+                                  ? ordered_json{{"image_height", r.real_chief->image_height},
+                                                 {"distortion", r.real_chief->distortion}}
+                                  : ordered_json();
     return {
         {"wavelength_nm", r.wavelength_nm},
         {"length_unit", "scene unit (mm for lens prescriptions)"},
@@ -116,8 +144,9 @@ nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport
         {"rms_spot_best", r.spot_best.rms_radius},
         {"geometric_spot_best", r.spot_best.geometric_radius},
         {"chromatic_shift_FC", r.chromatic_shift_FC},
+        {"wavelengths_nm", r.wavelengths},
         {"chromatic",
-         {{"wavelengths_nm", {kLineF, kLineC}},
+         {{"wavelengths_nm", {r.short_nm, r.long_nm}},
           {"bfl_F", r.paraxial_F.bfl},
           {"bfl_C", r.paraxial_C.bfl},
           {"efl_F", r.paraxial_F.efl},
@@ -126,10 +155,12 @@ nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport
         {"surfaces", surfaces},
         {"lenses", lenses},
         {"ignored", system.ignored},
+        {"first_order", first},
+        {"seidel", seidel_json(system, r.seidel)},
     };
 }
 
-std::string report_table(const OpticalSystem& system, const LensReport& r) {
+std::string report_table(const OpticalSystem& system, const LensReport& r, bool seidel) {
     std::ostringstream out;
     const ParaxialResult& p = r.paraxial;
     const double last = system.last_vertex();
@@ -165,6 +196,11 @@ std::string report_table(const OpticalSystem& system, const LensReport& r) {
         << ": collimated beam on the axis, diameter " << length(2.0 * r.aperture_radius) << ", "
         << r.rays << " rays";
     if (r.rays_lost > 0) out << " (" << r.rays_lost << " clipped or totally reflected)";
+    // A pupil wider than the lenses pass: the beam is what passes, so say so.
+    if (r.first_order.entrance_pupil.diameter > 2.0 * r.aperture_radius * (1.0 + 1e-9)) {
+        out << " (narrower than the entrance pupil, "
+            << length(r.first_order.entrance_pupil.diameter) << ": the lenses pass no more)";
+    }
     out << "\n";
     row("RMS spot radius at the paraxial focus", r.spot_paraxial.rms_radius,
         "geometric radius " + length(r.spot_paraxial.geometric_radius));
@@ -186,11 +222,19 @@ std::string report_table(const OpticalSystem& system, const LensReport& r) {
         out << line;
     }
 
-    out << "\nChromatic (paraxial), F = " << wavelength_text(kLineF)
-        << ", C = " << wavelength_text(kLineC) << "\n";
-    row("BFL at the F line", r.paraxial_F.bfl);
-    row("BFL at the C line", r.paraxial_C.bfl);
-    row("focal shift BFL(F) - BFL(C)", r.chromatic_shift_FC);
+    const bool fc = r.short_nm == kLineF && r.long_nm == kLineC;
+    out << "\nChromatic (paraxial), " << (fc ? "F = " : "short ") << wavelength_text(r.short_nm)
+        << (fc ? ", C = " : ", long ") << wavelength_text(r.long_nm) << "\n";
+    row(fc ? "BFL at the F line" : "BFL at the short wavelength", r.paraxial_F.bfl);
+    row(fc ? "BFL at the C line" : "BFL at the long wavelength", r.paraxial_C.bfl);
+    row(fc ? "focal shift BFL(F) - BFL(C)" : "focal shift BFL(short) - BFL(long)",
+        r.chromatic_shift_FC);
+    out << "\n" << first_order_table(system, r.first_order);
+    if (r.real_chief && r.first_order.field != 0.0) {
+        row("real chief ray image height", r.real_chief->image_height,
+            "distortion " + fmt("%.6f", 100.0 * r.real_chief->distortion) + " %");
+    }
+    if (seidel) out << "\n" << seidel_table(system, r.seidel);
     return out.str();
 }
 

@@ -6,23 +6,39 @@
 #include <string>
 
 #include "analysis/aberrations.h"
+#include "analysis/first_order.h"
 #include "analysis/optical_system.h"
 #include "analysis/paraxial.h"
+#include "analysis/real_chief_ray.h"
+#include "analysis/seidel.h"
 
 namespace lenslab {
 
 struct LensReportOptions {
-    double wavelength_nm = kLineD;  // the d line
-    double aperture_radius = 0;     // entrance beam radius; 0: the usable aperture
-    int spot_rings = 16;            // hexapolar rings: 1 + 3 n (n + 1) rays
+    double wavelength_nm = kLineD;  // the primary wavelength: the d line
+    // Every wavelength asked for (the primary among them); with two or more, the chromatic
+    // block and the Seidel colour sums use the shortest and longest, else the F and C lines.
+    std::vector<double> wavelengths;
+    double aperture_radius = 0;  // entrance beam radius; 0: the usable aperture
+    // Stop, pupil, object and fields. Its wavelength is wavelength_nm. With neither an
+    // entrance pupil diameter nor an F-number and the stop on the first surface (the
+    // default), the entrance pupil is the axial beam (aperture_radius), as before stops.
+    FirstOrderOptions first_order;
+    int spot_rings = 16;  // hexapolar rings: 1 + 3 n (n + 1) rays
     int lsa_samples = 20;
 };
 
 struct LensReport {
     double wavelength_nm = 0;
     ParaxialResult paraxial;  // at wavelength_nm
+    std::vector<double> wavelengths;
+    double short_nm = kLineF, long_nm = kLineC;  // the chromatic block's pair
+    // At short_nm and long_nm (named for the default pair, the F and C lines).
     ParaxialResult paraxial_F, paraxial_C;
-    double chromatic_shift_FC = 0;  // BFL(F) - BFL(C): paraxial longitudinal colour
+    double chromatic_shift_FC = 0;  // BFL(short) - BFL(long): paraxial longitudinal colour
+    FirstOrder first_order;
+    std::optional<RealChiefRay> real_chief;  // none when it cannot be traced
+    Seidel seidel;
     double aperture_radius = 0;
     int rays = 0, rays_lost = 0;
     std::vector<LsaPoint> lsa;
@@ -34,7 +50,9 @@ struct LensReport {
 LensReport analyze_lens_system(const OpticalSystem& system, const LensReportOptions& options);
 
 nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport& report);
-std::string report_table(const OpticalSystem& system, const LensReport& report);
+// With `seidel`, the table lists the Seidel sums surface by surface.
+std::string report_table(const OpticalSystem& system, const LensReport& report,
+                         bool seidel = false);
 
 // "d line" for 587.56 nm and the like, or "" for a wavelength with no line name.
 std::string fraunhofer_name(double nm);

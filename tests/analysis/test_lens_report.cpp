@@ -66,5 +66,37 @@ TEST(LensReport, AGivenApertureIsUsed) {
     EXPECT_LT(r.spot_best.rms_radius, 0.01 * analyze_lens_system(system, {}).spot_best.rms_radius);
 }
 
+TEST(LensReport, DefaultStopKeepsTheBeamAsTheEntrancePupil) {
+    // Without stop options the stop is the first surface and the entrance pupil is the beam
+    // the report has always traced, so the figures from before stops stay as they were.
+    const OpticalSystem system = build_optical_system(lens_scene({kLens}));
+    const LensReport r = analyze_lens_system(system, {});
+    EXPECT_DOUBLE_EQ(r.first_order.entrance_pupil.diameter, 2.0 * r.aperture_radius);
+    EXPECT_DOUBLE_EQ(r.first_order.entrance_pupil.position, 0.0);
+    const auto j = report_json(system, r);
+    for (const char* key : {"efl", "bfl", "f_number", "entrance_pupil", "exit_pupil",
+                            "lagrange_invariant", "na", "working_f_number", "rays"}) {
+        EXPECT_TRUE(j["first_order"].contains(key)) << key;
+    }
+    EXPECT_DOUBLE_EQ(j["first_order"]["f_number"].get<double>(),
+                     r.paraxial.efl / (2.0 * r.aperture_radius));
+    EXPECT_EQ(j["seidel"]["surfaces"].size(), 2u);
+    EXPECT_TRUE(j["seidel"]["total"].contains("S_I"));
+}
+
+TEST(LensReport, WavelengthsSetThePrimaryAndTheColourPair) {
+    const OpticalSystem system = build_optical_system(lens_scene({kLens}));
+    LensReportOptions o;
+    o.wavelength_nm = 546.074;
+    o.wavelengths = {480.0, 546.074, 643.8469};
+    const LensReport r = analyze_lens_system(system, o);
+    EXPECT_DOUBLE_EQ(r.short_nm, 480.0);
+    EXPECT_DOUBLE_EQ(r.long_nm, 643.8469);
+    EXPECT_DOUBLE_EQ(r.paraxial_F.bfl, paraxial_trace(system, 480.0).bfl);
+    EXPECT_DOUBLE_EQ(r.seidel.short_nm, 480.0);
+    const std::string table = report_table(system, r);
+    EXPECT_NE(table.find("short 480.00 nm, long 643.85 nm"), std::string::npos) << table;
+}
+
 }  // namespace
 }  // namespace lenslab

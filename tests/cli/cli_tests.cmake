@@ -167,6 +167,36 @@ lenslab_cli_test(NAME analyze.bad.unknown_lens
     ARGS analyze scenes/hyperbolic_lens_beam.json --lens hyperbolik
     CHECKS -DEXPECT_EXIT=2
            "-DSTDERR_LINE=lenslab: error: --lens: no lens named 'hyperbolik' in scenes/hyperbolic_lens_beam.json (lenses: hyperbolic, spherical)")
+# The lens-design bench: stop, pupils, fields, wavelengths and Seidel sums.
+set(analyze_triplet ${analyze_data}/cooke_triplet.json)
+lenslab_cli_test(NAME analyze.first_order_json
+    ARGS analyze ${analyze_triplet} --json --stop 3 --epd 12.5 --fields 0,14,20
+         --wavelengths 486.1327,587.5618,656.2725
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON
+           "-DJSON_KEYS=first_order,seidel,efl,bfl,chromatic,wavelengths_nm,lsa"
+           "-DSTDOUT_CONTAINS=\"lagrange_invariant\"")
+lenslab_cli_test(NAME analyze.first_order_pupils
+    ARGS analyze ${analyze_triplet} --json --stop 3 --f-number 4 --fields 20
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DSTDOUT_CONTAINS=\"exit_pupil\": {")
+lenslab_cli_test(NAME analyze.seidel_table
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 20 --seidel
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=Seidel sums")
+lenslab_cli_test(NAME analyze.finite_object
+    ARGS analyze ${analyze_data}/lens_only.json --json --object-distance 200 --field-heights 5
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DSTDOUT_CONTAINS=\"magnification\": -")
+lenslab_cli_test(NAME analyze.bad.stop_out_of_range
+    ARGS analyze ${analyze_triplet} --stop 99
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --stop 99: the system has 6 surfaces, numbered 1 to 6")
+lenslab_cli_test(NAME analyze.bad.stop_not_whole
+    ARGS analyze ${analyze_triplet} --stop 1.5
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--stop: must be a whole number, got '1.5'")
+lenslab_cli_test(NAME analyze.bad.epd_and_f_number
+    ARGS analyze ${analyze_triplet} --epd 10 --f-number 4
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--epd excludes --f-number")
+lenslab_cli_test(NAME analyze.bad.field_heights_at_infinity
+    ARGS analyze ${analyze_triplet} --field-heights 5
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=requires --object-distance")
 # The renderer still needs a camera: a lens-only file is refused there.
 lenslab_cli_test(NAME render.bad.lens_only_no_camera
     ARGS render ${analyze_data}/lens_only.json -o ${LENSLAB_CLI_OUT}/lens_only.png
