@@ -150,8 +150,12 @@ TEST(PupilFromRays, RaysOutsideTheLensAreVignetted) {
             const bool lit = pupil.amplitude[pupil.index(i, j)] > 0;
             if (rho <= 1) ++inside;
             passed += lit;
-            if (lit) EXPECT_LE(rho * aperture, 12.5);
-            if (rho * aperture < 12.3) EXPECT_TRUE(lit) << i << " " << j;
+            if (lit) {
+                EXPECT_LE(rho * aperture, 12.5);
+            }
+            if (rho * aperture < 12.3) {
+                EXPECT_TRUE(lit) << i << " " << j;
+            }
         }
     EXPECT_NEAR(static_cast<double>(passed) / inside, std::pow(12.5 / aperture, 2), 0.02);
     // The default aperture is the usable one: the whole lens.
