@@ -32,7 +32,8 @@ Psf compute_psf(const PupilFunction& pupil) {
     const double amplitude_sum = fill_pupil_field(pupil, field);
     // Fraunhofer: the image-plane field is the pupil field's Fourier transform, frequency
     // index k at image coordinate k·λF/padding (Goodman, eq. 4-17 for a converging wave).
-    field.forward();
+    // The guard band's rows are zero: only the pupil's rows need the first pass.
+    field.forward(m / 2 - pupil.samples / 2, pupil.samples);
     Psf psf;
     psf.size = m;
     psf.spacing = pupil.psf_spacing();

@@ -1,5 +1,6 @@
 #include "analysis/pupil_from_rays.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 

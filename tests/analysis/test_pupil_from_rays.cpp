@@ -12,7 +12,8 @@
 // - the hyperboloid of conic constant -n² focuses a collimated beam to a point (Hecht,
 //   Optics, 5th ed., section 5.2.1): its wavefront is flat to a small fraction of a wave and
 //   its MTF at F/5 is the diffraction limit;
-// - rays outside the lens are vignetted: zero amplitude.
+// - rays outside the lens are vignetted: zero amplitude;
+// - diffraction_figures, the command line's one call, reports those same numbers.
 
 #include <gtest/gtest.h>
 
@@ -21,6 +22,7 @@
 
 #include "analysis/aberrations.h"
 #include "analysis/diffraction.h"
+#include "analysis/diffraction_figures.h"
 #include "analysis/paraxial.h"
 #include "analysis/pupil_from_rays.h"
 #include "lens_scene_builder.h"
@@ -161,6 +163,38 @@ TEST(PupilFromRays, RaysOutsideTheLensAreVignetted) {
     // The default aperture is the usable one: the whole lens.
     RayPupilOptions whole = ray_pupil_options(0, 32);
     EXPECT_DOUBLE_EQ(RayWavefront(lens, whole).aperture_radius(), 12.5);
+}
+
+TEST(PupilFromRays, FiguresForTheCommandLineAreTheSameNumbers) {
+    const OpticalSystem lens = flat_front_lens(test::sphere(kRayPupilRadius));
+    const RayPupilOptions options = ray_pupil_options(4.0);
+    const RayWavefront wavefront(lens, options);
+    const std::vector<double> frequencies = default_mtf_frequencies(1 / (550e-6 * 12.5), 5);
+    ASSERT_EQ(frequencies.size(), 5u);
+    EXPECT_NEAR(frequencies.back(), 145.4545, 1e-4);  // the cutoff at F/12.5
+
+    const DiffractionFigures best = diffraction_figures(lens, options, frequencies);
+    EXPECT_DOUBLE_EQ(best.image_z, wavefront.best_focus_z());
+    const PupilFunction pupil = wavefront.pupil(best.image_z);
+    EXPECT_DOUBLE_EQ(best.wavefront_rms, wavefront_rms(pupil));
+    EXPECT_DOUBLE_EQ(best.strehl, compute_psf(pupil).strehl);
+    EXPECT_DOUBLE_EQ(best.f_number, 12.5);
+    EXPECT_DOUBLE_EQ(best.aperture_radius, 4.0);
+    EXPECT_NEAR(best.airy_radius, 1.21967 * 550e-6 * 12.5, 2e-9);
+    // Aberrations move light out of the Airy disc: less than a perfect lens's 0.838.
+    EXPECT_LT(best.encircled_energy_at_airy_radius, 0.83);
+    EXPECT_GT(best.encircled_energy_at_airy_radius, 0.7);
+    ASSERT_EQ(best.mtf.tangential.size(), 5u);
+    for (size_t k = 0; k + 1 < 5; ++k) {
+        EXPECT_LE(best.mtf.tangential[k], best.mtf.diffraction_limit[k] + 1e-3);
+        EXPECT_NEAR(best.mtf.tangential[k], best.mtf.sagittal[k], 1e-9);  // on the axis
+    }
+    EXPECT_NEAR(best.mtf.tangential.back(), 0.0, 1e-6);
+
+    const DiffractionFigures paraxial =
+        diffraction_figures(lens, options, frequencies, DiffractionFocus::Paraxial);
+    EXPECT_DOUBLE_EQ(paraxial.image_z, wavefront.paraxial_focus_z());
+    EXPECT_LT(paraxial.strehl, best.strehl - 0.2);
 }
 
 }  // namespace
