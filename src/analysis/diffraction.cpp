@@ -33,7 +33,7 @@ Psf compute_psf(const PupilFunction& pupil) {
     // Fraunhofer: the image-plane field is the pupil field's Fourier transform, frequency
     // index k at image coordinate k·λF/padding (Goodman, eq. 4-17 for a converging wave).
     // The guard band's rows are zero: only the pupil's rows need the first pass.
-    field.forward(m / 2 - pupil.samples / 2, pupil.samples);
+    field.forward_transposed(m / 2 - pupil.samples / 2, pupil.samples);
     Psf psf;
     psf.size = m;
     psf.spacing = pupil.psf_spacing();
@@ -41,10 +41,8 @@ Psf compute_psf(const PupilFunction& pupil) {
     psf.intensity.resize(static_cast<size_t>(m) * m);
     const double norm = 1.0 / (amplitude_sum * amplitude_sum);
     // Zero frequency (the reference point) to the grid's centre.
-    for (int i = 0; i < m; ++i)
-        for (int j = 0; j < m; ++j)
-            psf.intensity[static_cast<size_t>(i) * m + j] =
-                std::norm(field((i + m / 2) % m, (j + m / 2) % m)) * norm;
+    field.read_centred(psf.intensity.data(),
+                       [norm](const std::complex<double>& v) { return std::norm(v) * norm; });
     psf.strehl = *std::max_element(psf.intensity.begin(), psf.intensity.end());
     return psf;
 }

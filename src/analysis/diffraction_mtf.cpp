@@ -17,19 +17,19 @@ OpticalTransfer compute_otf(const Psf& psf) {
     // The reference point to index 0, so the OTF's phase is measured about it.
     for (int i = 0; i < m; ++i)
         for (int j = 0; j < m; ++j) grid((i + m / 2) % m, (j + m / 2) % m) = psf.at(i, j);
-    grid.forward();
-    const std::complex<double> zero_frequency = grid(0, 0);
-    if (!(std::abs(zero_frequency) > 0)) throw std::invalid_argument("the PSF holds no energy");
+    grid.forward_transposed();
+    // The zero frequency holds Σ PSF, real and positive.
+    const double zero_frequency = grid(0, 0).real();
+    if (!(zero_frequency > 0)) throw std::invalid_argument("the PSF holds no energy");
     OpticalTransfer otf;
     otf.size = m;
     otf.spacing = 1.0 / (m * psf.spacing);
     otf.cutoff = psf.cutoff;
-    otf.intensity_scale = zero_frequency.real() / (static_cast<double>(m) * m);
+    otf.intensity_scale = zero_frequency / (static_cast<double>(m) * m);
     otf.values.resize(static_cast<size_t>(m) * m);
-    for (int i = 0; i < m; ++i)
-        for (int j = 0; j < m; ++j)
-            otf.values[static_cast<size_t>(i) * m + j] =
-                grid((i + m / 2) % m, (j + m / 2) % m) / zero_frequency;
+    const double norm = 1.0 / zero_frequency;
+    grid.read_centred(otf.values.data(),
+                      [norm](const std::complex<double>& v) { return v * norm; });
     return otf;
 }
 

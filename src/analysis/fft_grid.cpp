@@ -57,7 +57,7 @@ FftGrid::FftGrid(int size) : size_(size) {
 
 FftGrid::~FftGrid() { fftw_free(data_); }
 
-void FftGrid::forward(int first_row, int rows) {
+void FftGrid::forward_transposed(int first_row, int rows) {
     if (rows < 0) first_row = 0, rows = size_;
     if (first_row < 0 || first_row + rows > size_)
         throw std::invalid_argument("FFT row band outside the grid");
@@ -72,7 +72,6 @@ void FftGrid::forward(int first_row, int rows) {
     }
     transpose_square(data_, size_);
     fftw_execute_dft(row_plan_for(size_, size_), d, d);
-    transpose_square(data_, size_);
 }
 
 }  // namespace lenslab
