@@ -14,7 +14,7 @@ PACKAGES=(
     clang libclang-rt-14-dev llvm clang-format
     lld
 )
-# libfftw3-dev: the FFTs of the diffraction PSF and MTF (src/analysis/diffraction.cpp).
+# libfftw3-dev: the FFTs of the diffraction PSF and MTF (src/analysis/fft_grid.cpp).
 # clang + libclang-rt-14-dev: libFuzzer and clang's sanitizers for the fuzz targets
 # (scripts/fuzz.sh); llvm: llvm-symbolizer, so sanitizer reports name files and lines;
 # clang-format: scripts/check-format.sh, the first thing the test suite checks; lld: the
