@@ -22,7 +22,8 @@ DiffractionFigures diffraction_figures(const OpticalSystem& system, const RayPup
     f.airy_radius = 3.8317059702 / kPi * wavefront.wavelength() * wavefront.f_number();
     const OpticalTransfer otf = compute_otf(f.psf);
     f.encircled_energy_at_airy_radius = encircled_energy(otf, {f.airy_radius})[0];
-    f.mtf = mtf_curves(otf, frequencies);
+    f.mtf =
+        mtf_curves(otf, frequencies.empty() ? default_mtf_frequencies(otf.cutoff) : frequencies);
     return f;
 }
 

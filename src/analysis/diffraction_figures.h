@@ -28,6 +28,8 @@ struct DiffractionFigures {
     MtfCurves mtf;  // tangential, sagittal and the diffraction limit at `frequencies`
 };
 
+// `frequencies` in cycles per unit length (cycles/mm for prescriptions); empty: the 10 of
+// default_mtf_frequencies up to the cutoff. Throws what RayWavefront and compute_psf throw.
 DiffractionFigures diffraction_figures(const OpticalSystem& system, const RayPupilOptions& options,
                                        const std::vector<double>& frequencies,
                                        DiffractionFocus focus = DiffractionFocus::Best);

@@ -195,6 +195,12 @@ TEST(PupilFromRays, FiguresForTheCommandLineAreTheSameNumbers) {
         diffraction_figures(lens, options, frequencies, DiffractionFocus::Paraxial);
     EXPECT_DOUBLE_EQ(paraxial.image_z, wavefront.paraxial_focus_z());
     EXPECT_LT(paraxial.strehl, best.strehl - 0.2);
+
+    // No frequencies asked for: ten up to the cutoff.
+    const DiffractionFigures defaults = diffraction_figures(lens, options, {});
+    ASSERT_EQ(defaults.mtf.frequencies.size(), 10u);
+    EXPECT_NEAR(defaults.mtf.frequencies.back(), 145.4545, 1e-4);
+    EXPECT_NEAR(defaults.mtf.tangential[3], best.mtf.tangential[1], 1e-12);  // both 0.4 ν_c
 }
 
 }  // namespace
