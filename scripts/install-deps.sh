@@ -6,7 +6,7 @@ set -euo pipefail
 PACKAGES=(
     cmake ninja-build g++ ccache pkg-config
     libtbb-dev nlohmann-json3-dev libcli11-dev
-    libpng-dev libopenexr-dev
+    libpng-dev libopenexr-dev libfftw3-dev
     libnanoflann-dev libmuparser-dev libpcg-cpp-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     gnuplot-nox colord-data
@@ -14,6 +14,7 @@ PACKAGES=(
     clang libclang-rt-14-dev llvm clang-format
     lld
 )
+# libfftw3-dev: the FFTs of the diffraction PSF and MTF (src/analysis/fft_grid.cpp).
 # clang + libclang-rt-14-dev: libFuzzer and clang's sanitizers for the fuzz targets
 # (scripts/fuzz.sh); llvm: llvm-symbolizer, so sanitizer reports name files and lines;
 # clang-format: scripts/check-format.sh, the first thing the test suite checks; lld: the
