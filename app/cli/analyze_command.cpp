@@ -6,7 +6,10 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <vector>
 
+#include "analysis/diffraction_report.h"
 #include "analysis/lens_report.h"
 #include "analysis/ray_diagram.h"
 #include "analysis/ray_diagram_svg.h"
@@ -33,6 +36,8 @@ struct AnalyzeArgs {
     double object_distance = 0;  // 0: the object at infinity
     std::vector<double> fields, field_heights;
     bool seidel = false;
+    bool psf = false, mtf = false;
+    std::vector<double> mtf_frequencies;  // empty: ten up to the cutoff
 };
 
 // The middle of the wavelengths as given (for an even count, the one before the middle).
@@ -114,6 +119,13 @@ int run(const AnalyzeArgs& a) {
             options.aperture_radius = 0.5 * a.aperture;
         }
         const LensReport report = analyze_lens_system(system, options);
+        std::optional<DiffractionFigures> diffraction;
+        if (a.psf || a.mtf) {
+            RayPupilOptions pupil;
+            pupil.wavelength_nm = options.wavelength_nm;
+            pupil.aperture_radius = 0.5 * report.first_order.entrance_pupil.diameter;
+            diffraction = diffraction_figures(system, pupil, a.mtf_frequencies);
+        }
         if (!a.svg.empty()) {
             RayDiagramOptions diagram;
             diagram.unit = a.unit;
@@ -125,10 +137,13 @@ int run(const AnalyzeArgs& a) {
             nlohmann::ordered_json j = report_json(system, report);
             j["scene"] = a.scene;
             if (!a.svg.empty()) j["svg"] = a.svg;
+            if (a.psf) j["psf"] = psf_json(*diffraction);
+            if (a.mtf) j["mtf"] = mtf_json(*diffraction);
             std::cout << j.dump(2) << "\n";
         } else {
             std::cout << "lenslab analyze " << a.scene << ": "
                       << report_table(system, report, a.seidel);
+            if (diffraction) std::cout << diffraction_table(*diffraction, a.psf, a.mtf);
             if (!a.svg.empty()) std::cout << "\nray diagram written to " << a.svg << "\n";
         }
         return 0;
@@ -197,6 +212,20 @@ Action add_analyze_command(CLI::App& app) {
         ->needs(distance);
     cmd->add_flag("--seidel", args->seidel,
                   "Print the Seidel sums surface by surface (JSON always has them)");
+    cmd->add_flag(
+        "--psf", args->psf,
+        "Diffraction on the axis at the primary wavelength: the point spread function's "
+        "Strehl ratio, wavefront RMS and encircled energy at the best focus (lengths in mm)");
+    CLI::Option* mtf = cmd->add_flag(
+        "--mtf", args->mtf,
+        "Diffraction MTF on the axis at the primary wavelength, tangential and sagittal, beside "
+        "the diffraction limit (frequencies in cycles/mm)");
+    cmd->add_option("--mtf-frequencies", args->mtf_frequencies,
+                    "Frequencies of the MTF in cycles/mm, comma-separated (default: ten up to "
+                    "the cutoff 1/(lambda N))")
+        ->delimiter(',')
+        ->check(CLI::PositiveNumber)
+        ->needs(mtf);
     cmd->add_option("--unit", args->unit,
                     "The scene's length unit, for the ray diagram's labels (e.g. mm); a scene "
                     "declares none, so they say \"units\" without it");

@@ -202,8 +202,7 @@ PhotonStart PointSourceLight::sample_le_towards(const PhotonTargets& targets,
                                                 const AimSample& u) const {
     Vec3 dir;
     double pdf;
-    if (!targets.sample_direction(m_position, u[0], u[1], u[2], emission_solid_angle(), dir,
-                                  pdf)) {
+    if (!targets.sample_direction(m_position, u[0], u[1], u[2], emission_solid_angle(), dir, pdf)) {
         dir = sample_direction(u[1], u[2], pdf);
     }
     // The intensity over the direction's density: 0 where the light sends nothing.

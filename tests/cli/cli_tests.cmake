@@ -184,6 +184,18 @@ lenslab_cli_test(NAME analyze.seidel_table
 lenslab_cli_test(NAME analyze.finite_object
     ARGS analyze ${analyze_data}/lens_only.json --json --object-distance 200 --field-heights 5
     CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DSTDOUT_CONTAINS=\"magnification\": -")
+# Diffraction on the axis: the hyperbolic lens (conic -n^2) is free of spherical aberration.
+lenslab_cli_test(NAME analyze.psf_mtf_json
+    ARGS analyze scenes/hyperbolic_lens_beam.json --lens hyperbolic --json --psf --mtf
+         --mtf-frequencies 10,20,40
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON
+           "-DJSON_KEYS=psf,mtf,first_order" "-DSTDOUT_CONTAINS=\"diffraction_limit\": [")
+lenslab_cli_test(NAME analyze.mtf_table
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --mtf
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=diffraction limit")
+lenslab_cli_test(NAME analyze.bad.mtf_frequencies_without_mtf
+    ARGS analyze ${analyze_triplet} --mtf-frequencies 10
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--mtf-frequencies requires --mtf")
 lenslab_cli_test(NAME analyze.bad.stop_out_of_range
     ARGS analyze ${analyze_triplet} --stop 99
     CHECKS -DEXPECT_EXIT=2
