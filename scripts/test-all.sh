@@ -2,12 +2,11 @@
 # The whole test suite, as CI runs it (README, second command; .ci/run): first the C++
 # files' formatting (scripts/check-format.sh, seconds), then
 #   1. release build + every test, the editor's aside (release-ci preset: build/release-ci);
-#   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: clang, so the
-#      sanitizers see a second compiler's code; the library at -O1, tests and apps at -O0;
-#      the editor included, no benchmarks) + every test but the 20M-photon convergence test
-#      (too slow sanitized). The editor is built and its QTest suites run here only: compiling Qt's
-#      headers twice was about a quarter of stage 1's build (docs/performance.md, "Test suite
-#      time");
+#   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: the library at
+#      -O1, tests and apps at -O0; the editor included, no benchmarks) + every test but the
+#      20M-photon convergence test (too slow sanitized). The editor is built and its QTest
+#      suites run here only: compiling Qt's headers twice was about a quarter of stage 1's
+#      build (docs/performance.md, "Test suite time");
 #   3. the libFuzzer targets, all at once for 60 s (scripts/fuzz.sh).
 # Each stage prints a banner and its time; the first failure stops the run.
 #
