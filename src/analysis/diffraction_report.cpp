@@ -9,9 +9,10 @@ namespace {
 // Only the axial field is measured so far (diffraction_figures.h traces an axial beam).
 constexpr double kAxialField = 0.0;
 
-std::string diffraction_line(const char* format, double a, double b = 0, double c = 0) {
+template <class... Numbers>
+std::string diffraction_line(const char* format, Numbers... numbers) {
     char text[160];
-    std::snprintf(text, sizeof text, format, a, b, c);
+    std::snprintf(text, sizeof text, format, numbers...);
     return text;
 }
 
@@ -58,10 +59,9 @@ std::string diffraction_table(const DiffractionFigures& figures, bool psf, bool 
     if (mtf) {
         out += "  MTF (cycles/mm)                tangential  sagittal  diffraction limit\n";
         for (size_t i = 0; i < figures.mtf.frequencies.size(); ++i) {
-            out += diffraction_line("  %10.2f                       %.4f      %.4f",
+            out += diffraction_line("  %10.2f                       %.4f      %.4f    %.4f\n",
                                     figures.mtf.frequencies[i], figures.mtf.tangential[i],
-                                    figures.mtf.sagittal[i]);
-            out += diffraction_line("    %.4f\n", figures.mtf.diffraction_limit[i]);
+                                    figures.mtf.sagittal[i], figures.mtf.diffraction_limit[i]);
         }
     }
     return out;

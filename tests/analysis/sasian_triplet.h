@@ -7,6 +7,7 @@
 // 3); the page uses an entrance pupil diameter of 12.5, a 20 degree field and 587.5618 nm.
 // The diameters are the page's semi-diameters, rounded up; paraxial figures ignore them.
 
+#include "analysis/first_order.h"
 #include "analysis/optical_system.h"
 #include "lens_scene_builder.h"
 
@@ -23,5 +24,15 @@ inline OpticalSystem sasian_triplet() {
 
 inline constexpr int kSasianStop = 2;  // surface 3, counted from 0
 inline constexpr double kSasianEpd = 12.5, kSasianField = 20.0, kSasianNm = 587.5618;
+
+// The page's stop, entrance pupil and wavelength, with the chief ray from `field` degrees.
+inline FirstOrderOptions sasian_options(double field = kSasianField) {
+    FirstOrderOptions o;
+    o.wavelength_nm = kSasianNm;
+    o.stop = kSasianStop;
+    o.epd = kSasianEpd;
+    o.fields = {field};
+    return o;
+}
 
 }  // namespace lenslab::test

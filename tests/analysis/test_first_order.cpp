@@ -27,11 +27,7 @@ using test::sphere;
 
 FirstOrder sasian_first_order() {
     const OpticalSystem system = sasian_triplet();
-    FirstOrderOptions o;
-    o.wavelength_nm = test::kSasianNm;
-    o.stop = test::kSasianStop;
-    o.epd = test::kSasianEpd;
-    o.fields = {test::kSasianField};
+    const FirstOrderOptions o = test::sasian_options();
     return first_order(system, paraxial_trace(system, o.wavelength_nm), o);
 }
 

@@ -32,12 +32,8 @@ FirstOrder seidel_first_order(const OpticalSystem& system, FirstOrderOptions o) 
 
 TEST(SeidelCookeTriplet, SumsMatchRayopticsTable) {
     const OpticalSystem system = test::sasian_triplet();
-    FirstOrderOptions o;
-    o.wavelength_nm = test::kSasianNm;
-    o.stop = test::kSasianStop;
-    o.epd = test::kSasianEpd;
-    o.fields = {test::kSasianField};
-    const Seidel s = seidel_sums(system, seidel_first_order(system, o), kLineF, kLineC);
+    const Seidel s =
+        seidel_sums(system, seidel_first_order(system, test::sasian_options()), kLineF, kLineC);
     // The page's table: S-I .. S-V for surfaces 1-6, then the sum.
     const double table[7][5] = {
         {0.027654, 0.019379, 0.013581, 0.089174, 0.072010},
@@ -77,12 +73,7 @@ TEST(SeidelCookeTriplet, RealDistortionTendsToTheThirdOrderAtSmallFields) {
     // fifth-order part, which grows as the field squared (0.6% of it at 2 degrees here):
     // within 1%. At 20 degrees they differ by a factor of ten; the sums are not the lens.
     const OpticalSystem system = test::sasian_triplet();
-    FirstOrderOptions o;
-    o.wavelength_nm = test::kSasianNm;
-    o.stop = test::kSasianStop;
-    o.epd = test::kSasianEpd;
-    o.fields = {1.0};
-    const FirstOrder f = seidel_first_order(system, o);
+    const FirstOrder f = seidel_first_order(system, test::sasian_options(1.0));
     const double third = seidel_sums(system, f, kLineF, kLineC).transverse.distortion;
     const std::optional<RealChiefRay> real = trace_real_chief_ray(system, f);
     ASSERT_TRUE(real.has_value());

@@ -16,6 +16,16 @@
 namespace lenslab {
 namespace {
 
+// The mean green value of the scene's rendered image: the radiance the closed forms predict,
+// over pixels that all see the same thing.
+double mean_green_of_render(const Scene& scene) {
+    RenderControl control;
+    const RenderResult result = render_scene(scene, control);
+    double mean = 0;
+    for (const PixelRgb& p : result.film.pixels()) mean += p.g / result.film.pixels().size();
+    return mean;
+}
+
 constexpr double kPiMedium = std::numbers::pi;
 
 // The mean weight of light passing a slab of thickness d is T = exp(-sigma_t d) in each band
@@ -82,10 +92,7 @@ TEST(PathInMedium, SingleScatteringMatchesTheAirlightIntegral) {
       "atmosphere": {"scattering": 0.1},
       "lights": [{"type": "point", "position": [0, 0, 0], "power": 50}]
     })");
-    RenderControl control;
-    const RenderResult result = render_scene(scene, control);
-    double mean = 0;
-    for (const PixelRgb& p : result.film.pixels()) mean += p.g / result.film.pixels().size();
+    const double mean = mean_green_of_render(scene);
     // The light's colour per watt of intensity: power / (4 pi) W/sr of white light renders as
     // its spectrum's colour over 4 pi.
     const double white = spectrum_to_rgb(*scene.point_lights[0].spectrum).g / power;
@@ -107,10 +114,7 @@ TEST(PathInMedium, SingleScatteringFromABeamMatchesItsClosedForm) {
       "lights": [{"type": "beam", "origin": [-10, 0, 0], "direction": [1, 0, 0],
                   "radius": 0.2, "power": 2}]
     })");
-    RenderControl control;
-    const RenderResult result = render_scene(scene, control);
-    double mean = 0;
-    for (const PixelRgb& p : result.film.pixels()) mean += p.g / result.film.pixels().size();
+    const double mean = mean_green_of_render(scene);
     const double white = spectrum_to_rgb(*scene.beams[0].spectrum).g / power;
     const double chord = (std::exp(-sigma * (d - r)) - std::exp(-sigma * (d + r))) / sigma;
     const double expected = sigma / (4 * kPiMedium) * power / (kPiMedium * r * r) *
