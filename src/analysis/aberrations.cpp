@@ -36,26 +36,31 @@ double usable_aperture_radius(const OpticalSystem& system, double nm) {
     return lo;
 }
 
+std::vector<PupilPoint> hexapolar_pupil(int rings) {
+    std::vector<PupilPoint> out{{0.0, 0.0}};
+    for (int ring = 1; ring <= rings; ++ring) {
+        const double rho = static_cast<double>(ring) / rings;
+        const int count = 6 * ring;
+        for (int k = 0; k < count; ++k) {
+            const double phi = 2.0 * M_PI * (k + 0.5 * (ring % 2)) / count;
+            out.push_back({rho * std::cos(phi), rho * std::sin(phi)});
+        }
+    }
+    return out;
+}
+
 std::vector<ExitRay> trace_collimated_beam(const OpticalSystem& system, double nm, double aperture,
                                            int rings, int* lost) {
     const double z0 = beam_start_z(system);
     std::vector<ExitRay> out;
     int missing = 0;
-    const auto shoot = [&](double x, double y) {
-        const RealRay r = trace_real_ray(system, {{x, y, z0}, {0, 0, 1}}, nm);
+    for (const PupilPoint& q : hexapolar_pupil(rings)) {
+        const RealRay r =
+            trace_real_ray(system, {{aperture * q.x, aperture * q.y, z0}, {0, 0, 1}}, nm);
         if (r.fate == RayFate::Passed && r.direction.z > 0) {
             out.push_back({r.exit_point(), r.direction});
         } else {
             ++missing;
-        }
-    };
-    shoot(0, 0);
-    for (int ring = 1; ring <= rings; ++ring) {
-        const double rho = aperture * ring / rings;
-        const int count = 6 * ring;
-        for (int k = 0; k < count; ++k) {
-            const double phi = 2.0 * M_PI * (k + 0.5 * (ring % 2)) / count;
-            shoot(rho * std::cos(phi), rho * std::sin(phi));
         }
     }
     if (lost) *lost = missing;

@@ -34,9 +34,16 @@ struct ExitRay {
 // to the axis still passes every surface at this wavelength.
 double usable_aperture_radius(const OpticalSystem& system, double wavelength_nm);
 
-// A collimated beam along the axis with radius `aperture_radius`, sampled on a hexapolar
-// grid: the axial ray and `rings` rings of 6, 12, ... rays, each ray standing for an equal
-// share of the pupil's area. Returns the rays that passed; `lost` counts the others.
+// The hexapolar sampling of a unit pupil: the centre and `rings` rings of 6, 12, ... points at
+// radii 1/rings, 2/rings, ..., 1 (odd rings turned by half a step), each point standing for
+// about an equal share of the pupil's area: Zemax's "hexapolar" ray density of `rings`.
+struct PupilPoint {
+    double x, y;
+};
+std::vector<PupilPoint> hexapolar_pupil(int rings);
+
+// A collimated beam along the axis with radius `aperture_radius`, sampled on the hexapolar
+// grid of `rings`. Returns the rays that passed; `lost` counts the others.
 std::vector<ExitRay> trace_collimated_beam(const OpticalSystem& system, double wavelength_nm,
                                            double aperture_radius, int rings, int* lost);
 

@@ -59,6 +59,10 @@ struct Placed {
     double z_first, z_last;
 };
 
+SurfaceSpan measure_aim_span(const LensSurface& shape, double semi_diameter) {
+    return measure_span(shape, std::min(2.0 * semi_diameter, 0.999 * shape.max_semi_diameter()));
+}
+
 // The two surfaces of a lens in the order light meets them, as system surfaces.
 void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
     const LensPrescription& pr = p.lens->prescription();
@@ -73,6 +77,7 @@ void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
         s.z = z;
         s.semi_diameter = a;
         s.span = measure_span(*shape, a);
+        s.aim_span = measure_aim_span(*shape, a);
         s.curvature = p.orientation * paraxial_curvature(*shape, a);
         s.label = path + "." + face;
         return s;
@@ -113,6 +118,7 @@ void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
             prev.element_after = element;
             prev.semi_diameter = common;
             prev.span = measure_span(*prev.shape, common);
+            prev.aim_span = measure_aim_span(*prev.shape, common);
             prev.label += " = " + in.label;
             e.first_surface = static_cast<int>(system.surfaces.size()) - 1;
             system.surfaces.push_back(out);

@@ -15,7 +15,7 @@ struct RealChiefRay {
     double distortion = 0;    // relative: (real - paraxial) / paraxial; 0 on the axis
 };
 
-// Aims by the secant method from the paraxial chief ray. None when the ray cannot be
+// Aimed at the centre of the stop (ray_aiming.h). None when the ray cannot be
 // traced (it misses a surface or is totally reflected) or the aim does not converge.
 std::optional<RealChiefRay> trace_real_chief_ray(const OpticalSystem& system,
                                                  const FirstOrder& first_order);

@@ -6,7 +6,7 @@
 
 namespace lenslab {
 
-RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm) {
+RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, Rims rims) {
     RealRay out;
     out.points.push_back(ray.origin);
     Vec3 p = ray.origin;
@@ -18,7 +18,8 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm) {
         const double o = s.orientation;
         const Ray local{{p.x, p.y, o * (p.z - s.z)}, {d.x, d.y, o * d.z}};
         double t;
-        if (!s.shape->intersect(local, s.span, 0.0, INFINITY, t)) {
+        const SurfaceSpan& span = rims == Rims::Clip ? s.span : s.aim_span;
+        if (!s.shape->intersect(local, span, 0.0, INFINITY, t)) {
             out.fate = RayFate::Missed;
             out.surface = static_cast<int>(i);
             out.direction = d;

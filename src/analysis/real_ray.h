@@ -23,8 +23,14 @@ struct RealRay {
     const Vec3& exit_point() const { return points.back(); }
 };
 
+enum class Rims {
+    Clip,    // a ray outside a surface's semi-diameter is Missed there
+    Ignore,  // surfaces extend past their rims (SystemSurface::aim_span): for ray aiming
+};
+
 // Traces `ray` (system coordinates, unit direction with d.z > 0) at a wavelength (in air).
-RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double wavelength_nm);
+RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double wavelength_nm,
+                       Rims rims = Rims::Clip);
 
 // Where a ray leaving along `direction` from `point` crosses the plane z = z_plane (x, y).
 Vec3 at_plane(const Vec3& point, const Vec3& direction, double z_plane);

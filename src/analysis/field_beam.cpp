@@ -1,0 +1,27 @@
+#include "analysis/field_beam.h"
+
+#include "analysis/ray_aiming.h"
+
+namespace lenslab {
+
+FieldBeam trace_field_beam(const OpticalSystem& system, const FirstOrder& first_order, double field,
+                           double nm, int rings) {
+    FieldBeam beam;
+    beam.field = field;
+    beam.wavelength_nm = nm;
+    const RayAimer aimer(system, first_order, field, nm);
+    bool centre = true;  // the hexapolar grid starts at the stop's centre
+    for (const PupilPoint& q : hexapolar_pupil(rings)) {
+        const auto ray = aimer.trace(q.x, q.y);
+        if (ray && ray->fate == RayFate::Passed && ray->direction.z > 0) {
+            beam.rays.push_back({ray->exit_point(), ray->direction});
+            if (centre) beam.chief = beam.rays.back();
+        } else {
+            ++beam.lost;
+        }
+        centre = false;
+    }
+    return beam;
+}
+
+}  // namespace lenslab
