@@ -20,7 +20,8 @@ void bind_errors(py::module_& m) {
         try {
             if (p) std::rethrow_exception(p);
         } catch (const SceneError& e) {
-            py::object instance = scene_error(e.what());
+            // The class called as a class (py::exception's own call operator raises instead).
+            py::object instance = py::handle(scene_error.ptr())(e.what());
             instance.attr("path") = e.path();
             instance.attr("reason") = e.reason();
             PyErr_SetObject(scene_error.ptr(), instance.ptr());

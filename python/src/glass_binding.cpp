@@ -40,7 +40,7 @@ py::object index_at(const Glass& g, const Wavelengths& nm) {
     Wavelengths n(std::vector<py::ssize_t>(nm.shape(), nm.shape() + nm.ndim()));
     double* out = n.mutable_data();
     for (py::ssize_t i = 0; i < nm.size(); ++i) out[i] = g.model->n(in[i]);
-    return std::move(n);
+    return n;
 }
 
 }  // namespace

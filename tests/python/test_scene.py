@@ -29,10 +29,10 @@ def test_default_is_the_built_in_scene():
     assert lenslab.Scene.default().to_dict() == lenslab.Scene.load("scenes/default.json").to_dict()
 
 
-def test_a_bad_file_raises_the_cli_message():
+def test_a_bad_file_raises_the_cli_message(tmp_path):
     with pytest.raises(lenslab.SceneError) as e:
         lenslab.Scene.load(BAD)
-    assert str(e.value) == cli_error("render", BAD, "-o", "/nonexistent/x.png")
+    assert str(e.value) == cli_error("render", BAD, "-o", tmp_path / "x.png")
     assert isinstance(e.value, ValueError)
     assert e.value.path == BAD + ": objects[2].radius"
     assert e.value.reason == "must be > 0, got -1"
@@ -45,15 +45,15 @@ def test_a_bad_dict_names_the_json_path():
         lenslab.Scene.from_dict(d)
 
 
-def test_a_file_that_is_not_json_raises_the_cli_message():
+def test_a_file_the_json_parser_refuses_raises_the_cli_message(tmp_path):
     bad = "tests/scene/bad/duplicate_key.json"
     with pytest.raises(lenslab.SceneError) as e:
         lenslab.Scene.load(bad)
-    assert str(e.value) == cli_error("render", bad, "-o", "/nonexistent/x.png")
+    assert str(e.value) == cli_error("render", bad, "-o", tmp_path / "x.png")
 
 
 def test_a_refused_edit_leaves_the_scene_unchanged():
-    scene = lenslab.Scene.load("scenes/default.json")
+    scene = lenslab.Scene.default()
     camera = scene.to_dict()["camera"]
     with pytest.raises(lenslab.SceneError, match=r"^camera\.fvo: unknown key \(did you mean 'fov'\?\)"):
         scene["camera"] = {**camera, "fvo": 30}
