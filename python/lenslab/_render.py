@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import copy
+import numbers
 import os
 from typing import Any, Callable, Optional
 
@@ -35,11 +36,17 @@ def render(scene: SceneSource, *, width: Optional[int] = None, height: Optional[
         # As `--time` alone does: a time budget without a pass count lifts the pass limit.
         if "time" in overrides and "passes" not in overrides:
             render_block["passes"] = 0
+    return _lenslab.render(_dumps(data), scene_json(s)[1], _thread_count(threads), progress)
+
+
+def _thread_count(threads: Optional[int]) -> int:
+    """The compiled module's count: 0 for all cores; 1 to 1024 as `--threads` takes."""
     if threads is None:
-        threads = 0
-    elif isinstance(threads, bool) or not isinstance(threads, int) or not 1 <= threads <= 1024:
-        raise ValueError(f"threads: must be a whole number from 1 to 1024, got {threads!r}")
-    return _lenslab.render(_dumps(data), scene_json(s)[1], threads, progress)
+        return 0
+    if not isinstance(threads, bool) and isinstance(threads, numbers.Integral) \
+            and 1 <= threads <= 1024:
+        return int(threads)
+    raise ValueError(f"threads: must be a whole number from 1 to 1024, got {threads!r}")
 
 
 def write_image(image: np.ndarray, path: PathLike, exposure: float = 0.0) -> None:

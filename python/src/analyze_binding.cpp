@@ -67,10 +67,10 @@ LensReportOptions report_options(const OpticalSystem& system, const AnalyzeOptio
 
 std::string analyze_json(const std::string& json_text, const std::string& path,
                          const AnalyzeOptions& a) {
+    py::gil_scoped_release unlocked;
     const Scene scene = build_scene(json_text, path, {.require_camera = false});
     const std::optional<int> lens =
         a.lens.empty() ? std::nullopt : std::optional<int>(lens_index(scene, a.lens));
-    py::gil_scoped_release unlocked;
     try {
         const OpticalSystem system = build_optical_system(scene, lens);
         nlohmann::ordered_json j =

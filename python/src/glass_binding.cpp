@@ -39,7 +39,10 @@ py::object index_at(const Glass& g, const Wavelengths& nm) {
     if (nm.ndim() == 0) return py::float_(g.model->n(in[0]));
     Wavelengths n(std::vector<py::ssize_t>(nm.shape(), nm.shape() + nm.ndim()));
     double* out = n.mutable_data();
-    for (py::ssize_t i = 0; i < nm.size(); ++i) out[i] = g.model->n(in[i]);
+    {
+        py::gil_scoped_release unlocked;  // a long array takes a while
+        for (py::ssize_t i = 0; i < nm.size(); ++i) out[i] = g.model->n(in[i]);
+    }
     return n;
 }
 

@@ -58,6 +58,7 @@ public:
         return m_result.wait_for(interval) == std::future_status::ready;
     }
     double progress() const { return m_progress.load(); }
+    int64_t non_finite_samples() const { return m_control.non_finite_samples(); }
     RenderResult result() { return m_result.get(); }  // rethrows the render's exception
 
 private:
@@ -88,6 +89,14 @@ py::array_t<float> render(const std::string& json_text, const std::string& path,
         if (!done && PyErr_CheckSignals() != 0) throw py::error_already_set();
     }
     const RenderResult result = job.result();
+    if (job.non_finite_samples() > 0) {
+        // The command line's warning, as a Python warning: the image is usable, but say so.
+        const std::string text =
+            std::to_string(job.non_finite_samples()) +
+            " samples came out NaN or infinite and were left out of their pixels (a bug in "
+            "lenslab; please report it with the scene)";
+        if (PyErr_WarnEx(PyExc_RuntimeWarning, text.c_str(), 1) != 0) throw py::error_already_set();
+    }
     return film_array(result.film);
 }
 

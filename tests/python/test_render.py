@@ -1,4 +1,6 @@
 import _thread
+import os
+import signal
 import threading
 import time
 
@@ -9,7 +11,12 @@ import lenslab
 from conftest import run_cli
 
 SCENE = "scenes/default.json"
-SMALL = dict(width=32, height=24, spp=4, seed=7)
+# Tiny, and with 20 000 photons instead of the scene's million: the photon map's work is most
+# of a small render's time.
+SMALL = dict(width=32, height=24, spp=4, seed=7, photons=20000)
+SMALL_CLI = ["--width", 32, "--height", 24, "--spp", 4, "--seed", 7, "--photons", 20000]
+# Long enough that only an interruption ends it within the tests' time.
+LONG = dict(width=320, height=240, spp=4096, photons=20000)
 
 
 def test_shape_and_type():
@@ -22,8 +29,7 @@ def test_byte_for_byte_the_cli_image(tmp_path):
     # The CLI's lossless output is EXR (linear float): the Python render written by the same
     # writer must be the same file.
     cli_exr, py_exr = tmp_path / "cli.exr", tmp_path / "py.exr"
-    run_cli("render", SCENE, "-o", cli_exr, "-q", "--width", 32, "--height", 24, "--spp", 4,
-            "--seed", 7)
+    run_cli("render", SCENE, "-o", cli_exr, "-q", *SMALL_CLI)
     lenslab.write_image(lenslab.render(lenslab.Scene.load(SCENE), **SMALL), py_exr)
     assert py_exr.read_bytes() == cli_exr.read_bytes()
 
@@ -44,11 +50,12 @@ def test_other_render_keys_override_the_scene():
 
 def test_override_errors_name_the_json_path():
     with pytest.raises(lenslab.SceneError, match=r"render\.spp: "):
-        lenslab.render(SCENE, width=32, height=24, spp=0)
+        lenslab.render(SCENE, **{**SMALL, "spp": 0})
     with pytest.raises(lenslab.SceneError, match=r"render\.integrator: "):
         lenslab.render(SCENE, integrator="pathh", **SMALL)
     with pytest.raises(ValueError, match="threads"):
         lenslab.render(SCENE, threads=0, **SMALL)
+    assert lenslab.render(SCENE, threads=np.int64(2), **SMALL).shape == (24, 32, 3)
 
 
 def test_progress_runs_up_to_one():
@@ -63,18 +70,23 @@ def test_an_exception_in_progress_cancels_the_render():
 
     start = time.monotonic()
     with pytest.raises(KeyboardInterrupt):
-        lenslab.render(SCENE, width=320, height=240, spp=4096, progress=stop)
+        lenslab.render(SCENE, progress=stop, **LONG)
     assert time.monotonic() - start < 10
 
 
-def test_ctrl_c_cancels_the_render():
-    # What Ctrl-C in a notebook does: SIGINT's flag raised while the render runs.
-    timer = threading.Timer(0.3, _thread.interrupt_main)
+def _send_sigint():
+    os.kill(os.getpid(), signal.SIGINT)
+
+
+# What Ctrl-C does: a terminal's SIGINT, and the notebook's interrupt button (interrupt_main).
+@pytest.mark.parametrize("interrupt", [_send_sigint, _thread.interrupt_main])
+def test_ctrl_c_cancels_the_render(interrupt):
+    timer = threading.Timer(0.3, interrupt)
     timer.start()
     start = time.monotonic()
     try:
         with pytest.raises(KeyboardInterrupt):
-            lenslab.render(SCENE, width=320, height=240, spp=4096)
+            lenslab.render(SCENE, **LONG)
     finally:
         timer.cancel()
     assert time.monotonic() - start < 10
@@ -83,7 +95,6 @@ def test_ctrl_c_cancels_the_render():
 
 
 def test_write_image_png_equals_the_cli(tmp_path):
-    run_cli("render", SCENE, "-o", tmp_path / "cli.png", "-q", "--width", 32, "--height", 24,
-            "--spp", 4, "--seed", 7, "--exposure", 1)
+    run_cli("render", SCENE, "-o", tmp_path / "cli.png", "-q", *SMALL_CLI, "--exposure", 1)
     lenslab.write_image(lenslab.render(SCENE, **SMALL), tmp_path / "py.png", exposure=1)
     assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
