@@ -12,5 +12,10 @@ from ._optics import analyze, trace
 from ._render import render, write_image
 from ._scene import Scene
 
+# Named as the package exposes them, not after the compiled module that defines them.
+for _exported in (Error, Glass, SceneError):
+    _exported.__module__ = __name__
+del _exported
+
 __all__ = ["Error", "Glass", "Scene", "SceneError", "analyze", "glass", "render", "trace",
            "write_image"]

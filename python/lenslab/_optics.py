@@ -12,8 +12,8 @@ from ._scene import SceneSource, as_scene, scene_json
 def trace(scene: SceneSource, origin: Sequence[float], direction: Sequence[float], *,
           wavelength: float = _lenslab.LINE_D, max_depth: int = _lenslab.TRACE_MAX_DEPTH,
           min_weight: float = _lenslab.TRACE_MIN_WEIGHT) -> dict[str, Any]:
-    """The tree of one ray's paths, as `lenslab trace` prints it: {root: {from, to, object,
-    event, weight, direction, children}, escaped, absorbed, truncated, ...}."""
+    """The tree of one ray's paths, as `lenslab trace` prints it: {tree: {from, to, object,
+    event, weight, direction, children: [...]}, summary: {escaped, absorbed, truncated}}."""
     text, path = scene_json(as_scene(scene))
     return json.loads(_lenslab.trace(text, path, [float(v) for v in origin],
                                      [float(v) for v in direction], wavelength, max_depth,
