@@ -8,7 +8,6 @@
 #include <atomic>
 #include <chrono>
 #include <future>
-#include <memory>
 
 #include "bindings.h"
 #include "render/render_session.h"

@@ -1,7 +1,7 @@
 import pytest
 
 import lenslab
-from conftest import cli_json
+from conftest import cli_error, cli_json
 
 SCENE = "scenes/achromat_doublet.json"
 
@@ -29,3 +29,15 @@ def test_options_equal_the_cli():
 def test_bad_stop_raises():
     with pytest.raises(ValueError, match=r"^stop 9: the system has 3 surfaces, numbered 1 to 3$"):
         lenslab.analyze(SCENE, stop=9)
+
+
+def test_a_scene_without_lenses_raises_the_cli_message():
+    with pytest.raises(lenslab.SceneError) as e:
+        lenslab.analyze("scenes/prism.json")
+    assert str(e.value) == cli_error("analyze", "scenes/prism.json")
+    assert e.value.path == "scenes/prism.json: objects"
+
+
+def test_unknown_lens_raises():
+    with pytest.raises(ValueError, match=r"^lens: no lens named 'nope' in the scene \(lenses: "):
+        lenslab.analyze(SCENE, lens="nope")
