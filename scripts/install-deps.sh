@@ -13,12 +13,14 @@ PACKAGES=(
     qt6-base-dev
     clang libclang-rt-14-dev llvm clang-format
     lld
+    pybind11-dev python3-dev python3-numpy python3-pytest
 )
 # libfftw3-dev: the FFTs of the diffraction PSF and MTF (src/analysis/fft_grid.cpp).
 # clang + libclang-rt-14-dev: libFuzzer and clang's sanitizers for the fuzz targets
 # (scripts/fuzz.sh); llvm: llvm-symbolizer, so sanitizer reports name files and lines;
 # clang-format: scripts/check-format.sh, the first thing the test suite checks; lld: the
 # linker (cmake/build_speed.cmake), several times faster than GNU ld on the test executables.
+# pybind11-dev, python3-dev, python3-numpy, python3-pytest: the `lenslab` Python module (python/) and its tests.
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -2,6 +2,7 @@
 # The whole test suite, as CI runs it (README, second command; .ci/run): first the C++
 # files' formatting (scripts/check-format.sh, seconds), then
 #   1. release build + every test, the editor's aside (release-ci preset: build/release-ci);
+#      the Python module (python/) and its pytest tests run here only;
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: the library at
 #      -O1, tests and apps at -O0; the editor included, no benchmarks) + every test but the
 #      20M-photon convergence test (too slow sanitized). The editor is built and its QTest

@@ -1,0 +1,21 @@
+"""lenslab from Python: scenes, renders, ray trees, the optical bench and the glass catalogues.
+
+    import lenslab
+    scene = lenslab.Scene.load("scenes/default.json")
+    image = lenslab.render(scene, width=320, height=240, spp=16)   # float32, (240, 320, 3)
+
+See docs/python.md.
+"""
+
+from ._lenslab import Error, Glass, SceneError, glass
+from ._optics import analyze, trace
+from ._render import render, write_image
+from ._scene import Scene
+
+# Named as the package exposes them, not after the compiled module that defines them.
+for _exported in (Error, Glass, SceneError):
+    _exported.__module__ = __name__
+del _exported
+
+__all__ = ["Error", "Glass", "Scene", "SceneError", "analyze", "glass", "render", "trace",
+           "write_image"]

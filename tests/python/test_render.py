@@ -1,0 +1,100 @@
+import _thread
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import lenslab
+from conftest import run_cli
+
+SCENE = "scenes/default.json"
+# Tiny, and with 20 000 photons instead of the scene's million: the photon map's work is most
+# of a small render's time.
+SMALL = dict(width=32, height=24, spp=4, seed=7, photons=20000)
+SMALL_CLI = ["--width", 32, "--height", 24, "--spp", 4, "--seed", 7, "--photons", 20000]
+# Long enough that only an interruption ends it within the tests' time.
+LONG = dict(width=320, height=240, spp=4096, photons=20000)
+
+
+def test_shape_and_type():
+    image = lenslab.render(SCENE, **SMALL)
+    assert image.shape == (24, 32, 3) and image.dtype == np.float32
+    assert image.flags.c_contiguous and np.all(np.isfinite(image)) and image.mean() > 0
+
+
+def test_byte_for_byte_the_cli_image(tmp_path):
+    # The CLI's lossless output is EXR (linear float): the Python render written by the same
+    # writer must be the same file.
+    cli_exr, py_exr = tmp_path / "cli.exr", tmp_path / "py.exr"
+    run_cli("render", SCENE, "-o", cli_exr, "-q", *SMALL_CLI)
+    lenslab.write_image(lenslab.render(lenslab.Scene.load(SCENE), **SMALL), py_exr)
+    assert py_exr.read_bytes() == cli_exr.read_bytes()
+
+
+def test_same_image_for_any_thread_count_and_source():
+    one = lenslab.render(SCENE, threads=1, **SMALL)
+    assert np.array_equal(one, lenslab.render(lenslab.Scene.load(SCENE), threads=2, **SMALL))
+    assert np.array_equal(one, lenslab.render(lenslab.Scene.default(), **SMALL))
+    assert not np.array_equal(one, lenslab.render(SCENE, **{**SMALL, "seed": 8}))
+
+
+def test_other_render_keys_override_the_scene():
+    image = lenslab.render(SCENE, max_depth=0, **SMALL)
+    assert not np.array_equal(image, lenslab.render(SCENE, **SMALL))
+    with pytest.raises(lenslab.SceneError, match=r"render\.max_dept: unknown key"):
+        lenslab.render(SCENE, max_dept=2, **SMALL)
+
+
+def test_override_errors_name_the_json_path():
+    with pytest.raises(lenslab.SceneError, match=r"render\.spp: "):
+        lenslab.render(SCENE, **{**SMALL, "spp": 0})
+    with pytest.raises(lenslab.SceneError, match=r"render\.integrator: "):
+        lenslab.render(SCENE, integrator="pathh", **SMALL)
+    with pytest.raises(ValueError, match="threads"):
+        lenslab.render(SCENE, threads=0, **SMALL)
+    assert lenslab.render(SCENE, threads=np.int64(2), **SMALL).shape == (24, 32, 3)
+
+
+def test_progress_runs_up_to_one():
+    seen = []
+    lenslab.render(SCENE, progress=seen.append, **SMALL)
+    assert seen and seen == sorted(seen) and seen[-1] == 1.0
+
+
+def test_an_exception_in_progress_cancels_the_render():
+    def stop(fraction):
+        raise KeyboardInterrupt
+
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        lenslab.render(SCENE, progress=stop, **LONG)
+    assert time.monotonic() - start < 10
+
+
+def _send_sigint():
+    os.kill(os.getpid(), signal.SIGINT)
+
+
+# What Ctrl-C does: a terminal's SIGINT, and the notebook's interrupt button (interrupt_main).
+@pytest.mark.parametrize("interrupt", [_send_sigint, _thread.interrupt_main])
+def test_ctrl_c_cancels_the_render(interrupt):
+    timer = threading.Timer(0.3, interrupt)
+    timer.start()
+    start = time.monotonic()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            lenslab.render(SCENE, **LONG)
+    finally:
+        timer.cancel()
+    assert time.monotonic() - start < 10
+    # The module is still usable afterwards.
+    assert lenslab.render(SCENE, **SMALL).shape == (24, 32, 3)
+
+
+def test_write_image_png_equals_the_cli(tmp_path):
+    run_cli("render", SCENE, "-o", tmp_path / "cli.png", "-q", *SMALL_CLI, "--exposure", 1)
+    lenslab.write_image(lenslab.render(SCENE, **SMALL), tmp_path / "py.png", exposure=1)
+    assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
