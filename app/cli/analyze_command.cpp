@@ -2,6 +2,7 @@
 // chromatic aberration and spot sizes of the lenses on one axis, as a table or JSON, and a
 // ray diagram as SVG.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -10,9 +11,12 @@
 #include <vector>
 
 #include "analysis/diffraction_report.h"
+#include "analysis/fan_report.h"
+#include "analysis/field_figures.h"
 #include "analysis/lens_report.h"
 #include "analysis/ray_diagram.h"
 #include "analysis/ray_diagram_svg.h"
+#include "analysis/spot_report.h"
 #include "commands.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
@@ -38,6 +42,13 @@ struct AnalyzeArgs {
     bool seidel = false;
     bool psf = false, mtf = false;
     std::vector<double> mtf_frequencies;  // empty: ten up to the cutoff
+    bool spots = false;
+    int rings = 6;                           // hexapolar rings of the spot diagrams
+    std::optional<double> image_distance;    // image plane from the last vertex
+    std::vector<double> wavelength_weights;  // one per wavelength; empty: equal
+    bool fans = false;
+    int fan_points = 21;
+    std::string spots_svg, fans_svg;  // figures; each implies its table
 };
 
 // The middle of the wavelengths as given (for an even count, the one before the middle).
@@ -66,8 +77,13 @@ std::optional<int> find_lens(const Scene& scene, const std::string& name, std::s
     return std::nullopt;
 }
 
-int run(const AnalyzeArgs& a) {
-    if (!a.svg.empty()) check_output_file(a.svg);  // before the analysis
+int run(AnalyzeArgs a) {
+    // Before the analysis, so a bad path costs nothing.
+    for (const std::string* file : {&a.svg, &a.spots_svg, &a.fans_svg}) {
+        if (!file->empty()) check_output_file(*file);
+    }
+    a.spots = a.spots || !a.spots_svg.empty();
+    a.fans = a.fans || !a.fans_svg.empty();
     const Scene scene = load_scene_file(a.scene, {.require_camera = false});
     std::optional<int> lens;
     if (!a.lens.empty()) {
@@ -118,7 +134,43 @@ int run(const AnalyzeArgs& a) {
             }
             options.aperture_radius = 0.5 * a.aperture;
         }
+        if (a.image_distance && !a.spots && !a.fans) {
+            return usage_error(
+                "--image-distance: it places the image plane of --spots and "
+                "--fans; ask for one of them");
+        }
+        const std::vector<double>& weights = a.wavelength_weights;
+        if (!weights.empty()) {
+            const size_t count = std::max<size_t>(1, a.wavelengths.size());
+            if (weights.size() != count) {
+                return usage_error("--wavelength-weights: " + std::to_string(weights.size()) +
+                                   " weights for " + std::to_string(count) +
+                                   " wavelengths (one each, in the order of --wavelengths)");
+            }
+            double sum = 0;
+            for (double w : weights) sum += w;
+            if (!(sum > 0)) return usage_error("--wavelength-weights: they add up to zero");
+        }
         const LensReport report = analyze_lens_system(system, options);
+        std::optional<SpotDiagrams> spots;
+        if (a.spots) {
+            SpotOptions spot;
+            spot.fields = first.fields;
+            spot.wavelengths = report.wavelengths;
+            spot.weights = weights;
+            spot.rings = a.rings;
+            if (a.image_distance) spot.image_z = system.last_vertex() + *a.image_distance;
+            spots = spot_diagrams(system, report.first_order, spot);
+        }
+        std::optional<RayFans> fans;
+        if (a.fans) {
+            RayFanOptions fan;
+            fan.fields = first.fields;
+            fan.wavelengths = report.wavelengths;
+            fan.points = a.fan_points;
+            if (a.image_distance) fan.image_z = system.last_vertex() + *a.image_distance;
+            fans = ray_fans(system, report.first_order, fan);
+        }
         std::optional<DiffractionFigures> diffraction;
         if (a.psf || a.mtf) {
             RayPupilOptions pupil;
@@ -133,18 +185,40 @@ int run(const AnalyzeArgs& a) {
             // Atomically: a failed write leaves no half file, and says why it failed.
             write_text_atomically(a.svg, svg);
         }
+        const std::string field_unit =
+            first.object_distance ? (a.unit.empty() ? "units" : a.unit) : "deg";
+        if (spots && !a.spots_svg.empty()) {
+            const RayDiagram figure = spot_diagram_figure(*spots, a.unit, field_unit);
+            const int panels = static_cast<int>(spots->fields.size());
+            write_text_atomically(a.spots_svg,
+                                  ray_diagram_svg(figure, field_figure_width(panels), 300));
+        }
+        if (fans && !a.fans_svg.empty()) {
+            const RayDiagram figure = ray_fan_figure(*fans, a.unit, field_unit);
+            write_text_atomically(a.fans_svg, ray_diagram_svg(figure, field_figure_width(2), 300));
+        }
         if (a.json) {
             nlohmann::ordered_json j = report_json(system, report);
             j["scene"] = a.scene;
             if (!a.svg.empty()) j["svg"] = a.svg;
+            if (!a.spots_svg.empty()) j["spots_svg"] = a.spots_svg;
+            if (!a.fans_svg.empty()) j["fans_svg"] = a.fans_svg;
             if (a.psf) j["psf"] = psf_json(*diffraction);
             if (a.mtf) j["mtf"] = mtf_json(*diffraction);
+            if (spots) j["spots"] = spots_json(system, *spots);
+            if (fans) j["fans"] = fans_json(system, *fans);
             std::cout << j.dump(2) << "\n";
         } else {
             std::cout << "lenslab analyze " << a.scene << ": "
                       << report_table(system, report, a.seidel);
             if (diffraction) std::cout << diffraction_table(*diffraction, a.psf, a.mtf);
+            if (spots) std::cout << spots_table(system, *spots);
+            if (fans) std::cout << fans_table(system, *fans);
             if (!a.svg.empty()) std::cout << "\nray diagram written to " << a.svg << "\n";
+            if (!a.spots_svg.empty()) {
+                std::cout << "spot diagrams written to " << a.spots_svg << "\n";
+            }
+            if (!a.fans_svg.empty()) std::cout << "ray fans written to " << a.fans_svg << "\n";
         }
         return 0;
     } catch (const SceneError& e) {
@@ -226,6 +300,33 @@ Action add_analyze_command(CLI::App& app) {
         ->delimiter(',')
         ->check(CLI::PositiveNumber)
         ->needs(mtf);
+    cmd->add_flag(
+        "--spots", args->spots,
+        "Spot diagrams per field and wavelength: RMS and geometric radii about the centroid, "
+        "chief ray, vignetting, and per field the polychromatic RMS beside the Airy radius");
+    cmd->add_option("--rings", args->rings,
+                    "Hexapolar rings of the spot diagrams' beams, Zemax's \"ray density\": 1 + "
+                    "3 N (N + 1) rays (default 6: 127)")
+        ->check(CLI::Range(1, 200));
+    cmd->add_flag(
+        "--fans", args->fans,
+        "Transverse ray fans per field and wavelength, tangential (e_y against py) and sagittal "
+        "(e_x against px), from the primary wavelength's chief ray");
+    cmd->add_option("--spots-svg", args->spots_svg,
+                    "Write the spot diagrams to this SVG file (implies --spots)");
+    cmd->add_option("--fans-svg", args->fans_svg,
+                    "Write the ray fans to this SVG file (implies --fans)");
+    cmd->add_option("--fan-points", args->fan_points,
+                    "Points along each ray fan, evenly from -1 to 1 across the stop (default 21)")
+        ->check(CLI::Range(2, 10001));
+    cmd->add_option("--image-distance", args->image_distance,
+                    "The image plane of the spots and fans, from the last vertex (default: the "
+                    "paraxial image plane at the primary wavelength)");
+    cmd->add_option("--wavelength-weights", args->wavelength_weights,
+                    "Weights of --wavelengths, comma-separated, one each (default: equal): the "
+                    "polychromatic spot radius weights each wavelength's rays by them")
+        ->delimiter(',')
+        ->check(CLI::NonNegativeNumber);
     cmd->add_option("--unit", args->unit,
                     "The scene's length unit, for the ray diagram's labels (e.g. mm); a scene "
                     "declares none, so they say \"units\" without it");

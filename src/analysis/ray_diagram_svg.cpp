@@ -110,17 +110,19 @@ std::string ray_diagram_svg(const RayDiagram& d, double width, double min_height
     }
     s << "<text x=\"" << num(kMargin) << "\" y=\"50\" font-size=\"12\" fill=\"#1e1e1e\">"
       << escape(d.subtitle) << "</text>\n";
-    const double bar = d.scale_bar * v.scale;
-    const double y_bar = height - 22;
-    s << "<line x1=\"" << num(kMargin) << "\" y1=\"" << num(y_bar) << "\" x2=\""
-      << num(kMargin + bar) << "\" y2=\"" << num(y_bar)
-      << "\" stroke=\"#1e1e1e\" stroke-width=\"2\"/>\n";
-    for (double xe : {kMargin, kMargin + bar}) {
-        s << "<line x1=\"" << num(xe) << "\" y1=\"" << num(y_bar - 5) << "\" x2=\"" << num(xe)
-          << "\" y2=\"" << num(y_bar + 5) << "\" stroke=\"#1e1e1e\" stroke-width=\"2\"/>\n";
+    if (d.scale_bar > 0) {
+        const double bar = d.scale_bar * v.scale;
+        const double y_bar = height - 22;
+        s << "<line x1=\"" << num(kMargin) << "\" y1=\"" << num(y_bar) << "\" x2=\""
+          << num(kMargin + bar) << "\" y2=\"" << num(y_bar)
+          << "\" stroke=\"#1e1e1e\" stroke-width=\"2\"/>\n";
+        for (double xe : {kMargin, kMargin + bar}) {
+            s << "<line x1=\"" << num(xe) << "\" y1=\"" << num(y_bar - 5) << "\" x2=\"" << num(xe)
+              << "\" y2=\"" << num(y_bar + 5) << "\" stroke=\"#1e1e1e\" stroke-width=\"2\"/>\n";
+        }
+        s << "<text x=\"" << num(kMargin + bar + 8) << "\" y=\"" << num(y_bar + 4)
+          << "\" font-size=\"12\" fill=\"#1e1e1e\">" << escape(d.scale_bar_label) << "</text>\n";
     }
-    s << "<text x=\"" << num(kMargin + bar + 8) << "\" y=\"" << num(y_bar + 4)
-      << "\" font-size=\"12\" fill=\"#1e1e1e\">" << escape(d.scale_bar_label) << "</text>\n";
     s << "</svg>\n";
     return s.str();
 }
