@@ -148,7 +148,13 @@ int run(AnalyzeArgs a) {
                                    " wavelengths (one each, in the order of --wavelengths)");
             }
             double sum = 0;
-            for (double w : weights) sum += w;
+            for (double w : weights) {
+                if (w < 0) {
+                    return usage_error("--wavelength-weights: " + format_number(w) +
+                                       " is negative (a weight is 0 or more)");
+                }
+                sum += w;
+            }
             if (!(sum > 0)) return usage_error("--wavelength-weights: they add up to zero");
         }
         const LensReport report = analyze_lens_system(system, options);
@@ -325,8 +331,7 @@ Action add_analyze_command(CLI::App& app) {
     cmd->add_option("--wavelength-weights", args->wavelength_weights,
                     "Weights of --wavelengths, comma-separated, one each (default: equal): the "
                     "polychromatic spot radius weights each wavelength's rays by them")
-        ->delimiter(',')
-        ->check(CLI::NonNegativeNumber);
+        ->delimiter(',');
     cmd->add_option("--unit", args->unit,
                     "The scene's length unit, for the ray diagram's labels (e.g. mm); a scene "
                     "declares none, so they say \"units\" without it");

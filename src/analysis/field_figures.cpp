@@ -199,9 +199,8 @@ RayDiagram ray_fan_figure(const RayFans& fans, const std::string& unit,
         return nm;
     }());
     d.title = "Ray fans, image plane " + figure_text("%.4f", fans.image_z) + " (system z)";
-    d.subtitle = "transverse error from the chief ray at " +
-                 figure_text("%.2f nm", fans.primary_nm) + "; full scale ±" +
-                 figure_length(scale, unit);
+    // Short: the legend shares its line. The full scale is in every panel's corner.
+    d.subtitle = "error from the chief ray at " + figure_text("%.2f nm", fans.primary_nm);
     d.scale_bar = 0;
     return d;
 }

@@ -27,16 +27,21 @@ FirstOrder fans_first_order(const OpticalSystem& system, const FirstOrderOptions
     return first_order(system, paraxial_trace(system, o.wavelength_nm), o);
 }
 
+// The triplet's fans at its small field and aperture (sasian_third_order).
+RayFans third_order_fans(const OpticalSystem& system, const FirstOrder& f,
+                         const std::vector<double>& wavelengths, int points) {
+    RayFanOptions o;
+    o.fields = {test::kSasianSmallField};
+    o.wavelengths = wavelengths;
+    o.points = points;
+    return ray_fans(system, f, o);
+}
+
 TEST(RayFans, SmallApertureFansAreTheSeidelPolynomial) {
     const OpticalSystem system = test::sasian_triplet();
-    FirstOrderOptions o = test::sasian_options(1.0);
-    o.epd = test::kSasianEpd / 10.0;
-    const FirstOrder f = fans_first_order(system, o);
-    const SeidelTransverse t = seidel_sums(system, f, kLineF, kLineC).transverse;
-    RayFanOptions fo;
-    fo.fields = {1.0};
-    fo.points = 9;
-    const RayFans r = ray_fans(system, f, fo);
+    const test::SasianThirdOrder third = test::sasian_third_order(system);
+    const SeidelTransverse& t = third.transverse;
+    const RayFans r = third_order_fans(system, third.first_order, {}, 9);
     ASSERT_EQ(r.pupil.size(), 9u);
     EXPECT_EQ(r.pupil.front(), -1.0);
     EXPECT_EQ(r.pupil.back(), 1.0);
@@ -79,19 +84,15 @@ TEST(RayFans, AxialColourOfASinglet) {
 
 TEST(RayFans, LateralColourAtTheChiefRay) {
     const OpticalSystem system = test::sasian_triplet();
-    FirstOrderOptions o = test::sasian_options(1.0);
-    o.epd = test::kSasianEpd / 10.0;
-    const FirstOrder f = fans_first_order(system, o);
-    const SeidelTransverse t = seidel_sums(system, f, kLineF, kLineC).transverse;
-    RayFanOptions fo;
-    fo.fields = {1.0};
-    fo.wavelengths = {kLineF, test::kSasianNm, kLineC};
-    fo.points = 3;  // -1, 0, 1
-    const RayFans r = ray_fans(system, f, fo);
+    const test::SasianThirdOrder third = test::sasian_third_order(system);
+    // Three points: -1, 0, 1.
+    const RayFans r =
+        third_order_fans(system, third.first_order, {kLineF, test::kSasianNm, kLineC}, 3);
     const FieldFans& field = r.fields[0];
     EXPECT_EQ(field.fans[1].tangential[1], 0.0);
     const double lateral = field.fans[0].tangential[1] - field.fans[2].tangential[1];
-    EXPECT_NEAR(lateral, t.lateral_colour, 0.02 * std::abs(t.lateral_colour));
+    const double expected = third.transverse.lateral_colour;
+    EXPECT_NEAR(lateral, expected, 0.02 * std::abs(expected));
 }
 
 }  // namespace

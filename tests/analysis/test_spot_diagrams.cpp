@@ -20,6 +20,7 @@
 
 #include <cmath>
 
+#include "analysis/field_figures.h"
 #include "analysis/seidel.h"
 #include "analysis/spot_diagrams.h"
 #include "lens_scene_builder.h"
@@ -103,14 +104,13 @@ TEST(SpotDiagrams, ThirdOrderSphericalAberrationOnTheAxis) {
 
 TEST(SpotDiagrams, SmallApertureSpotIsTheSeidelPolynomial) {
     const OpticalSystem system = test::sasian_triplet();
-    FirstOrderOptions o = test::sasian_options(1.0);
-    o.epd = test::kSasianEpd / 10.0;
-    const FirstOrder f = spots_first_order(system, o);
-    const SeidelTransverse t = seidel_sums(system, f, kLineF, kLineC).transverse;
+    const test::SasianThirdOrder third = test::sasian_third_order(system);
+    const FirstOrder& f = third.first_order;
+    const SeidelTransverse& t = third.transverse;
     const double s1 = t.spherical, s2 = t.sagittal_coma, s34 = t.sagittal_field,
                  s34t = t.tangential_field;
     SpotOptions so;
-    so.fields = {1.0};
+    so.fields = {test::kSasianSmallField};
     const WavelengthSpot s = spot_diagrams(system, f, so).fields[0].spots[0];
     ASSERT_TRUE(s.chief.has_value());
     // The polynomial's hits relative to the chief ray, on the same grid.
@@ -165,6 +165,23 @@ TEST(SpotDiagrams, AiryRadiusFromTheWorkingFNumber) {
     EXPECT_NEAR(d.fields[0].spots[0].airy_radius, 1.22 * kLineF * 1e-6 * 4.0001, 1e-7);
     EXPECT_EQ(d.weights, o.weights);
     EXPECT_EQ(d.fields[0].polychromatic.rays, 2 * 127);
+}
+
+TEST(SpotDiagrams, FigureDrawsEveryRayThatPassed) {
+    const OpticalSystem system = test::sasian_triplet();
+    const FirstOrder f = spots_first_order(system, test::sasian_options());
+    SpotOptions o;
+    o.fields = {0.0, 20.0};
+    o.wavelengths = {kLineF, kLineC};
+    o.rings = 3;
+    const SpotDiagrams d = spot_diagrams(system, f, o);
+    size_t passed = 0;
+    for (const FieldSpots& field : d.fields)
+        passed += field.polychromatic.rays - field.polychromatic.lost;
+    ASSERT_GT(d.fields[1].polychromatic.lost, 0);  // the 20 degree beam is vignetted
+    const RayDiagram figure = spot_diagram_figure(d, "mm", "deg");
+    EXPECT_EQ(figure.dots.size(), passed);
+    EXPECT_EQ(figure.legend.size(), 2u);
 }
 
 }  // namespace
