@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "analysis/curve_report.h"
 #include "analysis/diffraction_report.h"
 #include "analysis/fan_report.h"
 #include "analysis/field_figures.h"
@@ -49,6 +50,11 @@ struct AnalyzeArgs {
     bool fans = false;
     int fan_points = 21;
     std::string spots_svg, fans_svg;  // figures; each implies its table
+    bool field_curves = false;
+    int field_curve_points = 11;
+    bool focal_shift = false;
+    std::vector<double> band;  // the focal shift's; empty: the wavelengths' range, or F to C
+    int focal_shift_points = 21;
 };
 
 // The middle of the wavelengths as given (for an even count, the one before the middle).
@@ -134,10 +140,13 @@ int run(AnalyzeArgs a) {
             }
             options.aperture_radius = 0.5 * a.aperture;
         }
-        if (a.image_distance && !a.spots && !a.fans) {
+        if (a.image_distance && !a.spots && !a.fans && !a.field_curves) {
             return usage_error(
-                "--image-distance: it places the image plane of --spots and "
-                "--fans; ask for one of them");
+                "--image-distance: it places the image plane of --spots, --fans "
+                "and --field-curves; ask for one of them");
+        }
+        if (!a.band.empty() && (a.band.size() != 2 || !(a.band[0] < a.band[1]))) {
+            return usage_error("--band: two wavelengths in nm, the shorter first (e.g. 450,700)");
         }
         const std::vector<double>& weights = a.wavelength_weights;
         if (!weights.empty()) {
@@ -191,6 +200,25 @@ int run(AnalyzeArgs a) {
             // Atomically: a failed write leaves no half file, and says why it failed.
             write_text_atomically(a.svg, svg);
         }
+        std::optional<FieldCurves> curves;
+        if (a.field_curves) {
+            FieldCurveOptions curve;
+            for (double field : first.fields) {
+                curve.max_field = std::max(curve.max_field, std::abs(field));
+            }
+            curve.points = a.field_curve_points;
+            curve.wavelengths = report.wavelengths;
+            if (a.image_distance) curve.image_z = system.last_vertex() + *a.image_distance;
+            curves = field_curves(system, report.first_order, curve);
+        }
+        std::optional<FocalShift> shift;
+        if (a.focal_shift) {
+            FirstOrderOptions reference = first;
+            reference.wavelength_nm = options.wavelength_nm;
+            const double from = a.band.empty() ? report.short_nm : a.band[0];
+            const double to = a.band.empty() ? report.long_nm : a.band[1];
+            shift = chromatic_focal_shift(system, reference, from, to, a.focal_shift_points);
+        }
         const std::string field_unit =
             first.object_distance ? (a.unit.empty() ? "units" : a.unit) : "deg";
         if (spots && !a.spots_svg.empty()) {
@@ -213,6 +241,8 @@ int run(AnalyzeArgs a) {
             if (a.mtf) j["mtf"] = mtf_json(*diffraction);
             if (spots) j["spots"] = spots_json(system, *spots);
             if (fans) j["fans"] = fans_json(system, *fans);
+            if (curves) j["field_curves"] = field_curves_json(system, *curves);
+            if (shift) j["focal_shift"] = focal_shift_json(*shift);
             std::cout << j.dump(2) << "\n";
         } else {
             std::cout << "lenslab analyze " << a.scene << ": "
@@ -220,6 +250,8 @@ int run(AnalyzeArgs a) {
             if (diffraction) std::cout << diffraction_table(*diffraction, a.psf, a.mtf);
             if (spots) std::cout << spots_table(system, *spots);
             if (fans) std::cout << fans_table(system, *fans);
+            if (curves) std::cout << field_curves_table(system, *curves);
+            if (shift) std::cout << focal_shift_table(*shift);
             if (!a.svg.empty()) std::cout << "\nray diagram written to " << a.svg << "\n";
             if (!a.spots_svg.empty()) {
                 std::cout << "spot diagrams written to " << a.spots_svg << "\n";
@@ -326,8 +358,29 @@ Action add_analyze_command(CLI::App& app) {
                     "Points along each ray fan, evenly from -1 to 1 across the stop (default 21)")
         ->check(CLI::Range(2, 10001));
     cmd->add_option("--image-distance", args->image_distance,
-                    "The image plane of the spots and fans, from the last vertex (default: the "
+                    "The image plane of the spots, fans and field curves, from the last vertex "
+                    "(default: the "
                     "paraxial image plane at the primary wavelength)");
+    cmd->add_flag("--field-curves", args->field_curves,
+                  "Tangential and sagittal field curvature and real distortion against field, "
+                  "from 0 to the largest field, per wavelength");
+    cmd->add_option("--field-curve-points", args->field_curve_points,
+                    "Fields of the field curves, evenly from 0 to the largest (default 11)")
+        ->check(CLI::Range(2, 1001));
+    CLI::Option* focal_shift = cmd->add_flag(
+        "--focal-shift", args->focal_shift,
+        "Chromatic focal shift: the paraxial image position against wavelength over a band, "
+        "from that at the primary wavelength");
+    cmd->add_option("--band", args->band,
+                    "The focal shift's band: two wavelengths in nm, comma-separated (default: "
+                    "the shortest and longest of --wavelengths, else the F and C lines)")
+        ->delimiter(',')
+        ->check(CLI::PositiveNumber)
+        ->needs(focal_shift);
+    cmd->add_option("--focal-shift-points", args->focal_shift_points,
+                    "Wavelengths of the focal shift, evenly across the band (default 21)")
+        ->check(CLI::Range(2, 10001))
+        ->needs(focal_shift);
     cmd->add_option("--wavelength-weights", args->wavelength_weights,
                     "Weights of --wavelengths, comma-separated, one each (default: equal): the "
                     "polychromatic spot radius weights each wavelength's rays by them")

@@ -3,27 +3,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/report_cells.h"
+
 namespace lenslab {
 
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-Json fan_values(const std::vector<double>& values) {
-    Json j = Json::array();
-    for (double v : values) j.push_back(std::isnan(v) ? Json(nullptr) : Json(v));
-    return j;
-}
-
-std::string fan_cell(double v) {
-    char text[32];
-    if (std::isnan(v)) {
-        std::snprintf(text, sizeof text, " %11s", "-");
-    } else {
-        std::snprintf(text, sizeof text, " %11.6f", std::abs(v) < 5e-7 ? 0.0 : v);
-    }
-    return text;
-}
 
 }  // namespace
 
@@ -43,8 +29,8 @@ Json fans_json(const OpticalSystem& system, const RayFans& r) {
         Json fans = Json::array();
         for (const RayFan& fan : f.fans) {
             fans.push_back({{"wavelength", fan.wavelength_nm},
-                            {"tangential", fan_values(fan.tangential)},
-                            {"sagittal", fan_values(fan.sagittal)}});
+                            {"tangential", json_numbers(fan.tangential)},
+                            {"sagittal", json_numbers(fan.sagittal)}});
         }
         e["fans"] = std::move(fans);
         fields.push_back(std::move(e));
@@ -73,8 +59,8 @@ std::string fans_table(const OpticalSystem& system, const RayFans& r) {
         for (size_t i = 0; i < r.pupil.size(); ++i) {
             std::snprintf(line, sizeof line, "  %7.3f", r.pupil[i]);
             out += line;
-            for (const RayFan& fan : f.fans) out += fan_cell(fan.tangential[i]);
-            for (const RayFan& fan : f.fans) out += fan_cell(fan.sagittal[i]);
+            for (const RayFan& fan : f.fans) out += table_cell(fan.tangential[i], 12);
+            for (const RayFan& fan : f.fans) out += table_cell(fan.sagittal[i], 12);
             out += "\n";
         }
     }

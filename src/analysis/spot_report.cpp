@@ -3,14 +3,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/report_cells.h"
+
 namespace lenslab {
 
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-// NaN (no ray passed) as null.
-Json spot_number(double v) { return std::isnan(v) ? Json(nullptr) : Json(v); }
 
 Json spot_xy(double x, double y) { return Json{{"x", x}, {"y", y}}; }
 
@@ -19,13 +18,6 @@ std::string spot_line(const char* format, Numbers... numbers) {
     char text[200];
     std::snprintf(text, sizeof text, format, numbers...);
     return text;
-}
-
-// "  -" for a missing figure, else the number in a column of `width`.
-std::string spot_cell(double v, int width) {
-    if (std::isnan(v)) return spot_line("%*s", width, "-");
-    // Rounding error about zero printed as 0, not -0.
-    return spot_line("%*.6f", width, std::abs(v) < 5e-7 ? 0.0 : v);
 }
 
 }  // namespace
@@ -47,8 +39,8 @@ Json spots_json(const OpticalSystem& system, const SpotDiagrams& d) {
             Json e;
             e["field"] = s.field;
             e["wavelength"] = s.wavelength_nm;
-            e["rms_radius"] = spot_number(s.spot.rms_radius);
-            e["geometric_radius"] = spot_number(s.spot.geometric_radius);
+            e["rms_radius"] = json_number(s.spot.rms_radius);
+            e["geometric_radius"] = json_number(s.spot.geometric_radius);
             e["centroid"] = s.spot.points.empty() ? Json(nullptr)
                                                   : spot_xy(s.spot.centroid_x, s.spot.centroid_y);
             e["chief"] = s.chief ? spot_xy(s.chief->x, s.chief->y) : Json(nullptr);
@@ -60,7 +52,7 @@ Json spots_json(const OpticalSystem& system, const SpotDiagrams& d) {
         const PolychromaticSpot& p = f.polychromatic;
         Json e;
         e["field"] = f.field;
-        e["rms_radius"] = spot_number(p.rms_radius);
+        e["rms_radius"] = json_number(p.rms_radius);
         e["centroid"] =
             std::isnan(p.rms_radius) ? Json(nullptr) : spot_xy(p.centroid_x, p.centroid_y);
         e["rays"] = p.rays;
@@ -85,19 +77,20 @@ std::string spots_table(const OpticalSystem& system, const SpotDiagrams& d) {
         for (const WavelengthSpot& s : f.spots) {
             const bool hit = !s.spot.points.empty();
             out += spot_line("  %10.4g %10.2f nm", s.field, s.wavelength_nm) +
-                   spot_cell(s.spot.rms_radius, 12) + spot_cell(s.spot.geometric_radius, 12) +
-                   spot_cell(hit ? s.spot.centroid_x : NAN, 12) +
-                   spot_cell(hit ? s.spot.centroid_y : NAN, 12) +
-                   spot_cell(s.chief ? s.chief->x : NAN, 12) +
-                   spot_cell(s.chief ? s.chief->y : NAN, 12) +
-                   spot_line(" %6d %6d", s.rays, s.vignetted) + spot_cell(s.airy_radius, 12) + "\n";
+                   table_cell(s.spot.rms_radius, 12) + table_cell(s.spot.geometric_radius, 12) +
+                   table_cell(hit ? s.spot.centroid_x : NAN, 12) +
+                   table_cell(hit ? s.spot.centroid_y : NAN, 12) +
+                   table_cell(s.chief ? s.chief->x : NAN, 12) +
+                   table_cell(s.chief ? s.chief->y : NAN, 12) +
+                   spot_line(" %6d %6d", s.rays, s.vignetted) + table_cell(s.airy_radius, 12) +
+                   "\n";
         }
         const PolychromaticSpot& p = f.polychromatic;
         const bool hit = !std::isnan(p.rms_radius);
-        out += spot_line("  %10.4g %13s", f.field, "polychromatic") + spot_cell(p.rms_radius, 12) +
-               spot_line("%12s", "") + spot_cell(hit ? p.centroid_x : NAN, 12) +
-               spot_cell(hit ? p.centroid_y : NAN, 12) + spot_line("%24s", "") +
-               spot_line(" %6d %6d", p.rays, p.lost) + spot_cell(f.airy_radius, 12) + "\n";
+        out += spot_line("  %10.4g %13s", f.field, "polychromatic") + table_cell(p.rms_radius, 12) +
+               spot_line("%12s", "") + table_cell(hit ? p.centroid_x : NAN, 12) +
+               table_cell(hit ? p.centroid_y : NAN, 12) + spot_line("%24s", "") +
+               spot_line(" %6d %6d", p.rays, p.lost) + table_cell(f.airy_radius, 12) + "\n";
     }
     return out;
 }

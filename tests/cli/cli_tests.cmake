@@ -249,10 +249,26 @@ lenslab_cli_test(NAME analyze.bad.weights_negative
            "-DSTDERR_LINE=lenslab: error: --wavelength-weights: -1 is negative (a weight is 0 or more)")
 lenslab_cli_test(NAME analyze.bad.image_distance_alone
     ARGS analyze ${analyze_triplet} --image-distance 40
-    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--image-distance: it places the image plane")
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--image-distance: it places the image plane of --spots, --fans and --field-curves")
 lenslab_cli_test(NAME analyze.bad.rings
     ARGS analyze ${analyze_triplet} --spots --rings 0
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--rings")
+# Field curves and the chromatic focal shift.
+lenslab_cli_test(NAME analyze.field_curves_focal_shift_json
+    ARGS analyze ${analyze_triplet} --json --stop 3 --epd 12.5 --fields 20
+         --field-curves --field-curve-points 5 --focal-shift --band 450,700
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=field_curves,focal_shift"
+           "-DSTDOUT_CONTAINS=\"differential_pupil\": 0.01")
+lenslab_cli_test(NAME analyze.focal_shift_table
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --focal-shift
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=Chromatic focal shift (paraxial image position")
+lenslab_cli_test(NAME analyze.bad.band_order
+    ARGS analyze ${analyze_triplet} --focal-shift --band 700,400
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --band: two wavelengths in nm, the shorter first (e.g. 450,700)")
+lenslab_cli_test(NAME analyze.bad.band_without_focal_shift
+    ARGS analyze ${analyze_triplet} --band 450,700
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--band requires --focal-shift")
 # The renderer still needs a camera: a lens-only file is refused there.
 lenslab_cli_test(NAME render.bad.lens_only_no_camera
     ARGS render ${analyze_data}/lens_only.json -o ${LENSLAB_CLI_OUT}/lens_only.png
