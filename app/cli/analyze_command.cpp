@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "analysis/curve_figures.h"
 #include "analysis/curve_report.h"
 #include "analysis/diffraction_report.h"
 #include "analysis/fan_report.h"
@@ -49,7 +50,8 @@ struct AnalyzeArgs {
     std::vector<double> wavelength_weights;  // one per wavelength; empty: equal
     bool fans = false;
     int fan_points = 21;
-    std::string spots_svg, fans_svg;  // figures; each implies its table
+    // Figures; each implies its table.
+    std::string spots_svg, fans_svg, curves_svg, focal_shift_svg;
     bool field_curves = false;
     int field_curve_points = 11;
     bool focal_shift = false;
@@ -85,11 +87,14 @@ std::optional<int> find_lens(const Scene& scene, const std::string& name, std::s
 
 int run(AnalyzeArgs a) {
     // Before the analysis, so a bad path costs nothing.
-    for (const std::string* file : {&a.svg, &a.spots_svg, &a.fans_svg}) {
+    for (const std::string* file :
+         {&a.svg, &a.spots_svg, &a.fans_svg, &a.curves_svg, &a.focal_shift_svg}) {
         if (!file->empty()) check_output_file(*file);
     }
     a.spots = a.spots || !a.spots_svg.empty();
     a.fans = a.fans || !a.fans_svg.empty();
+    a.field_curves = a.field_curves || !a.curves_svg.empty();
+    a.focal_shift = a.focal_shift || !a.focal_shift_svg.empty();
     const Scene scene = load_scene_file(a.scene, {.require_camera = false});
     std::optional<int> lens;
     if (!a.lens.empty()) {
@@ -143,7 +148,11 @@ int run(AnalyzeArgs a) {
         if (a.image_distance && !a.spots && !a.fans && !a.field_curves) {
             return usage_error(
                 "--image-distance: it places the image plane of --spots, --fans "
-                "and --field-curves; ask for one of them");
+                "and --field-curves, none of which was asked for");
+        }
+        if (!a.band.empty() && !a.focal_shift) {
+            return usage_error(
+                "--band: it sets the band of --focal-shift, which was not asked for");
         }
         if (!a.band.empty() && (a.band.size() != 2 || !(a.band[0] < a.band[1]))) {
             return usage_error("--band: two wavelengths in nm, the shorter first (e.g. 450,700)");
@@ -221,22 +230,39 @@ int run(AnalyzeArgs a) {
         }
         const std::string field_unit =
             first.object_distance ? (a.unit.empty() ? "units" : a.unit) : "deg";
-        if (spots && !a.spots_svg.empty()) {
-            const RayDiagram figure = spot_diagram_figure(*spots, a.unit, field_unit);
-            const int panels = static_cast<int>(spots->fields.size());
-            write_text_atomically(a.spots_svg,
-                                  ray_diagram_svg(figure, field_figure_width(panels), 300));
+        const auto write_figure = [](const std::string& file, const RayDiagram& figure,
+                                     int panels) {
+            write_text_atomically(file, ray_diagram_svg(figure, field_figure_width(panels), 300));
+        };
+        if (!a.spots_svg.empty()) {
+            write_figure(a.spots_svg, spot_diagram_figure(*spots, a.unit, field_unit),
+                         static_cast<int>(spots->fields.size()));
         }
-        if (fans && !a.fans_svg.empty()) {
-            const RayDiagram figure = ray_fan_figure(*fans, a.unit, field_unit);
-            write_text_atomically(a.fans_svg, ray_diagram_svg(figure, field_figure_width(2), 300));
+        if (!a.fans_svg.empty()) {
+            write_figure(a.fans_svg, ray_fan_figure(*fans, a.unit, field_unit), 2);
         }
+        if (!a.curves_svg.empty()) {
+            write_figure(a.curves_svg, field_curves_figure(*curves, a.unit, field_unit), 2);
+        }
+        if (!a.focal_shift_svg.empty()) {
+            write_figure(a.focal_shift_svg, focal_shift_figure(*shift, a.unit), 1);
+        }
+        // The figures written: file, JSON key, what the table's last lines call them.
+        const struct {
+            const std::string& file;
+            const char* key;
+            const char* name;
+        } figures[] = {{a.spots_svg, "spots_svg", "spot diagrams"},
+                       {a.fans_svg, "fans_svg", "ray fans"},
+                       {a.curves_svg, "curves_svg", "field curves"},
+                       {a.focal_shift_svg, "focal_shift_svg", "focal shift"}};
         if (a.json) {
             nlohmann::ordered_json j = report_json(system, report);
             j["scene"] = a.scene;
             if (!a.svg.empty()) j["svg"] = a.svg;
-            if (!a.spots_svg.empty()) j["spots_svg"] = a.spots_svg;
-            if (!a.fans_svg.empty()) j["fans_svg"] = a.fans_svg;
+            for (const auto& figure : figures) {
+                if (!figure.file.empty()) j[figure.key] = figure.file;
+            }
             if (a.psf) j["psf"] = psf_json(*diffraction);
             if (a.mtf) j["mtf"] = mtf_json(*diffraction);
             if (spots) j["spots"] = spots_json(system, *spots);
@@ -253,10 +279,11 @@ int run(AnalyzeArgs a) {
             if (curves) std::cout << field_curves_table(system, *curves);
             if (shift) std::cout << focal_shift_table(*shift);
             if (!a.svg.empty()) std::cout << "\nray diagram written to " << a.svg << "\n";
-            if (!a.spots_svg.empty()) {
-                std::cout << "spot diagrams written to " << a.spots_svg << "\n";
+            for (const auto& figure : figures) {
+                if (!figure.file.empty()) {
+                    std::cout << figure.name << " written to " << figure.file << "\n";
+                }
             }
-            if (!a.fans_svg.empty()) std::cout << "ray fans written to " << a.fans_svg << "\n";
         }
         return 0;
     } catch (const SceneError& e) {
@@ -354,6 +381,11 @@ Action add_analyze_command(CLI::App& app) {
                     "Write the spot diagrams to this SVG file (implies --spots)");
     cmd->add_option("--fans-svg", args->fans_svg,
                     "Write the ray fans to this SVG file (implies --fans)");
+    cmd->add_option("--curves-svg", args->curves_svg,
+                    "Write the field curves (field curvature and distortion) to this SVG file "
+                    "(implies --field-curves)");
+    cmd->add_option("--focal-shift-svg", args->focal_shift_svg,
+                    "Write the chromatic focal shift to this SVG file (implies --focal-shift)");
     cmd->add_option("--fan-points", args->fan_points,
                     "Points along each ray fan, evenly from -1 to 1 across the stop (default 21)")
         ->check(CLI::Range(2, 10001));
@@ -367,7 +399,7 @@ Action add_analyze_command(CLI::App& app) {
     cmd->add_option("--field-curve-points", args->field_curve_points,
                     "Fields of the field curves, evenly from 0 to the largest (default 11)")
         ->check(CLI::Range(2, 1001));
-    CLI::Option* focal_shift = cmd->add_flag(
+    cmd->add_flag(
         "--focal-shift", args->focal_shift,
         "Chromatic focal shift: the paraxial image position against wavelength over a band, "
         "from that at the primary wavelength");
@@ -375,12 +407,10 @@ Action add_analyze_command(CLI::App& app) {
                     "The focal shift's band: two wavelengths in nm, comma-separated (default: "
                     "the shortest and longest of --wavelengths, else the F and C lines)")
         ->delimiter(',')
-        ->check(CLI::PositiveNumber)
-        ->needs(focal_shift);
+        ->check(CLI::PositiveNumber);
     cmd->add_option("--focal-shift-points", args->focal_shift_points,
                     "Wavelengths of the focal shift, evenly across the band (default 21)")
-        ->check(CLI::Range(2, 10001))
-        ->needs(focal_shift);
+        ->check(CLI::Range(2, 10001));
     cmd->add_option("--wavelength-weights", args->wavelength_weights,
                     "Weights of --wavelengths, comma-separated, one each (default: equal): the "
                     "polychromatic spot radius weights each wavelength's rays by them")

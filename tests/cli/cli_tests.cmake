@@ -262,13 +262,25 @@ lenslab_cli_test(NAME analyze.field_curves_focal_shift_json
 lenslab_cli_test(NAME analyze.focal_shift_table
     ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --focal-shift
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=Chromatic focal shift (paraxial image position")
+set(analyze_curves_svg ${LENSLAB_CLI_OUT}/triplet_curves.svg)
+set(analyze_shift_svg ${LENSLAB_CLI_OUT}/triplet_focal_shift.svg)
+lenslab_cli_test(NAME analyze.curves_svg
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 20 --unit mm
+         --curves-svg ${analyze_curves_svg}
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=field curves written to ${analyze_curves_svg}"
+           -DOUTPUT=${analyze_curves_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg")
+lenslab_cli_test(NAME analyze.focal_shift_svg
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --band 420,700 --unit mm
+         --focal-shift-svg ${analyze_shift_svg}
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=focal shift written to ${analyze_shift_svg}"
+           -DOUTPUT=${analyze_shift_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg")
 lenslab_cli_test(NAME analyze.bad.band_order
     ARGS analyze ${analyze_triplet} --focal-shift --band 700,400
     CHECKS -DEXPECT_EXIT=2
            "-DSTDERR_LINE=lenslab: error: --band: two wavelengths in nm, the shorter first (e.g. 450,700)")
 lenslab_cli_test(NAME analyze.bad.band_without_focal_shift
     ARGS analyze ${analyze_triplet} --band 450,700
-    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--band requires --focal-shift")
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_LINE=lenslab: error: --band: it sets the band of --focal-shift, which was not asked for")
 # The renderer still needs a camera: a lens-only file is refused there.
 lenslab_cli_test(NAME render.bad.lens_only_no_camera
     ARGS render ${analyze_data}/lens_only.json -o ${LENSLAB_CLI_OUT}/lens_only.png
