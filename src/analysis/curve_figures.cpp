@@ -101,7 +101,7 @@ RayDiagram focal_shift_figure(const FocalShift& s, const std::string& unit) {
     p.x_max = s.wavelengths.back();
     p.y_min = -range;
     p.y_max = range;
-    p.title = "chromatic focal shift";
+    p.title = "shift against wavelength";
     p.x_min_label = plot_text("%g nm", p.x_min);
     p.x_max_label = plot_text("%g nm", p.x_max);
     p.y_max_label = "+";

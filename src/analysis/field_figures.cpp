@@ -73,10 +73,11 @@ RayDiagram spot_diagram_figure(const SpotDiagrams& spots, const std::string& uni
         d.labels.push_back(
             plot_label({cz, -half}, "RMS " + plot_length(f.polychromatic.rms_radius, unit), 18));
         d.labels.push_back(plot_label({cz, -half}, "GEO " + plot_length(spot_extent(f), unit), 34));
-        d.labels.push_back(plot_label({cz, -half},
-                                      plot_text("centroid y %.5g", f.polychromatic.centroid_y) +
-                                          (unit.empty() ? "" : " " + unit),
-                                      50));
+        // On the axis the centroid is 0 up to rounding: print 0, not 1e-15.
+        const double y = f.polychromatic.centroid_y;
+        d.labels.push_back(
+            plot_label({cz, -half},
+                       "centroid y " + plot_length(std::abs(y) < 1e-9 * half ? 0.0 : y, unit), 50));
     }
     d.legend = wavelength_legend(spots.wavelengths);
     d.title = "Spot diagrams, image plane " + plot_text("%.4f", spots.image_z) +
