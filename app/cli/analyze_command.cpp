@@ -85,6 +85,39 @@ std::optional<int> find_lens(const Scene& scene, const std::string& name, std::s
     return std::nullopt;
 }
 
+// What the options of the figures say against each other, before any work: the message of
+// the first conflict, if any.
+std::optional<std::string> figure_option_error(const AnalyzeArgs& a) {
+    const std::vector<double>& weights = a.wavelength_weights;
+    if (a.image_distance && !a.spots && !a.fans && !a.field_curves) {
+        return "--image-distance: it places the image plane of --spots, --fans "
+               "and --field-curves, none of which was asked for";
+    }
+    if (!a.band.empty() && !a.focal_shift) {
+        return "--band: it sets the band of --focal-shift, which was not asked for";
+    }
+    if (!a.band.empty() && (a.band.size() != 2 || !(a.band[0] < a.band[1]))) {
+        return "--band: two wavelengths in nm, the shorter first (e.g. 450,700)";
+    }
+    if (!weights.empty()) {
+        const size_t count = std::max<size_t>(1, a.wavelengths.size());
+        if (weights.size() != count) {
+            return "--wavelength-weights: " + std::to_string(weights.size()) + " weights for " +
+                   std::to_string(count) + " wavelengths (one each, in the order of --wavelengths)";
+        }
+        double sum = 0;
+        for (double w : weights) {
+            if (w < 0) {
+                return "--wavelength-weights: " + format_number(w) +
+                       " is negative (a weight is 0 or more)";
+            }
+            sum += w;
+        }
+        if (!(sum > 0)) return "--wavelength-weights: they add up to zero";
+    }
+    return std::nullopt;
+}
+
 int run(AnalyzeArgs a) {
     // Before the analysis, so a bad path costs nothing.
     for (const std::string* file :
@@ -95,6 +128,7 @@ int run(AnalyzeArgs a) {
     a.fans = a.fans || !a.fans_svg.empty();
     a.field_curves = a.field_curves || !a.curves_svg.empty();
     a.focal_shift = a.focal_shift || !a.focal_shift_svg.empty();
+    if (const auto error = figure_option_error(a)) return usage_error(*error);
     const Scene scene = load_scene_file(a.scene, {.require_camera = false});
     std::optional<int> lens;
     if (!a.lens.empty()) {
@@ -145,36 +179,7 @@ int run(AnalyzeArgs a) {
             }
             options.aperture_radius = 0.5 * a.aperture;
         }
-        if (a.image_distance && !a.spots && !a.fans && !a.field_curves) {
-            return usage_error(
-                "--image-distance: it places the image plane of --spots, --fans "
-                "and --field-curves, none of which was asked for");
-        }
-        if (!a.band.empty() && !a.focal_shift) {
-            return usage_error(
-                "--band: it sets the band of --focal-shift, which was not asked for");
-        }
-        if (!a.band.empty() && (a.band.size() != 2 || !(a.band[0] < a.band[1]))) {
-            return usage_error("--band: two wavelengths in nm, the shorter first (e.g. 450,700)");
-        }
         const std::vector<double>& weights = a.wavelength_weights;
-        if (!weights.empty()) {
-            const size_t count = std::max<size_t>(1, a.wavelengths.size());
-            if (weights.size() != count) {
-                return usage_error("--wavelength-weights: " + std::to_string(weights.size()) +
-                                   " weights for " + std::to_string(count) +
-                                   " wavelengths (one each, in the order of --wavelengths)");
-            }
-            double sum = 0;
-            for (double w : weights) {
-                if (w < 0) {
-                    return usage_error("--wavelength-weights: " + format_number(w) +
-                                       " is negative (a weight is 0 or more)");
-                }
-                sum += w;
-            }
-            if (!(sum > 0)) return usage_error("--wavelength-weights: they add up to zero");
-        }
         const LensReport report = analyze_lens_system(system, options);
         std::optional<SpotDiagrams> spots;
         if (a.spots) {
