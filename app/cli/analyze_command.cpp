@@ -17,6 +17,7 @@
 #include "analysis/field_figures.h"
 #include "analysis/lens_report.h"
 #include "analysis/ray_diagram.h"
+#include "analysis/ray_diagram_image.h"
 #include "analysis/ray_diagram_svg.h"
 #include "analysis/spot_report.h"
 #include "commands.h"
@@ -58,6 +59,18 @@ struct AnalyzeArgs {
     std::vector<double> band;  // the focal shift's; empty: the wavelengths' range, or F to C
     int focal_shift_points = 21;
 };
+
+// A figure as SVG, or as PNG when the file's name ends in ".png"; atomically either way, so a
+// failed write leaves no half file and says why it failed.
+void write_diagram(const std::string& file, const RayDiagram& diagram, double width,
+                   double min_height) {
+    const std::string png = ".png";
+    if (file.size() > png.size() && file.compare(file.size() - png.size(), png.size(), png) == 0) {
+        write_png_image(ray_diagram_image(diagram, width, min_height), file);
+    } else {
+        write_text_atomically(file, ray_diagram_svg(diagram, width, min_height));
+    }
+}
 
 // The middle of the wavelengths as given (for an even count, the one before the middle).
 double primary_wavelength(const std::vector<double>& wavelengths) {
@@ -210,9 +223,7 @@ int run(AnalyzeArgs a) {
         if (!a.svg.empty()) {
             RayDiagramOptions diagram;
             diagram.unit = a.unit;
-            const std::string svg = ray_diagram_svg(make_ray_diagram(system, report, diagram));
-            // Atomically: a failed write leaves no half file, and says why it failed.
-            write_text_atomically(a.svg, svg);
+            write_diagram(a.svg, make_ray_diagram(system, report, diagram), 1200, 360);
         }
         std::optional<FieldCurves> curves;
         if (a.field_curves) {
@@ -237,7 +248,7 @@ int run(AnalyzeArgs a) {
             first.object_distance ? (a.unit.empty() ? "units" : a.unit) : "deg";
         const auto write_figure = [](const std::string& file, const RayDiagram& figure,
                                      int panels) {
-            write_text_atomically(file, ray_diagram_svg(figure, field_figure_width(panels), 300));
+            write_diagram(file, figure, field_figure_width(panels), 300);
         };
         if (!a.spots_svg.empty()) {
             write_figure(a.spots_svg, spot_diagram_figure(*spots, a.unit, field_unit),
@@ -319,7 +330,8 @@ Action add_analyze_command(CLI::App& app) {
         ->check(CLI::PositiveNumber)
         ->excludes(wavelength);
     cmd->add_flag("--json", args->json, "Print the figures as JSON");
-    cmd->add_option("--svg", args->svg, "Write a ray diagram (SVG) to this file");
+    cmd->add_option("--svg", args->svg,
+                    "Write a ray diagram to this file: SVG, or PNG for a name ending in .png");
     CLI::Option* aperture =
         cmd->add_option("--aperture", args->aperture,
                         "Diameter of the collimated beam, in the scene's unit (default: all the "
@@ -383,14 +395,15 @@ Action add_analyze_command(CLI::App& app) {
         "Transverse ray fans per field and wavelength, tangential (e_y against py) and sagittal "
         "(e_x against px), from the primary wavelength's chief ray");
     cmd->add_option("--spots-svg", args->spots_svg,
-                    "Write the spot diagrams to this SVG file (implies --spots)");
+                    "Write the spot diagrams to this file, SVG or (.png) PNG; implies --spots");
     cmd->add_option("--fans-svg", args->fans_svg,
-                    "Write the ray fans to this SVG file (implies --fans)");
+                    "Write the ray fans to this file, SVG or (.png) PNG; implies --fans");
     cmd->add_option("--curves-svg", args->curves_svg,
-                    "Write the field curves (field curvature and distortion) to this SVG file "
-                    "(implies --field-curves)");
+                    "Write the field curves (field curvature and distortion) to this file, SVG or "
+                    "(.png) PNG; implies --field-curves");
     cmd->add_option("--focal-shift-svg", args->focal_shift_svg,
-                    "Write the chromatic focal shift to this SVG file (implies --focal-shift)");
+                    "Write the chromatic focal shift to this file, SVG or (.png) PNG; implies "
+                    "--focal-shift");
     cmd->add_option("--fan-points", args->fan_points,
                     "Points along each ray fan, evenly from -1 to 1 across the stop (default 21)")
         ->check(CLI::Range(2, 10001));

@@ -24,8 +24,9 @@ double curve_half_range(const std::vector<double>& values) {
 
 // The frame every chart of this file shares: room above for titles, below for axis labels.
 void frame_panels(RayDiagram& d, int panels) {
-    d.z_min = -1;
-    d.z_max = 1 + (panels - 1) * (2 + kCurvePanelGap);
+    // A hair wider than the panels, so the frame's clip keeps their outer edges.
+    d.z_min = -1.02;
+    d.z_max = 1.02 + (panels - 1) * (2 + kCurvePanelGap);
     d.y_min = -1.25;
     d.y_max = 1.2;
     d.scale_bar = 0;

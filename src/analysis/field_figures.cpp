@@ -45,8 +45,9 @@ RayDiagram spot_diagram_figure(const SpotDiagrams& spots, const std::string& uni
     half = half > 0 ? 1.1 * half : 1.0;
     const double side = 2 * half, step = side * (1 + kPanelGap);
     const int panels = static_cast<int>(spots.fields.size());
-    d.z_min = -half;
-    d.z_max = -half + step * (panels - 1) + side;
+    // A hair wider than the panels, so the frame's clip keeps their outer edges.
+    d.z_min = -half - 0.01 * side;
+    d.z_max = -half + step * (panels - 1) + 1.01 * side;
     d.y_min = -half - 0.3 * side;
     d.y_max = half + 0.12 * side;
     for (int i = 0; i < panels; ++i) {
@@ -107,8 +108,8 @@ RayDiagram ray_fan_figure(const RayFans& fans, const std::string& unit,
     if (!(scale > 0)) scale = 1.0;
     const double step = 2 * (1 + kPanelGap);
     const int rows = static_cast<int>(fans.fields.size());
-    d.z_min = -1;
-    d.z_max = -1 + step + 2;
+    d.z_min = -1.02;
+    d.z_max = -1 + step + 2.02;
     d.y_max = 1 + 0.15;
     d.y_min = 1 - step * (rows - 1) - 2 - 0.25;
     for (int row = 0; row < rows; ++row) {

@@ -274,6 +274,12 @@ lenslab_cli_test(NAME analyze.focal_shift_svg
          --focal-shift-svg ${analyze_shift_svg}
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=focal shift written to ${analyze_shift_svg}"
            -DOUTPUT=${analyze_shift_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg")
+set(analyze_spots_png ${LENSLAB_CLI_OUT}/triplet_spots.png)
+lenslab_cli_test(NAME analyze.spots_png
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 0,20 --unit mm
+         --spots-svg ${analyze_spots_png}
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=spot diagrams written to ${analyze_spots_png}"
+           -DOUTPUT=${analyze_spots_png} -DOUTPUT_CREATED=ON)
 lenslab_cli_test(NAME analyze.bad.band_order
     ARGS analyze ${analyze_triplet} --focal-shift --band 700,400
     CHECKS -DEXPECT_EXIT=2
