@@ -434,7 +434,7 @@ Action add_analyze_command(CLI::App& app) {
                     "polychromatic spot radius weights each wavelength's rays by them")
         ->delimiter(',');
     cmd->add_option("--unit", args->unit,
-                    "The scene's length unit, for the ray diagram's labels (e.g. mm); a scene "
+                    "The scene's length unit, for the figures' labels (e.g. mm); a scene "
                     "declares none, so they say \"units\" without it");
     cmd->add_option(
         "--lens", args->lens,

@@ -42,7 +42,8 @@ FieldCurves field_curves(const OpticalSystem& system, const FirstOrder& first_or
     const std::vector<double> wavelengths = options.wavelengths.empty()
                                                 ? std::vector<double>{first_order.wavelength_nm}
                                                 : options.wavelengths;
-    const int n = std::max(options.points, 1);
+    // On the axis alone there is one field to show.
+    const int n = options.max_field > 0 ? std::max(options.points, 1) : 1;
     const double d = kFieldCurveDifferentialPupil;
     for (double nm : wavelengths) {
         FieldCurve curve;

@@ -40,8 +40,8 @@ struct FieldCurves {
 };
 
 struct FieldCurveOptions {
-    double max_field = 0;             // degrees or object height; the curves run from 0 to it
-    int points = 11;                  // fields sampled, evenly from 0 to max_field
+    double max_field = 0;  // degrees or object height; the curves run from 0 to it
+    int points = 11;       // fields sampled, evenly from 0 to max_field (one when it is 0)
     std::vector<double> wavelengths;  // empty: the first-order block's
     std::optional<double> image_z;    // none: the paraxial image plane
 };

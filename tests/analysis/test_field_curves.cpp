@@ -50,6 +50,14 @@ TEST(FieldCurves, SmallFieldFociAndDistortionAreThirdOrder) {
     EXPECT_NEAR(p[2].paraxial_height, f.image_height, 1e-12);
 }
 
+TEST(FieldCurves, OnTheAxisAloneOneField) {
+    const OpticalSystem system = test::sasian_triplet();
+    const FirstOrder f = test::sasian_third_order(system).first_order;
+    const FieldCurves curves = field_curves(system, f, {});  // max_field 0
+    ASSERT_EQ(curves.curves[0].points.size(), 1u);
+    EXPECT_EQ(curves.curves[0].points[0].field, 0.0);
+}
+
 double schott_n_bk7(double nm) {
     // SCHOTT optical glass data sheet, N-BK7: B1..B3, C1..C3 (µm²).
     const double l2 = std::pow(nm * 1e-3, 2);

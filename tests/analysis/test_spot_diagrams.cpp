@@ -23,6 +23,7 @@
 #include "analysis/field_figures.h"
 #include "analysis/seidel.h"
 #include "analysis/spot_diagrams.h"
+#include "analysis/spot_report.h"
 #include "lens_scene_builder.h"
 #include "sasian_triplet.h"
 
@@ -182,6 +183,25 @@ TEST(SpotDiagrams, FigureDrawsEveryRayThatPassed) {
     const RayDiagram figure = spot_diagram_figure(d, "mm", "deg");
     EXPECT_EQ(figure.dots.size(), passed);
     EXPECT_EQ(figure.legend.size(), 2u);
+}
+
+TEST(SpotDiagrams, JsonListsEveryFieldAndWavelength) {
+    const OpticalSystem system = test::sasian_triplet();
+    const FirstOrder f = spots_first_order(system, test::sasian_options());
+    SpotOptions o;
+    o.fields = {0.0, 20.0};
+    o.wavelengths = {kLineF, kLineD, kLineC};
+    o.rings = 2;
+    const nlohmann::ordered_json j = spots_json(system, spot_diagrams(system, f, o));
+    ASSERT_EQ(j["per_wavelength"].size(), 6u);  // fields in order, wavelengths within each
+    EXPECT_EQ(j["per_wavelength"][4]["field"], 20.0);
+    EXPECT_EQ(j["per_wavelength"][4]["wavelength"], kLineD);
+    EXPECT_EQ(j["per_wavelength"][4]["rays"], 19);
+    ASSERT_EQ(j["polychromatic"].size(), 2u);
+    EXPECT_EQ(j["polychromatic"][1]["rays"], 57);
+    EXPECT_EQ(j["weights"], nlohmann::json::array({1.0, 1.0, 1.0}));
+    EXPECT_NEAR(j["image_position"].get<double>(), f.image_position, 1e-12);
+    EXPECT_EQ(j["reference"], "centroid");
 }
 
 }  // namespace
