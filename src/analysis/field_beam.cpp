@@ -4,6 +4,11 @@
 
 namespace lenslab {
 
+std::optional<ExitRay> passed_exit_ray(const std::optional<RealRay>& ray) {
+    if (!ray || ray->fate != RayFate::Passed || !(ray->direction.z > 0)) return std::nullopt;
+    return ExitRay{ray->exit_point(), ray->direction};
+}
+
 FieldBeam trace_field_beam(const OpticalSystem& system, const FirstOrder& first_order, double field,
                            double nm, int rings) {
     FieldBeam beam;
@@ -12,9 +17,8 @@ FieldBeam trace_field_beam(const OpticalSystem& system, const FirstOrder& first_
     const RayAimer aimer(system, first_order, field, nm);
     bool centre = true;  // the hexapolar grid starts at the stop's centre
     for (const PupilPoint& q : hexapolar_pupil(rings)) {
-        const auto ray = aimer.trace(q.x, q.y);
-        if (ray && ray->fate == RayFate::Passed && ray->direction.z > 0) {
-            beam.rays.push_back({ray->exit_point(), ray->direction});
+        if (const auto ray = passed_exit_ray(aimer.trace(q.x, q.y))) {
+            beam.rays.push_back(*ray);
             if (centre) beam.chief = beam.rays.back();
         } else {
             ++beam.lost;

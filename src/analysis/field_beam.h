@@ -8,6 +8,7 @@
 
 #include "analysis/aberrations.h"
 #include "analysis/first_order.h"
+#include "analysis/real_ray.h"
 
 namespace lenslab {
 
@@ -17,6 +18,9 @@ struct FieldBeam {
     int lost = 0;                  // vignetted, totally reflected or not aimable
     std::optional<ExitRay> chief;  // the ray through the stop's centre, when it passed
 };
+
+// The ray as it leaves the last surface, when it passed every surface going forward.
+std::optional<ExitRay> passed_exit_ray(const std::optional<RealRay>& ray);
 
 FieldBeam trace_field_beam(const OpticalSystem& system, const FirstOrder& first_order, double field,
                            double wavelength_nm, int rings);

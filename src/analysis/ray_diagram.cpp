@@ -19,15 +19,6 @@ std::string fmt(const char* format, double v) {
     return buffer;
 }
 
-// 1, 2 or 5 times a power of ten, near `target`.
-double nice_length(double target) {
-    const double p = std::pow(10.0, std::floor(std::log10(target)));
-    for (double m : {5.0, 2.0, 1.0}) {
-        if (m * p <= target) return m * p;
-    }
-    return p;
-}
-
 std::string short_glass(const std::string& glass) {
     const std::string prefix = "constant ";
     return glass.rfind(prefix, 0) == 0 ? glass.substr(prefix.size()) : glass;
@@ -206,9 +197,17 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     d.legend = {{kDiagramBlueF, fmt("%.1f nm (F)", kLineF)},
                 {kDiagramYellowGreenD, fmt("%.1f nm (d)", kLineD)},
                 {kDiagramRedC, fmt("%.1f nm (C)", kLineC)}};
-    d.scale_bar = nice_length(0.2 * (d.z_max - d.z_min));
+    d.scale_bar = diagram_round_length(0.2 * (d.z_max - d.z_min));
     d.scale_bar_label = fmt("%g ", d.scale_bar) + unit;
     return d;
+}
+
+double diagram_round_length(double target) {
+    const double p = std::pow(10.0, std::floor(std::log10(target)));
+    for (double m : {5.0, 2.0, 1.0}) {
+        if (m * p <= target) return m * p;
+    }
+    return p;
 }
 
 DiagramView fit_diagram(const RayDiagram& d, double width, double height, double margin, double top,

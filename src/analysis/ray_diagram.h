@@ -73,7 +73,7 @@ struct RayDiagram {
     std::vector<LegendEntry> legend;
     std::string title;
     std::string subtitle;         // what the rays are, under the title
-    double scale_bar = 10.0;      // length of the scale bar, in the scene's unit
+    double scale_bar = 10.0;      // length of the scale bar, in the scene's unit; 0: none
     std::string scale_bar_label;  // "10 mm"
 };
 
@@ -87,6 +87,9 @@ struct RayDiagramOptions {
 // The diagram of `system`; `report` gives the paraxial points and the beam's aperture.
 RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& report,
                             const RayDiagramOptions& options = {});
+
+// 1, 2 or 5 times a power of ten, at most `target` (and near it): a scale bar's length.
+double diagram_round_length(double target);
 
 // The uniform scale (pixels per unit) and offset that fit a diagram into a picture of
 // width x height pixels, keeping `margin` pixels free on the sides and `top` / `bottom`

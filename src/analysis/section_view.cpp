@@ -45,14 +45,7 @@ std::string section_format(const char* pattern, double v) {
 }
 
 // A 1, 2 or 5 times a power of ten near a fifth of `extent`.
-double section_scale_bar_length(double extent) {
-    const double target = extent / 5;
-    const double power = std::pow(10.0, std::floor(std::log10(target)));
-    for (double m : {5.0, 2.0, 1.0}) {
-        if (m * power <= target) return m * power;
-    }
-    return power;
-}
+double section_scale_bar_length(double extent) { return diagram_round_length(extent / 5); }
 
 // Whether some transparent material's index differs across the visible lines; if none
 // does, every wavelength takes the same paths.

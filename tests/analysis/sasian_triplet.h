@@ -9,6 +9,7 @@
 
 #include "analysis/first_order.h"
 #include "analysis/optical_system.h"
+#include "analysis/seidel.h"
 #include "lens_scene_builder.h"
 
 namespace lenslab::test {
@@ -33,6 +34,20 @@ inline FirstOrderOptions sasian_options(double field = kSasianField) {
     o.epd = kSasianEpd;
     o.fields = {field};
     return o;
+}
+
+// Where third order rules: a tenth of the page's entrance pupil and a 1 degree field, with
+// the first-order data and the transverse Seidel aberrations (F and C lines) there.
+inline constexpr double kSasianSmallField = 1.0;
+struct SasianThirdOrder {
+    FirstOrder first_order;
+    SeidelTransverse transverse;
+};
+inline SasianThirdOrder sasian_third_order(const OpticalSystem& system) {
+    FirstOrderOptions o = sasian_options(kSasianSmallField);
+    o.epd = kSasianEpd / 10.0;
+    const FirstOrder f = first_order(system, paraxial_trace(system, o.wavelength_nm), o);
+    return {f, seidel_sums(system, f, kLineF, kLineC).transverse};
 }
 
 }  // namespace lenslab::test

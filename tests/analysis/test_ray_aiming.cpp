@@ -57,11 +57,10 @@ TEST(RayAiming, FiniteObjectRaysCrossTheStopWhereAimed) {
 
 TEST(RayAiming, SmallApertureFansFollowTheSeidelPolynomial) {
     const OpticalSystem system = test::sasian_triplet();
-    FirstOrderOptions o = test::sasian_options(1.0);
-    o.epd = test::kSasianEpd / 10.0;
-    const FirstOrder f = aiming_first_order(system, o);
-    const SeidelTransverse t = seidel_sums(system, f, kLineF, kLineC).transverse;
-    const RayAimer aimer(system, f, 1.0, f.wavelength_nm);
+    const test::SasianThirdOrder third = test::sasian_third_order(system);
+    const FirstOrder& f = third.first_order;
+    const SeidelTransverse& t = third.transverse;
+    const RayAimer aimer(system, f, test::kSasianSmallField, f.wavelength_nm);
     const double z_image = system.last_vertex() + f.image_position;
     const auto image_point = [&](double px, double py) {
         const auto ray = aimer.trace(px, py);

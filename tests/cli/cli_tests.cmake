@@ -209,6 +209,84 @@ lenslab_cli_test(NAME analyze.bad.epd_and_f_number
 lenslab_cli_test(NAME analyze.bad.field_heights_at_infinity
     ARGS analyze ${analyze_triplet} --field-heights 5
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=requires --object-distance")
+# Spot diagrams and ray fans per field and wavelength, their figures, and bad input.
+set(analyze_spots_svg ${LENSLAB_CLI_OUT}/triplet_spots.svg)
+set(analyze_fans_svg ${LENSLAB_CLI_OUT}/triplet_fans.svg)
+lenslab_cli_test(NAME analyze.spots_fans_json
+    ARGS analyze ${analyze_triplet} --json --stop 3 --epd 12.5 --fields 0,14,20
+         --wavelengths 486.1327,587.5618,656.2725 --wavelength-weights 1,2,1 --spots --rings 4
+         --fans --fan-points 11
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=spots,fans,first_order"
+           "-DSTDOUT_CONTAINS=\"rays_per_beam\": 61")
+lenslab_cli_test(NAME analyze.spots_table
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 0,20 --spots
+         --image-distance 41
+    CHECKS -DEXPECT_EXIT=zero
+           "-DSTDOUT_CONTAINS=Spot diagrams in the plane 41.0000 from the last vertex")
+lenslab_cli_test(NAME analyze.spots_svg
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 0,14,20 --unit mm
+         --spots-svg ${analyze_spots_svg}
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=spot diagrams written to ${analyze_spots_svg}"
+           -DOUTPUT=${analyze_spots_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg")
+lenslab_cli_test(NAME analyze.fans_svg
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 0,20 --unit mm
+         --fans-svg ${analyze_fans_svg}
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=ray fans written to ${analyze_fans_svg}"
+           -DOUTPUT=${analyze_fans_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg")
+lenslab_cli_test(NAME analyze.bad.weights_count
+    ARGS analyze ${analyze_triplet} --wavelengths 486.1327,587.5618 --wavelength-weights 1
+         --spots
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --wavelength-weights: 1 weights for 2 wavelengths (one each, in the order of --wavelengths)")
+lenslab_cli_test(NAME analyze.bad.weights_zero
+    ARGS analyze ${analyze_triplet} --wavelength-weights 0 --spots
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --wavelength-weights: they add up to zero")
+lenslab_cli_test(NAME analyze.bad.weights_negative
+    ARGS analyze ${analyze_triplet} --wavelengths 486.1327,587.5618 --wavelength-weights 1,-1
+         --spots
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --wavelength-weights: -1 is negative (a weight is 0 or more)")
+lenslab_cli_test(NAME analyze.bad.image_distance_alone
+    ARGS analyze ${analyze_triplet} --image-distance 40
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--image-distance: it places the image plane of --spots, --fans and --field-curves")
+lenslab_cli_test(NAME analyze.bad.rings
+    ARGS analyze ${analyze_triplet} --spots --rings 0
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--rings")
+# Field curves and the chromatic focal shift.
+lenslab_cli_test(NAME analyze.field_curves_focal_shift_json
+    ARGS analyze ${analyze_triplet} --json --stop 3 --epd 12.5 --fields 20
+         --field-curves --field-curve-points 5 --focal-shift --band 450,700
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=field_curves,focal_shift"
+           "-DSTDOUT_CONTAINS=\"differential_pupil\": 0.01")
+lenslab_cli_test(NAME analyze.focal_shift_table
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --focal-shift
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=Chromatic focal shift (paraxial image position")
+set(analyze_curves_svg ${LENSLAB_CLI_OUT}/triplet_curves.svg)
+set(analyze_shift_svg ${LENSLAB_CLI_OUT}/triplet_focal_shift.svg)
+lenslab_cli_test(NAME analyze.curves_svg
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 20 --unit mm
+         --curves-svg ${analyze_curves_svg}
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=field curves written to ${analyze_curves_svg}"
+           -DOUTPUT=${analyze_curves_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg")
+lenslab_cli_test(NAME analyze.focal_shift_svg
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --band 420,700 --unit mm
+         --focal-shift-svg ${analyze_shift_svg}
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=focal shift written to ${analyze_shift_svg}"
+           -DOUTPUT=${analyze_shift_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg")
+set(analyze_spots_png ${LENSLAB_CLI_OUT}/triplet_spots.png)
+lenslab_cli_test(NAME analyze.spots_png
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 0,20 --unit mm
+         --spots-svg ${analyze_spots_png}
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=spot diagrams written to ${analyze_spots_png}"
+           -DOUTPUT=${analyze_spots_png} -DOUTPUT_CREATED=ON)
+lenslab_cli_test(NAME analyze.bad.band_order
+    ARGS analyze ${analyze_triplet} --focal-shift --band 700,400
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --band: two wavelengths in nm, the shorter first (e.g. 450,700)")
+lenslab_cli_test(NAME analyze.bad.band_without_focal_shift
+    ARGS analyze ${analyze_triplet} --band 450,700
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_LINE=lenslab: error: --band: it sets the band of --focal-shift, which was not asked for")
 # The renderer still needs a camera: a lens-only file is refused there.
 lenslab_cli_test(NAME render.bad.lens_only_no_camera
     ARGS render ${analyze_data}/lens_only.json -o ${LENSLAB_CLI_OUT}/lens_only.png
