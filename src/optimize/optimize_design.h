@@ -1,0 +1,47 @@
+#pragma once
+// Optimises a lens design (lens_design.h) by damped least squares (levenberg_marquardt.h)
+// and gives the merit function before and after, operand by operand, with the optimised
+// scene to write out.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "optimize/design_evaluation.h"
+#include "optimize/levenberg_marquardt.h"
+
+namespace lenslab {
+
+struct OperandRow {
+    std::string label;
+    bool constraint = false;
+    double value = 0, target = 0, weight = 0;
+    double contribution = 0;  // weight * residual²
+};
+
+struct MeritTable {
+    double merit = 0;
+    double efl = 0, image_distance = 0;
+    std::vector<OperandRow> operands;
+};
+
+struct VariableRow {
+    std::string label;
+    double before = 0, after = 0;
+};
+
+struct OptimizeResult {
+    MeritTable before, after;
+    std::vector<VariableRow> variables;
+    LmResult solver;
+    nlohmann::ordered_json scene;  // the optimised scene
+};
+
+MeritTable merit_table(const LensDesign& design, const DesignEvaluation& evaluation);
+
+// `iterations` overrides the design's when >= 0. Throws SceneError when the starting
+// design cannot be evaluated.
+OptimizeResult optimize_design(const LensDesign& design, int iterations = -1,
+                               const std::function<void(const LmProgress&)>& progress = {});
+
+}  // namespace lenslab
