@@ -57,7 +57,7 @@ TEST(LevenbergMarquardt, RefusedPointsAreSteppedAround) {
     const ResidualFunction fenced = [&](const std::vector<double>& x) {
         if (x[0] > 2.0) return std::optional<std::vector<double>>();
         largest = std::max(largest, x[0]);
-        return std::optional<std::vector<double>>({x[0] - 3.0});
+        return std::optional<std::vector<double>>(std::vector<double>{x[0] - 3.0});
     };
     const LmResult r = levenberg_marquardt(fenced, {0.0}, {1e-4});
     EXPECT_LE(r.x[0], 2.0);
