@@ -1,5 +1,7 @@
 #include "optimize/levenberg_marquardt.h"
 
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -16,14 +18,12 @@ double lm_sum_of_squares(const std::vector<double>& r) {
 // Column j of the Jacobian by central differences; one-sided where one side cannot be
 // evaluated, zero where neither can (the variable then does not move this iteration).
 std::vector<double> lm_jacobian_column(const ResidualFunction& residuals, std::vector<double> x,
-                                       const std::vector<double>& r0, size_t j, double h,
-                                       int& evaluations) {
+                                       const std::vector<double>& r0, size_t j, double h) {
     const double xj = x[j];
     x[j] = xj + h;
     const std::optional<std::vector<double>> plus = residuals(x);
     x[j] = xj - h;
     const std::optional<std::vector<double>> minus = residuals(x);
-    evaluations += 2;
     std::vector<double> column(r0.size(), 0.0);
     for (size_t i = 0; i < r0.size(); ++i) {
         if (plus && minus) {
@@ -83,11 +83,13 @@ LmResult levenberg_marquardt(const ResidualFunction& residuals, std::vector<doub
         return result;
     }
     for (int iteration = 1; iteration <= options.max_iterations; ++iteration) {
+        // The columns in parallel: each is computed alone and stored in its own slot, so the
+        // Jacobian is the same bit for bit whatever the number of threads.
         std::vector<std::vector<double>> jacobian(n);
-        for (size_t j = 0; j < n; ++j) {
-            jacobian[j] =
-                lm_jacobian_column(residuals, result.x, *r, j, steps[j], result.evaluations);
-        }
+        tbb::parallel_for(size_t{0}, n, [&](size_t j) {
+            jacobian[j] = lm_jacobian_column(residuals, result.x, *r, j, steps[j]);
+        });
+        result.evaluations += static_cast<int>(2 * n);
         // Normal equations J^T J d = -J^T r.
         std::vector<double> jtj(n * n, 0.0), jtr(n, 0.0);
         for (size_t a = 0; a < n; ++a) {

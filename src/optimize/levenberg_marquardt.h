@@ -5,7 +5,9 @@
 // al., Numerical Recipes, 3rd ed., section 15.5.2). A trial point the model cannot evaluate
 // (the residual function returns none: lens faces crossing, rays lost) counts as a step
 // that failed: the damping grows and the step shrinks, as for one that made things worse.
-// Everything runs in order on one thread, so the result is the same on every run.
+// The Jacobian's columns are evaluated in parallel (TBB), each into its own slot, and
+// everything else in order, so the result is the same on every run and any number of
+// threads; the residual function must be safe to call from several threads at once.
 
 #include <functional>
 #include <optional>
