@@ -51,7 +51,12 @@ std::vector<double> DesignModel::start() const {
 
 DesignState DesignModel::state_at(const std::vector<double>& x) const {
     DesignState state = m_start;
-    for (size_t i = 0; i < x.size(); ++i) set_variable(state, m_design.variables[i], x[i]);
+    const std::vector<double> x0 = start();
+    for (size_t i = 0; i < x.size(); ++i) {
+        // A variable left where it started keeps its number as written (1/(1/R) may not
+        // give R back to the last bit).
+        if (x[i] != x0[i]) set_variable(state, m_design.variables[i], x[i]);
+    }
     return state;
 }
 

@@ -95,7 +95,12 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
                                      [](double v) { return v > 0 ? "" : "must be > 0 (nm)"; })
                         : std::vector<double>{kLineF, kLineD, kLineC};
     for (size_t i = 0; i < d.wavelengths.size(); ++i) {
-        check_wavelength(start, d.wavelengths[i], "wavelengths[" + std::to_string(i) + "]");
+        try {
+            check_wavelength(start, d.wavelengths[i], "the wavelength");
+        } catch (const SceneError& e) {  // the design's key, then the lens that refuses it
+            throw SceneError("wavelengths[" + std::to_string(i) + "]",
+                             e.reason() + " (system." + e.path() + ")");
+        }
     }
     if (reader.has("weights")) {
         d.weights =

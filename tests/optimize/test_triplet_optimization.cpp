@@ -74,6 +74,9 @@ TEST(TripletOptimization, WritesOnlyTheVariablesNumbers) {
         EXPECT_EQ(before["diameter"], after["diameter"]);
     }
     EXPECT_NE(result.scene["objects"][0]["front"], design.scene["objects"][0]["front"]);
+    // No iteration: the scene written back as it was read, every number to the bit.
+    design.iterations = 0;
+    EXPECT_EQ(optimize_design(design).scene.dump(), design.scene.dump());
 }
 
 }  // namespace
