@@ -34,7 +34,14 @@ int run_optimize(const OptimizeArgs& a) {
     };
     OptimizeResult result;
     try {
-        result = optimize_design(design, a.iterations, progress);
+        const auto on_glass = [&a](const GlassTrial& t) {
+            if (a.quiet) return;
+            char line[200];
+            std::snprintf(line, sizeof line, "glass %s %s: merit %.6g%s\n", t.lens.c_str(),
+                          t.glass.c_str(), t.merit, t.kept ? " (best so far)" : "");
+            std::cerr << line << std::flush;
+        };
+        result = optimize_design(design, a.iterations, progress, on_glass);
     } catch (const SceneError& e) {
         throw SceneError(a.design + ": " + e.path(), e.reason());
     }

@@ -45,11 +45,11 @@ ojson ld_read_ordered(const std::string& file) {
 }  // namespace
 
 LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& base_dir) {
-    JsonObjectReader reader(
-        root, "",
-        {"description", "system", "stop", "epd", "f_number", "fields", "wavelengths", "weights",
-         "rings", "image_distance", "variables", "operands", "iterations"},
-        "a design");
+    JsonObjectReader reader(root, "",
+                            {"description", "system", "stop", "epd", "f_number", "fields",
+                             "wavelengths", "weights", "rings", "image_distance", "variables",
+                             "operands", "iterations", "glass_choices", "glass_iterations"},
+                            "a design");
     LensDesign d;
     const nlohmann::json& system = reader.require("system");
     if (system.is_string()) {
@@ -148,6 +148,17 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
             d.operands.push_back(std::move(op));
         }
     }
+    if (const nlohmann::json* choices = reader.find("glass_choices")) {
+        if (!choices->is_array()) {
+            throw SceneError("glass_choices", "must be an array of glass choices");
+        }
+        for (size_t i = 0; i < choices->size(); ++i) {
+            d.glass_choices.push_back(read_glass_choice((*choices)[i],
+                                                        "glass_choices[" + std::to_string(i) + "]",
+                                                        d.scene, d.base_dir, d.wavelengths));
+        }
+    }
+    d.glass_iterations = static_cast<int>(reader.integer("glass_iterations", 20, 0, 100000));
     return d;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "optimize/design_variable.h"
+#include "optimize/glass_choice.h"
 #include "optimize/merit_operand.h"
 
 namespace lenslab {
@@ -29,6 +30,9 @@ struct LensDesign {
     std::vector<DesignVariable> variables;
     std::vector<MeritOperand> operands;
     int iterations = 100;
+    // Glass choice after the continuous optimisation, each glass re-optimised this long.
+    std::vector<GlassChoice> glass_choices;
+    int glass_iterations = 20;
 
     double primary_wavelength() const { return wavelengths[(wavelengths.size() - 1) / 2]; }
 };

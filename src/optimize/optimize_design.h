@@ -33,15 +33,20 @@ struct VariableRow {
 struct OptimizeResult {
     MeritTable before, after;
     std::vector<VariableRow> variables;
+    // The glass pass: per lens with a choice, its glass after the continuous run, then every
+    // other glass tried; `kept` marks the one the result has.
+    std::vector<GlassTrial> glass_trials;
     LmResult solver;
     nlohmann::ordered_json scene;  // the optimised scene
 };
 
 MeritTable merit_table(const LensDesign& design, const DesignEvaluation& evaluation);
 
-// `iterations` overrides the design's when >= 0. Throws SceneError when the starting
-// design cannot be evaluated.
+// `iterations` overrides the design's when >= 0; `progress` hears of every accepted
+// iteration of the continuous run, `on_glass` of every glass tried after it. Throws
+// SceneError when the starting design cannot be evaluated.
 OptimizeResult optimize_design(const LensDesign& design, int iterations = -1,
-                               const std::function<void(const LmProgress&)>& progress = {});
+                               const std::function<void(const LmProgress&)>& progress = {},
+                               const std::function<void(const GlassTrial&)>& on_glass = {});
 
 }  // namespace lenslab

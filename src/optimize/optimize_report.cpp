@@ -53,6 +53,13 @@ std::string optimize_table(const OptimizeResult& result) {
     for (const VariableRow& v : result.variables) {
         text += or_line("  %-32s %16.9g %16.9g\n", v.label.c_str(), v.before, v.after);
     }
+    if (!result.glass_trials.empty()) {
+        text += or_line("\n  %-32s %16s %16s\n", "glass choice", "glass", "merit");
+        for (const GlassTrial& t : result.glass_trials) {
+            text += or_line("  %-32s %16s %16.6g%s\n", t.lens.c_str(), t.glass.c_str(), t.merit,
+                            t.kept ? "  kept" : "");
+        }
+    }
     text += or_line("\n%d iterations, %d evaluations: ", result.solver.iterations,
                     result.solver.evaluations) +
             result.solver.stopped + "\n";
@@ -66,6 +73,13 @@ nlohmann::ordered_json optimize_json(const OptimizeResult& result) {
     j["variables"] = nlohmann::ordered_json::array();
     for (const VariableRow& v : result.variables) {
         j["variables"].push_back({{"variable", v.label}, {"before", v.before}, {"after", v.after}});
+    }
+    if (!result.glass_trials.empty()) {
+        j["glass_trials"] = nlohmann::ordered_json::array();
+        for (const GlassTrial& t : result.glass_trials) {
+            j["glass_trials"].push_back(
+                {{"lens", t.lens}, {"glass", t.glass}, {"merit", t.merit}, {"kept", t.kept}});
+        }
     }
     j["iterations"] = result.solver.iterations;
     j["evaluations"] = result.solver.evaluations;

@@ -548,6 +548,11 @@ lenslab_cli_test(NAME optimize.bad.iterations
 lenslab_cli_test(NAME optimize.bad.output_is_a_folder
     ARGS optimize ${optimize_data}/triplet_near.design.json -o tests
     CHECKS -DEXPECT_EXIT=1 "-DSTDERR_LINE=lenslab: error: cannot write 'tests': is a directory")
+set(optimize_glass_out ${LENSLAB_CLI_OUT}/triplet_glass.json)
+lenslab_cli_test(NAME optimize.glass_choice
+    ARGS optimize ${optimize_data}/triplet_glass.design.json -o ${optimize_glass_out} --iterations 1
+    CHECKS -DEXPECT_EXIT=zero "-DSTDERR_CONTAINS=glass L2 SF5: merit" "-DSTDOUT_CONTAINS=glass choice"
+           -DOUTPUT=${optimize_glass_out} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS={")
 lenslab_cli_test(NAME bench.optimize
     ARGS bench optimize ${optimize_data}/triplet_near.design.json --threads 2
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=median" "-DSTDOUT_CONTAINS=rms_spot 20°")

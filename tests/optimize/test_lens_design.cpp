@@ -67,6 +67,24 @@ TEST(LensDesign, MistakesNameTheirJsonPath) {
     EXPECT_EQ(design_error({{"operands", nlohmann::json::array()}}),
               "operands: must be a non-empty array of operands");
     EXPECT_EQ(design_error({{"system", 3}}), "system: must be a scene file name or a scene object");
+    EXPECT_EQ(design_error({{"glass_choices", {{{"lens", "A"}, {"glasses", {"N-BK7"}}}}}}),
+              "glass_choices[0].lens: the lens 'A' needs its material written inline with a "
+              "\"glass\" to choose among glasses");
+}
+
+TEST(LensDesign, UnknownGlassOfAChoiceIsNamed) {
+    std::vector<test::LensSpec> lenses = kDesignLenses;
+    lenses[0].material = test::glass("N-BK7");
+    try {
+        lens_design_from_json(
+            design_of(lenses,
+                      {{"glass_choices", {{{"lens", "A"}, {"glasses", {"N-BK7", "NBK7"}}}}}}),
+            "");
+        FAIL() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.path(), "glass_choices[0].glasses[1]");
+        EXPECT_NE(e.reason().find("NBK7"), std::string::npos) << e.reason();
+    }
 }
 
 TEST(LensDesign, SceneErrorsNameTheirPlaceInTheSystem) {

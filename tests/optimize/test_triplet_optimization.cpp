@@ -79,5 +79,37 @@ TEST(TripletOptimization, WritesOnlyTheVariablesNumbers) {
     EXPECT_EQ(optimize_design(design).scene.dump(), design.scene.dump());
 }
 
+// The glass pass: for each lens with a choice, the glass kept is the one whose brief
+// re-optimisation ended lowest, the written scene has it, and the merit only falls.
+TEST(TripletOptimization, GlassPassKeepsTheBestGlass) {
+    const LensDesign design = load_lens_design(std::string(LENSLAB_TEST_DATA) +
+                                               "/optimize/data/triplet_glass.design.json");
+    const OptimizeResult result = optimize_design(design);
+    ASSERT_EQ(result.glass_trials.size(), 6u);  // per lens its glass, then the other two
+    EXPECT_NEAR(result.glass_trials[0].merit, result.solver.merit, 1e-15);
+    for (const GlassChoice& choice : design.glass_choices) {
+        const GlassTrial* kept = nullptr;
+        double lowest = INFINITY;
+        for (const GlassTrial& t : result.glass_trials) {
+            if (t.lens != choice.lens) continue;
+            lowest = std::min(lowest, t.merit);
+            if (t.kept) {
+                EXPECT_EQ(kept, nullptr) << choice.lens;
+                kept = &t;
+            }
+        }
+        ASSERT_NE(kept, nullptr) << choice.lens;
+        EXPECT_EQ(kept->merit, lowest) << choice.lens;
+        EXPECT_EQ(lens_glass(result.scene, choice.object), kept->glass);
+    }
+    EXPECT_LE(result.after.merit, result.solver.merit);
+    // The best only ever falls, so the result is the lowest of every trial.
+    double lowest_overall = INFINITY;
+    for (const GlassTrial& t : result.glass_trials) {
+        lowest_overall = std::min(lowest_overall, t.merit);
+    }
+    EXPECT_NEAR(result.after.merit, lowest_overall, 1e-12 * lowest_overall);
+}
+
 }  // namespace
 }  // namespace lenslab
