@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "optimize/optimize_report.h"
+#include "scene/scene_error.h"
 #include "util/atomic_file.h"
 
 namespace lenslab::cli {

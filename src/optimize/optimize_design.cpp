@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "scene/scene_error.h"
+
 namespace lenslab {
 
 namespace {
