@@ -274,11 +274,14 @@ Action add_bench_command(CLI::App& app) {
 
     const Action povray = add_bench_povray_command(*bench);
     CLI::App* povray_cmd = bench->get_subcommand("povray");
+    const Action optimize = add_bench_optimize_command(*bench);
+    CLI::App* optimize_cmd = bench->get_subcommand("optimize");
 
     // The subcommands share the one action; CLI11 says which was chosen.
-    return [args, conv, sppm, povray, povray_cmd] {
+    return [args, conv, sppm, povray, povray_cmd, optimize, optimize_cmd] {
         if (sppm->parsed()) return run_convergence_bench(*conv);
         if (povray_cmd->parsed()) return povray();
+        if (optimize_cmd->parsed()) return optimize();
         return run(*args);
     };
 }

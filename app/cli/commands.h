@@ -28,10 +28,13 @@ Action add_trace_command(CLI::App& app);
 Action add_bench_command(CLI::App& app);
 // `bench povray`, registered by add_bench_command under its `bench`.
 Action add_bench_povray_command(CLI::App& bench);
+// `bench optimize`, likewise.
+Action add_bench_optimize_command(CLI::App& bench);
 Action add_glass_command(CLI::App& app);
 Action add_analyze_command(CLI::App& app);
 Action add_detect_command(CLI::App& app);
 Action add_import_command(CLI::App& app);
 Action add_export_command(CLI::App& app);
+Action add_optimize_command(CLI::App& app);
 
 }  // namespace lenslab::cli

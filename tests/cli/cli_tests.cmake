@@ -595,3 +595,42 @@ lenslab_cli_test(NAME export.zmx
     ARGS export ${lensfile_data}/cooke_triplet.json --object triplet -o ${export_out}
     CHECKS -DEXPECT_EXIT=zero "-DSTDERR_CONTAINS=triplet written to ${export_out}"
            -DOUTPUT=${export_out} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=MODE SEQ")
+
+# `optimize`: damped least squares on a design file (docs/optimizer.md). The near start of
+# the triplet, a few iterations: progress on stderr, the before/after table or JSON on
+# stdout, the optimised scene written; bad designs named by file and JSON path.
+set(optimize_data tests/optimize/data)
+set(optimize_out ${LENSLAB_CLI_OUT}/triplet_optimized.json)
+lenslab_cli_test(NAME optimize.table
+    ARGS optimize ${optimize_data}/triplet_near.design.json -o ${optimize_out} --iterations 2
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=after: merit" "-DSTDERR_CONTAINS=iteration 1: merit"
+           -DOUTPUT=${optimize_out} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS={")
+set(optimize_json_out ${LENSLAB_CLI_OUT}/triplet_optimized_json.json)
+lenslab_cli_test(NAME optimize.json
+    ARGS optimize ${optimize_data}/triplet_near.design.json -o ${optimize_json_out} --iterations 1
+         --json --quiet
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=before,after,variables,stopped"
+           -DOUTPUT=${optimize_json_out} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS={")
+set(optimize_bad_out ${LENSLAB_CLI_OUT}/not_written.json)
+lenslab_cli_test(NAME optimize.bad.unknown_lens
+    ARGS optimize ${optimize_data}/unknown_lens.design.json -o ${optimize_bad_out}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: ${optimize_data}/unknown_lens.design.json: variables[0].lens: no prescription lens named 'L9' in the system (lenses: L1, L2, L3)"
+           -DOUTPUT=${optimize_bad_out} -DOUTPUT_CREATED=OFF)
+lenslab_cli_test(NAME optimize.bad.no_output
+    ARGS optimize ${optimize_data}/triplet_near.design.json
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--output is required")
+lenslab_cli_test(NAME optimize.bad.iterations
+    ARGS optimize ${optimize_data}/triplet_near.design.json -o ${optimize_bad_out} --iterations 1.5
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--iterations: must be a whole number, got '1.5'")
+lenslab_cli_test(NAME optimize.bad.output_is_a_folder
+    ARGS optimize ${optimize_data}/triplet_near.design.json -o tests
+    CHECKS -DEXPECT_EXIT=1 "-DSTDERR_LINE=lenslab: error: cannot write 'tests': is a directory")
+set(optimize_glass_out ${LENSLAB_CLI_OUT}/triplet_glass.json)
+lenslab_cli_test(NAME optimize.glass_choice
+    ARGS optimize ${optimize_data}/triplet_glass.design.json -o ${optimize_glass_out} --iterations 1
+    CHECKS -DEXPECT_EXIT=zero "-DSTDERR_CONTAINS=glass L2 SF5: merit" "-DSTDOUT_CONTAINS=glass choice"
+           -DOUTPUT=${optimize_glass_out} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS={")
+lenslab_cli_test(NAME bench.optimize
+    ARGS bench optimize ${optimize_data}/triplet_near.design.json --threads 2
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=median" "-DSTDOUT_CONTAINS=rms_spot 20°")

@@ -1,0 +1,82 @@
+// `lenslab optimize DESIGN -o OUT`: damped least squares on a lens design
+// (docs/optimizer.md). Progress on stderr, the merit function and every operand before and
+// after on stdout, the optimised scene written to OUT.
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "commands.h"
+#include "optimize/optimize_report.h"
+#include "scene/scene_error.h"
+#include "util/atomic_file.h"
+
+namespace lenslab::cli {
+
+namespace {
+
+struct OptimizeArgs {
+    std::string design;
+    std::string output;
+    int iterations = -1;  // -1: the design's
+    bool json = false;
+    bool quiet = false;
+};
+
+int run_optimize(const OptimizeArgs& a) {
+    check_output_file(a.output);  // before the work, not after
+    const LensDesign design = load_lens_design(a.design);
+    const auto progress = [&a](const LmProgress& p) {
+        if (a.quiet) return;
+        char line[160];
+        std::snprintf(line, sizeof line, "iteration %d: merit %.6g, damping %.3g, %d evaluations\n",
+                      p.iteration, p.merit, p.damping, p.evaluations);
+        std::cerr << line << std::flush;
+    };
+    OptimizeResult result;
+    try {
+        const auto on_glass = [&a](const GlassTrial& t) {
+            if (a.quiet) return;
+            char line[200];
+            std::snprintf(line, sizeof line, "glass %s %s: merit %.6g%s\n", t.lens.c_str(),
+                          t.glass.c_str(), t.merit, t.kept ? " (best so far)" : "");
+            std::cerr << line << std::flush;
+        };
+        result = optimize_design(design, a.iterations, progress, on_glass);
+    } catch (const SceneError& e) {
+        throw SceneError(a.design + ": " + e.path(), e.reason());
+    }
+    write_text_atomically(a.output, result.scene.dump(2) + "\n");
+    if (a.json) {
+        nlohmann::ordered_json j = optimize_json(result);
+        j["design"] = a.design;
+        j["output"] = a.output;
+        std::cout << j.dump(2) << "\n";
+    } else {
+        std::cout << "lenslab optimize " << a.design << "\n\n"
+                  << optimize_table(result) << "optimised system written to " << a.output << "\n";
+    }
+    return 0;
+}
+
+}  // namespace
+
+Action add_optimize_command(CLI::App& app) {
+    auto args = std::make_shared<OptimizeArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "optimize", "Optimise a lens design by damped least squares (docs/optimizer.md)");
+    cmd->add_option("design", args->design, "Design file (JSON): system, variables, operands")
+        ->required();
+    cmd->add_option("-o,--output", args->output,
+                    "Write the optimised system here (the scene file with the new values)")
+        ->required();
+    cmd->add_option("--iterations", args->iterations,
+                    "Most iterations of the solver (default: the design's `iterations`, else 100)")
+        ->check(whole_number<int>())
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_flag("--json", args->json, "Print the before/after report as JSON");
+    cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
+    return [args] { return run_optimize(*args); };
+}
+
+}  // namespace lenslab::cli

@@ -1,0 +1,137 @@
+#include "optimize/design_evaluation.h"
+
+#include <cmath>
+
+#include "analysis/first_order.h"
+#include "analysis/paraxial.h"
+#include "analysis/polychromatic_spot.h"
+#include "scene/json_reader.h"
+#include "scene/scene_json.h"
+
+namespace lenslab {
+
+namespace {
+
+// Axial thickness of an element at distance r from the axis.
+double de_thickness_at(const OpticalSystem& system, const SystemElement& e, double r) {
+    return system.surfaces[e.last_surface].z_at(r) - system.surfaces[e.first_surface].z_at(r);
+}
+
+const SystemElement& de_element(const OpticalSystem& system, const Scene& scene, int object,
+                                const std::string& path) {
+    for (const SystemElement& e : system.elements) {
+        if (scene.objects[e.object].source == object) return e;
+    }
+    throw SceneError(path, "the lens is not part of the optical system");
+}
+
+// Thrown where rays a spot needs are lost.
+struct RaysLost {
+    std::string why;
+};
+
+}  // namespace
+
+DesignModel::DesignModel(const LensDesign& design) : m_design(design) {
+    m_start.scene = design.scene;
+    m_start.image_distance = design.image_distance.value_or(0.0);
+    m_start_lost.assign(design.operands.size(), 0);
+    try {
+        evaluate_state(m_start, &m_start_lost);
+    } catch (const RaysLost& lost) {
+        throw SceneError("operands", lost.why);
+    }
+}
+
+std::vector<double> DesignModel::start() const {
+    std::vector<double> x;
+    for (const DesignVariable& v : m_design.variables) x.push_back(variable_value(m_start, v));
+    return x;
+}
+
+DesignState DesignModel::state_at(const std::vector<double>& x) const {
+    DesignState state = m_start;
+    const std::vector<double> x0 = start();
+    for (size_t i = 0; i < x.size(); ++i) {
+        // A variable left where it started keeps its number as written (1/(1/R) may not
+        // give R back to the last bit).
+        if (x[i] != x0[i]) set_variable(state, m_design.variables[i], x[i]);
+    }
+    return state;
+}
+
+std::optional<DesignEvaluation> DesignModel::evaluate(const std::vector<double>& x,
+                                                      std::string* why) const {
+    try {
+        return evaluate_state(state_at(x), nullptr);
+    } catch (const Error& e) {
+        if (why) *why = e.what();
+    } catch (const RaysLost& lost) {
+        if (why) *why = lost.why;
+    }
+    return std::nullopt;
+}
+
+DesignEvaluation DesignModel::evaluate_state(const DesignState& state,
+                                             std::vector<int>* record_lost) const {
+    const LensDesign& d = m_design;
+    const Scene scene =
+        scene_from_json(nlohmann::json(state.scene), d.base_dir, {.require_camera = false});
+    const OpticalSystem system = build_optical_system(scene);
+    const double primary = d.primary_wavelength();
+    const ParaxialResult paraxial = paraxial_trace(system, primary);
+    FirstOrderOptions options;
+    options.wavelength_nm = primary;
+    options.stop = d.stop;
+    options.epd = d.epd;
+    options.f_number = d.f_number;
+    options.fields = d.fields;
+    const FirstOrder first = first_order(system, paraxial, options);
+    DesignEvaluation result;
+    result.efl = paraxial.efl;
+    result.image_distance = d.image_distance ? state.image_distance : first.image_position;
+    const double image_z = system.last_vertex() + result.image_distance;
+    for (size_t i = 0; i < d.operands.size(); ++i) {
+        const MeritOperand& op = d.operands[i];
+        double value = 0;
+        switch (op.kind) {
+            case OperandKind::Efl:
+                value = paraxial.efl;
+                break;
+            case OperandKind::RmsSpot: {
+                const PolychromaticSpot spot = polychromatic_rms_spot(
+                    system, first, op.field, d.wavelengths, d.weights, d.rings, image_z);
+                // More rays lost than at the start: the step has pushed the beam off the
+                // lenses, and a spot of the rays left would look better than it is.
+                if (record_lost) (*record_lost)[i] = spot.lost;
+                const int allowed = record_lost ? spot.lost : m_start_lost[i];
+                if (!std::isfinite(spot.rms_radius) || spot.lost > allowed) {
+                    throw RaysLost{op.path + ": " + operand_label(op) + " loses " +
+                                   std::to_string(spot.lost) + " of " + std::to_string(spot.rays) +
+                                   " rays"};
+                }
+                value = spot.rms_radius;
+                break;
+            }
+            case OperandKind::MinCenterThickness:
+            case OperandKind::MaxCenterThickness:
+                value = de_thickness_at(system, de_element(system, scene, op.object, op.path), 0);
+                break;
+            case OperandKind::MinEdgeThickness: {
+                const SystemElement& e = de_element(system, scene, op.object, op.path);
+                value = de_thickness_at(system, e, e.semi_diameter);
+                break;
+            }
+            case OperandKind::MaxTotalLength:
+                value = image_z;
+                break;
+        }
+        const double residual = operand_residual(op, value);
+        result.values.push_back(value);
+        result.residuals.push_back(std::sqrt(op.weight) * residual);
+        result.merit += op.weight * residual * residual;
+    }
+    return result;
+}
+
+}  // namespace lenslab

@@ -1,0 +1,46 @@
+#pragma once
+// One evaluation of a design's merit function at a point of its variables: the scene
+// rebuilt with the variables' values written in (the reader re-checks it: faces that cross
+// are refused there), its optical system, the paraxial focal length and image plane, and
+// every operand's value. A point that cannot be evaluated (the scene is refused, the system
+// is afocal, a spot loses rays the starting design did not) has no evaluation: the
+// optimiser treats it as a failed step.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "optimize/lens_design.h"
+
+namespace lenslab {
+
+struct DesignEvaluation {
+    std::vector<double> values;     // one per operand
+    std::vector<double> residuals;  // sqrt(weight) * residual, one per operand
+    double merit = 0;               // sum of weight * residual²
+    double efl = 0;                 // paraxial, primary wavelength
+    double image_distance = 0;      // from the last vertex
+};
+
+class DesignModel {
+public:
+    // Evaluates the start; throws SceneError when even that cannot be evaluated.
+    explicit DesignModel(const LensDesign& design);
+
+    const LensDesign& design() const { return m_design; }
+    std::vector<double> start() const;  // the variables' starting values
+    DesignState state_at(const std::vector<double>& x) const;
+    // None where the point cannot be evaluated; `why` then says why.
+    std::optional<DesignEvaluation> evaluate(const std::vector<double>& x,
+                                             std::string* why = nullptr) const;
+
+private:
+    // `record_lost`: the start, whose lost rays set what later points may lose.
+    DesignEvaluation evaluate_state(const DesignState& state, std::vector<int>* record_lost) const;
+
+    LensDesign m_design;
+    DesignState m_start;
+    std::vector<int> m_start_lost;  // rays each rms_spot operand lost at the start
+};
+
+}  // namespace lenslab

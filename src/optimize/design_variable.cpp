@@ -1,0 +1,271 @@
+#include "optimize/design_variable.h"
+
+#include <cmath>
+
+#include "math/vec3.h"
+#include "scene/json_reader.h"
+
+namespace lenslab {
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+Vec3 dv_vec3(const ojson& v) {
+    return Vec3(v.at(0).get<double>(), v.at(1).get<double>(), v.at(2).get<double>());
+}
+
+Vec3 dv_axis(const ojson& lens) {
+    const auto it = lens.find("axis");
+    return it == lens.end() ? Vec3(0, 0, 1) : normalize(dv_vec3(*it));
+}
+
+// Moves every lens whose centre lies behind lens `object` (along its axis) by `shift`.
+void dv_move_lenses_behind(ojson& scene, int object, double shift) {
+    ojson& objects = scene["objects"];
+    const Vec3 axis = dv_axis(objects[object]);
+    const Vec3 centre = dv_vec3(objects[object]["center"]);
+    for (ojson& o : objects) {
+        if (o.value("type", "") != "lens" || !o.contains("center")) continue;
+        const Vec3 c = dv_vec3(o["center"]);
+        if (dot(c - centre, axis) <= 1e-9) continue;
+        const Vec3 moved = c + axis * shift;
+        o["center"] = ojson::array({moved.x, moved.y, moved.z});
+    }
+}
+
+// The next lens behind `object` along its axis (nearest centre), or -1.
+int dv_next_lens(const ojson& scene, int object) {
+    const ojson& objects = scene["objects"];
+    const Vec3 axis = dv_axis(objects[object]);
+    const Vec3 centre = dv_vec3(objects[object]["center"]);
+    int next = -1;
+    double nearest = INFINITY;
+    for (int i = 0; i < static_cast<int>(objects.size()); ++i) {
+        const ojson& o = objects[i];
+        if (o.value("type", "") != "lens" || !o.contains("center") || !o.contains("thickness")) {
+            continue;
+        }
+        const double s = dot(dv_vec3(o["center"]) - centre, axis);
+        if (s > 1e-9 && s < nearest) {
+            nearest = s;
+            next = i;
+        }
+    }
+    return next;
+}
+
+double dv_air_gap(const ojson& scene, int object) {
+    const ojson& objects = scene["objects"];
+    const ojson& lens = objects[object];
+    const ojson& next = objects[dv_next_lens(scene, object)];
+    const double s = dot(dv_vec3(next["center"]) - dv_vec3(lens["center"]), dv_axis(lens));
+    return s - 0.5 * lens["thickness"].get<double>() - 0.5 * next["thickness"].get<double>();
+}
+
+// A radius standing for a flat conic or asphere, whose `radius` may not be 0.
+constexpr double kFlatRadius = 1e12;
+
+const char* dv_kind_name(VariableKind kind) {
+    switch (kind) {
+        case VariableKind::Curvature:
+            return "curvature";
+        case VariableKind::Conic:
+            return "conic";
+        case VariableKind::Aspheric:
+            return "aspheric";
+        case VariableKind::Thickness:
+            return "thickness";
+        case VariableKind::AirGap:
+            return "air_gap";
+        case VariableKind::ImageDistance:
+            return "image_distance";
+    }
+    return "";
+}
+
+}  // namespace
+
+std::string variable_label(const DesignVariable& v) {
+    std::string label = dv_kind_name(v.kind);
+    if (v.kind == VariableKind::ImageDistance) return label;
+    label += " " + v.lens;
+    if (!v.surface.empty()) label += "." + v.surface;
+    if (v.kind == VariableKind::Aspheric) label += " A" + std::to_string(v.order);
+    return label;
+}
+
+double variable_value(const DesignState& state, const DesignVariable& v) {
+    if (v.kind == VariableKind::ImageDistance) return state.image_distance;
+    const ojson& lens = state.scene["objects"][v.object];
+    switch (v.kind) {
+        case VariableKind::Thickness:
+            return lens["thickness"].get<double>();
+        case VariableKind::AirGap:
+            return dv_air_gap(state.scene, v.object);
+        default:
+            break;
+    }
+    const ojson& face = lens[v.surface];
+    const std::string shape = face["shape"].get<std::string>();
+    if (v.kind == VariableKind::Curvature) {
+        return shape == "flat" ? 0.0 : 1.0 / face["radius"].get<double>();
+    }
+    if (v.kind == VariableKind::Conic) return face.value("k", 0.0);
+    const size_t index = static_cast<size_t>((v.order - 4) / 2);
+    const ojson& coefficients = face["coefficients"];
+    return index < coefficients.size() ? coefficients[index].get<double>() : 0.0;
+}
+
+void set_variable(DesignState& state, const DesignVariable& v, double value) {
+    if (v.kind == VariableKind::ImageDistance) {
+        state.image_distance = value;
+        return;
+    }
+    ojson& lens = state.scene["objects"][v.object];
+    if (v.kind == VariableKind::Thickness) {
+        const double change = value - lens["thickness"].get<double>();
+        dv_move_lenses_behind(state.scene, v.object, change);
+        // The front vertex stays: the centre moves by half the change.
+        const Vec3 centre = dv_vec3(lens["center"]) + dv_axis(lens) * (0.5 * change);
+        lens["center"] = ojson::array({centre.x, centre.y, centre.z});
+        lens["thickness"] = value;
+        return;
+    }
+    if (v.kind == VariableKind::AirGap) {
+        dv_move_lenses_behind(state.scene, v.object, value - dv_air_gap(state.scene, v.object));
+        return;
+    }
+    ojson& face = lens[v.surface];
+    const std::string shape = face["shape"].get<std::string>();
+    if (v.kind == VariableKind::Curvature) {
+        if (value == 0.0 && (shape == "sphere" || shape == "flat")) {
+            face = ojson{{"shape", "flat"}};
+        } else if (shape == "flat") {
+            face = ojson{{"shape", "sphere"}, {"radius", 1.0 / value}};
+        } else {
+            face["radius"] = value == 0.0 ? kFlatRadius : 1.0 / value;
+        }
+    } else if (v.kind == VariableKind::Conic) {
+        if (shape == "sphere") face["shape"] = "conic";
+        face["k"] = value;
+    } else {
+        ojson& coefficients = face["coefficients"];
+        const size_t index = static_cast<size_t>((v.order - 4) / 2);
+        while (coefficients.size() <= index) coefficients.push_back(0.0);
+        coefficients[index] = value;
+    }
+}
+
+double variable_step(const DesignVariable& v) {
+    constexpr double kSag = 1e-5;
+    const double r = v.semi_diameter > 0 ? v.semi_diameter : 1.0;
+    switch (v.kind) {
+        case VariableKind::Curvature:
+            return 2 * kSag / (r * r);  // sag ≈ c r² / 2
+        case VariableKind::Aspheric:
+            return kSag / std::pow(r, v.order);
+        case VariableKind::Conic:
+            return 1e-4;
+        default:
+            return kSag;
+    }
+}
+
+int find_design_lens(const ojson& scene, const std::string& name, const std::string& path) {
+    const auto objects = scene.find("objects");
+    std::string known;
+    if (objects != scene.end() && objects->is_array()) {
+        for (int i = 0; i < static_cast<int>(objects->size()); ++i) {
+            const ojson& o = (*objects)[i];
+            if (!o.is_object() || o.value("type", "") != "lens" || !o.contains("thickness")) {
+                continue;
+            }
+            const std::string index = "objects[" + std::to_string(i) + "]";
+            const std::string own =
+                o.contains("name") && o["name"].is_string() ? o["name"].get<std::string>() : index;
+            known += (known.empty() ? "" : ", ") + own;
+            if (own == name || index == name) return i;
+        }
+    }
+    throw SceneError(path, "no prescription lens named '" + name + "' in the system" +
+                               (known.empty() ? " (it has none)" : " (lenses: " + known + ")"));
+}
+
+DesignVariable read_design_variable(const nlohmann::json& spec, const std::string& path,
+                                    const ojson& scene) {
+    JsonObjectReader reader(spec, path, {"type", "lens", "surface", "order"}, "a variable");
+    DesignVariable v;
+    v.path = path;
+    if (!reader.has("type")) throw_missing_key(spec, path, "type");
+    const std::string type = reader.choice(
+        "type", "", {"curvature", "conic", "aspheric", "thickness", "air_gap", "image_distance"});
+    const std::vector<std::pair<const char*, VariableKind>> kinds = {
+        {"curvature", VariableKind::Curvature}, {"conic", VariableKind::Conic},
+        {"aspheric", VariableKind::Aspheric},   {"thickness", VariableKind::Thickness},
+        {"air_gap", VariableKind::AirGap},      {"image_distance", VariableKind::ImageDistance}};
+    for (const auto& [name, kind] : kinds) {
+        if (type == name) v.kind = kind;
+    }
+    const bool needs_surface = v.kind == VariableKind::Curvature || v.kind == VariableKind::Conic ||
+                               v.kind == VariableKind::Aspheric;
+    if (v.kind == VariableKind::ImageDistance) {
+        for (const char* key : {"lens", "surface", "order"}) {
+            if (reader.has(key)) {
+                throw SceneError(reader.child_path(key),
+                                 "an image_distance variable takes no " + std::string(key));
+            }
+        }
+        return v;
+    }
+    if (!needs_surface && reader.has("surface")) {
+        throw SceneError(reader.child_path("surface"), "a " + type + " variable takes no surface");
+    }
+    if (v.kind != VariableKind::Aspheric && reader.has("order")) {
+        throw SceneError(reader.child_path("order"), "only an aspheric variable takes an order");
+    }
+    v.lens = reader.string("lens");
+    v.object = find_design_lens(scene, v.lens, reader.child_path("lens"));
+    const ojson& lens = scene["objects"][v.object];
+    if (lens.contains("diameter") && lens["diameter"].is_number()) {
+        v.semi_diameter = 0.5 * lens["diameter"].get<double>();
+    }
+    if (!lens.contains("center")) {
+        throw SceneError(reader.child_path("lens"), "the lens '" + v.lens + "' has no center");
+    }
+    if (v.kind == VariableKind::AirGap && dv_next_lens(scene, v.object) < 0) {
+        throw SceneError(reader.child_path("lens"),
+                         "no lens behind '" + v.lens +
+                             "', so no air gap after it (the image_distance variable moves the "
+                             "image plane)");
+    }
+    if (!needs_surface) return v;
+    if (!reader.has("surface")) throw_missing_key(spec, path, "surface");
+    v.surface = reader.choice("surface", "", {"front", "back"});
+    const ojson& face = lens[v.surface];
+    const std::string shape = face.value("shape", "");
+    const std::string where = "'" + v.lens + "' " + v.surface + " is a " + shape + " surface";
+    if (shape == "sag") {
+        throw SceneError(reader.child_path("surface"), where +
+                                                           ": only sphere, flat, conic and "
+                                                           "asphere faces have variables");
+    }
+    if (v.kind == VariableKind::Conic && shape == "flat") {
+        throw SceneError(reader.child_path("surface"),
+                         where + ", which has no conic constant (give it a radius first)");
+    }
+    if (v.kind == VariableKind::Aspheric) {
+        if (shape != "asphere") {
+            throw SceneError(reader.child_path("surface"),
+                             where + ": aspheric coefficients need an asphere surface");
+        }
+        v.order = static_cast<int>(reader.integer("order", 4, 4, 16));
+        if (v.order % 2 != 0) {
+            throw SceneError(reader.child_path("order"),
+                             "must be an even power of r, 4 to 16, got " + std::to_string(v.order));
+        }
+    }
+    return v;
+}
+
+}  // namespace lenslab

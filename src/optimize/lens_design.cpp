@@ -1,0 +1,183 @@
+#include "optimize/lens_design.h"
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+#include "analysis/optical_system.h"
+#include "optics/glass.h"
+#include "scene/json_reader.h"
+#include "scene/scene_json.h"
+
+namespace lenslab {
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+// A list of numbers at `key`, each checked by `check` (which returns why not, or "").
+std::vector<double> ld_numbers(JsonObjectReader& reader, const std::string& key,
+                               const std::function<std::string(double)>& check) {
+    const nlohmann::json& list = reader.require(key);
+    if (!list.is_array() || list.empty()) {
+        throw SceneError(reader.child_path(key), "must be a non-empty array of numbers");
+    }
+    std::vector<double> values;
+    for (size_t i = 0; i < list.size(); ++i) {
+        const std::string path = reader.child_path(key) + "[" + std::to_string(i) + "]";
+        const double v = JsonObjectReader::as_number(list[i], path);
+        if (const std::string why = check(v); !why.empty()) throw SceneError(path, why);
+        values.push_back(v);
+    }
+    return values;
+}
+
+// The scene file's JSON with its keys in the file's order (the optimised file keeps them).
+ojson ld_read_ordered(const std::string& file) {
+    read_scene_json_file(file);  // the reader's checks and messages: unreadable, syntax, size
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return ojson::parse(text.str());
+}
+
+}  // namespace
+
+LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& base_dir) {
+    JsonObjectReader reader(root, "",
+                            {"description", "system", "stop", "epd", "f_number", "fields",
+                             "wavelengths", "weights", "rings", "image_distance", "variables",
+                             "operands", "iterations", "glass_choices", "glass_iterations"},
+                            "a design");
+    LensDesign d;
+    const nlohmann::json& system = reader.require("system");
+    if (system.is_string()) {
+        const std::filesystem::path file = system.get<std::string>();
+        d.system_file = (file.is_relative() && !base_dir.empty())
+                            ? (std::filesystem::path(base_dir) / file).string()
+                            : file.string();
+        d.base_dir = std::filesystem::path(d.system_file).parent_path().string();
+        try {
+            d.scene = ld_read_ordered(d.system_file);
+        } catch (const SceneError& e) {
+            throw SceneError("system", e.what());
+        }
+    } else if (system.is_object()) {
+        d.scene = ojson::parse(system.dump());  // key order: see load_lens_design
+        d.base_dir = base_dir;
+    } else {
+        throw SceneError("system", "must be a scene file name or a scene object");
+    }
+    // The scene as the renderer and the bench read it: every error names its place in it.
+    OpticalSystem start;
+    try {
+        const Scene scene =
+            scene_from_json(nlohmann::json(d.scene), d.base_dir, {.require_camera = false});
+        start = build_optical_system(scene);
+    } catch (const SceneError& e) {
+        throw SceneError(d.system_file.empty() ? "system." + e.path() : "system",
+                         d.system_file.empty() ? e.reason() : e.what());
+    }
+    const int surfaces = static_cast<int>(start.surfaces.size());
+    d.stop = static_cast<int>(reader.integer("stop", 1, 1, surfaces)) - 1;
+    if (reader.has("epd") && reader.has("f_number")) {
+        throw SceneError("f_number", "give epd or f_number, not both");
+    }
+    if (!reader.has("epd") && !reader.has("f_number")) throw_missing_key(root, "", "epd");
+    d.epd = reader.positive("epd", 0.0);
+    d.f_number = reader.positive("f_number", 0.0);
+    d.fields = ld_numbers(reader, "fields", [](double v) {
+        return std::abs(v) < 90.0 ? "" : "not a field angle (between -90 and 90 degrees)";
+    });
+    d.wavelengths = reader.has("wavelengths")
+                        ? ld_numbers(reader, "wavelengths",
+                                     [](double v) { return v > 0 ? "" : "must be > 0 (nm)"; })
+                        : std::vector<double>{kLineF, kLineD, kLineC};
+    for (size_t i = 0; i < d.wavelengths.size(); ++i) {
+        try {
+            check_wavelength(start, d.wavelengths[i], "the wavelength");
+        } catch (const SceneError& e) {  // the design's key, then the lens that refuses it
+            throw SceneError("wavelengths[" + std::to_string(i) + "]",
+                             e.reason() + " (system." + e.path() + ")");
+        }
+    }
+    if (reader.has("weights")) {
+        d.weights =
+            ld_numbers(reader, "weights", [](double v) { return v >= 0 ? "" : "must be >= 0"; });
+        if (d.weights.size() != d.wavelengths.size()) {
+            throw SceneError("weights",
+                             "one weight per wavelength: " + std::to_string(d.wavelengths.size()) +
+                                 " wavelengths, " + std::to_string(d.weights.size()) + " weights");
+        }
+    }
+    d.rings = static_cast<int>(reader.integer("rings", 4, 1, 32));
+    d.iterations = static_cast<int>(reader.integer("iterations", 100, 0, 100000));
+    if (const nlohmann::json* image = reader.find("image_distance")) {
+        if (image->is_string()) {
+            reader.choice("image_distance", "paraxial", {"paraxial"});
+        } else {
+            d.image_distance = reader.number("image_distance");
+        }
+    }
+    const nlohmann::json& variables = reader.require("variables");
+    if (!variables.is_array()) throw SceneError("variables", "must be an array of variables");
+    for (size_t i = 0; i < variables.size(); ++i) {
+        const std::string path = "variables[" + std::to_string(i) + "]";
+        d.variables.push_back(read_design_variable(variables[i], path, d.scene));
+        const DesignVariable& v = d.variables.back();
+        for (size_t j = 0; j + 1 < d.variables.size(); ++j) {
+            if (variable_label(d.variables[j]) == variable_label(v)) {
+                throw SceneError(path, "the same variable as variables[" + std::to_string(j) +
+                                           "] (" + variable_label(v) + ")");
+            }
+        }
+        if (v.kind == VariableKind::ImageDistance && !d.image_distance) {
+            throw SceneError(path,
+                             "an image_distance variable needs a starting image_distance "
+                             "(a number, not the paraxial focus)");
+        }
+    }
+    const nlohmann::json& operands = reader.require("operands");
+    if (!operands.is_array() || operands.empty()) {
+        throw SceneError("operands", "must be a non-empty array of operands");
+    }
+    for (size_t i = 0; i < operands.size(); ++i) {
+        for (MeritOperand& op : read_merit_operands(
+                 operands[i], "operands[" + std::to_string(i) + "]", d.scene, d.fields)) {
+            d.operands.push_back(std::move(op));
+        }
+    }
+    if (const nlohmann::json* choices = reader.find("glass_choices")) {
+        if (!choices->is_array()) {
+            throw SceneError("glass_choices", "must be an array of glass choices");
+        }
+        for (size_t i = 0; i < choices->size(); ++i) {
+            d.glass_choices.push_back(read_glass_choice((*choices)[i],
+                                                        "glass_choices[" + std::to_string(i) + "]",
+                                                        d.scene, d.base_dir, d.wavelengths));
+        }
+    }
+    d.glass_iterations = static_cast<int>(reader.integer("glass_iterations", 20, 0, 100000));
+    return d;
+}
+
+LensDesign load_lens_design(const std::string& path) {
+    const nlohmann::json root = read_scene_json_file(path);
+    const std::string base_dir = std::filesystem::path(path).parent_path().string();
+    try {
+        LensDesign d = lens_design_from_json(root, base_dir);
+        if (d.system_file.empty()) {
+            // An inline system keeps the file's key order in the optimised file too.
+            std::ifstream in(path, std::ios::binary);
+            std::stringstream text;
+            text << in.rdbuf();
+            d.scene = ojson::parse(text.str())["system"];
+        }
+        return d;
+    } catch (const SceneError& e) {
+        throw SceneError(path + ": " + e.path(), e.reason());
+    }
+}
+
+}  // namespace lenslab

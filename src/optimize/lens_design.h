@@ -1,0 +1,48 @@
+#pragma once
+// The design file of `lenslab optimize` (docs/optimizer.md): the lens system to optimise
+// (a scene file or a scene inline), how it is used (aperture stop, entrance pupil, fields,
+// wavelengths and their weights, the image plane), what may change (variables) and what is
+// wanted (operands of the merit function).
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "optimize/design_variable.h"
+#include "optimize/glass_choice.h"
+#include "optimize/merit_operand.h"
+
+namespace lenslab {
+
+struct LensDesign {
+    std::string system_file;       // the scene file, relative to the working folder; "" inline
+    std::string base_dir;          // the folder relative paths of the scene resolve against
+    nlohmann::ordered_json scene;  // the starting system, keys in the file's order
+    int stop = 0;                  // the aperture stop, a surface index (0-based)
+    double epd = 0, f_number = 0;  // one of the two
+    std::vector<double> fields;    // degrees, the object at infinity
+    std::vector<double> wavelengths, weights;  // nm; the primary is the middle one
+    int rings = 4;                             // of the hexapolar grid of each spot
+    // The image plane's distance from the last vertex; none: the paraxial focus of the
+    // primary wavelength, solved at every step.
+    std::optional<double> image_distance;
+    std::vector<DesignVariable> variables;
+    std::vector<MeritOperand> operands;
+    int iterations = 100;
+    // Glass choice after the continuous optimisation, each glass re-optimised this long.
+    std::vector<GlassChoice> glass_choices;
+    int glass_iterations = 20;
+
+    double primary_wavelength() const { return wavelengths[(wavelengths.size() - 1) / 2]; }
+};
+
+// Reads a design file; the system's scene file is found relative to it. Throws SceneError
+// naming the file and the JSON path.
+LensDesign load_lens_design(const std::string& path);
+
+// A design from parsed JSON; `base_dir` is the design file's folder ("" = the working one).
+// Throws SceneError naming the JSON path.
+LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& base_dir);
+
+}  // namespace lenslab

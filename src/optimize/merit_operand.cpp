@@ -1,0 +1,122 @@
+#include "optimize/merit_operand.h"
+
+#include <algorithm>
+
+#include "optimize/design_variable.h"
+#include "scene/json_reader.h"
+
+namespace lenslab {
+
+namespace {
+
+struct OperandName {
+    const char* name;
+    OperandKind kind;
+};
+
+constexpr OperandName kOperandNames[] = {
+    {"efl", OperandKind::Efl},
+    {"rms_spot", OperandKind::RmsSpot},
+    {"min_center_thickness", OperandKind::MinCenterThickness},
+    {"max_center_thickness", OperandKind::MaxCenterThickness},
+    {"min_edge_thickness", OperandKind::MinEdgeThickness},
+    {"max_total_length", OperandKind::MaxTotalLength},
+};
+
+bool mo_is_minimum(OperandKind kind) {
+    return kind == OperandKind::MinCenterThickness || kind == OperandKind::MinEdgeThickness;
+}
+
+}  // namespace
+
+bool is_constraint(const MeritOperand& op) {
+    return op.kind != OperandKind::Efl && op.kind != OperandKind::RmsSpot;
+}
+
+std::string operand_label(const MeritOperand& op) {
+    std::string label;
+    for (const OperandName& n : kOperandNames) {
+        if (n.kind == op.kind) label = n.name;
+    }
+    if (op.kind == OperandKind::RmsSpot) label += " " + format_number(op.field) + "°";
+    if (!op.lens.empty()) label += " " + op.lens;
+    return label;
+}
+
+double operand_residual(const MeritOperand& op, double value) {
+    // The focal length through the power 1/EFL, which is nearly linear in the curvatures,
+    // so a step from a weak start does not overshoot; scaled by target², it is EFL - target
+    // to first order near the target (and so in the same unit).
+    if (op.kind == OperandKind::Efl) return op.target * op.target * (1 / op.target - 1 / value);
+    if (!is_constraint(op)) return value - op.target;
+    if (mo_is_minimum(op.kind)) return std::max(0.0, op.target - value);
+    return std::max(0.0, value - op.target);
+}
+
+std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const std::string& path,
+                                              const nlohmann::ordered_json& scene,
+                                              const std::vector<double>& fields) {
+    JsonObjectReader reader(spec, path, {"type", "target", "limit", "weight", "field", "lens"},
+                            "an operand");
+    if (!reader.has("type")) throw_missing_key(spec, path, "type");
+    std::vector<std::string> names;
+    for (const OperandName& n : kOperandNames) names.push_back(n.name);
+    const std::string type = reader.choice("type", "", names);
+    MeritOperand op;
+    op.path = path;
+    for (const OperandName& n : kOperandNames) {
+        if (type == n.name) op.kind = n.kind;
+    }
+    op.weight = reader.number("weight", 1.0);
+    if (!(op.weight >= 0)) {
+        throw SceneError(reader.child_path("weight"),
+                         "must be >= 0, got " + format_number(op.weight));
+    }
+    const bool constraint = is_constraint(op);
+    const bool needs_lens = op.kind == OperandKind::MinCenterThickness ||
+                            op.kind == OperandKind::MaxCenterThickness ||
+                            op.kind == OperandKind::MinEdgeThickness;
+    if (constraint) {
+        if (reader.has("target")) {
+            throw SceneError(reader.child_path("target"),
+                             "a " + type + " constraint takes a limit, not a target");
+        }
+        op.target = reader.number("limit");
+    } else {
+        if (reader.has("limit")) {
+            throw SceneError(reader.child_path("limit"),
+                             "an " + type + " operand takes a target, not a limit");
+        }
+        // The spot's natural target is none at all; the focal length has no default.
+        op.target =
+            op.kind == OperandKind::Efl ? reader.number("target") : reader.number("target", 0.0);
+    }
+    if (op.kind != OperandKind::RmsSpot && reader.has("field")) {
+        throw SceneError(reader.child_path("field"), "only an rms_spot operand takes a field");
+    }
+    if (!needs_lens && reader.has("lens")) {
+        throw SceneError(reader.child_path("lens"), "a " + type + " operand takes no lens");
+    }
+    if (needs_lens) {
+        op.lens = reader.string("lens");
+        op.object = find_design_lens(scene, op.lens, reader.child_path("lens"));
+    }
+    if (op.kind != OperandKind::RmsSpot) return {op};
+    if (reader.has("field")) {
+        op.field = reader.number("field");
+        if (!(std::abs(op.field) < 90.0)) {
+            throw SceneError(
+                reader.child_path("field"),
+                format_number(op.field) + " degrees is not a field angle (between -90 and 90)");
+        }
+        return {op};
+    }
+    std::vector<MeritOperand> each;
+    for (double field : fields) {
+        op.field = field;
+        each.push_back(op);
+    }
+    return each;
+}
+
+}  // namespace lenslab

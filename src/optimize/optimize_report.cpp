@@ -1,0 +1,90 @@
+#include "optimize/optimize_report.h"
+
+#include <cstdio>
+
+namespace lenslab {
+
+namespace {
+
+std::string or_line(const char* format, auto... values) {
+    char line[256];
+    std::snprintf(line, sizeof line, format, values...);
+    return line;
+}
+
+std::string or_merit_block(const char* title, const MeritTable& table) {
+    std::string text =
+        std::string(title) + or_line(": merit %.6g (EFL %.6g, image %.6g behind the last vertex)\n",
+                                     table.merit, table.efl, table.image_distance);
+    text += or_line("  %-32s %14s %14s %10s %14s\n", "operand", "value", "target", "weight",
+                    "contribution");
+    for (const OperandRow& row : table.operands) {
+        const std::string target =
+            (row.constraint ? (row.label.rfind("min", 0) == 0 ? ">= " : "<= ") : "") +
+            or_line("%.6g", row.target);
+        text += or_line("  %-32s %14.6g %14s %10.4g %14.6g\n", row.label.c_str(), row.value,
+                        target.c_str(), row.weight, row.contribution);
+    }
+    return text;
+}
+
+nlohmann::ordered_json or_merit_json(const MeritTable& table) {
+    nlohmann::ordered_json j;
+    j["merit"] = table.merit;
+    j["efl"] = table.efl;
+    j["image_distance"] = table.image_distance;
+    j["operands"] = nlohmann::ordered_json::array();
+    for (const OperandRow& row : table.operands) {
+        j["operands"].push_back({{"operand", row.label},
+                                 {row.constraint ? "limit" : "target", row.target},
+                                 {"value", row.value},
+                                 {"weight", row.weight},
+                                 {"contribution", row.contribution}});
+    }
+    return j;
+}
+
+}  // namespace
+
+std::string optimize_table(const OptimizeResult& result) {
+    std::string text = or_merit_block("before", result.before) + "\n" +
+                       or_merit_block("after", result.after) + "\n";
+    text += or_line("  %-32s %16s %16s\n", "variable", "before", "after");
+    for (const VariableRow& v : result.variables) {
+        text += or_line("  %-32s %16.9g %16.9g\n", v.label.c_str(), v.before, v.after);
+    }
+    if (!result.glass_trials.empty()) {
+        text += or_line("\n  %-32s %16s %16s\n", "glass choice", "glass", "merit");
+        for (const GlassTrial& t : result.glass_trials) {
+            text += or_line("  %-32s %16s %16.6g%s\n", t.lens.c_str(), t.glass.c_str(), t.merit,
+                            t.kept ? "  kept" : "");
+        }
+    }
+    text += or_line("\n%d iterations, %d evaluations: ", result.solver.iterations,
+                    result.solver.evaluations) +
+            result.solver.stopped + "\n";
+    return text;
+}
+
+nlohmann::ordered_json optimize_json(const OptimizeResult& result) {
+    nlohmann::ordered_json j;
+    j["before"] = or_merit_json(result.before);
+    j["after"] = or_merit_json(result.after);
+    j["variables"] = nlohmann::ordered_json::array();
+    for (const VariableRow& v : result.variables) {
+        j["variables"].push_back({{"variable", v.label}, {"before", v.before}, {"after", v.after}});
+    }
+    if (!result.glass_trials.empty()) {
+        j["glass_trials"] = nlohmann::ordered_json::array();
+        for (const GlassTrial& t : result.glass_trials) {
+            j["glass_trials"].push_back(
+                {{"lens", t.lens}, {"glass", t.glass}, {"merit", t.merit}, {"kept", t.kept}});
+        }
+    }
+    j["iterations"] = result.solver.iterations;
+    j["evaluations"] = result.solver.evaluations;
+    j["stopped"] = result.solver.stopped;
+    return j;
+}
+
+}  // namespace lenslab
