@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 namespace lenslab {
 
@@ -55,6 +56,34 @@ double GrinProfile::index(const Vec3& p) const {
             return grin_formula_value(*this, p);
     }
     return 1.0;
+}
+
+std::optional<std::string> GrinProfile::problem_in(const Vec3& origin, const Vec3& lo,
+                                                   const Vec3& hi) const {
+    constexpr int kGrid = 9;
+    const Vec3 e = hi - lo;
+    for (int i = 0; i < kGrid; ++i) {
+        for (int j = 0; j < kGrid; ++j) {
+            for (int k = 0; k < kGrid; ++k) {
+                const Vec3 p = lo + Vec3{e.x * i, e.y * j, e.z * k} / (kGrid - 1);
+                const Vec3 q = p - origin;
+                // A formula read directly: index() would throw the render-time error.
+                const double n =
+                    kind == GrinKind::Formula ? (*formula)({q.x, q.y, q.z, 0.0}) : index(q);
+                if (n > 0.0) continue;
+                std::ostringstream msg;
+                msg.precision(10);
+                msg << "the index is " << n << " at (x, y, z) = (" << q.x << ", " << q.y << ", "
+                    << q.z << ") from its centre, in the object: it must be a number > 0 there";
+                if (kind == GrinKind::Formula) {
+                    const std::string why = formula->why_not_finite({q.x, q.y, q.z, 0.0});
+                    if (!why.empty()) msg << " (" << why << ")";
+                }
+                return msg.str();
+            }
+        }
+    }
+    return std::nullopt;
 }
 
 Vec3 GrinProfile::gradient(const Vec3& p) const {

@@ -13,6 +13,7 @@
 // The first four have analytic gradients.
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "math/formula.h"
@@ -38,6 +39,11 @@ struct GrinProfile {
     // Index and gradient at `p`, relative to the profile's centre.
     double index(const Vec3& p) const;
     Vec3 gradient(const Vec3& p) const;
+
+    // Why the index is no medium somewhere in the box [lo, hi] (world coordinates, the
+    // profile centred at `origin`): not a number or not > 0 at a point of a 9^3 grid, e.g. a
+    // radial profile whose A makes n negative at the rim. Nothing when it is one.
+    std::optional<std::string> problem_in(const Vec3& origin, const Vec3& lo, const Vec3& hi) const;
 };
 
 // The formula's variables, as implicit solids name them.

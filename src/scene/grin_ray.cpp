@@ -95,6 +95,8 @@ GrinExit trace_grin_ray(const GrinMedium& medium, const Shape& shape, const Vec3
          ++attempt) {
         const GrinStep s = grin_dopri_step(medium, y, k1, h, r_tolerance, t_tolerance);
         if (!(s.error <= 1.0)) {
+            // A step a billionth of the solid's size still failing: no medium to follow.
+            if (!(h * medium.index(y.r) > 1e-9 * size)) return out;
             ++out.rejected;
             h *= std::isfinite(s.error) ? std::max(0.2, 0.9 * std::pow(s.error, -0.2)) : 0.2;
             continue;

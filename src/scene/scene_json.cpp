@@ -255,6 +255,11 @@ SceneObject read_object(const json& j, const std::string& path,
         throw SceneError(r.child_path("material"),
                          "a GRIN material fills a solid: this object is an open surface");
     }
+    if (const GrinProfile* g = all[o.material].grin.get()) {
+        const Aabb box = o.shape->bounds();
+        if (auto why = g->problem_in(g->has_centre ? g->centre : box.centre(), box.lo, box.hi))
+            throw SceneError(r.child_path("material"), "its GRIN index: " + *why);
+    }
     return o;
 }
 
