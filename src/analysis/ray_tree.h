@@ -29,6 +29,7 @@ struct RayTreeNode {
     // Through a GRIN solid: the curved path from `from` to `to`, the integrator's points
     // (printed as "path"); empty for a straight segment.
     std::vector<Vec3> path;
+    int steps = 0;  // the integrator's steps along `path` (printed as "steps")
 };
 
 struct RayTreeOptions {

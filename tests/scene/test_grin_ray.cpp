@@ -126,6 +126,7 @@ TEST(GrinRay, QuarterPitchRodFocusesACollimatedBeamOnItsBackFace) {
                 if (c.event == Event::Refract) out = &c;
             ASSERT_NE(out, nullptr);
             ASSERT_GT(out->path.size(), 2u);  // the curved path, for `trace`
+            EXPECT_EQ(out->steps + 1, int(out->path.size()));
             EXPECT_NEAR(out->to->z, quarter, 1e-9);
             // On the axis within the paraxial aberration, O(A h^2) of h.
             EXPECT_LT(std::hypot(out->to->x, out->to->y), 1e-4 * h);
