@@ -134,6 +134,20 @@ TEST(GrinRay, QuarterPitchRodFocusesACollimatedBeamOnItsBackFace) {
     }
 }
 
+TEST(GrinRay, DispersionScalesTheProfileByTheGlassIndexOverItsDLineIndex) {
+    // The documented model (docs/grin.md): n(p, lambda) = profile(p) n_glass(lambda) / n_d.
+    // With N-BK7 (SCHOTT: n_d = 1.5168, n_F = 1.52238) the Luneburg rim is 1 at the d line only.
+    const Scene scene = parse_scene(R"({"camera": {"position": [0, 0, -5], "look_at": [0, 0, 0]},
+      "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": {"transparency": 1,
+                   "glass": "N-BK7", "grin": {"profile": "luneburg", "radius": 1}}}]})");
+    const SceneObject& o = scene.objects[0];
+    const Material& m = scene.materials[o.material];
+    EXPECT_DOUBLE_EQ(grin_medium_of(o, m, kLineD).index({0, 0, 1}), 1.0);
+    EXPECT_NEAR(grin_medium_of(o, m, kLineF).index({0, 0, 1}), 1.52238 / 1.5168, 2e-5);
+    EXPECT_NEAR(grin_medium_of(o, m, kLineF).index({0, 0, 0}), std::sqrt(2.0) * 1.52238 / 1.5168,
+                3e-5);
+}
+
 void expect_same_tree(const RayTreeNode& a, const RayTreeNode& b) {
     ASSERT_EQ(a.children.size(), b.children.size());
     EXPECT_EQ(a.event, b.event);
