@@ -36,9 +36,21 @@ bool next_interaction(const Scene& scene, const Ray& ray, double lambda_nm, Inte
         const GrinMedium medium = grin_medium_of(*out.object, *out.material, lambda_nm);
         const GrinExit exit = trace_grin_ray(medium, *out.object->shape, ray.origin,
                                              normalize(ray.direction), {}, grin_path);
-        if (!exit.left) return false;  // trapped: its light stays inside
+        if (!exit.left) {
+            // Trapped (or no medium to follow): its light stays inside, absorbed where the
+            // straight ray would have met the surface; nothing goes on from there.
+            out.beyond = nullptr;
+            out.scattering = Scattering{};
+            out.grin_steps = exit.steps;
+            return true;
+        }
         out.hit.surface = exit.hit;
-        out.direction = exit.direction;
+        // Leaving: a grazing exit's direction, off by the tolerance, must not point back in
+        // (the surface would take it for light arriving from outside).
+        const double outwards = dot(exit.direction, exit.hit.normal);
+        out.direction = outwards > 0.0
+                            ? exit.direction
+                            : normalize(exit.direction + exit.hit.normal * (1e-12 - outwards));
         out.grin_steps = exit.steps;
     }
     out.beyond = scene.medium_beyond(out.hit.object, out.point(), out.normal());
