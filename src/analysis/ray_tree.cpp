@@ -19,9 +19,10 @@ public:
         const Ray ray{origin, parent.direction};
         double w = parent.weight;
         Interaction it;
-        if (!next_interaction(m_scene, ray, m_options.wavelength_nm, it)) {
+        std::vector<Vec3> curved;
+        if (!next_interaction(m_scene, ray, m_options.wavelength_nm, it, &curved)) {
             parent.children.push_back(
-                {origin, std::nullopt, -1, Event::Escape, ray.direction, w, false, {}});
+                {origin, std::nullopt, -1, Event::Escape, ray.direction, w, false, {}, {}, 0});
             m_tree.escaped += w;
             return;
         }
@@ -33,8 +34,16 @@ public:
         const int object = it.hit.object;
         const Scattering& s = it.scattering;
         if (s.diffuse > 0.0) {
-            parent.children.push_back(
-                {origin, p, object, Event::Absorb, ray.direction, w * s.diffuse, false, {}});
+            parent.children.push_back({origin,
+                                       p,
+                                       object,
+                                       Event::Absorb,
+                                       it.direction,
+                                       w * s.diffuse,
+                                       false,
+                                       {},
+                                       curved,
+                                       it.grin_steps});
             m_tree.absorbed += w * s.diffuse;
         }
         for (int i = 0; i < s.count; ++i) {
@@ -44,7 +53,8 @@ public:
                 m_tree.truncated += bw;
                 continue;
             }
-            parent.children.push_back({origin, p, object, b.event, b.direction, bw, false, {}});
+            parent.children.push_back(
+                {origin, p, object, b.event, b.direction, bw, false, {}, curved, it.grin_steps});
             RayTreeNode& child = parent.children.back();
             if (depth >= m_options.max_depth) {
                 child.truncated = true;
@@ -69,6 +79,11 @@ Json node_json(const Scene& scene, const RayTreeNode& node) {
     Json j;
     j["from"] = vec_json(node.from);
     j["to"] = node.to ? vec_json(*node.to) : Json(nullptr);
+    if (!node.path.empty()) {
+        j["path"] = Json::array();
+        for (const Vec3& q : node.path) j["path"].push_back(vec_json(q));
+        j["steps"] = node.steps;
+    }
     j["object"] = node.object >= 0 ? Json(scene.objects[node.object].name) : Json(nullptr);
     if (node.object >= 0) j["object_index"] = node.object;
     j["event"] = node.event ? event_name(*node.event) : "start";

@@ -26,6 +26,10 @@ struct RayTreeNode {
     double weight = 0;
     bool truncated = false;  // max_depth reached: this branch was not followed further
     std::vector<RayTreeNode> children;
+    // Through a GRIN solid: the curved path from `from` to `to`, the integrator's points
+    // (printed as "path"); empty for a straight segment.
+    std::vector<Vec3> path;
+    int steps = 0;  // the integrator's steps along `path` (printed as "steps")
 };
 
 struct RayTreeOptions {

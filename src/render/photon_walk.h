@@ -133,7 +133,7 @@ private:
         if (policy.lambda_nm == 0 && it.scattering.dispersive) {
             // From here the path depends on wavelength: take one.
             policy.disperse(*m_rng);
-            it.scattering = scatter_at(it, ray.direction, policy.lambda_nm);
+            it.scattering = scatter_at(it, it.direction, policy.lambda_nm);
         }
         policy.hit(it, ray.direction, depth);
         return true;

@@ -5,15 +5,56 @@
 
 namespace lenslab {
 
-bool next_interaction(const Scene& scene, const Ray& ray, double lambda_nm, Interaction& out) {
+GrinMedium grin_medium_of(const SceneObject& object, const Material& m, double lambda_nm) {
+    const GrinProfile& g = *m.grin;
+    return {&g, g.has_centre ? g.centre : object.shape->bounds().centre(), m.grin_scale(lambda_nm)};
+}
+
+namespace {
+
+// The ray is inside a GRIN solid when its first straight hit is that solid's surface seen
+// from inside: the curved path replaces the straight segment.
+bool interaction_inside_grin(const Interaction& it, const Ray& ray) {
+    return it.material->grin && it.material->transparency > 0.0 && it.object->shape->is_closed() &&
+           dot(ray.direction, it.normal()) > 0.0;
+}
+
+}  // namespace
+
+bool next_interaction(const Scene& scene, const Ray& ray, double lambda_nm, Interaction& out,
+                      std::vector<Vec3>* grin_path) {
+    if (grin_path) grin_path->clear();
     if (!scene.intersect(ray, surface_epsilon(ray.origin), std::numeric_limits<double>::infinity(),
                          out.hit)) {
         return false;
     }
     out.object = &scene.objects[out.hit.object];
     out.material = &scene.materials[out.object->material];
+    out.direction = ray.direction;
+    out.grin_steps = 0;
+    if (interaction_inside_grin(out, ray)) {
+        const GrinMedium medium = grin_medium_of(*out.object, *out.material, lambda_nm);
+        const GrinExit exit = trace_grin_ray(medium, *out.object->shape, ray.origin,
+                                             normalize(ray.direction), {}, grin_path);
+        if (!exit.left) {
+            // Trapped (or no medium to follow): its light stays inside, absorbed where the
+            // straight ray would have met the surface; nothing goes on from there.
+            out.beyond = nullptr;
+            out.scattering = Scattering{};
+            out.grin_steps = exit.steps;
+            return true;
+        }
+        out.hit.surface = exit.hit;
+        // Leaving: a grazing exit's direction, off by the tolerance, must not point back in
+        // (the surface would take it for light arriving from outside).
+        const double outwards = dot(exit.direction, exit.hit.normal);
+        out.direction = outwards > 0.0
+                            ? exit.direction
+                            : normalize(exit.direction + exit.hit.normal * (1e-12 - outwards));
+        out.grin_steps = exit.steps;
+    }
     out.beyond = scene.medium_beyond(out.hit.object, out.point(), out.normal());
-    out.scattering = scatter_at(out, ray.direction, lambda_nm);
+    out.scattering = scatter_at(out, out.direction, lambda_nm);
     return true;
 }
 
@@ -33,8 +74,13 @@ double segment_transmittance(const Interaction& it, const Vec3& d, double lambda
 }
 
 Scattering scatter_at(const Interaction& it, const Vec3& d, double lambda_nm) {
-    return scatter(*it.material, it.object->shape->is_closed(), d, it.normal(), lambda_nm,
-                   it.beyond);
+    const Material& m = *it.material;
+    const bool closed = it.object->shape->is_closed();
+    if (m.grin && closed) {
+        const double n = grin_medium_of(*it.object, m, lambda_nm).index(it.point());
+        return scatter_with_index(m, n, closed, d, it.normal(), lambda_nm, it.beyond);
+    }
+    return scatter(m, closed, d, it.normal(), lambda_nm, it.beyond);
 }
 
 }  // namespace lenslab

@@ -13,6 +13,7 @@
 
 #include "optics/absorption.h"
 #include "optics/glass.h"
+#include "optics/grin_profile.h"
 #include "optics/rgb.h"
 #include "optics/spectrum.h"
 
@@ -28,6 +29,9 @@ struct Material {
     // Beer-Lambert attenuation of light inside, when the glass has k data; null (and free)
     // otherwise. Set by the scene reader, which knows the scene's length unit.
     AbsorptionPtr absorption;
+    // A gradient index inside the solid, or null. Its index replaces `index` everywhere inside;
+    // `index` then only scales it with wavelength: n = profile x index(lambda) / index(d).
+    std::shared_ptr<const GrinProfile> grin;
     Rgb emission_color{1.0, 1.0, 1.0};
     double emission_intensity = 0.0;  // radiance scale, W m^-2 sr^-1
     SpectrumPtr emission_spectrum;  // set when the emission gives a spectrum, else from the colour
@@ -40,6 +44,8 @@ struct Material {
 
     double diffuse_weight() const { return std::max(0.0, 1.0 - transparency - specular); }
     double ior(double nm) const { return index->n(nm); }
+    // The GRIN profile's dispersion factor index(lambda) / index(d).
+    double grin_scale(double nm) const { return index->n(nm) / index->n(kLineD); }
     bool is_emitter() const {
         return emission_intensity > 0.0 && emission && !emission_color.is_black();
     }

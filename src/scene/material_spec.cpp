@@ -27,6 +27,35 @@ ElementSpec declare_material() {
             .in_editor("Refractive index"),
         nested_param(ParamKind::String, "glass").describe("a catalogue glass, e.g. N-BK7"),
         nested_param(ParamKind::Object, "emission").describe("light emitted by the surface"),
+        nested_param(ParamKind::Object, "grin")
+            .describe("a gradient index inside the solid (replaces ior; see docs/grin.md)"),
+    };
+    return s;
+}
+
+ElementSpec declare_grin() {
+    ElementSpec s{"grin", "a GRIN index", {}, {}};
+    ParamSpec radius = number_param("radius", 1.0)
+                           .above(0)
+                           .describe("R of the luneburg and fisheye profiles (required by them)");
+    radius.fallback = nullptr;
+    radius.auto_meaning = "—";
+    s.params = {
+        choice_param("profile", "luneburg", {"luneburg", "fisheye", "radial", "axial", "formula"})
+            .needed()
+            .describe("the index profile n(x, y, z)"),
+        number_param("n0", 1.5).above(0).describe(
+            "index on the axis or at the centre (fisheye, radial, axial)"),
+        number_param("A", 0.0).describe(
+            "radial: n0 (1 - A r^2/2), per unit^2; axial: n0 + A z, per unit"),
+        radius,
+        nested_param(ParamKind::String, "formula")
+            .describe("the index as a formula of x, y, z (required by the formula profile)"),
+        nested_param(ParamKind::Point, "center")
+            .meaning_auto("the object's centre")
+            .describe("the profile's centre"),
+        vector_param(ParamKind::Direction, "axis", nlohmann::json::array({0, 0, 1}))
+            .describe("the profile's axis (radial, axial)"),
     };
     return s;
 }
@@ -54,6 +83,11 @@ ElementSpec declare_emission() {
 
 const ElementSpec& material_spec() {
     static const ElementSpec spec = declare_material();
+    return spec;
+}
+
+const ElementSpec& grin_spec() {
+    static const ElementSpec spec = declare_grin();
     return spec;
 }
 

@@ -9,5 +9,7 @@ namespace lenslab {
 
 const ElementSpec& material_spec();
 const ElementSpec& emission_spec();
+// The `grin` block of a transparent material: a gradient index (optics/grin_profile.h).
+const ElementSpec& grin_spec();
 
 }  // namespace lenslab

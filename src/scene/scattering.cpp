@@ -25,6 +25,12 @@ const char* event_name(Event e) {
 
 Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& outward_normal,
                    double lambda_nm, const Material* beyond) {
+    return scatter_with_index(m, m.ior(lambda_nm), closed, d, outward_normal, lambda_nm, beyond);
+}
+
+Scattering scatter_with_index(const Material& m, double n_inside, bool closed, const Vec3& d,
+                              const Vec3& outward_normal, double lambda_nm,
+                              const Material* beyond) {
     Scattering s;
     s.diffuse = m.diffuse_weight();
     const bool entering = dot(d, outward_normal) < 0.0;
@@ -36,18 +42,21 @@ Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& ou
     Event reflect_event = Event::Reflect;
     if (m.transparency > 0.0) {
         if (closed) {
-            const double n = m.ior(lambda_nm);
+            const double n = n_inside;
             const double n_beyond = beyond ? beyond->ior(lambda_nm) : kOutsideIor;
             const double eta_i = entering ? n_beyond : n;
             const double eta_t = entering ? n : n_beyond;
-            const FresnelTerms f = fresnel_dielectric(cos_i, eta_i, eta_t);
+            const FresnelTerms f = eta_i == eta_t ? FresnelTerms{0.0, 0.0, false}
+                                                  : fresnel_dielectric(cos_i, eta_i, eta_t);
             if (f.total_internal_reflection) {
                 reflected += m.transparency;
                 reflect_event = Event::Tir;
             } else {
                 const double r = f.reflectance();
                 reflected += m.transparency * r;
-                if (auto t = refract(d, facing, eta_i / eta_t)) {
+                // Matched indices (a Luneburg lens's rim): the ray goes straight on, unreflected.
+                if (auto t = eta_i == eta_t ? std::optional<Vec3>(d)
+                                            : refract(d, facing, eta_i / eta_t)) {
                     s.branches[s.count++] = {Event::Refract, *t, m.transparency * (1.0 - r)};
                     s.dispersive = m.index->dispersive() || (beyond && beyond->index->dispersive());
                 }

@@ -12,6 +12,8 @@
 #include <optional>
 #include <sstream>
 
+#include "math/formula.h"
+#include "optics/grin_profile.h"
 #include "scene/camera_spec.h"
 #include "scene/glass_catalogues_json.h"
 #include "scene/json_reader.h"
@@ -100,6 +102,44 @@ void read_render(const json& j, RenderSettings& s) {
     s.alpha = r.real("alpha");
 }
 
+std::shared_ptr<const GrinProfile> read_grin(const json& j, const std::string& path) {
+    SpecReader r(j, path, grin_spec());
+    auto g = std::make_shared<GrinProfile>();
+    g->owner = path;
+    const std::string profile = r.text("profile");
+    for (GrinKind k : {GrinKind::Luneburg, GrinKind::Fisheye, GrinKind::Radial, GrinKind::Axial,
+                       GrinKind::Formula}) {
+        if (profile == grin_kind_name(k)) g->kind = k;
+    }
+    g->n0 = r.real("n0");
+    g->A = r.real("A");
+    g->axis = r.unit_vector("axis");
+    if (r.has("center")) {
+        g->has_centre = true;
+        g->centre = r.point("center");
+    }
+    const bool spherical = g->kind == GrinKind::Luneburg || g->kind == GrinKind::Fisheye;
+    if (spherical) {
+        if (!r.has("radius"))
+            throw SceneError(r.child_path("radius"), "missing (required by the " + profile +
+                                                         " profile: its sphere's radius R)");
+        g->radius = r.real("radius");
+    }
+    if (g->kind == GrinKind::Formula) {
+        const json* f = r.find("formula");
+        if (!f || !f->is_string())
+            throw SceneError(r.child_path("formula"),
+                             "missing or not a string (required by the formula profile)");
+        try {
+            g->formula = std::make_shared<Formula>(
+                f->get<std::string>(), std::vector<std::string>{"x", "y", "z"}, kGrinFormulaHint);
+        } catch (const FormulaError& e) {
+            throw SceneError(r.child_path("formula"), e.message());
+        }
+    }
+    return g;
+}
+
 Material read_material(const json& j, const std::string& path, const std::string& name) {
     SpecReader r(j, path, material_spec());
     Material m;
@@ -124,6 +164,12 @@ Material read_material(const json& j, const std::string& path, const std::string
     } else if (const json* n = r.find("ior")) {
         m.index = n->is_number() ? constant_index(r.real("ior"))
                                  : read_index_model(*n, r.child_path("ior"));
+    }
+    if (const json* g = r.find("grin")) {
+        if (!(m.transparency > 0.0))
+            throw SceneError(r.child_path("grin"),
+                             "a GRIN index needs a transparent material (transparency > 0)");
+        m.grin = read_grin(*g, r.child_path("grin"));
     }
     if (const json* e = r.find("emission")) {
         SpecReader er(*e, r.child_path("emission"), emission_spec());
@@ -205,6 +251,15 @@ SceneObject read_object(const json& j, const std::string& path,
     o.material = read_material_ref(r, o.name, materials, all);
     if (kind->open_mesh_check) check_mesh_material(r, *o.shape, all[o.material]);
     if (!kind->may_emit) check_not_emitting(r, all[o.material]);
+    if (all[o.material].grin && !o.shape->is_closed()) {
+        throw SceneError(r.child_path("material"),
+                         "a GRIN material fills a solid: this object is an open surface");
+    }
+    if (const GrinProfile* g = all[o.material].grin.get()) {
+        const Aabb box = o.shape->bounds();
+        if (auto why = g->problem_in(g->has_centre ? g->centre : box.centre(), box.lo, box.hi))
+            throw SceneError(r.child_path("material"), "its GRIN index: " + *why);
+    }
     return o;
 }
 

@@ -119,6 +119,16 @@ lenslab_cli_test(NAME trace.default_scene
     ARGS trace scenes/default.json --origin 0,3,0 --direction 0,-1,0
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=\"event\"" -DSTDOUT_JSON=ON -DJSON_EVENT=start)
 
+# Through a gradient-index solid the segment carries its curved path; a broken grin block is
+# refused with its JSON path.
+lenslab_cli_test(NAME trace.grin_path
+    ARGS trace scenes/luneburg_lens.json --origin 0.5,0,-2 --direction 0,0,1
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=\"path\":" -DSTDOUT_JSON=ON)
+lenslab_cli_test(NAME render.bad.grin_no_radius
+    ARGS render tests/scene/bad/grin_luneburg_no_radius.json -o ${LENSLAB_CLI_OUT}/grin_bad.png
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: tests/scene/bad/grin_luneburg_no_radius.json: objects[0].material.grin.radius: missing (required by the luneburg profile: its sphere's radius R)")
+
 # `analyze`: the optical bench reads lens-only files (no camera), prints a table, JSON with
 # the named figures, writes an SVG ray diagram, and refuses what is not one lens system.
 set(analyze_data tests/analysis/data)

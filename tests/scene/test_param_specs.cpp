@@ -114,6 +114,10 @@ std::vector<Case> cases() {
         {{"type", "spot"}, {"position", {0, 2, 0}}, {"direction", {0, -1, 0}}, {"power", 1}}};
     json with_atmosphere = scene;
     with_atmosphere["atmosphere"] = {{"scattering", 0.1}};
+    json with_grin = scene;
+    with_grin["materials"]["m"] = {
+        {"transparency", 1},
+        {"grin", {{"profile", "luneburg"}, {"radius", 1}, {"formula", "1.5"}}}};
     json with_implicit = scene;
     with_implicit["objects"] = {{{"type", "implicit"},
                                  {"formula", "x^2 + y^2 + z^2 - 0.25"},
@@ -196,6 +200,12 @@ std::vector<Case> cases() {
          scene,
          "/materials/m/emission",
          "materials.m.emission",
+         {}},
+        {lenslab::grin_spec,
+         "`grin` has these keys:",
+         with_grin,
+         "/materials/m/grin",
+         "materials.m.grin",
          {}},
         {lenslab::point_light_spec,
          "A point light (`\"type\": \"point\"`):",

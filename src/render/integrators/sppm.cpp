@@ -137,7 +137,7 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
         const bool absorbed_on_the_way = absorption_before(it, ray.direction) != nullptr;
         if (!vp.dispersed && (it.scattering.dispersive || absorbed_on_the_way)) {
             vp.dispersed = true;
-            it.scattering = scatter_at(it, ray.direction, pass.lambda_nm);
+            it.scattering = scatter_at(it, it.direction, pass.lambda_nm);
         }
         if (absorbed_on_the_way) beta *= segment_transmittance(it, ray.direction, pass.lambda_nm);
         vp.path_length += it.hit.surface.t;
