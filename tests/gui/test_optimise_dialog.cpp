@@ -13,17 +13,26 @@
 using lenslab::gui::MainWindow;
 using lenslab::gui::OptimiseDialog;
 
+namespace {
+
+// The Optimise dialog for the biconvex singlet of thick_lens_beam.json, opened in `w`.
+OptimiseDialog* singlet_dialog(MainWindow& w) {
+    if (!w.open_file(LENSLAB_SOURCE_DIR "/scenes/thick_lens_beam.json")) return nullptr;
+    w.tree()->select_pointer("/objects/0");
+    return w.optimise_selected_lens();
+}
+
+}  // namespace
+
 class TestOptimiseDialog : public QObject {
     Q_OBJECT
 
 private slots:
     void optimising_changes_the_lens_and_one_undo_restores_it() {
         MainWindow w;
-        QVERIFY(w.open_file(LENSLAB_SOURCE_DIR "/scenes/thick_lens_beam.json"));
-        w.tree()->select_pointer("/objects/0");
-        const nlohmann::json original = w.document()->json();
-        OptimiseDialog* dialog = w.optimise_selected_lens();
+        OptimiseDialog* dialog = singlet_dialog(w);
         QVERIFY(dialog);
+        const nlohmann::json original = w.document()->json();
         // A few iterations on one field and wavelength: small for the sanitizer build.
         lenslab::gui::OptimiseChoices choices = dialog->choices();
         // It starts from the lens's EFL (the field shows three decimals).
@@ -58,11 +67,9 @@ private slots:
 
     void cancelling_leaves_the_lens_unchanged() {
         MainWindow w;
-        QVERIFY(w.open_file(LENSLAB_SOURCE_DIR "/scenes/thick_lens_beam.json"));
-        w.tree()->select_pointer("/objects/0");
-        const nlohmann::json original = w.document()->json();
-        OptimiseDialog* dialog = w.optimise_selected_lens();
+        OptimiseDialog* dialog = singlet_dialog(w);
         QVERIFY(dialog);
+        const nlohmann::json original = w.document()->json();
         lenslab::gui::OptimiseChoices choices = dialog->choices();
         choices.efl_target = 80;
         choices.fields = {0.0};
