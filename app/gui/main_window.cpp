@@ -614,6 +614,8 @@ OptimiseDialog* MainWindow::optimise_selected_lens() {
     }
     auto* dialog = new OptimiseDialog(m_document, m_ray_diagram->lens(), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
+    // Modal: an edit made during the run would be lost when its result is applied.
+    dialog->setModal(true);
     dialog->set_choices(m_ray_diagram->optimise_defaults());
     dialog->show();
     return dialog;
