@@ -30,6 +30,7 @@
 #include "detector_dock.h"
 #include "image_export.h"
 #include "json_pointer.h"
+#include "optimise_dialog.h"
 #include "placement.h"
 #include "property_panel.h"
 #include "ray_diagram_dock.h"
@@ -321,6 +322,9 @@ void MainWindow::build_menus() {
     edit->addAction(tr("&Duplicate"), QKeySequence(tr("Ctrl+D")), this,
                     &MainWindow::duplicate_selected);
     edit->addAction(tr("De&lete"), QKeySequence::Delete, this, &MainWindow::delete_selected);
+    edit->addSeparator();
+    edit->addAction(tr("&Optimise lenses..."), this, &MainWindow::optimise_selected_lens)
+        ->setObjectName("optimise_lenses");
 
     QMenu* render = menuBar()->addMenu(tr("&Render"));
     QAction* start = render->addAction(tr("&Start"), QKeySequence(tr("F5")), this,
@@ -600,6 +604,21 @@ void MainWindow::delete_selected() {
     }
     m_tree->select_pointer(QString());
     m_panel->show_pointer(QString());
+}
+
+OptimiseDialog* MainWindow::optimise_selected_lens() {
+    if (m_ray_diagram->lens() < 0) {
+        QMessageBox::information(this, tr("Optimise lenses"),
+                                 tr("Select a lens: the lenses on its axis are optimised."));
+        return nullptr;
+    }
+    auto* dialog = new OptimiseDialog(m_document, m_ray_diagram->lens(), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    // Modal: an edit made during the run would be lost when its result is applied.
+    dialog->setModal(true);
+    dialog->set_choices(m_ray_diagram->optimise_defaults());
+    dialog->show();
+    return dialog;
 }
 
 }  // namespace lenslab::gui

@@ -13,6 +13,7 @@ namespace lenslab::gui {
 
 class DetectorDock;
 class PropertyPanel;
+class OptimiseDialog;
 class RayDiagramDock;
 class RenderController;
 class SceneDocument;
@@ -63,6 +64,9 @@ public:
     void add_floor();
     void duplicate_selected();
     void delete_selected();
+    // Edit ▸ Optimise lenses…: the dialog for the lenses on the selected lens's axis, shown
+    // (it deletes itself when closed); null, with a message, when no lens is selected.
+    OptimiseDialog* optimise_selected_lens();
 
 protected:
     void closeEvent(QCloseEvent* event) override;

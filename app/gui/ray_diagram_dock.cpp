@@ -1,10 +1,21 @@
 #include "ray_diagram_dock.h"
 
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QSpinBox>
+#include <QTabWidget>
+#include <QTimer>
 #include <QVBoxLayout>
+#include <cmath>
 
+#include "analysis/curve_figures.h"
+#include "analysis/field_figures.h"
 #include "analysis/lens_report.h"
+#include "bench_figure_view.h"
 #include "diagram_painter.h"
 #include "json_pointer.h"
+#include "optics/glass.h"
 #include "scene/scene_error.h"
 #include "scene_document.h"
 
@@ -14,6 +25,33 @@ namespace {
 
 // Fewer rays than the command line's report: the dock redraws on every edit.
 constexpr int kSpotRings = 8;
+// The pause after an edit before the bench figures are recomputed: typing in a number field
+// recomputes once, not per key.
+constexpr int kBenchDelayMs = 150;
+constexpr int kLayoutTab = 0;
+
+// The spot tab's table: one line a field, then one a wavelength.
+QString spot_numbers_text(const SpotDiagrams& spots) {
+    const auto number = [](double v) { return QString::number(v, 'g', 4); };
+    QStringList lines;
+    for (const FieldSpots& field : spots.fields) {
+        lines << QObject::tr("field %1°: polychromatic RMS %2, Airy %3")
+                     .arg(number(field.field), number(field.polychromatic.rms_radius),
+                          number(field.airy_radius));
+        for (const WavelengthSpot& spot : field.spots) {
+            lines << QObject::tr("    %1 nm: RMS %2, GEO %3, vignetted %4 of %5")
+                         .arg(QString::number(spot.wavelength_nm, 'f', 2),
+                              number(spot.spot.rms_radius), number(spot.spot.geometric_radius))
+                         .arg(spot.vignetted)
+                         .arg(spot.rays);
+        }
+    }
+    return lines.join('\n');
+}
+
+QString default_wavelengths_text() {
+    return QString("%1, %2, %3").arg(kLineF).arg(kLineD).arg(kLineC);
+}
 
 }  // namespace
 
@@ -37,21 +75,190 @@ void RayDiagramView::paintEvent(QPaintEvent*) {
 }
 
 RayDiagramDock::RayDiagramDock(SceneDocument* document, QWidget* parent)
-    : QDockWidget(tr("Ray diagram"), parent),
+    : QDockWidget(tr("Bench"), parent),
       m_document(document),
       m_view(new RayDiagramView(this)),
-      m_message(new QLabel(this)) {
+      m_message(new QLabel(this)),
+      m_tabs(new QTabWidget(this)),
+      m_fields(new QLineEdit("0, 5", this)),
+      m_wavelengths(new QLineEdit(default_wavelengths_text(), this)),
+      m_epd(new QDoubleSpinBox(this)),
+      m_stop(new QSpinBox(this)),
+      m_spot_numbers(new QLabel(this)),
+      m_spot_view(new BenchFigureView(this)),
+      m_fan_view(new BenchFigureView(this)),
+      m_curve_view(new BenchFigureView(this)),
+      m_mtf_view(new BenchFigureView(this)),
+      m_bench_timer(new QTimer(this)) {
     setObjectName("ray_diagram_dock");
     m_message->setObjectName("ray_diagram_message");
     m_message->setWordWrap(true);
+    m_spot_numbers->setObjectName("bench_spot_numbers");
+    m_spot_numbers->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* spots = new QWidget(this);
+    auto* spot_layout = new QHBoxLayout(spots);
+    spot_layout->setContentsMargins(0, 0, 0, 0);
+    spot_layout->addWidget(m_spot_view, 1);
+    spot_layout->addWidget(m_spot_numbers, 0, Qt::AlignTop);
+    m_tabs->setObjectName("bench_tabs");
+    m_tabs->addTab(m_view, tr("Layout"));
+    m_tabs->addTab(spots, tr("Spots"));
+    m_tabs->addTab(m_fan_view, tr("Fans"));
+    m_tabs->addTab(m_curve_view, tr("Field curves"));
+    m_tabs->addTab(m_mtf_view, tr("MTF"));
     auto* body = new QWidget(this);
     auto* layout = new QVBoxLayout(body);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_message);
-    layout->addWidget(m_view, 1);
+    layout->addWidget(make_controls());
+    layout->addWidget(m_tabs, 1);
     setWidget(body);
+    m_bench_timer->setSingleShot(true);
+    m_bench_timer->setInterval(kBenchDelayMs);
+    connect(m_bench_timer, &QTimer::timeout, this, &RayDiagramDock::update_bench);
+    connect(m_tabs, &QTabWidget::currentChanged, this, &RayDiagramDock::schedule_bench);
     connect(m_document, &SceneDocument::changed, this, &RayDiagramDock::refresh);
     refresh();
+}
+
+QWidget* RayDiagramDock::make_controls() {
+    auto* controls = new QWidget(this);
+    auto* row = new QHBoxLayout(controls);
+    row->setContentsMargins(0, 0, 0, 0);
+    m_fields->setObjectName("bench_fields");
+    m_fields->setToolTip(tr("Field angles in degrees, comma-separated"));
+    m_wavelengths->setObjectName("bench_wavelengths");
+    m_wavelengths->setToolTip(
+        tr("Wavelengths in nm, comma-separated; the middle one is the "
+           "primary (default: the F, d and C lines)"));
+    m_epd->setObjectName("bench_epd");
+    m_epd->setRange(0, 1e6);
+    m_epd->setDecimals(3);
+    m_epd->setSpecialValueText(tr("auto"));
+    m_epd->setToolTip(tr("Entrance pupil diameter; auto: the stop surface's rim"));
+    m_stop->setObjectName("bench_stop");
+    m_stop->setRange(1, 999);
+    m_stop->setToolTip(tr("The aperture stop: a surface, counted from 1 along the light"));
+    row->addWidget(new QLabel(tr("Fields"), controls));
+    row->addWidget(m_fields, 2);
+    row->addWidget(new QLabel(tr("Wavelengths"), controls));
+    row->addWidget(m_wavelengths, 3);
+    row->addWidget(new QLabel(tr("EPD"), controls));
+    row->addWidget(m_epd, 1);
+    row->addWidget(new QLabel(tr("Stop"), controls));
+    row->addWidget(m_stop);
+    const auto settings_changed = [this] {
+        m_bench_stale = true;
+        schedule_bench();
+    };
+    connect(m_fields, &QLineEdit::editingFinished, this, settings_changed);
+    connect(m_wavelengths, &QLineEdit::editingFinished, this, settings_changed);
+    connect(m_epd, &QDoubleSpinBox::valueChanged, this, settings_changed);
+    connect(m_stop, &QSpinBox::valueChanged, this, settings_changed);
+    return controls;
+}
+
+OptimiseChoices RayDiagramDock::optimise_defaults() const {
+    OptimiseChoices c;
+    c.efl_target = m_efl;
+    c.epd = m_epd->value() > 0 ? m_epd->value() : m_pupil;
+    c.stop = m_stop->value();
+    c.fields = parse_number_list(m_fields->text().toStdString()).value_or(c.fields);
+    c.wavelengths = parse_number_list(m_wavelengths->text().toStdString()).value_or(c.wavelengths);
+    return c;
+}
+
+void RayDiagramDock::schedule_bench() {
+    // The figures cost more than the layout: only for a tab that shows them.
+    if (m_bench_stale && m_tabs->currentIndex() != kLayoutTab) m_bench_timer->start();
+}
+
+bool RayDiagramDock::read_settings(QString& error) {
+    const auto fields = parse_number_list(m_fields->text().toStdString());
+    const auto wavelengths = parse_number_list(m_wavelengths->text().toStdString());
+    if (!fields) {
+        error = tr("Fields: numbers in degrees, comma-separated");
+        return false;
+    }
+    if (!wavelengths) {
+        error = tr("Wavelengths: numbers in nm, comma-separated");
+        return false;
+    }
+    for (double angle : *fields) {
+        if (!(std::abs(angle) < 90.0)) {
+            error = tr("Fields: %1 degrees is not a field angle").arg(angle);
+            return false;
+        }
+    }
+    for (double nm : *wavelengths) {
+        if (!(nm > 0)) {
+            error = tr("Wavelengths: %1 is not a wavelength in nm").arg(nm);
+            return false;
+        }
+    }
+    m_settings.fields = fields->empty() ? std::vector<double>{0.0} : *fields;
+    m_settings.wavelengths = *wavelengths;
+    m_settings.epd = m_epd->value();
+    m_settings.stop = m_stop->value();
+    return true;
+}
+
+void RayDiagramDock::update_bench() {
+    m_bench_timer->stop();
+    m_bench_stale = false;
+    m_bench = BenchFigures{};
+    QString error;
+    if (m_lens < 0) {
+        error = tr("Select a lens to see its bench figures.");
+    } else if (read_settings(error)) {
+        try {
+            const OpticalSystem system = build_optical_system(m_document->scene(), m_lens);
+            if (m_settings.stop > int(system.surfaces.size())) {
+                error = tr("Stop: the system has %1 surfaces").arg(system.surfaces.size());
+            } else {
+                m_bench = compute_bench_figures(system, m_settings);
+            }
+        } catch (const lenslab::Error& e) {
+            error = QString::fromStdString(e.what());
+        }
+    }
+    for (const std::string& e : m_bench.errors) {
+        error += (error.isEmpty() ? "" : "\n") + QString::fromStdString(e);
+    }
+    show_bench();
+    if (!error.isEmpty()) {
+        m_spot_numbers->setText(m_spot_numbers->text() +
+                                (m_spot_numbers->text().isEmpty() ? "" : "\n\n") + error);
+    }
+}
+
+void RayDiagramDock::show_bench() {
+    // Labels in degrees and "units": a scene declares no length unit.
+    const std::string unit, field_unit = "deg";
+    const BenchFigures& b = m_bench;
+    m_spot_numbers->setText(b.spots ? spot_numbers_text(*b.spots) : QString());
+    if (b.spots) {
+        m_spot_view->set_figure(spot_diagram_figure(*b.spots, unit, field_unit),
+                                field_figure_width(int(b.spots->fields.size())));
+    } else {
+        m_spot_view->set_figure(std::nullopt);
+    }
+    if (b.fans) {
+        m_fan_view->set_figure(ray_fan_figure(*b.fans, unit, field_unit), field_figure_width(2));
+    } else {
+        m_fan_view->set_figure(std::nullopt);
+    }
+    if (b.curves) {
+        m_curve_view->set_figure(field_curves_figure(*b.curves, unit, field_unit),
+                                 field_figure_width(2));
+    } else {
+        m_curve_view->set_figure(std::nullopt);
+    }
+    if (b.diffraction) {
+        m_mtf_view->set_figure(mtf_figure(*b.diffraction), field_figure_width(1));
+    } else {
+        m_mtf_view->set_figure(std::nullopt);
+    }
 }
 
 void RayDiagramDock::show_pointer(const QString& pointer) {
@@ -70,7 +277,10 @@ void RayDiagramDock::refresh() {
     for (int i = 0; i < int(scene.objects.size()) && index < 0 && entry >= 0; ++i) {
         if (scene.objects[i].source == entry) index = i;
     }
-    if (index < 0 || scene.objects[index].type != ObjectType::Lens) {
+    m_lens = index >= 0 && scene.objects[index].type == ObjectType::Lens ? index : -1;
+    m_bench_stale = true;
+    schedule_bench();
+    if (m_lens < 0) {
         m_view->set_diagram(std::nullopt);
         m_message->setText(tr("Select a lens to see the ray diagram of the lenses on its axis."));
         return;
@@ -81,6 +291,8 @@ void RayDiagramDock::refresh() {
         options.spot_rings = kSpotRings;
         const LensReport report = analyze_lens_system(system, options);
         m_view->set_diagram(make_ray_diagram(system, report));
+        m_efl = report.paraxial.efl;
+        m_pupil = report.first_order.entrance_pupil.diameter;
         m_message->setText(
             tr("%1 lens(es) · EFL %2 · BFL %3 · RMS spot %4 at best focus (%5 nm; scene units)")
                 .arg(system.elements.size())

@@ -1,0 +1,113 @@
+#include "bench_figures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "analysis/lens_report.h"
+#include "analysis/plot_panel.h"
+#include "optics/glass.h"
+#include "util/error.h"
+
+namespace lenslab::gui {
+
+BenchFigures compute_bench_figures(const OpticalSystem& system, const BenchSettings& settings) {
+    LensReportOptions options;
+    options.wavelengths = settings.wavelengths.empty() ? std::vector<double>{kLineF, kLineD, kLineC}
+                                                       : settings.wavelengths;
+    options.wavelength_nm = options.wavelengths[(options.wavelengths.size() - 1) / 2];
+    options.spot_rings = settings.rings;
+    options.first_order.stop = settings.stop - 1;
+    options.first_order.epd = settings.epd;
+    options.first_order.fields =
+        settings.fields.empty() ? std::vector<double>{0.0} : settings.fields;
+    const LensReport report = analyze_lens_system(system, options);
+    const std::vector<double>& fields = options.first_order.fields;
+    BenchFigures out;
+    // Each figure on its own: one that fails (a field no ray passes) leaves the others.
+    const auto attempt = [&out](const char* name, const auto& work) {
+        try {
+            work();
+        } catch (const lenslab::Error& e) {
+            out.errors.push_back(std::string(name) + ": " + e.what());
+        }
+    };
+    attempt("spots", [&] {
+        SpotOptions spot;
+        spot.fields = fields;
+        spot.wavelengths = report.wavelengths;
+        spot.rings = settings.rings;
+        out.spots = spot_diagrams(system, report.first_order, spot);
+    });
+    attempt("fans", [&] {
+        RayFanOptions fan;
+        fan.fields = fields;
+        fan.wavelengths = report.wavelengths;
+        fan.points = settings.fan_points;
+        out.fans = ray_fans(system, report.first_order, fan);
+    });
+    attempt("field curves", [&] {
+        FieldCurveOptions curve;
+        for (double field : fields) curve.max_field = std::max(curve.max_field, std::abs(field));
+        curve.points = settings.field_curve_points;
+        curve.wavelengths = report.wavelengths;
+        out.curves = field_curves(system, report.first_order, curve);
+    });
+    attempt("MTF", [&] {
+        RayPupilOptions pupil;
+        pupil.wavelength_nm = options.wavelength_nm;
+        pupil.aperture_radius = 0.5 * report.first_order.entrance_pupil.diameter;
+        pupil.sampling.samples = settings.pupil_samples;
+        out.diffraction = diffraction_figures(system, pupil, {});
+    });
+    return out;
+}
+
+RayDiagram mtf_figure(const DiffractionFigures& d) {
+    RayDiagram figure;
+    PlotPanel panel;
+    const MtfCurves& mtf = d.mtf;
+    panel.x_min = 0;
+    panel.x_max = mtf.frequencies.empty() ? 1.0 : mtf.frequencies.back();
+    panel.y_min = 0;
+    panel.y_max = 1;
+    panel.title = "MTF on axis, " + plot_text("%.1f nm", d.wavelength_nm) + ", Strehl " +
+                  plot_text("%.3f", d.strehl);
+    panel.x_min_label = plot_text("%g", 0.0);
+    panel.x_max_label = plot_text("%.4g cycles/mm", panel.x_max);
+    panel.y_max_label = plot_text("%g", 1.0);
+    panel.curves = {{mtf.frequencies, mtf.diffraction_limit, kPlotGrey, 0},
+                    {mtf.frequencies, mtf.tangential, kDiagramBlueF, 0},
+                    {mtf.frequencies, mtf.sagittal, kDiagramBlueF, 6}};
+    // One panel of ±1 about the origin, as the bench's other charts lay theirs out.
+    figure.z_min = -1.02;
+    figure.z_max = 1.02;
+    figure.y_min = -1.25;
+    figure.y_max = 1.15;
+    draw_plot_panel(figure, panel);
+    figure.legend = {{kPlotGrey, "diffraction limit"},
+                     {kDiagramBlueF, "tangential"},
+                     {kDiagramBlueF, "sagittal (dashed)"}};
+    figure.title = "MTF";
+    figure.scale_bar = 0;
+    return figure;
+}
+
+std::optional<std::vector<double>> parse_number_list(const std::string& text) {
+    std::vector<double> values;
+    std::stringstream parts(text);
+    std::string part;
+    while (std::getline(parts, part, ',')) {
+        if (part.find_first_not_of(" \t") == std::string::npos) continue;
+        std::size_t used = 0;
+        try {
+            values.push_back(std::stod(part, &used));
+        } catch (const std::exception&) {
+            return std::nullopt;
+        }
+        if (part.find_first_not_of(" \t", used) != std::string::npos) return std::nullopt;
+    }
+    return values;
+}
+
+}  // namespace lenslab::gui

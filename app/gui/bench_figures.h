@@ -1,0 +1,48 @@
+#pragma once
+// The optical bench's figures of one lens system for the editor's bench dock, computed with
+// the library calls `lenslab analyze` makes (app/cli/analyze_command.cpp), with fewer rays:
+// the dock recomputes them after every edit.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/diffraction_figures.h"
+#include "analysis/field_curves.h"
+#include "analysis/ray_diagram.h"
+#include "analysis/ray_fans.h"
+#include "analysis/spot_diagrams.h"
+
+namespace lenslab::gui {
+
+struct BenchSettings {
+    std::vector<double> fields{0.0};  // degrees, the object at infinity
+    std::vector<double> wavelengths;  // nm; empty: F, d, C (the middle one is the primary)
+    double epd = 0;                   // entrance pupil diameter; 0: the library's default
+    int stop = 1;                     // surface, counted from 1 as the CLI's --stop
+    int rings = 4;                    // the spot diagrams' hexapolar rings
+    int fan_points = 15;
+    int field_curve_points = 7;
+    int pupil_samples = 64;  // across the pupil for the MTF
+};
+
+// What the dock shows; a figure is absent when its computation failed (its reason in
+// `errors`).
+struct BenchFigures {
+    std::optional<SpotDiagrams> spots;
+    std::optional<RayFans> fans;
+    std::optional<FieldCurves> curves;
+    std::optional<DiffractionFigures> diffraction;
+    std::vector<std::string> errors;
+};
+
+// Throws lenslab::Error when the first-order block cannot be set up (a bad stop, say).
+BenchFigures compute_bench_figures(const OpticalSystem& system, const BenchSettings& settings);
+
+// The MTF cuts of `d` beside the diffraction limit, in the bench's chart style.
+RayDiagram mtf_figure(const DiffractionFigures& d);
+
+// "0, 10.5, 14" → {0, 10.5, 14}; none when a part is not a number.
+std::optional<std::vector<double>> parse_number_list(const std::string& text);
+
+}  // namespace lenslab::gui

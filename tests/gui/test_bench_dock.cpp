@@ -1,0 +1,125 @@
+// The bench dock's figures for the selected lens: the spot tab shows the library's spot
+// diagrams (the numbers of `lenslab analyze --spots` for the same settings), and the other
+// tabs draw their figures.
+
+#include <QLineEdit>
+#include <QTabWidget>
+#include <QtTest>
+
+#include "analysis/lens_report.h"
+#include "analysis/spot_diagrams.h"
+#include "bench_figure_view.h"
+#include "main_window.h"
+#include "optics/glass.h"
+#include "ray_diagram_dock.h"
+#include "scene_document.h"
+#include "scene_tree.h"
+
+using lenslab::gui::MainWindow;
+
+namespace {
+
+// The scene object made from entry `source` of the file.
+int object_from(const lenslab::Scene& scene, int source) {
+    for (int i = 0; i < int(scene.objects.size()); ++i) {
+        if (scene.objects[i].source == source) return i;
+    }
+    return -1;
+}
+
+int painted_pixels(QWidget* widget) {
+    const QImage image = widget->grab().toImage();
+    int coloured = 0;
+    for (int y = 0; y < image.height(); y += 2) {
+        for (int x = 0; x < image.width(); x += 2)
+            coloured += image.pixel(x, y) != qRgb(255, 255, 255);
+    }
+    return coloured;
+}
+
+}  // namespace
+
+class TestBenchDock : public QObject {
+    Q_OBJECT
+
+private slots:
+    void the_spot_tab_shows_the_librarys_numbers() {
+        MainWindow w;
+        QString error;
+        QVERIFY2(w.open_file(LENSLAB_SOURCE_DIR "/scenes/achromat_doublet.json", &error),
+                 qPrintable(error));
+        auto* dock = w.ray_diagram();
+        w.tree()->select_pointer("/objects/1");
+        dock->tabs()->setCurrentIndex(1);  // Spots: computed after a pause
+        QTRY_VERIFY(dock->bench().spots.has_value());
+        QVERIFY2(dock->bench().errors.empty(), qPrintable(dock->spot_numbers()));
+
+        // The library's spot diagrams for the same lens and settings.
+        const lenslab::Scene& scene = w.document()->scene();
+        const lenslab::OpticalSystem system =
+            lenslab::build_optical_system(scene, object_from(scene, 1));
+        lenslab::LensReportOptions options;
+        options.wavelengths = {lenslab::kLineF, lenslab::kLineD, lenslab::kLineC};
+        options.wavelength_nm = lenslab::kLineD;
+        options.first_order.fields = {0.0, 5.0};
+        options.spot_rings = dock->settings().rings;
+        const lenslab::LensReport report = lenslab::analyze_lens_system(system, options);
+        lenslab::SpotOptions spot;
+        spot.fields = {0.0, 5.0};
+        spot.wavelengths = report.wavelengths;
+        spot.rings = dock->settings().rings;
+        const lenslab::SpotDiagrams expected =
+            lenslab::spot_diagrams(system, report.first_order, spot);
+
+        QCOMPARE(dock->bench().spots->fields.size(), expected.fields.size());
+        const QString numbers = dock->spot_numbers();
+        const auto shown = [&numbers](double v) {
+            return numbers.contains(QString::number(v, 'g', 4));
+        };
+        for (const lenslab::FieldSpots& field : expected.fields) {
+            QVERIFY2(shown(field.polychromatic.rms_radius), qPrintable(numbers));
+            QVERIFY2(shown(field.airy_radius), qPrintable(numbers));
+            QCOMPARE(field.spots.size(), std::size_t(3));
+            for (const lenslab::WavelengthSpot& s : field.spots) {
+                QVERIFY2(shown(s.spot.rms_radius), qPrintable(numbers));
+                QVERIFY2(shown(s.spot.geometric_radius), qPrintable(numbers));
+            }
+        }
+        dock->resize(900, 420);
+        QVERIFY(painted_pixels(dock->spot_view()) > 200);
+        // The picture of docs/editor.md, when asked for.
+        const QString screenshot = qEnvironmentVariable("LENSLAB_BENCH_SCREENSHOT");
+        if (!screenshot.isEmpty()) QVERIFY(dock->grab().save(screenshot));
+        QVERIFY(dock->bench().fans && dock->bench().curves && dock->bench().diffraction);
+    }
+
+    void settings_and_edits_recompute_the_figures() {
+        MainWindow w;
+        QVERIFY(w.open_file(LENSLAB_SOURCE_DIR "/scenes/thick_lens_beam.json"));
+        w.tree()->select_pointer("/objects/0");
+        auto* dock = w.ray_diagram();
+        dock->tabs()->setCurrentIndex(2);
+        dock->fields_edit()->setText("0");
+        dock->wavelengths_edit()->setText("587.5618");
+        dock->update_bench();
+        QVERIFY(dock->bench().spots.has_value());
+        QCOMPARE(dock->bench().spots->fields.size(), std::size_t(1));
+        QCOMPARE(dock->bench().spots->wavelengths.size(), std::size_t(1));
+        const double before = dock->bench().spots->fields[0].polychromatic.rms_radius;
+
+        QString error;
+        QVERIFY2(w.document()->set_value(nlohmann::json::json_pointer("/objects/0/thickness"), 8.0,
+                                         "thickness", &error),
+                 qPrintable(error));
+        QTRY_VERIFY(dock->bench().spots.has_value() &&
+                    dock->bench().spots->fields[0].polychromatic.rms_radius != before);
+
+        dock->fields_edit()->setText("0, x");
+        dock->update_bench();
+        QVERIFY(!dock->bench().spots.has_value());
+        QVERIFY2(dock->spot_numbers().contains("Fields"), qPrintable(dock->spot_numbers()));
+    }
+};
+
+QTEST_MAIN(TestBenchDock)
+#include "test_bench_dock.moc"
