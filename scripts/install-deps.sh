@@ -14,6 +14,7 @@ PACKAGES=(
     clang libclang-rt-14-dev llvm clang-format
     lld
     pybind11-dev python3-dev python3-numpy python3-pytest
+    jupyter-nbconvert python3-nbformat python3-ipykernel python3-matplotlib ffmpeg
 )
 # libfftw3-dev: the FFTs of the diffraction PSF and MTF (src/analysis/fft_grid.cpp).
 # clang + libclang-rt-14-dev: libFuzzer and clang's sanitizers for the fuzz targets
@@ -21,6 +22,11 @@ PACKAGES=(
 # clang-format: scripts/check-format.sh, the first thing the test suite checks; lld: the
 # linker (cmake/build_speed.cmake), several times faster than GNU ld on the test executables.
 # pybind11-dev, python3-dev, python3-numpy, python3-pytest: the `lenslab` Python module (python/) and its tests.
+# jupyter-nbconvert: `jupyter nbconvert --execute`, which runs the notebooks in examples/ as tests.
+# python3-nbformat: reads and writes the notebooks' .ipynb files.
+# python3-ipykernel: the Python 3 kernel the notebooks execute in.
+# python3-matplotlib: the notebooks' plots (Agg backend) and the caustic's animation.
+# ffmpeg: the animation writer matplotlib uses for the caustic notebook's MP4.
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -15,6 +15,7 @@
 #include "analysis/diffraction_report.h"
 #include "analysis/fan_report.h"
 #include "analysis/field_figures.h"
+#include "analysis/lens_lookup.h"
 #include "analysis/lens_report.h"
 #include "analysis/ray_diagram.h"
 #include "analysis/ray_diagram_image.h"
@@ -82,22 +83,6 @@ int usage_error(const std::string& message) {
     return 2;
 }
 
-// The object `name` names: its `name`, or its path "objects[i]".
-std::optional<int> find_lens(const Scene& scene, const std::string& name, std::string& known) {
-    for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
-        const SceneObject& o = scene.objects[i];
-        if (o.type != ObjectType::Lens) continue;
-        // A lens group's elements answer to the group's name too.
-        known +=
-            (known.empty() ? "" : ", ") + o.name + (o.group.empty() ? "" : " [" + o.group + "]");
-        if (o.name == name || o.group == name ||
-            "objects[" + std::to_string(o.source) + "]" == name) {
-            return i;
-        }
-    }
-    return std::nullopt;
-}
-
 // What the options of the figures say against each other, before any work: the message of
 // the first conflict, if any.
 std::optional<std::string> figure_option_error(const AnalyzeArgs& a) {
@@ -145,12 +130,10 @@ int run(AnalyzeArgs a) {
     const Scene scene = load_scene_file(a.scene, {.require_camera = false});
     std::optional<int> lens;
     if (!a.lens.empty()) {
-        std::string known;
-        lens = find_lens(scene, a.lens, known);
-        if (!lens) {
-            return usage_error("--lens: no lens named '" + a.lens + "' in " + a.scene +
-                               (known.empty() ? " (it has no lens)" : " (lenses: " + known + ")"));
-        }
+        const LensLookup lookup = find_lens(scene, a.lens);
+        if (!lookup.index)
+            return usage_error("--lens: " + no_lens_message(a.lens, a.scene, lookup));
+        lens = lookup.index;
     }
     try {
         const OpticalSystem system = build_optical_system(scene, lens);

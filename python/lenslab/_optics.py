@@ -6,7 +6,7 @@ import json
 from typing import Any, Optional, Sequence
 
 from . import _lenslab
-from ._scene import SceneSource, as_scene, scene_json
+from ._scene import SceneSource, source_json
 
 
 def trace(scene: SceneSource, origin: Sequence[float], direction: Sequence[float], *,
@@ -14,7 +14,7 @@ def trace(scene: SceneSource, origin: Sequence[float], direction: Sequence[float
           min_weight: float = _lenslab.TRACE_MIN_WEIGHT) -> dict[str, Any]:
     """The tree of one ray's paths, as `lenslab trace` prints it: {tree: {from, to, object,
     event, weight, direction, children: [...]}, summary: {escaped, absorbed, truncated}}."""
-    text, path = scene_json(as_scene(scene))
+    text, path = source_json(scene)
     return json.loads(_lenslab.trace(text, path, [float(v) for v in origin],
                                      [float(v) for v in direction], wavelength, max_depth,
                                      min_weight))
@@ -37,7 +37,7 @@ def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
     lagrange_invariant, ...}, seidel, spot sizes. The options are the command line's."""
     if epd is not None and f_number is not None:
         raise ValueError("f_number excludes epd (both set the entrance pupil)")
-    text, path = scene_json(as_scene(scene_or_file))
+    text, path = source_json(scene_or_file)
     nm = _positive("wavelength", wavelength) or _lenslab.LINE_D
     return json.loads(_lenslab.analyze(text, path, nm, lens or "", stop,
                                        _positive("epd", epd), _positive("f_number", f_number),

@@ -143,3 +143,11 @@ def as_scene(source: SceneSource) -> Scene:
 def scene_json(scene: Scene) -> tuple[str, str]:
     """The scene's JSON text and its file ("" for none), as the compiled module takes them."""
     return _dumps(scene._data), scene._path
+
+
+def source_json(source: SceneSource) -> tuple[str, str]:
+    """scene_json(as_scene(source)) without copying a dict first: what a sweep of many
+    calls (bench/python_sweep.py) saves."""
+    if isinstance(source, Mapping) and not isinstance(source, Scene):
+        return _dumps(source), ""
+    return scene_json(as_scene(source))

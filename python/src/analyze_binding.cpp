@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "analysis/lens_lookup.h"
 #include "analysis/lens_report.h"
 #include "bindings.h"
 #include "scene/json_reader.h"
@@ -28,19 +29,9 @@ struct AnalyzeOptions {
 
 // The lens object `name` names (its name, its group's, or "objects[i]"), as --lens finds it.
 int lens_index(const Scene& scene, const std::string& name) {
-    std::string known;
-    for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
-        const SceneObject& o = scene.objects[i];
-        if (o.type != ObjectType::Lens) continue;
-        known +=
-            (known.empty() ? "" : ", ") + o.name + (o.group.empty() ? "" : " [" + o.group + "]");
-        if (o.name == name || o.group == name ||
-            "objects[" + std::to_string(o.source) + "]" == name) {
-            return i;
-        }
-    }
-    throw py::value_error("lens: no lens named '" + name + "' in the scene" +
-                          (known.empty() ? " (it has no lens)" : " (lenses: " + known + ")"));
+    const LensLookup lookup = find_lens(scene, name);
+    if (!lookup.index) throw py::value_error("lens: " + no_lens_message(name, "the scene", lookup));
+    return *lookup.index;
 }
 
 LensReportOptions report_options(const OpticalSystem& system, const AnalyzeOptions& a) {
