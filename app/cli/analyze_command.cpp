@@ -53,7 +53,7 @@ struct AnalyzeArgs {
     bool fans = false;
     int fan_points = 21;
     // Figures; each implies its table.
-    std::string spots_svg, fans_svg, curves_svg, focal_shift_svg;
+    std::string spots_svg, fans_svg, curves_svg, focal_shift_svg, mtf_svg;
     bool field_curves = false;
     int field_curve_points = 11;
     bool focal_shift = false;
@@ -91,6 +91,9 @@ std::optional<std::string> figure_option_error(const AnalyzeArgs& a) {
         return "--image-distance: it places the image plane of --spots, --fans "
                "and --field-curves, none of which was asked for";
     }
+    if (!a.mtf_frequencies.empty() && !a.mtf) {
+        return "--mtf-frequencies requires --mtf (or --mtf-svg)";
+    }
     if (!a.band.empty() && !a.focal_shift) {
         return "--band: it sets the band of --focal-shift, which was not asked for";
     }
@@ -119,13 +122,14 @@ std::optional<std::string> figure_option_error(const AnalyzeArgs& a) {
 int run(AnalyzeArgs a) {
     // Before the analysis, so a bad path costs nothing.
     for (const std::string* file :
-         {&a.svg, &a.spots_svg, &a.fans_svg, &a.curves_svg, &a.focal_shift_svg}) {
+         {&a.svg, &a.spots_svg, &a.fans_svg, &a.curves_svg, &a.focal_shift_svg, &a.mtf_svg}) {
         if (!file->empty()) check_output_file(*file);
     }
     a.spots = a.spots || !a.spots_svg.empty();
     a.fans = a.fans || !a.fans_svg.empty();
     a.field_curves = a.field_curves || !a.curves_svg.empty();
     a.focal_shift = a.focal_shift || !a.focal_shift_svg.empty();
+    a.mtf = a.mtf || !a.mtf_svg.empty();
     if (const auto error = figure_option_error(a)) return usage_error(*error);
     const Scene scene = load_scene_file(a.scene, {.require_camera = false});
     std::optional<int> lens;
@@ -246,6 +250,9 @@ int run(AnalyzeArgs a) {
         if (!a.focal_shift_svg.empty()) {
             write_figure(a.focal_shift_svg, focal_shift_figure(*shift, a.unit), 1);
         }
+        if (!a.mtf_svg.empty()) {
+            write_figure(a.mtf_svg, mtf_figure(*diffraction, a.unit), 1);
+        }
         // The figures written: file, JSON key, what the table's last lines call them.
         const struct {
             const std::string& file;
@@ -254,7 +261,8 @@ int run(AnalyzeArgs a) {
         } figures[] = {{a.spots_svg, "spots_svg", "spot diagrams"},
                        {a.fans_svg, "fans_svg", "ray fans"},
                        {a.curves_svg, "curves_svg", "field curves"},
-                       {a.focal_shift_svg, "focal_shift_svg", "focal shift"}};
+                       {a.focal_shift_svg, "focal_shift_svg", "focal shift"},
+                       {a.mtf_svg, "mtf_svg", "MTF"}};
         if (a.json) {
             nlohmann::ordered_json j = report_json(system, report);
             j["scene"] = a.scene;
@@ -355,7 +363,7 @@ Action add_analyze_command(CLI::App& app) {
         "--psf", args->psf,
         "Diffraction on the axis at the primary wavelength: the point spread function's "
         "Strehl ratio, wavefront RMS and encircled energy at the best focus (lengths in mm)");
-    CLI::Option* mtf = cmd->add_flag(
+    cmd->add_flag(
         "--mtf", args->mtf,
         "Diffraction MTF on the axis at the primary wavelength, tangential and sagittal, beside "
         "the diffraction limit (frequencies in cycles/mm)");
@@ -363,8 +371,7 @@ Action add_analyze_command(CLI::App& app) {
                     "Frequencies of the MTF in cycles/mm, comma-separated (default: ten up to "
                     "the cutoff 1/(lambda N))")
         ->delimiter(',')
-        ->check(CLI::PositiveNumber)
-        ->needs(mtf);
+        ->check(CLI::PositiveNumber);
     cmd->add_flag(
         "--spots", args->spots,
         "Spot diagrams per field and wavelength: RMS and geometric radii about the centroid, "
@@ -387,6 +394,9 @@ Action add_analyze_command(CLI::App& app) {
     cmd->add_option("--focal-shift-svg", args->focal_shift_svg,
                     "Write the chromatic focal shift to this file, SVG or (.png) PNG; implies "
                     "--focal-shift");
+    cmd->add_option("--mtf-svg", args->mtf_svg,
+                    "Write the MTF on the axis beside the diffraction limit to this file, SVG or "
+                    "(.png) PNG; implies --mtf");
     cmd->add_option("--fan-points", args->fan_points,
                     "Points along each ray fan, evenly from -1 to 1 across the stop (default 21)")
         ->check(CLI::Range(2, 10001));

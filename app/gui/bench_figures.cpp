@@ -5,7 +5,6 @@
 #include <sstream>
 
 #include "analysis/lens_report.h"
-#include "analysis/plot_panel.h"
 #include "optics/glass.h"
 #include "util/error.h"
 
@@ -61,36 +60,6 @@ BenchFigures compute_bench_figures(const OpticalSystem& system, const BenchSetti
         out.diffraction = diffraction_figures(system, pupil, {});
     });
     return out;
-}
-
-RayDiagram mtf_figure(const DiffractionFigures& d) {
-    RayDiagram figure;
-    PlotPanel panel;
-    const MtfCurves& mtf = d.mtf;
-    panel.x_min = 0;
-    panel.x_max = mtf.frequencies.empty() ? 1.0 : mtf.frequencies.back();
-    panel.y_min = 0;
-    panel.y_max = 1;
-    panel.title = "MTF on axis, " + plot_text("%.1f nm", d.wavelength_nm) + ", Strehl " +
-                  plot_text("%.3f", d.strehl);
-    panel.x_min_label = plot_text("%g", 0.0);
-    panel.x_max_label = plot_text("%.4g cycles/mm", panel.x_max);
-    panel.y_max_label = plot_text("%g", 1.0);
-    panel.curves = {{mtf.frequencies, mtf.diffraction_limit, kPlotGrey, 0},
-                    {mtf.frequencies, mtf.tangential, kDiagramBlueF, 0},
-                    {mtf.frequencies, mtf.sagittal, kDiagramBlueF, 6}};
-    // One panel of ±1 about the origin, as the bench's other charts lay theirs out.
-    figure.z_min = -1.02;
-    figure.z_max = 1.02;
-    figure.y_min = -1.25;
-    figure.y_max = 1.15;
-    draw_plot_panel(figure, panel);
-    figure.legend = {{kPlotGrey, "diffraction limit"},
-                     {kDiagramBlueF, "tangential"},
-                     {kDiagramBlueF, "sagittal (dashed)"}};
-    figure.title = "MTF";
-    figure.scale_bar = 0;
-    return figure;
 }
 
 std::optional<std::vector<double>> parse_number_list(const std::string& text) {

@@ -39,9 +39,6 @@ struct BenchFigures {
 // Throws lenslab::Error when the first-order block cannot be set up (a bad stop, say).
 BenchFigures compute_bench_figures(const OpticalSystem& system, const BenchSettings& settings);
 
-// The MTF cuts of `d` beside the diffraction limit, in the bench's chart style.
-RayDiagram mtf_figure(const DiffractionFigures& d);
-
 // "0, 10.5, 14" → {0, 10.5, 14}; none when a part is not a number.
 std::optional<std::vector<double>> parse_number_list(const std::string& text);
 

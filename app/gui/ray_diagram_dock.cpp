@@ -255,7 +255,7 @@ void RayDiagramDock::show_bench() {
         m_curve_view->set_figure(std::nullopt);
     }
     if (b.diffraction) {
-        m_mtf_view->set_figure(mtf_figure(*b.diffraction), field_figure_width(1));
+        m_mtf_view->set_figure(mtf_figure(*b.diffraction, "mm"), field_figure_width(1));
     } else {
         m_mtf_view->set_figure(std::nullopt);
     }

@@ -114,4 +114,43 @@ RayDiagram focal_shift_figure(const FocalShift& s, const std::string& unit) {
     return d;
 }
 
+RayDiagram mtf_figure(const DiffractionFigures& d, const std::string& unit) {
+    RayDiagram figure;
+    PlotPanel panel;
+    const MtfCurves& mtf = d.mtf;
+    panel.x_min = 0;
+    panel.x_max = mtf.frequencies.empty() ? 1.0 : mtf.frequencies.back();
+    panel.y_min = 0;
+    panel.y_max = 1;
+    panel.title = "MTF on axis, " + plot_text("%.1f nm", d.wavelength_nm) + ", Strehl " +
+                  plot_text("%.3f", d.strehl);
+    panel.x_min_label = plot_text("%g", 0.0);
+    panel.x_max_label =
+        plot_text("%.4g", panel.x_max) + " cycles/" + (unit.empty() ? "unit" : unit);
+    panel.y_max_label = plot_text("%g", 1.0);
+    // Every MTF is 1 at frequency 0 (normalised): the curves start there.
+    const auto from_zero = [](std::vector<double> v, double at_zero) {
+        v.insert(v.begin(), at_zero);
+        return v;
+    };
+    const bool has_zero = !mtf.frequencies.empty() && mtf.frequencies.front() == 0.0;
+    const auto curve = [&](const std::vector<double>& values, DiagramColour colour, double dash) {
+        if (has_zero) return PlotCurve{mtf.frequencies, values, colour, dash};
+        return PlotCurve{from_zero(mtf.frequencies, 0.0), from_zero(values, 1.0), colour, dash};
+    };
+    panel.curves = {curve(mtf.diffraction_limit, kPlotGrey, 0),
+                    curve(mtf.tangential, kDiagramBlueF, 0), curve(mtf.sagittal, kDiagramBlueF, 6)};
+    // One panel of ±1 about the origin, as the bench's other charts lay theirs out.
+    figure.z_min = -1.02;
+    figure.z_max = 1.02;
+    figure.y_min = -1.25;
+    figure.y_max = 1.15;
+    draw_plot_panel(figure, panel);
+    // Two entries, so the legend fits one panel's width.
+    figure.legend = {{kPlotGrey, "diffraction limit"}, {kDiagramBlueF, "T solid, S dashed"}};
+    figure.title = "MTF";
+    figure.scale_bar = 0;
+    return figure;
+}
+
 }  // namespace lenslab

@@ -284,6 +284,15 @@ lenslab_cli_test(NAME analyze.focal_shift_svg
          --focal-shift-svg ${analyze_shift_svg}
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=focal shift written to ${analyze_shift_svg}"
            -DOUTPUT=${analyze_shift_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg")
+set(analyze_mtf_svg ${LENSLAB_CLI_OUT}/triplet_mtf.svg)
+lenslab_cli_test(NAME analyze.mtf_svg
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --unit mm --mtf-frequencies 20,40
+         --mtf-svg ${analyze_mtf_svg} --json
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=mtf,mtf_svg"
+           -DOUTPUT=${analyze_mtf_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg")
+lenslab_cli_test(NAME analyze.bad.mtf_frequencies_alone
+    ARGS analyze ${analyze_triplet} --mtf-frequencies 10
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--mtf-frequencies requires --mtf (or --mtf-svg)")
 set(analyze_spots_png ${LENSLAB_CLI_OUT}/triplet_spots.png)
 lenslab_cli_test(NAME analyze.spots_png
     ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 0,20 --unit mm
