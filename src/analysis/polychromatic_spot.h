@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "analysis/first_order.h"
+#include "analysis/field_beam.h"
 
 namespace lenslab {
 
@@ -20,6 +20,11 @@ struct PolychromaticSpot {
 
 // `weights` has one entry per wavelength (empty: all equal); `image_z` is the image plane in
 // system z. With no ray through, rms_radius is NaN.
+// The same from beams already traced, one per wavelength, `weights` in their order (empty:
+// all equal).
+PolychromaticSpot polychromatic_spot(const std::vector<FieldBeam>& beams,
+                                     const std::vector<double>& weights, double image_z);
+
 PolychromaticSpot polychromatic_rms_spot(const OpticalSystem& system, const FirstOrder& first_order,
                                          double field, const std::vector<double>& wavelengths,
                                          const std::vector<double>& weights, int rings,

@@ -28,11 +28,13 @@ SpotDiagrams spot_diagrams(const OpticalSystem& system, const FirstOrder& first_
     for (double field : options.fields) {
         FieldSpots f;
         f.field = field;
-        f.polychromatic = polychromatic_rms_spot(system, first_order, field, d.wavelengths,
-                                                 d.weights, d.rings, d.image_z);
         f.airy_radius = airy_radius_mm(d.primary_nm, d.working_f_number);
+        // Each wavelength's beam traced once, for its own spot and for the field's
+        // polychromatic one.
+        std::vector<FieldBeam> beams;
         for (double nm : d.wavelengths) {
-            const FieldBeam beam = trace_field_beam(system, first_order, field, nm, d.rings);
+            const FieldBeam& beam =
+                beams.emplace_back(trace_field_beam(system, first_order, field, nm, d.rings));
             WavelengthSpot s;
             s.field = field;
             s.wavelength_nm = nm;
@@ -44,6 +46,7 @@ SpotDiagrams spot_diagrams(const OpticalSystem& system, const FirstOrder& first_
             s.airy_radius = airy_radius_mm(nm, d.working_f_number);
             f.spots.push_back(std::move(s));
         }
+        f.polychromatic = polychromatic_spot(beams, d.weights, d.image_z);
         d.fields.push_back(std::move(f));
     }
     return d;
