@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "analysis/first_order_report.h"
+#include "math/constants.h"
 #include "scene/scene_error.h"
 
 namespace lenslab {
@@ -37,6 +38,22 @@ std::string shape_kind(const SystemSurface& s) {
 std::string length(double v) {
     if (std::abs(v) >= 1e4 || (v != 0 && std::abs(v) < 1e-3)) return fmt("%.4g", v);
     return fmt("%.4f", v);
+}
+
+// A GRIN lens's profile and, for a radial one, its pitch: the period 2 pi / sqrt(A) of a
+// paraxial ray's oscillation, and the lens's length in pitches (1/4: a collimated beam
+// focuses on the back face).
+nlohmann::ordered_json grin_json(const OpticalSystem& system, const SystemElement& e) {
+    const GrinProfile& g = *e.grin;
+    const double rod = system.surfaces[e.last_surface].z - system.surfaces[e.first_surface].z;
+    nlohmann::ordered_json j = {
+        {"profile", grin_kind_name(g.kind)}, {"n0", g.n0}, {"A", g.A}, {"length", rod}};
+    if (g.kind == GrinKind::Radial && g.A > 0) {
+        const double pitch = 2.0 * kPi / std::sqrt(g.A);
+        j["pitch"] = pitch;
+        j["pitches"] = rod / pitch;
+    }
+    return j;
 }
 
 }  // namespace
@@ -76,7 +93,9 @@ LensReport analyze_lens_system(const OpticalSystem& system, const LensReportOpti
         first.epd = 2.0 * r.aperture_radius;
     }
     r.first_order = first_order(system, r.paraxial, first);
-    r.seidel = seidel_sums(system, r.first_order, r.short_nm, r.long_nm);
+    // Seidel sums count surfaces alone; a gradient index adds transfer terms (Sands 1970)
+    // that are not modelled, so a GRIN system gets none.
+    if (!system.has_grin()) r.seidel = seidel_sums(system, r.first_order, r.short_nm, r.long_nm);
     r.real_chief = trace_real_chief_ray(system, r.first_order);
     // The axial beam fills the entrance pupil, as far as the lenses let it through.
     if (options.aperture_radius <= 0) {
@@ -115,7 +134,9 @@ nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport
     }
     ordered_json lenses = ordered_json::array();
     for (const SystemElement& e : system.elements) {
-        lenses.push_back({{"object", e.path}, {"name", e.name}, {"glass", e.glass}});
+        ordered_json lens = {{"object", e.path}, {"name", e.name}, {"glass", e.glass}};
+        if (e.grin) lens["grin"] = grin_json(system, e);
+        lenses.push_back(lens);
     }
     const ParaxialResult& p = r.paraxial;
     ordered_json first = first_order_json(system, r.first_order);
@@ -156,7 +177,7 @@ nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport
         {"lenses", lenses},
         {"ignored", system.ignored},
         {"first_order", first},
-        {"seidel", seidel_json(system, r.seidel)},
+        {"seidel", system.has_grin() ? ordered_json() : seidel_json(system, r.seidel)},
     };
 }
 
@@ -234,7 +255,12 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
         row("real chief ray image height", r.real_chief->image_height,
             "distortion " + fmt("%.6f", 100.0 * r.real_chief->distortion) + " %");
     }
-    if (seidel) out << "\n" << seidel_table(system, r.seidel);
+    if (seidel && system.has_grin()) {
+        out << "\nSeidel sums: not computed for gradient-index lenses (their transfer terms are "
+               "not modelled)\n";
+    } else if (seidel) {
+        out << "\n" << seidel_table(system, r.seidel);
+    }
     return out.str();
 }
 

@@ -59,6 +59,39 @@ struct Placed {
     double z_first, z_last;
 };
 
+// A lens of gradient index: the bench's paraxial and real traces need it symmetric about the
+// system's axis (a radial profile centred on it, or an axial one along it).
+void attach_grin(const Scene& scene, int object, const Vec3& axis, const Vec3& axis_point,
+                 SystemElement& e) {
+    const Material& m = scene.material_of(object);
+    const GrinProfile& g = *m.grin;
+    const std::string where = object_path(scene, object) + ".material";
+    if (g.kind != GrinKind::Radial && g.kind != GrinKind::Axial) {
+        throw SceneError(where, std::string("a ") + grin_kind_name(g.kind) +
+                                    " GRIN lens is not a coaxial system the bench measures "
+                                    "(radial and axial profiles are); trace or detect it");
+    }
+    const SceneObject& o = scene.objects[object];
+    const Vec3 centre = g.has_centre ? g.centre : o.shape->bounds().centre();
+    const double size = length(o.shape->bounds().extent());
+    const Vec3 offset = centre - axis_point;
+    const double off_axis = length(offset - axis * dot(offset, axis));
+    if (length(cross(normalize(g.axis), axis)) > kAxisAngleTolerance) {
+        throw SceneError(where, "the GRIN profile's axis is not the lens system's axis");
+    }
+    if (g.kind == GrinKind::Radial && off_axis > kAxisOffsetTolerance * size) {
+        throw SceneError(where, "the radial GRIN profile's centre lies " + format(off_axis) +
+                                    " from the lens system's axis");
+    }
+    e.grin = m.grin;
+    e.grin_centre = centre;
+    e.solid = o.shape;
+    std::ostringstream name;
+    name << "GRIN " << grin_kind_name(g.kind) << " n0 = " << format(g.n0)
+         << ", A = " << format(g.A);
+    e.glass = name.str();
+}
+
 SurfaceSpan measure_aim_span(const LensSurface& shape, double semi_diameter) {
     return measure_span(shape, std::min(2.0 * semi_diameter, 0.999 * shape.max_semi_diameter()));
 }
@@ -150,13 +183,25 @@ double paraxial_curvature(const LensSurface& s, double semi_diameter) {
 }
 
 double OpticalSystem::n_before(size_t i, double nm) const {
-    const int e = surfaces[i].element_before;
-    return e < 0 ? kOutsideIor : elements[e].index->n(nm);
+    return index_at(surfaces[i].element_before, {0, 0, surfaces[i].z}, nm);
 }
 
 double OpticalSystem::n_after(size_t i, double nm) const {
-    const int e = surfaces[i].element_after;
-    return e < 0 ? kOutsideIor : elements[e].index->n(nm);
+    return index_at(surfaces[i].element_after, {0, 0, surfaces[i].z}, nm);
+}
+
+double OpticalSystem::index_at(int element, const Vec3& p, double nm) const {
+    if (element < 0) return kOutsideIor;
+    const SystemElement& e = elements[element];
+    if (!e.grin) return e.index->n(nm);
+    // As the renderer scales a profile: n(p, lambda) = n(p) n(lambda) / n_d (scene/material.h).
+    const double scale = e.index->n(nm) / e.index->n(kLineD);
+    return scale * e.grin->index(to_world(p) - e.grin_centre);
+}
+
+bool OpticalSystem::has_grin() const {
+    return std::any_of(elements.begin(), elements.end(),
+                       [](const SystemElement& e) { return e.grin != nullptr; });
 }
 
 double OpticalSystem::max_semi_diameter() const {
@@ -245,6 +290,7 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
         const Material& m = scene.material_of(p.object);
         e.glass = m.glass.empty() ? m.index->describe() : m.glass;
         e.index = m.index;
+        if (m.grin) attach_grin(scene, p.object, axis, centre, e);
         e.semi_diameter = 0.5 * p.lens->prescription().diameter;
         system.elements.push_back(e);
         add_surfaces(p, static_cast<int>(system.elements.size()) - 1, system);

@@ -15,8 +15,10 @@
 #include <vector>
 
 #include "geometry/lens/lens_surface.h"
+#include "geometry/shape.h"
 #include "math/frame.h"
 #include "optics/glass.h"
+#include "optics/grin_profile.h"
 #include "scene/scene.h"
 
 namespace lenslab {
@@ -52,6 +54,12 @@ struct SystemElement {
     int first_surface = 0;  // the surfaces light meets entering and leaving it
     int last_surface = 0;
     double semi_diameter = 0.0;
+    // A gradient index about the system's axis (radial or axial, optics/grin_profile.h),
+    // null for homogeneous glass; its centre in world coordinates; and the lens solid, in
+    // which rays curve from one face to the other (analysis/grin_gap.h).
+    std::shared_ptr<const GrinProfile> grin;
+    Vec3 grin_centre;
+    std::shared_ptr<const Shape> solid;
 };
 
 struct OpticalSystem {
@@ -63,14 +71,19 @@ struct OpticalSystem {
     std::vector<std::string> ignored;
 
     double last_vertex() const { return surfaces.back().z; }
-    // Refractive index of the medium in front of / behind surface i at a wavelength (in air).
+    // Refractive index of the medium in front of / behind surface i at a wavelength (in air),
+    // at the surface's vertex (where a gradient index is, on the axis).
     double n_before(size_t i, double nm) const;
     double n_after(size_t i, double nm) const;
+    // Index of element `element` (-1: the outside) at point p (system coordinates).
+    double index_at(int element, const Vec3& p, double nm) const;
+    bool has_grin() const;
     // Largest semi-diameter of any element: the scale of the system across the axis.
     double max_semi_diameter() const;
 
     Vec3 to_world(const Vec3& p) const { return origin + frame.to_world(p); }
     Vec3 direction_to_world(const Vec3& d) const { return frame.to_world(d); }
+    Vec3 to_system(const Vec3& world) const { return frame.to_local(world - origin); }
 };
 
 // Builds the system from every lens in `scene`; they must share one axis. When `lens` (an
@@ -78,7 +91,7 @@ struct OpticalSystem {
 // the others out. The axis points the way the chosen (or first) lens's `axis` does: light
 // enters through its front face. Throws SceneError whose path names the offending object
 // ("objects[3]"): no lens, lenses off the common axis, overlapping lenses, an opaque lens,
-// a face that is not a surface of revolution.
+// a face that is not a surface of revolution, a gradient index not symmetric about the axis.
 OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens = {});
 
 // Curvature at the vertex of a surface of revolution: 1/R for spheres, conics and aspheres,

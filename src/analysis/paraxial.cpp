@@ -2,13 +2,15 @@
 
 #include <cmath>
 
+#include "analysis/grin_gap.h"
 #include "scene/scene_error.h"
 
 namespace lenslab {
 
 ParaxialResult paraxial_trace(const OpticalSystem& system, double nm) {
     // M = R_N T_{N-1} ... T_1 R_1 with refraction R = [[1, 0], [-φ, 1]], φ = c (n' - n),
-    // and transfer T = [[1, t / n'], [0, 1]] across the gap t behind a surface.
+    // and transfer T = [[1, t / n'], [0, 1]] across the gap t behind a surface (in a gradient
+    // index, analysis/grin_gap.h).
     double a = 1, b = 0, c = 0, d = 1;
     const size_t count = system.surfaces.size();
     for (size_t i = 0; i < count; ++i) {
@@ -17,9 +19,12 @@ ParaxialResult paraxial_trace(const OpticalSystem& system, double nm) {
         c -= phi * a;
         d -= phi * b;
         if (i + 1 < count) {
-            const double reduced = (system.surfaces[i + 1].z - s.z) / system.n_after(i, nm);
-            a += reduced * c;
-            b += reduced * d;
+            const GapTransfer t = gap_transfer(system, i, nm);
+            const double a2 = t.a * a + t.b * c, b2 = t.a * b + t.b * d;
+            c = t.c * a + t.d * c;
+            d = t.c * b + t.d * d;
+            a = a2;
+            b = b2;
         }
     }
     ParaxialResult r;

@@ -1,5 +1,7 @@
 #include "analysis/paraxial_ray.h"
 
+#include "analysis/grin_gap.h"
+
 namespace lenslab {
 
 double ParaxialRay::height_after(const OpticalSystem& system, double z) const {
@@ -11,11 +13,17 @@ ParaxialRay trace_paraxial_ray(const OpticalSystem& system, double nm, double y0
     ray.y0 = y0;
     ray.u0 = u0;
     double y = y0, u = u0;
-    double z = 0.0;
     for (size_t i = 0; i < system.surfaces.size(); ++i) {
         const SystemSurface& s = system.surfaces[i];
-        y += u * (s.z - z);
-        z = s.z;
+        if (i == 0) {
+            y += u * s.z;  // object space
+        } else {
+            const GapTransfer g = gap_transfer(system, i - 1, nm);
+            const double nu = ray.surfaces.back().n_after * u;
+            const double y_next = g.a * y + g.b * nu;
+            u = (g.c * y + g.d * nu) / system.n_before(i, nm);
+            y = y_next;
+        }
         ParaxialRaySurface at;
         at.y = y;
         at.u = u;

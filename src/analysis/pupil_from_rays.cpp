@@ -24,6 +24,12 @@ double path_through(const OpticalSystem& system, const RealRay& ray, double nm) 
 
 RayWavefront::RayWavefront(const OpticalSystem& system, const RayPupilOptions& options)
     : sampling_(options.sampling) {
+    if (system.has_grin()) {
+        throw SceneError("objects",
+                         "wavefront figures (OPD, PSF, MTF) are not computed through "
+                         "gradient-index lenses: the optical path along their curved rays is "
+                         "not measured yet");
+    }
     // make_pupil checks the sampling; an empty OPD costs one pass over the grid.
     const PupilFunction grid = make_pupil(sampling_, 1, 1, [](double, double) { return 0.0; });
     const double nm = options.wavelength_nm;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "analysis/grin_gap.h"
 #include "optics/refraction.h"
 
 namespace lenslab {
@@ -11,15 +12,16 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, R
     out.points.push_back(ray.origin);
     Vec3 p = ray.origin;
     Vec3 d = ray.direction;
+    bool on_surface = false;  // brought to surface i through a gradient index
     for (size_t i = 0; i < system.surfaces.size(); ++i) {
         const SystemSurface& s = system.surfaces[i];
         // Into the surface's own frame: vertex at the origin, its +z along `orientation`.
         // Surfaces of revolution need no turn about the axis.
         const double o = s.orientation;
-        const Ray local{{p.x, p.y, o * (p.z - s.z)}, {d.x, d.y, o * d.z}};
-        double t;
+        Ray local{{p.x, p.y, o * (p.z - s.z)}, {d.x, d.y, o * d.z}};
+        double t = 0;
         const SurfaceSpan& span = rims == Rims::Clip ? s.span : s.aim_span;
-        if (!s.shape->intersect(local, span, 0.0, INFINITY, t)) {
+        if (!on_surface && !s.shape->intersect(local, span, 0.0, INFINITY, t)) {
             out.fate = RayFate::Missed;
             out.surface = static_cast<int>(i);
             out.direction = d;
@@ -30,7 +32,8 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, R
         const Vec3 nl = s.shape->normal(local.at(t));
         Vec3 n{nl.x, nl.y, o * nl.z};
         if (dot(n, d) > 0) n = -n;  // facing the arriving ray
-        const auto refracted = refract(d, n, system.n_before(i, nm) / system.n_after(i, nm));
+        const double n1 = system.index_at(s.element_before, p, nm);
+        const auto refracted = refract(d, n, n1 / system.index_at(s.element_after, p, nm));
         if (!refracted) {
             out.fate = RayFate::Reflected;
             out.surface = static_cast<int>(i);
@@ -38,6 +41,18 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, R
             return out;
         }
         d = *refracted;
+        on_surface = grin_gap(system, i);
+        if (on_surface) {
+            const GrinTransit transit = trace_grin_gap(system, i, p, d, nm);
+            if (!transit.arrived) {  // out through the rim: the lens edge stops it
+                out.fate = RayFate::Missed;
+                out.surface = static_cast<int>(i + 1);
+                out.direction = d;
+                return out;
+            }
+            p = transit.point;
+            d = transit.direction;
+        }
     }
     out.direction = d;
     return out;
