@@ -35,11 +35,15 @@ GapTransfer gap_transfer(const OpticalSystem& system, size_t i, double nm) {
 }
 
 GrinTransit trace_grin_gap(const OpticalSystem& system, size_t i, const Vec3& point,
-                           const Vec3& direction, double nm) {
+                           const Vec3& direction, double nm, std::vector<Vec3>* path) {
     const SystemElement& e = system.elements[system.surfaces[i].element_after];
     const GrinMedium medium{e.grin.get(), e.grin_centre, e.index->n(nm) / e.index->n(kLineD)};
+    std::vector<Vec3> steps;
     const GrinExit exit = trace_grin_ray(medium, *e.solid, system.to_world(point),
-                                         system.direction_to_world(direction));
+                                         system.direction_to_world(direction), {},
+                                         path ? &steps : nullptr);
+    // The first point is `point` itself, already on the path.
+    for (size_t k = 1; k < steps.size(); ++k) path->push_back(system.to_system(steps[k]));
     GrinTransit out;
     out.steps = exit.steps;
     if (!exit.left) return out;

@@ -8,6 +8,8 @@
 // in an axial profile, n linear in z, n u is constant and y' = y + nu * integral dz / n.
 // Real rays follow the ray equation through the lens solid (scene/grin_ray.h).
 
+#include <vector>
+
 #include "analysis/optical_system.h"
 
 namespace lenslab {
@@ -28,8 +30,11 @@ struct GrinTransit {
     int steps = 0;  // integration steps
 };
 
+// `path`, when given, is extended by the integrator's points after `point` (system
+// coordinates), to the exit point.
 GrinTransit trace_grin_gap(const OpticalSystem& system, size_t i, const Vec3& point,
-                           const Vec3& direction, double wavelength_nm);
+                           const Vec3& direction, double wavelength_nm,
+                           std::vector<Vec3>* path = nullptr);
 
 // Whether the medium behind surface i (before surface i + 1) has a gradient index.
 bool grin_gap(const OpticalSystem& system, size_t i);

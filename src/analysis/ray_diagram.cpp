@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/grin_gap.h"
 #include "analysis/real_ray.h"
 
 namespace lenslab {
@@ -64,6 +65,11 @@ Vec3 clipped_end(const SystemSurface& s, const RealRay& r) {
     return p + d * std::max(0.0, t);
 }
 
+// A ray stopped where it left a gradient-index lens through its rim: its path ends there.
+bool left_through_grin_rim(const OpticalSystem& system, const RealRay& r) {
+    return r.surface > 0 && grin_gap(system, r.surface - 1);
+}
+
 }  // namespace
 
 RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& report,
@@ -122,13 +128,14 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     for (const auto& [nm, colour] : lines) {
         for (int k = 0; k < n; ++k) {
             const double y0 = -h + 2.0 * h * k / (n - 1);
-            const RealRay r = trace_real_ray(system, {{0, y0, z_start}, {0, 0, 1}}, nm);
+            std::vector<Vec3> path;  // curved through gradient-index lenses
+            const RealRay r =
+                trace_real_ray(system, {{0, y0, z_start}, {0, 0, 1}}, nm, Rims::Clip, &path);
             DiagramPath ray;
             ray.stroke = colour;
             ray.width = 1.1;
             ray.points.push_back({d.z_min, y0});
-            for (size_t i = 1; i < r.points.size(); ++i)
-                ray.points.push_back({r.points[i].z, r.points[i].y});
+            for (size_t i = 1; i < path.size(); ++i) ray.points.push_back({path[i].z, path[i].y});
             if (r.fate == RayFate::Passed && r.direction.z > 0) {
                 const Vec3 end = at_plane(r.exit_point(), r.direction, d.z_max);
                 ray.points.push_back({end.z, end.y});
@@ -142,7 +149,7 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
                     back.points = {{r.exit_point().z, r.exit_point().y}, {start.z, start.y}};
                     d.paths.push_back(back);
                 }
-            } else if (r.fate == RayFate::Missed) {
+            } else if (r.fate == RayFate::Missed && !left_through_grin_rim(system, r)) {
                 const Vec3 stop = clipped_end(system.surfaces[r.surface], r);
                 ray.points.push_back({stop.z, stop.y});
             }

@@ -7,9 +7,11 @@
 
 namespace lenslab {
 
-RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, Rims rims) {
+RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, Rims rims,
+                       std::vector<Vec3>* path) {
     RealRay out;
     out.points.push_back(ray.origin);
+    if (path) path->assign(1, ray.origin);
     Vec3 p = ray.origin;
     Vec3 d = ray.direction;
     bool on_surface = false;  // brought to surface i through a gradient index
@@ -29,6 +31,7 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, R
         }
         p = p + d * t;
         out.points.push_back(p);
+        if (path && !on_surface) path->push_back(p);
         const Vec3 nl = s.shape->normal(local.at(t));
         Vec3 n{nl.x, nl.y, o * nl.z};
         if (dot(n, d) > 0) n = -n;  // facing the arriving ray
@@ -43,7 +46,7 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, R
         d = *refracted;
         on_surface = grin_gap(system, i);
         if (on_surface) {
-            const GrinTransit transit = trace_grin_gap(system, i, p, d, nm);
+            const GrinTransit transit = trace_grin_gap(system, i, p, d, nm, path);
             if (!transit.arrived) {  // out through the rim: the lens edge stops it
                 out.fate = RayFate::Missed;
                 out.surface = static_cast<int>(i + 1);

@@ -29,8 +29,10 @@ enum class Rims {
 };
 
 // Traces `ray` (system coordinates, unit direction with d.z > 0) at a wavelength (in air).
+// `path`, when given, receives the ray as a polyline to draw: the points of `points`, with
+// the integrator's points between two surfaces where a gradient index curves the ray.
 RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double wavelength_nm,
-                       Rims rims = Rims::Clip);
+                       Rims rims = Rims::Clip, std::vector<Vec3>* path = nullptr);
 
 // Where a ray leaving along `direction` from `point` crosses the plane z = z_plane (x, y).
 Vec3 at_plane(const Vec3& point, const Vec3& direction, double z_plane);
