@@ -612,12 +612,15 @@ void PropertyPanel::build_material(const std::string& prefix) {
     add_glass_choice(prefix + "glass", material_key,
                      glass && glass->is_string() ? glass->get<std::string>() : "");
     const json* ior = value_at(prefix + "ior");
-    if (!glass && (!ior || ior->is_number())) {
+    // A gradient index replaces the constant one (a glass still gives it its dispersion).
+    const bool constant = !glass && !value_at(prefix + "grin");
+    if (constant && (!ior || ior->is_number())) {
         add_param(declared.param("ior"), prefix);
-    } else if (!glass) {
+    } else if (constant) {
         m_form->addRow(tr("Refractive index"),
                        new QLabel(tr("dispersion model (edit the file)"), m_form_widget));
     }
+    build_grin(prefix);
     // Shown as 0 while there is no emission (the intensity an emission block defaults to is 1).
     const json* emission = value_at(prefix + "emission");
     ParamSpec intensity = emission_spec().param("intensity");
@@ -908,6 +911,32 @@ void PropertyPanel::build_light() {
     // The colour is one of the spectrum's forms, edited with it; a laser has its wavelength.
     build_declared(*spec, {"color"});
     if (type != "laser") build_spectrum("");
+}
+
+void PropertyPanel::build_grin(const std::string& prefix) {
+    // "uniform", or a gradient-index profile; picking one starts from a block that reads, and
+    // the profile's own fields follow (material_spec.h says which).
+    const json* profile = value_at(prefix + "grin/profile");
+    const std::string kind =
+        profile && profile->is_string() ? profile->get<std::string>() : "uniform";
+    QStringList kinds{"uniform"};
+    for (const std::string& k : grin_spec().param("profile").choices)
+        kinds << QString::fromStdString(k);
+    const std::string material_key = prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1);
+    add_choice(tr("Index profile"), prefix + "grin/profile", kind, kinds,
+               [this, material_key](const std::string& chosen) {
+                   json material = *value_at(material_key);
+                   material.erase("grin");
+                   if (chosen != "uniform") material["grin"] = grin_starting_block(chosen);
+                   commit(material_key, material, tr("index profile"));
+               });
+    if (kind == "uniform") return;
+    for (const std::string& key : grin_keys_of(kind))
+        add_param(grin_spec().param(key), prefix + "grin/");
+    if (value_at(prefix + "grin/center")) {
+        add_vec3(tr("Profile centre"), prefix + "grin/center", json::array({0, 0, 0}), -1e6, 1e6,
+                 grin_spec().param("center").doc);
+    }
 }
 
 void PropertyPanel::build_spectrum(const std::string& prefix) {

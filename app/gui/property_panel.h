@@ -114,6 +114,8 @@ private:
     void build_detector();
     void build_light();
     void build_spectrum(const std::string& prefix);
+    // A material's gradient index (docs/grin.md): its profile and that profile's parameters.
+    void build_grin(const std::string& prefix);
 
     const nlohmann::json* value_at(const std::string& key) const;
 

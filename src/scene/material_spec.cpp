@@ -37,25 +37,31 @@ ElementSpec declare_grin() {
     ElementSpec s{"grin", "a GRIN index", {}, {}};
     ParamSpec radius = number_param("radius", 1.0)
                            .above(0)
-                           .describe("R of the luneburg and fisheye profiles (required by them)");
+                           .describe("R of the luneburg and fisheye profiles (required by them)")
+                           .in_editor("Profile radius R");
     radius.fallback = nullptr;
     radius.auto_meaning = "—";
     s.params = {
         choice_param("profile", "luneburg", {"luneburg", "fisheye", "radial", "axial", "formula"})
             .needed()
             .describe("the index profile n(x, y, z)"),
-        number_param("n0", 1.5).above(0).describe(
-            "index on the axis or at the centre (fisheye, radial, axial)"),
-        number_param("A", 0.0).describe(
-            "radial: n0 (1 - A r^2/2), per unit^2; axial: n0 + A z, per unit"),
+        number_param("n0", 1.5)
+            .above(0)
+            .describe("index on the axis or at the centre (fisheye, radial, axial)")
+            .in_editor("Index n0"),
+        number_param("A", 0.0)
+            .describe("radial: n0 (1 - A r^2/2), per unit^2; axial: n0 + A z, per unit")
+            .in_editor("Gradient A"),
         radius,
         nested_param(ParamKind::String, "formula")
-            .describe("the index as a formula of x, y, z (required by the formula profile)"),
+            .describe("the index as a formula of x, y, z (required by the formula profile)")
+            .in_editor("Index n(x, y, z)"),
         nested_param(ParamKind::Point, "center")
             .meaning_auto("the object's centre")
             .describe("the profile's centre"),
         vector_param(ParamKind::Direction, "axis", nlohmann::json::array({0, 0, 1}))
-            .describe("the profile's axis (radial, axial)"),
+            .describe("the profile's axis (radial, axial)")
+            .in_editor("Profile axis"),
     };
     return s;
 }
@@ -94,6 +100,26 @@ const ElementSpec& grin_spec() {
 const ElementSpec& emission_spec() {
     static const ElementSpec spec = declare_emission();
     return spec;
+}
+
+std::vector<std::string> grin_keys_of(const std::string& profile) {
+    if (profile == "luneburg") return {"radius"};
+    if (profile == "fisheye") return {"n0", "radius"};
+    if (profile == "radial" || profile == "axial") return {"n0", "A", "axis"};
+    if (profile == "formula") return {"formula"};
+    return {};
+}
+
+nlohmann::json grin_starting_block(const std::string& profile) {
+    // Values that make a visible lens of a unit-sized object: a radial rod of pitch about 20,
+    // an axial gradient of 0.05 per unit, a formula equal to crown glass.
+    nlohmann::json block = {{"profile", profile}};
+    if (profile == "luneburg") block["radius"] = 1.0;
+    if (profile == "fisheye") block.update({{"n0", 2.0}, {"radius", 1.0}});
+    if (profile == "radial") block.update({{"n0", 1.6}, {"A", 0.1}});
+    if (profile == "axial") block.update({{"n0", 1.5}, {"A", 0.05}});
+    if (profile == "formula") block["formula"] = "1.5 + 0.02 * z";
+    return block;
 }
 
 }  // namespace lenslab

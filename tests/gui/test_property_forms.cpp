@@ -165,6 +165,47 @@ private slots:
         check_form(w, lenslab::material_spec(), {});
     }
 
+    // A material's index profile: each GRIN profile, picked, writes a block the scene reader
+    // takes and shows that profile's fields with its values; "uniform" removes the block.
+    void grin_form_follows_the_profile() {
+        QTemporaryDir dir;
+        MainWindow w;
+        const json glass = {{"transparency", 1}, {"ior", 1.5}};
+        open_objects(w, dir,
+                     {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 0.5},
+                       {"material", glass}}});
+        for (const std::string& profile : lenslab::grin_spec().param("profile").choices) {
+            const QByteArray where = QByteArray::fromStdString(profile);
+            auto* box = w.panel()->findChild<QComboBox*>("field:material/grin/profile");
+            QVERIFY2(box, where.constData());
+            box->setCurrentText(QString::fromStdString(profile));
+            emit box->activated(box->currentIndex());
+            const json& material = w.document()->json()["objects"][0]["material"];
+            QCOMPARE(material.value("grin", json()), lenslab::grin_starting_block(profile));
+            QVERIFY2(w.document()->scene().material_of(0).grin, where.constData());
+            for (const std::string& key : lenslab::grin_keys_of(profile)) {
+                const QString name = QString::fromStdString("field:material/grin/" + key);
+                const ParamSpec& p = lenslab::grin_spec().param(key);
+                if (p.kind == ParamKind::String) {
+                    auto* edit = w.panel()->findChild<QLineEdit*>(name);
+                    QVERIFY2(edit, qPrintable(name));
+                    QCOMPARE(edit->text().toStdString(), material["grin"][key].get<std::string>());
+                } else if (p.kind == ParamKind::Direction) {
+                    QVERIFY2(w.panel()->findChild<NumberField*>(name + ".z"), qPrintable(name));
+                } else {
+                    auto* field = w.panel()->findChild<NumberField*>(name);
+                    QVERIFY2(field, qPrintable(name));
+                    QCOMPARE(field->value(), material["grin"][key].get<double>());
+                }
+            }
+        }
+        auto* box = w.panel()->findChild<QComboBox*>("field:material/grin/profile");
+        box->setCurrentText("uniform");
+        emit box->activated(box->currentIndex());
+        QVERIFY(!w.document()->json()["objects"][0]["material"].contains("grin"));
+        QVERIFY(!w.panel()->findChild<NumberField*>("field:material/grin/n0"));
+    }
+
     // A declared type with no form of its own (the box) gets its declaration's fields.
     void box_form_falls_back_to_its_declaration() {
         QTemporaryDir dir;
