@@ -34,8 +34,10 @@ bool next_interaction(const Scene& scene, const Ray& ray, double lambda_nm, Inte
     out.grin_steps = 0;
     if (interaction_inside_grin(out, ray)) {
         const GrinMedium medium = grin_medium_of(*out.object, *out.material, lambda_nm);
+        GrinRayOptions options;
+        options.tolerance = scene.render.grin_tolerance;
         const GrinExit exit = trace_grin_ray(medium, *out.object->shape, ray.origin,
-                                             normalize(ray.direction), {}, grin_path);
+                                             normalize(ray.direction), options, grin_path);
         if (!exit.left) {
             // Trapped (or no medium to follow): its light stays inside, absorbed where the
             // straight ray would have met the surface; nothing goes on from there.

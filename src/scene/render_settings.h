@@ -28,6 +28,9 @@ struct RenderSettings {
     Rgb background{0, 0, 0};             // radiance of rays that leave the scene
     int light_samples = 1;               // shadow rays per area light per camera sample
     double min_weight = 1e-4;            // specular branches carrying less are not followed
+    // Local error of a step through a GRIN medium, relative to the solid's size: far below a
+    // pixel (the bench traces at 1e-9, scene/grin_ray.h).
+    double grin_tolerance = 1e-7;
     std::string integrator = "whitted";  // whitted | photon_map | sppm | path
 
     // Photon mapping (integrator photon_map).

@@ -47,6 +47,12 @@ ElementSpec declare_render_settings() {
             .because("each camera ray then spawns at most about a million rays")
             .describe("Specular branches carrying less than this share are not followed")
             .in_editor("Min branch weight", 6),
+        number_param("grin_tolerance", d.grin_tolerance)
+            .at_least(1e-12)
+            .at_most(1e-3)
+            .describe("Local error of a step through a gradient-index medium, relative to the "
+                      "solid's size")
+            .in_editor("GRIN tolerance", 12),
         choice_param("integrator", d.integrator, kIntegratorNames)
             .describe("Rendering algorithm: whitted, photon_map, sppm or path")
             .in_editor("Integrator")

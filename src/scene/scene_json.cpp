@@ -82,6 +82,7 @@ void read_render(const json& j, RenderSettings& s) {
     s.background = r.colour("background");
     s.light_samples = static_cast<int>(r.whole("light_samples"));
     s.min_weight = r.real("min_weight");
+    s.grin_tolerance = r.real("grin_tolerance");
     s.integrator = r.text("integrator");
     s.photons = r.whole("photons");
     s.radius = r.real("radius");
