@@ -39,7 +39,8 @@ int run(const AnalyzeArgs& args) {
         if (!file->empty()) check_output_file(*file);
     }
     if (const auto error = figure_option_error(a)) return analyze_usage_error(*error);
-    const Scene scene = load_scene_file(args.scene, {.require_camera = false});
+    const Scene scene =
+        load_scene_file(args.scene, {.require_camera = false, .build_for_rendering = false});
     AnalyzeResults results;
     try {
         results = analyze_scene(scene, a, args.scene);
