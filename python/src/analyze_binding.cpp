@@ -90,8 +90,8 @@ std::string document(const AnalyzeRun& run, const std::vector<std::string>& keys
         if (!j.contains(key)) {
             std::string known;
             for (const auto& item : j.items()) known += (known.empty() ? "" : ", ") + item.key();
-            throw py::value_error("report: no key '" + key + "' in this analysis (keys: " +
-                                  known + ")");
+            throw py::value_error("report: no key '" + key + "' in this analysis (keys: " + known +
+                                  ")");
         }
     }
     nlohmann::ordered_json out = nlohmann::ordered_json::object();

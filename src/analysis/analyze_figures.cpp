@@ -23,7 +23,7 @@ std::string field_svg(const RayDiagram& figure, int panels) {
 }  // namespace
 
 const std::vector<std::string>& bench_figure_names() {
-    static const std::vector<std::string> names{"ray_diagram", "spots",       "fans",
+    static const std::vector<std::string> names{"ray_diagram",  "spots",       "fans",
                                                 "field_curves", "focal_shift", "mtf"};
     return names;
 }

@@ -6,8 +6,21 @@
 
 namespace lenslab {
 
+std::vector<double> index_ratios(const OpticalSystem& system, double nm) {
+    std::vector<double> ratios(system.surfaces.size());
+    for (size_t i = 0; i < ratios.size(); ++i)
+        ratios[i] = system.n_before(i, nm) / system.n_after(i, nm);
+    return ratios;
+}
+
 RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, Rims rims) {
+    return trace_real_ray(system, ray, index_ratios(system, nm), rims);
+}
+
+RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray,
+                       const std::vector<double>& ratios, Rims rims) {
     RealRay out;
+    out.points.reserve(system.surfaces.size() + 1);
     out.points.push_back(ray.origin);
     Vec3 p = ray.origin;
     Vec3 d = ray.direction;
@@ -30,7 +43,7 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, R
         const Vec3 nl = s.shape->normal(local.at(t));
         Vec3 n{nl.x, nl.y, o * nl.z};
         if (dot(n, d) > 0) n = -n;  // facing the arriving ray
-        const auto refracted = refract(d, n, system.n_before(i, nm) / system.n_after(i, nm));
+        const auto refracted = refract(d, n, ratios[i]);
         if (!refracted) {
             out.fate = RayFate::Reflected;
             out.surface = static_cast<int>(i);

@@ -32,6 +32,14 @@ enum class Rims {
 RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double wavelength_nm,
                        Rims rims = Rims::Clip);
 
+// n_before / n_after at each surface at a wavelength (in air): what trace_real_ray refracts
+// with, worked out once for the many rays of a beam.
+std::vector<double> index_ratios(const OpticalSystem& system, double wavelength_nm);
+
+// As above with index_ratios(system, wavelength_nm) given: the same ray, bit for bit.
+RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray,
+                       const std::vector<double>& ratios, Rims rims = Rims::Clip);
+
 // Where a ray leaving along `direction` from `point` crosses the plane z = z_plane (x, y).
 Vec3 at_plane(const Vec3& point, const Vec3& direction, double z_plane);
 
