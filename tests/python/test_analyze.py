@@ -168,3 +168,13 @@ def test_a_bad_scene_raises_with_the_json_path():
     with pytest.raises(lenslab.SceneError) as e:
         lenslab.analyze(scene)
     assert e.value.path == "objects[0].thickness"
+
+
+def test_calls_on_threads_give_the_same_documents():
+    # The GIL is released while the bench computes, so a thread pool runs calls side by side.
+    from concurrent.futures import ThreadPoolExecutor
+    stops = [1, 2, 3] * 4
+    alone = [lenslab.analyze(SCENE, stop=s, spots=True) for s in stops]
+    with ThreadPoolExecutor(4) as pool:
+        pooled = list(pool.map(lambda s: lenslab.analyze(SCENE, stop=s, spots=True), stops))
+    assert pooled == alone
