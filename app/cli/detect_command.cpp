@@ -9,6 +9,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "analysis/detection_run.h"
 #include "analysis/detector.h"
 #include "analysis/detector_files.h"
 #include "commands.h"
@@ -36,17 +37,7 @@ extern "C" void on_detect_interrupt(int) {
 
 int run(const DetectArgs& a, const RenderOverrides& overrides) {
     const Scene scene = overrides.load(a.scene);
-    if (detector_objects(scene).empty()) {
-        std::cerr << "lenslab: error: " << a.scene
-                  << ": no detector in the scene (mark a triangle, disc or rectangle with "
-                     "\"detector\": true)\n";
-        return 1;
-    }
-    if (photon_light_count(scene) == 0) {
-        std::cerr << "lenslab: error: " << a.scene
-                  << ": no light to measure (add a point light, a beam or an emitting sphere)\n";
-        return 1;
-    }
+    check_detectable(scene, a.scene);
     // Before the measurement, not after it: the folder, and the files in it if it exists.
     check_output_directory(a.output);
     if (std::filesystem::is_directory(a.output)) {
@@ -54,13 +45,7 @@ int run(const DetectArgs& a, const RenderOverrides& overrides) {
             for (const std::string& file : detector_file_paths(a.output, stem))
                 check_output_file(file);
     }
-    DetectionSettings settings;
-    settings.photons_per_light = scene.render.photons;
-    settings.caustic_photons_per_light = scene.render.caustic_photons;
-    settings.aim = scene.render.aim_photons;
-    settings.seed = scene.render.seed;
-    settings.max_depth = scene.render.max_depth;
-    settings.threads = a.threads;
+    const DetectionSettings settings = detection_settings(scene, a.threads);
 
     int last = -1;
     RenderControl control(a.quiet ? RenderControl::ProgressFn{}
@@ -85,21 +70,14 @@ int run(const DetectArgs& a, const RenderOverrides& overrides) {
 
     create_output_directory(a.output);
     const std::vector<std::string> stems = detector_file_stems(result);
-    nlohmann::json doc{{"scene", a.scene},
-                       {"photons_per_light", settings.photons_per_light},
-                       {"photons_emitted", result.photons_emitted},
-                       {"photons_aimed", result.photons_aimed},
-                       {"seed", settings.seed},
-                       {"seconds", result.seconds},
-                       {"detectors", nlohmann::json::array()}};
+    nlohmann::json doc = detection_json(a.scene, settings, result);
     for (size_t i = 0; i < result.detectors.size(); ++i) {
         const DetectorMeasurement& m = result.detectors[i];
         write_detector_files(m, settings, a.output, stems[i],
                              a.log ? ColourScale::Log : ColourScale::Linear);
-        nlohmann::json d = detector_summary_json(m);
         const std::string base = (std::filesystem::path(a.output) / stems[i]).string();
-        d["files"] = {{"csv", base + ".csv"}, {"exr", base + ".exr"}, {"png", base + ".png"}};
-        doc["detectors"].push_back(d);
+        doc["detectors"][i]["files"] = {
+            {"csv", base + ".csv"}, {"exr", base + ".exr"}, {"png", base + ".png"}};
         if (!a.json) {
             std::cout << detector_summary_text(m) << "  wrote " << base << ".csv, " << base
                       << ".exr, " << base << ".png\n";

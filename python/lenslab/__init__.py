@@ -8,7 +8,8 @@ See docs/python.md.
 """
 
 from ._lenslab import Error, Glass, SceneError, glass
-from ._optics import analyze, trace
+from ._detect import Detection, Detector, detect
+from ._optics import Analysis, analyze, trace
 from ._render import render, write_image
 from ._scene import Scene
 
@@ -17,5 +18,5 @@ for _exported in (Error, Glass, SceneError):
     _exported.__module__ = __name__
 del _exported
 
-__all__ = ["Error", "Glass", "Scene", "SceneError", "analyze", "glass", "render", "trace",
-           "write_image"]
+__all__ = ["Analysis", "Detection", "Detector", "Error", "Glass", "Scene", "SceneError",
+           "analyze", "detect", "glass", "render", "trace", "write_image"]

@@ -77,13 +77,94 @@ def trace(
     max_depth: int = ...,
     min_weight: float = ...,
 ) -> dict[str, Any]: ...
+class Analysis(Mapping[str, Any]):
+    @property
+    def spot_points(self) -> dict[tuple[float, float], npt.NDArray[np.float64]]: ...
+    def figure(self, name: str) -> str: ...
+    def __getitem__(self, key: str) -> Any: ...
+    def __iter__(self) -> Iterator[str]: ...
+    def __len__(self) -> int: ...
+
 def analyze(
     scene_or_file: _SceneSource,
     *,
     wavelength: Optional[float] = ...,
+    wavelengths: Optional[Sequence[float]] = ...,
+    aperture: Optional[float] = ...,
     lens: Optional[str] = ...,
+    unit: Optional[str] = ...,
     stop: int = ...,
     epd: Optional[float] = ...,
     f_number: Optional[float] = ...,
+    object_distance: Optional[float] = ...,
     fields: Optional[Sequence[float]] = ...,
-) -> dict[str, Any]: ...
+    field_heights: Optional[Sequence[float]] = ...,
+    seidel: bool = ...,
+    psf: bool = ...,
+    mtf: bool = ...,
+    mtf_frequencies: Optional[Sequence[float]] = ...,
+    spots: bool = ...,
+    rings: int = ...,
+    fans: bool = ...,
+    fan_points: int = ...,
+    image_distance: Optional[float] = ...,
+    field_curves: bool = ...,
+    field_curve_points: int = ...,
+    focal_shift: bool = ...,
+    band: Optional[Sequence[float]] = ...,
+    focal_shift_points: int = ...,
+    wavelength_weights: Optional[Sequence[float]] = ...,
+    report: Optional[Sequence[str]] = ...,
+) -> Analysis: ...
+
+class Detector:
+    summary: dict[str, Any]
+    extent: tuple[float, float, float, float]
+    origin: tuple[float, float, float]
+    u_axis: tuple[float, float, float]
+    v_axis: tuple[float, float, float]
+    band_edges: list[float]
+    @property
+    def name(self) -> str: ...
+    @property
+    def units(self) -> dict[str, str]: ...
+    @property
+    def total_power(self) -> float: ...
+    @property
+    def irradiance(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def band_irradiance(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def cell_area(self) -> npt.NDArray[np.float64]: ...
+
+class Detection(Mapping[str, Any]):
+    detectors: list[Detector]
+    def detector(self, name: str) -> Detector: ...
+    @property
+    def irradiance(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def band_irradiance(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def cell_area(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def extent(self) -> tuple[float, float, float, float]: ...
+    @property
+    def units(self) -> dict[str, str]: ...
+    @property
+    def total_power(self) -> float: ...
+    def save(self, folder: _PathLike, *, log: bool = ...) -> list[list[str]]: ...
+    def __getitem__(self, key: str) -> Any: ...
+    def __iter__(self) -> Iterator[str]: ...
+    def __len__(self) -> int: ...
+
+def detect(
+    scene: _SceneSource,
+    *,
+    photons: Optional[int] = ...,
+    caustic_photons: Optional[int] = ...,
+    aim_photons: Optional[bool] = ...,
+    seed: Optional[int] = ...,
+    max_depth: Optional[int] = ...,
+    threads: Optional[int] = ...,
+    progress: Optional[Callable[[float], Any]] = ...,
+) -> Detection: ...

@@ -3,7 +3,12 @@
 from __future__ import annotations
 
 import json
+import math
+import numbers
+from collections.abc import Iterable, Iterator, Mapping
 from typing import Any, Optional, Sequence
+
+import numpy as np
 
 from . import _lenslab
 from ._scene import SceneSource, source_json
@@ -20,25 +25,145 @@ def trace(scene: SceneSource, origin: Sequence[float], direction: Sequence[float
                                      min_weight))
 
 
-def _positive(name: str, value: Optional[float]) -> float:
-    if value is None:
-        return 0.0
-    if not value > 0:
+def _number(name: str, value: Any, *, positive: bool = False) -> float:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise ValueError(f"{name}: must be a number, got {value!r}")
+    value = float(value)
+    if positive and not value > 0:
         raise ValueError(f"{name}: must be a positive number, got {value!r}")
-    return float(value)
+    if not math.isfinite(value):
+        raise ValueError(f"{name}: must be a finite number, got {value!r}")
+    return value
+
+
+def _numbers(name: str, values: Any, *, positive: bool = False) -> list[float]:
+    if isinstance(values, np.ndarray):
+        values = values.ravel().tolist()
+    if isinstance(values, (str, bytes)) or not isinstance(values, Iterable):
+        raise ValueError(f"{name}: must be a sequence of numbers, got {values!r}")
+    return [_number(name, v, positive=positive) for v in values]
+
+
+def _whole(name: str, value: Any, low: Optional[int] = None, high: Optional[int] = None) -> int:
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise ValueError(f"{name}: must be a whole number, got {value!r}")
+    if (low is not None and value < low) or (high is not None and value > high):
+        raise ValueError(f"{name}: must be from {low} to {high}, got {value!r}")
+    return int(value)
+
+
+def _excludes(given: dict[str, Any], name: str, others: Sequence[str], why: str) -> None:
+    for other in others:
+        if given.get(name) is not None and given.get(other) is not None:
+            raise ValueError(f"{name} excludes {other} ({why})")
+
+
+class Analysis(Mapping):
+    """The result of lenslab.analyze: a read-only dict equal to what `lenslab analyze FILE
+    --json` prints with the same options (less the names of figure files, which Python asks
+    for with figure()); spot_points, the spot diagrams' ray hits; figure(name), a figure as
+    SVG text."""
+
+    def __init__(self, run: Any, report: Optional[Sequence[str]]) -> None:
+        self._run = run
+        self._data: dict[str, Any] = json.loads(run.document(list(report or [])))
+        self._spot_points: Optional[dict[tuple[float, float], np.ndarray]] = None
+
+    @property
+    def spot_points(self) -> dict[tuple[float, float], np.ndarray]:
+        """The spot diagrams' ray hits, {(field, wavelength_nm): (N, 2) array of (x, y) in the
+        image plane}, in the order of self["spots"]["per_wavelength"]; empty without
+        spots=True."""
+        if self._spot_points is None:
+            self._spot_points = {(field, nm): xy for field, nm, xy in self._run.spot_points()}
+        return self._spot_points
+
+    def figure(self, name: str) -> str:
+        """The figure `name` as the SVG text `lenslab analyze` writes to a file: "ray_diagram"
+        (--svg), "spots" (--spots-svg), "fans" (--fans-svg), "field_curves" (--curves-svg),
+        "focal_shift" (--focal-shift-svg), "mtf" (--mtf-svg). All but the ray diagram need
+        their table asked for (spots=True, ...)."""
+        return self._run.figure(name)
+
+    def __getitem__(self, key: str) -> Any:
+        return self._data[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._data)
+
+    def __len__(self) -> int:
+        return len(self._data)
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, Analysis):
+            return self._data == other._data
+        return self._data == other
+
+    def __repr__(self) -> str:
+        return f"<lenslab.Analysis: {', '.join(self._data)}>"
 
 
 def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
-            lens: Optional[str] = None, stop: int = 1, epd: Optional[float] = None,
-            f_number: Optional[float] = None,
-            fields: Optional[Sequence[float]] = None) -> dict[str, Any]:
-    """The optical bench's report, the dict `lenslab analyze FILE --json` prints: efl, bfl,
-    ffl, first_order {efl, bfl, f_number, entrance_pupil {position, diameter}, exit_pupil,
-    lagrange_invariant, ...}, seidel, spot sizes. The options are the command line's."""
-    if epd is not None and f_number is not None:
-        raise ValueError("f_number excludes epd (both set the entrance pupil)")
+            wavelengths: Optional[Sequence[float]] = None, aperture: Optional[float] = None,
+            lens: Optional[str] = None, unit: Optional[str] = None, stop: int = 1,
+            epd: Optional[float] = None, f_number: Optional[float] = None,
+            object_distance: Optional[float] = None,
+            fields: Optional[Sequence[float]] = None,
+            field_heights: Optional[Sequence[float]] = None, seidel: bool = False,
+            psf: bool = False, mtf: bool = False,
+            mtf_frequencies: Optional[Sequence[float]] = None, spots: bool = False,
+            rings: int = 6, fans: bool = False, fan_points: int = 21,
+            image_distance: Optional[float] = None, field_curves: bool = False,
+            field_curve_points: int = 11, focal_shift: bool = False,
+            band: Optional[Sequence[float]] = None, focal_shift_points: int = 21,
+            wavelength_weights: Optional[Sequence[float]] = None,
+            report: Optional[Sequence[str]] = None) -> Analysis:
+    """The optical bench: `lenslab analyze FILE --json` with the same options (named as the
+    command line's, "-" as "_"), as a lenslab.Analysis. report: only these top-level keys of
+    the document (e.g. ["efl", "rms_spot_best"]). seidel changes nothing here (the document
+    always has the Seidel sums). Bad options raise ValueError; a scene the bench cannot
+    measure raises lenslab.SceneError with the JSON path."""
+    given = dict(wavelength=wavelength, wavelengths=wavelengths, aperture=aperture, epd=epd,
+                 f_number=f_number, object_distance=object_distance, fields=fields,
+                 field_heights=field_heights)
+    _excludes(given, "wavelengths", ["wavelength"], "the primary is the middle one")
+    _excludes(given, "epd", ["aperture"], "both set the entrance pupil")
+    _excludes(given, "f_number", ["aperture", "epd"], "both set the entrance pupil")
+    _excludes(given, "fields", ["object_distance"], "field angles are for an object at "
+              "infinity; use field_heights")
+    if field_heights is not None and object_distance is None:
+        raise ValueError("field_heights needs object_distance (heights of an object at a "
+                         "finite distance)")
+    request: dict[str, Any] = {
+        "stop": _whole("stop", stop),
+        "seidel": bool(seidel), "psf": bool(psf), "mtf": bool(mtf), "spots": bool(spots),
+        "fans": bool(fans), "field_curves": bool(field_curves),
+        "focal_shift": bool(focal_shift),
+        "rings": _whole("rings", rings, 1, 200),
+        "fan_points": _whole("fan_points", fan_points, 2, 10001),
+        "field_curve_points": _whole("field_curve_points", field_curve_points, 2, 1001),
+        "focal_shift_points": _whole("focal_shift_points", focal_shift_points, 2, 10001),
+    }
+    for name, value in (("wavelength_nm", wavelength), ("aperture", aperture), ("epd", epd),
+                        ("f_number", f_number), ("object_distance", object_distance)):
+        if value is not None:
+            request[name] = _number(name.replace("_nm", ""), value, positive=True)
+    for name, values, positive in (("wavelengths", wavelengths, True),
+                                   ("mtf_frequencies", mtf_frequencies, True),
+                                   ("band", band, True), ("fields", fields, False),
+                                   ("field_heights", field_heights, False),
+                                   ("wavelength_weights", wavelength_weights, False)):
+        if values is not None:
+            request[name] = _numbers(name, values, positive=positive)
+    if image_distance is not None:
+        request["image_distance"] = _number("image_distance", image_distance)
+    for name, text in (("lens", lens), ("unit", unit)):
+        if text is not None:
+            if not isinstance(text, str):
+                raise ValueError(f"{name}: must be a string, got {text!r}")
+            request[name] = text
+    if report is not None and (isinstance(report, str) or
+                               not all(isinstance(k, str) for k in report)):
+        raise ValueError(f"report: must be a list of the document's keys, got {report!r}")
     text, path = source_json(scene_or_file)
-    nm = _positive("wavelength", wavelength) or _lenslab.LINE_D
-    return json.loads(_lenslab.analyze(text, path, nm, lens or "", stop,
-                                       _positive("epd", epd), _positive("f_number", f_number),
-                                       [float(a) for a in fields or []]))
+    return Analysis(_lenslab.analyze(text, path, json.dumps(request)), report)

@@ -1,14 +1,15 @@
-// lenslab.analyze: the optical bench's report, built from the library as `lenslab analyze
-// --json` builds it (report_json), for the options a first-order study needs.
+// lenslab.analyze's engine: analyze_scene (analysis/analyze_request.h), the work of `lenslab
+// analyze`, kept as an AnalyzeRun whose document is the one `lenslab analyze --json` prints,
+// whose figures are the SVG text the command line writes to files, and whose spot diagrams'
+// ray hits come out as numpy arrays.
 
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <cmath>
-#include <optional>
-#include <vector>
+#include <regex>
 
-#include "analysis/lens_lookup.h"
-#include "analysis/lens_report.h"
+#include "analysis/analyze_figures.h"
+#include "analysis/analyze_request.h"
 #include "bindings.h"
 #include "scene/json_reader.h"
 #include "scene_bridge.h"
@@ -18,76 +19,145 @@ namespace lenslab::python {
 namespace {
 
 namespace py = pybind11;
+using nlohmann::json;
 
-struct AnalyzeOptions {
-    double wavelength_nm = kLineD;
-    std::string lens;
-    int stop = 1;  // 1-based, as the command line counts surfaces
-    double epd = 0, f_number = 0;
-    std::vector<double> fields;
+// The options as the Python module names them: "--image-distance" becomes "image_distance".
+std::string python_names(const std::string& message) {
+    static const std::regex option("--([a-z][a-z-]*)");
+    std::string out;
+    auto begin = message.cbegin();
+    for (std::sregex_iterator it(message.begin(), message.end(), option), end; it != end; ++it) {
+        out.append(begin, message.cbegin() + it->position());
+        std::string name = (*it)[1].str();
+        std::replace(name.begin(), name.end(), '-', '_');
+        out += name;
+        begin = message.cbegin() + it->position() + it->length();
+    }
+    out.append(begin, message.cend());
+    return out;
+}
+
+template <class T>
+void take(const json& j, const char* key, T& into) {
+    if (j.contains(key) && !j[key].is_null()) into = j[key].get<T>();
+}
+
+// The request from the JSON object lenslab/_optics.py sends (its keys are the fields' names).
+AnalyzeRequest request_from(const json& j) {
+    AnalyzeRequest a;
+    take(j, "wavelength_nm", a.wavelength_nm);
+    take(j, "wavelengths", a.wavelengths);
+    take(j, "aperture", a.aperture);
+    take(j, "lens", a.lens);
+    take(j, "unit", a.unit);
+    take(j, "stop", a.stop);
+    take(j, "epd", a.epd);
+    take(j, "f_number", a.f_number);
+    take(j, "object_distance", a.object_distance);
+    take(j, "fields", a.fields);
+    take(j, "field_heights", a.field_heights);
+    take(j, "seidel", a.seidel);
+    take(j, "psf", a.psf);
+    take(j, "mtf", a.mtf);
+    take(j, "mtf_frequencies", a.mtf_frequencies);
+    take(j, "spots", a.spots);
+    take(j, "rings", a.rings);
+    if (j.contains("image_distance") && !j["image_distance"].is_null())
+        a.image_distance = j["image_distance"].get<double>();
+    take(j, "wavelength_weights", a.wavelength_weights);
+    take(j, "fans", a.fans);
+    take(j, "fan_points", a.fan_points);
+    take(j, "field_curves", a.field_curves);
+    take(j, "field_curve_points", a.field_curve_points);
+    take(j, "focal_shift", a.focal_shift);
+    take(j, "band", a.band);
+    take(j, "focal_shift_points", a.focal_shift_points);
+    return a;
+}
+
+// A finished analysis: the request, its results and the scene's file ("" for none).
+struct AnalyzeRun {
+    AnalyzeRequest request;
+    AnalyzeResults results;
+    std::string scene_file;
 };
 
-// The lens object `name` names (its name, its group's, or "objects[i]"), as --lens finds it.
-int lens_index(const Scene& scene, const std::string& name) {
-    const LensLookup lookup = find_lens(scene, name);
-    if (!lookup.index) throw py::value_error("lens: " + no_lens_message(name, "the scene", lookup));
-    return *lookup.index;
-}
-
-LensReportOptions report_options(const OpticalSystem& system, const AnalyzeOptions& a) {
-    const int surfaces = static_cast<int>(system.surfaces.size());
-    if (a.stop < 1 || a.stop > surfaces) {
-        throw py::value_error("stop " + std::to_string(a.stop) + ": the system has " +
-                              std::to_string(surfaces) + " surfaces, numbered 1 to " +
-                              std::to_string(surfaces));
-    }
-    for (double angle : a.fields) {
-        if (!(std::abs(angle) < 90.0)) {
-            throw py::value_error("fields: " + format_number(angle) +
-                                  " degrees is not a field angle (between -90 and 90)");
+// The document, or only its top-level `keys` (in the document's order) when any are given.
+std::string document(const AnalyzeRun& run, const std::vector<std::string>& keys) {
+    nlohmann::ordered_json j = analyze_json(run.results, run.request, run.scene_file);
+    if (keys.empty()) return j.dump();
+    for (const std::string& key : keys) {
+        if (!j.contains(key)) {
+            std::string known;
+            for (const auto& item : j.items()) known += (known.empty() ? "" : ", ") + item.key();
+            throw py::value_error("report: no key '" + key + "' in this analysis (keys: " + known +
+                                  ")");
         }
     }
-    LensReportOptions options;
-    options.wavelength_nm = a.wavelength_nm;
-    options.first_order.stop = a.stop - 1;
-    options.first_order.epd = a.epd;
-    options.first_order.f_number = a.f_number;
-    if (!a.fields.empty()) options.first_order.fields = a.fields;
-    return options;
+    nlohmann::ordered_json out = nlohmann::ordered_json::object();
+    for (const auto& item : j.items()) {
+        if (std::find(keys.begin(), keys.end(), item.key()) != keys.end())
+            out[item.key()] = item.value();
+    }
+    return out.dump();
 }
 
-std::string analyze_json(const std::string& json_text, const std::string& path,
-                         const AnalyzeOptions& a) {
-    py::gil_scoped_release unlocked;
-    const Scene scene = build_scene(json_text, path, {.require_camera = false});
-    const std::optional<int> lens =
-        a.lens.empty() ? std::nullopt : std::optional<int>(lens_index(scene, a.lens));
+std::string figure(const AnalyzeRun& run, const std::string& name) {
     try {
-        const OpticalSystem system = build_optical_system(scene, lens);
-        nlohmann::ordered_json j =
-            report_json(system, analyze_lens_system(system, report_options(system, a)));
-        if (!path.empty()) j["scene"] = path;
-        return j.dump();
-    } catch (const SceneError& e) {
-        // As the command line says it: a scene that loaded but is no lens system names its file.
-        if (path.empty()) throw;
-        throw SceneError(path + ": " + e.path(), e.reason());
+        py::gil_scoped_release unlocked;
+        return bench_figure_svg(run.results, run.request, name);
+    } catch (const AnalyzeRequestError& e) {
+        throw py::value_error(python_names(e.what()));
     }
+}
+
+// Per spot diagram (field and wavelength, in the order of the document's
+// spots.per_wavelength): (field, wavelength in nm, the hits' (x, y) as an (N, 2) array).
+py::list spot_points(const AnalyzeRun& run) {
+    py::list out;
+    if (!run.results.spots) return out;
+    for (const FieldSpots& f : run.results.spots->fields) {
+        for (const WavelengthSpot& s : f.spots) {
+            const auto n = static_cast<py::ssize_t>(s.spot.points.size());
+            py::array_t<double> xy({n, py::ssize_t{2}});
+            auto at = xy.mutable_unchecked<2>();
+            for (py::ssize_t i = 0; i < n; ++i) {
+                at(i, 0) = s.spot.points[static_cast<size_t>(i)].x;
+                at(i, 1) = s.spot.points[static_cast<size_t>(i)].y;
+            }
+            out.append(py::make_tuple(s.field, s.wavelength_nm, xy));
+        }
+    }
+    return out;
+}
+
+AnalyzeRun analyze(const std::string& json_text, const std::string& path,
+                   const std::string& request_json) {
+    AnalyzeRun run;
+    run.request = request_from(json::parse(request_json));
+    run.scene_file = path;
+    py::gil_scoped_release unlocked;
+    const Scene scene =
+        build_scene(json_text, path, {.require_camera = false, .build_for_rendering = false});
+    try {
+        run.results = analyze_scene(scene, run.request, path);
+    } catch (const AnalyzeRequestError& e) {
+        throw py::value_error(python_names(e.what()));
+    }
+    return run;
 }
 
 }  // namespace
 
 void bind_analyze(py::module_& m) {
-    m.def(
-        "analyze",
-        [](const std::string& json_text, const std::string& path, double wavelength,
-           const std::string& lens, int stop, double epd, double f_number,
-           const std::vector<double>& fields) {
-            return analyze_json(json_text, path, {wavelength, lens, stop, epd, f_number, fields});
-        },
-        py::arg("json_text"), py::arg("path"), py::arg("wavelength"), py::arg("lens"),
-        py::arg("stop"), py::arg("epd"), py::arg("f_number"), py::arg("fields"),
-        "The report of `lenslab analyze --json`, as JSON text");
+    py::class_<AnalyzeRun>(m, "AnalyzeRun", "A finished lenslab.analyze (use lenslab.Analysis)")
+        .def("document", &document, py::arg("keys"))
+        .def("figure", &figure, py::arg("name"))
+        .def("spot_points", &spot_points);
+    m.def("analyze", &analyze, py::arg("json_text"), py::arg("path"), py::arg("request_json"),
+          "Runs `lenslab analyze` on the scene with the request (JSON of AnalyzeRequest's "
+          "fields)");
+    m.attr("FIGURES") = bench_figure_names();
 }
 
 }  // namespace lenslab::python

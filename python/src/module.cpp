@@ -12,4 +12,5 @@ PYBIND11_MODULE(_lenslab, m) {
     lenslab::python::bind_trace(m);
     lenslab::python::bind_glass(m);
     lenslab::python::bind_analyze(m);
+    lenslab::python::bind_detect(m);
 }

@@ -52,11 +52,12 @@ std::vector<PupilPoint> hexapolar_pupil(int rings) {
 std::vector<ExitRay> trace_collimated_beam(const OpticalSystem& system, double nm, double aperture,
                                            int rings, int* lost) {
     const double z0 = beam_start_z(system);
+    const IndexRatios ratios = index_ratios(system, nm);
     std::vector<ExitRay> out;
     int missing = 0;
     for (const PupilPoint& q : hexapolar_pupil(rings)) {
         const RealRay r =
-            trace_real_ray(system, {{aperture * q.x, aperture * q.y, z0}, {0, 0, 1}}, nm);
+            trace_real_ray(system, {{aperture * q.x, aperture * q.y, z0}, {0, 0, 1}}, ratios);
         if (r.fate == RayFate::Passed && r.direction.z > 0) {
             out.push_back({r.exit_point(), r.direction});
         } else {

@@ -43,8 +43,9 @@ RayWavefront::RayWavefront(const OpticalSystem& system, const RayPupilOptions& o
     image_index_ = system.n_after(system.surfaces.size() - 1, nm);
 
     const double z0 = beam_start_z(system);
+    const IndexRatios ratios = index_ratios(system, nm);
     const auto trace = [&](double x, double y, size_t cell, TracedRay* out) {
-        const RealRay r = trace_real_ray(system, {{x, y, z0}, {0, 0, 1}}, nm);
+        const RealRay r = trace_real_ray(system, {{x, y, z0}, {0, 0, 1}}, ratios);
         if (r.fate != RayFate::Passed || !(r.direction.z > 0)) return false;
         *out = {cell, r.exit_point(), r.direction, path_through(system, r, nm)};
         return true;

@@ -20,6 +20,7 @@ RayAimer::RayAimer(const OpticalSystem& system, const FirstOrder& first_order, d
       first_order_(first_order),
       field_(field),
       nm_(wavelength_nm),
+      ratios_(index_ratios(system, wavelength_nm)),
       scale_(std::max(system.last_vertex(), 2.0 * system.max_semi_diameter())) {
     if (!first_order.object_distance) {
         const double angle = field * M_PI / 180.0;
@@ -37,7 +38,7 @@ Ray RayAimer::candidate(double a, double b) const {
 }
 
 std::optional<Vec3> RayAimer::at_stop(double a, double b) const {
-    const RealRay ray = trace_real_ray(system_, candidate(a, b), nm_, Rims::Ignore);
+    const RealRay ray = trace_real_ray(system_, candidate(a, b), ratios_, Rims::Ignore);
     const int stop = first_order_.stop;
     if (ray.fate != RayFate::Passed && ray.surface <= stop) return std::nullopt;
     return ray.points[stop + 1];
@@ -46,7 +47,7 @@ std::optional<Vec3> RayAimer::at_stop(double a, double b) const {
 std::optional<RealRay> RayAimer::trace(double px, double py) const {
     const auto start = aim(px, py);
     if (!start) return std::nullopt;
-    return trace_real_ray(system_, *start, nm_);
+    return trace_real_ray(system_, *start, ratios_);
 }
 
 std::optional<Ray> RayAimer::aim(double px, double py) const {

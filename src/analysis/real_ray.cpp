@@ -7,9 +7,25 @@
 
 namespace lenslab {
 
+IndexRatios index_ratios(const OpticalSystem& system, double nm) {
+    IndexRatios out{nm, std::vector<double>(system.surfaces.size())};
+    for (size_t i = 0; i < out.ratios.size(); ++i) {
+        const bool graded = grin_gap(system, i) || (i > 0 && grin_gap(system, i - 1));
+        out.ratios[i] = graded ? NAN : system.n_before(i, nm) / system.n_after(i, nm);
+    }
+    return out;
+}
+
 RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, Rims rims,
                        std::vector<Vec3>* path) {
+    return trace_real_ray(system, ray, index_ratios(system, nm), rims, path);
+}
+
+RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, const IndexRatios& indices,
+                       Rims rims, std::vector<Vec3>* path) {
+    const double nm = indices.wavelength_nm;
     RealRay out;
+    out.points.reserve(system.surfaces.size() + 1);
     out.points.push_back(ray.origin);
     if (path) path->assign(1, ray.origin);
     Vec3 p = ray.origin;
@@ -35,8 +51,11 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, R
         const Vec3 nl = s.shape->normal(local.at(t));
         Vec3 n{nl.x, nl.y, o * nl.z};
         if (dot(n, d) > 0) n = -n;  // facing the arriving ray
-        const double n1 = system.index_at(s.element_before, p, nm);
-        const auto refracted = refract(d, n, n1 / system.index_at(s.element_after, p, nm));
+        // Next to a gradient index, the indices where the ray meets the surface.
+        double ratio = indices.ratios[i];
+        if (std::isnan(ratio))
+            ratio = system.index_at(s.element_before, p, nm) / system.index_at(s.element_after, p, nm);
+        const auto refracted = refract(d, n, ratio);
         if (!refracted) {
             out.fate = RayFate::Reflected;
             out.surface = static_cast<int>(i);

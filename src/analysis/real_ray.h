@@ -34,6 +34,19 @@ enum class Rims {
 RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double wavelength_nm,
                        Rims rims = Rims::Clip, std::vector<Vec3>* path = nullptr);
 
+// What trace_real_ray refracts with at each surface at a wavelength (in air), worked out once
+// for the many rays of a beam: n_before / n_after, or NaN next to a gradient index, where the
+// ratio depends on where the ray meets the surface.
+struct IndexRatios {
+    double wavelength_nm = 0;
+    std::vector<double> ratios;
+};
+IndexRatios index_ratios(const OpticalSystem& system, double wavelength_nm);
+
+// As above with index_ratios(system, wavelength_nm) given: the same ray, bit for bit.
+RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, const IndexRatios& indices,
+                       Rims rims = Rims::Clip, std::vector<Vec3>* path = nullptr);
+
 // Where a ray leaving along `direction` from `point` crosses the plane z = z_plane (x, y).
 Vec3 at_plane(const Vec3& point, const Vec3& direction, double z_plane);
 

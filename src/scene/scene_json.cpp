@@ -380,7 +380,7 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
         scene.beams = std::move(lights.beams);
         scene.spots = std::move(lights.spots);
     }
-    scene.build();
+    if (options.build_for_rendering) scene.build();
     return scene;
 }
 

@@ -14,6 +14,10 @@ namespace lenslab {
 // bench (`lenslab analyze`) reads files that hold only lenses and their materials.
 struct SceneReadOptions {
     bool require_camera = true;
+    // Scene::build (the BVH, the lights' emission and the photon targets) for the renderer.
+    // The optical bench needs only the objects and materials, so it skips that set-up; every
+    // check of the file is made either way (Scene::build throws nothing).
+    bool build_for_rendering = true;
 };
 
 // Parses scene JSON text. `source` names the text in syntax-error messages (a file name).

@@ -1,7 +1,8 @@
+import numpy as np
 import pytest
 
 import lenslab
-from conftest import cli_error, cli_json
+from conftest import cli_error, cli_json, run_cli
 
 SCENE = "scenes/achromat_doublet.json"
 
@@ -38,6 +39,142 @@ def test_a_scene_without_lenses_raises_the_cli_message():
     assert e.value.path == "scenes/prism.json: objects"
 
 
-def test_unknown_lens_raises():
-    with pytest.raises(ValueError, match=r"^lens: no lens named 'nope' in the scene \(lenses: "):
+def test_unknown_lens_raises_the_cli_message():
+    message = cli_error("analyze", SCENE, "--lens", "nope")
+    assert message.startswith("--lens: no lens named 'nope' in " + SCENE)
+    with pytest.raises(ValueError) as e:
         lenslab.analyze(SCENE, lens="nope")
+    assert str(e.value) == message[2:]  # "lens: ...": the option as Python names it
+    with pytest.raises(ValueError, match=r"^lens: no lens named 'nope' in the scene \(lenses: "):
+        lenslab.analyze(lenslab.Scene.load(SCENE).to_dict(), lens="nope")
+
+
+# Option sets of the command line and the same as Python arguments.
+OPTION_SETS = [
+    (["--wavelengths", "486.1327,587.5618,656.2725", "--spots", "--rings", "3", "--fans",
+      "--fan-points", "5", "--fields", "0,1.5", "--f-number", "10"],
+     dict(wavelengths=[486.1327, 587.5618, 656.2725], spots=True, rings=3, fans=True,
+          fan_points=5, fields=[0, 1.5], f_number=10)),
+    (["--object-distance", "400", "--field-heights", "0,3", "--field-curves",
+      "--field-curve-points", "3", "--focal-shift", "--band", "450,700",
+      "--focal-shift-points", "5", "--stop", "2", "--epd", "12"],
+     dict(object_distance=400, field_heights=[0, 3], field_curves=True, field_curve_points=3,
+          focal_shift=True, band=[450, 700], focal_shift_points=5, stop=2, epd=12)),
+    (["--psf", "--mtf", "--mtf-frequencies", "10,20,40", "--wavelength", "550"],
+     dict(psf=True, mtf=True, mtf_frequencies=[10, 20, 40], wavelength=550)),
+    (["--aperture", "10", "--unit", "mm", "--spots", "--rings", "2", "--image-distance", "95",
+      "--wavelengths", "486.1327,587.5618,656.2725", "--wavelength-weights", "1,2,1",
+      "--seidel", "--lens", "crown"],
+     dict(aperture=10, unit="mm", spots=True, rings=2, image_distance=95,
+          wavelengths=np.array([486.1327, 587.5618, 656.2725]), wavelength_weights=[1, 2, 1],
+          seidel=True, lens="crown")),
+]
+
+
+@pytest.mark.parametrize("cli_options, options", OPTION_SETS)
+def test_every_option_equals_the_cli(cli_options, options):
+    expected = cli_json("analyze", SCENE, "--json", *cli_options)
+    analysis = lenslab.analyze(SCENE, **options)
+    assert isinstance(analysis, lenslab.Analysis)
+    assert dict(analysis) == expected
+    assert analysis == expected
+
+
+def test_a_dict_scene_has_no_scene_key():
+    expected = cli_json("analyze", SCENE, "--json", "--spots")
+    expected.pop("scene")
+    assert lenslab.analyze(lenslab.Scene.load(SCENE).to_dict(), spots=True) == expected
+
+
+def test_report_keys_choose_the_document():
+    full = cli_json("analyze", SCENE, "--json", "--f-number", "8")
+    part = lenslab.analyze(SCENE, f_number=8, report=["rms_spot_best", "efl"])
+    assert list(part) == [k for k in full if k in ("efl", "rms_spot_best")]
+    assert part["efl"] == full["efl"] and part["rms_spot_best"] == full["rms_spot_best"]
+    with pytest.raises(ValueError, match=r"^report: no key 'nope' in this analysis \(keys: "):
+        lenslab.analyze(SCENE, report=["nope"])
+    with pytest.raises(ValueError, match="report: must be a list"):
+        lenslab.analyze(SCENE, report="efl")
+
+
+def test_spot_points_are_the_spot_diagrams_hits():
+    analysis = lenslab.analyze(SCENE, spots=True, rings=4, fields=[0, 2],
+                               wavelengths=[486.1327, 587.5618, 656.2725])
+    per_wavelength = analysis["spots"]["per_wavelength"]
+    points = analysis.spot_points
+    assert list(points) == [(s["field"], s["wavelength"]) for s in per_wavelength]
+    for s in per_wavelength:
+        xy = points[(s["field"], s["wavelength"])]
+        assert xy.shape == (s["rays"] - s["vignetted"], 2) and xy.dtype == np.float64
+        centroid = [s["centroid"]["x"], s["centroid"]["y"]]
+        assert xy.mean(axis=0) == pytest.approx(centroid, abs=1e-12)
+        rms = np.sqrt(np.mean(np.sum((xy - xy.mean(axis=0)) ** 2, axis=1)))
+        assert rms == pytest.approx(s["rms_radius"], rel=1e-9)
+    assert lenslab.analyze(SCENE).spot_points == {}
+
+
+@pytest.mark.parametrize("name, cli_option, options", [
+    ("ray_diagram", "--svg", dict(unit="mm")),
+    ("spots", "--spots-svg", dict(spots=True, unit="mm")),
+    ("fans", "--fans-svg", dict(fans=True)),
+    ("field_curves", "--curves-svg", dict(field_curves=True, fields=[0, 2])),
+    ("focal_shift", "--focal-shift-svg", dict(focal_shift=True)),
+    ("mtf", "--mtf-svg", dict(mtf=True)),
+])
+def test_figures_are_the_cli_files(tmp_path, name, cli_option, options):
+    out = tmp_path / f"{name}.svg"
+    cli_options = ["--unit", "mm"] if "unit" in options else []
+    cli_options += ["--fields", "0,2"] if "fields" in options else []
+    run_cli("analyze", SCENE, cli_option, out, *cli_options)
+    svg = lenslab.analyze(SCENE, **options).figure(name)
+    assert svg.startswith("<svg") and svg == out.read_text()
+
+
+def test_a_figure_not_asked_for_raises():
+    with pytest.raises(ValueError, match=r"^figure 'spots': it needs spots, which was not "):
+        lenslab.analyze(SCENE).figure("spots")
+    with pytest.raises(ValueError, match=r"^figure 'nope': unknown \(known: ray_diagram, "):
+        lenslab.analyze(SCENE).figure("nope")
+
+
+@pytest.mark.parametrize("options, message", [
+    (dict(rings=0), r"^rings: must be from 1 to 200, got 0$"),
+    (dict(rings=2.5), r"^rings: must be a whole number, got 2.5$"),
+    (dict(fan_points=1), r"^fan_points: must be from 2 to 10001"),
+    (dict(wavelength=-5), r"^wavelength: must be a positive number, got -5.0$"),
+    (dict(wavelengths=[500, 0]), r"^wavelengths: must be a positive number, got 0.0$"),
+    (dict(wavelength=550, wavelengths=[500, 600]), r"^wavelengths excludes wavelength"),
+    (dict(epd=5, f_number=8), r"^f_number excludes epd"),
+    (dict(aperture=5, epd=8), r"^epd excludes aperture"),
+    (dict(fields=[0, 1], object_distance=100), r"^fields excludes object_distance"),
+    (dict(field_heights=[0, 1]), r"^field_heights needs object_distance"),
+    (dict(fields="0,1"), r"^fields: must be a sequence of numbers"),
+    (dict(image_distance=90), r"^image_distance: it places the image plane of spots, fans and "
+                              r"field_curves, none of which was asked for$"),
+    (dict(mtf_frequencies=[10]), r"^mtf_frequencies requires mtf \(or mtf_svg\)$"),
+    (dict(focal_shift=True, band=[700, 450]), r"^band: two wavelengths in nm, the shorter "),
+    (dict(wavelength_weights=[1, 2]), r"^wavelength_weights: 2 weights for 1 wavelengths"),
+    (dict(aperture=1000), r"^aperture: a beam of diameter 1000 does not pass the lenses"),
+    (dict(fields=[95]), r"^fields: 95 degrees is not a field angle"),
+])
+def test_bad_options_raise_value_error(options, message):
+    with pytest.raises(ValueError, match=message):
+        lenslab.analyze(SCENE, **options)
+
+
+def test_a_bad_scene_raises_with_the_json_path():
+    scene = lenslab.Scene.load(SCENE).to_dict()
+    scene["objects"][0]["thickness"] = -1
+    with pytest.raises(lenslab.SceneError) as e:
+        lenslab.analyze(scene)
+    assert e.value.path == "objects[0].thickness"
+
+
+def test_calls_on_threads_give_the_same_documents():
+    # The GIL is released while the bench computes, so a thread pool runs calls side by side.
+    from concurrent.futures import ThreadPoolExecutor
+    stops = [1, 2, 3] * 4
+    alone = [lenslab.analyze(SCENE, stop=s, spots=True) for s in stops]
+    with ThreadPoolExecutor(4) as pool:
+        pooled = list(pool.map(lambda s: lenslab.analyze(SCENE, stop=s, spots=True), stops))
+    assert pooled == alone
