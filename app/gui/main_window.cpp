@@ -30,6 +30,7 @@
 #include "detector_dock.h"
 #include "image_export.h"
 #include "json_pointer.h"
+#include "lensfile/lens_file.h"
 #include "optimise_dialog.h"
 #include "placement.h"
 #include "property_panel.h"
@@ -274,6 +275,13 @@ void MainWindow::build_menus() {
     file->addAction(tr("Save &as..."), QKeySequence(tr("Ctrl+Shift+S")), this,
                     [this] { save_as(); })
         ->setObjectName("save_as");
+    file->addAction(tr("&Import lens..."), QKeySequence(tr("Ctrl+I")), this, [this] {
+            const QString path = QFileDialog::getOpenFileName(
+                this, tr("Import lens"), QString(),
+                tr("Lens files (*.zmx *.ZMX *.seq *.SEQ);;All files (*)"));
+            if (!path.isEmpty()) import_lens(path);
+        })
+        ->setObjectName("import_lens");
     file->addAction(tr("&Export image..."), QKeySequence(tr("Ctrl+E")), this,
                     &MainWindow::export_image)
         ->setObjectName("export_image");
@@ -558,6 +566,48 @@ void MainWindow::add_element(const QString& kind) {
         show_message(
             tr("Click in the 3-D view to place the new %1 (Esc: leave it here).").arg(kind));
     }
+}
+
+bool MainWindow::import_lens(const QString& path, QString* error) {
+    const std::string file = path.toStdString();
+    ImportedLens lens;
+    try {
+        lens = import_lens_file(file, QFileInfo(path).completeBaseName().toStdString());
+    } catch (const std::exception& e) {
+        if (error) {
+            *error = QString::fromStdString(e.what());
+        } else {
+            QMessageBox::warning(this, tr("Import lens"), QString::fromStdString(e.what()));
+        }
+        return false;
+    }
+    json edited = m_document->json();
+    if (!edited.contains("objects")) edited["objects"] = json::array();
+    // The lens_group as `lenslab import` writes it (vertex at the origin, along +z).
+    const json group = json::parse(imported_scene_json(lens, file)["objects"][0].dump());
+    edited["objects"].push_back(
+        placed(edited, "objects", group, placement(m_document->scene(), group)));
+    QString why;
+    if (!m_document->apply(edited, tr("Import lens"), &why)) {
+        if (error) {
+            *error = why;
+        } else {
+            show_message(why);
+        }
+        return false;
+    }
+    m_tree->select_pointer(join_pointer("/objects", qsizetype(edited["objects"].size() - 1)));
+    QString note = tr("Imported %1: %2 element(s), lengths in mm")
+                       .arg(QFileInfo(path).fileName())
+                       .arg(lens.element_lines.size());
+    const double unit_mm = edited.value("length_unit_mm", 1.0);
+    if (unit_mm != 1.0) note += tr(" (the scene's unit is %1 mm)").arg(unit_mm);
+    if (!lens.warnings.empty())
+        note += tr("; %1 line(s) passed over: %2")
+                    .arg(lens.warnings.size())
+                    .arg(QString::fromStdString(lens_file_warnings_text(lens, file)).trimmed());
+    show_message(note);
+    return true;
 }
 
 void MainWindow::add_floor() {

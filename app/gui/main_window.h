@@ -60,6 +60,11 @@ public:
     // Adds an object or light of `kind` (sphere, triangle, disc, rectangle, lens, implicit,
     // point, beam) and selects it.
     void add_element(const QString& kind);
+    // File ▸ Import lens…: a Zemax .zmx or CODE V .seq file added as a lens_group (in mm),
+    // resting where the view's centre looks, selected; one undo step. A file that cannot be
+    // read leaves the scene as it is; its "FILE:LINE: why" is returned in `error` if given,
+    // else shown. The file's warnings (lines passed over) go to the status line.
+    bool import_lens(const QString& path, QString* error = nullptr);
     // A box floor under the scene's objects (Edit ▸ Add floor), selected.
     void add_floor();
     void duplicate_selected();

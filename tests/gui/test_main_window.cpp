@@ -150,6 +150,7 @@ private slots:
         MainWindow w;
         const std::pair<const char*, const char*> expected[] = {{"save_as", "Ctrl+Shift+S"},
                                                                 {"export_image", "Ctrl+E"},
+                                                                {"import_lens", "Ctrl+I"},
                                                                 {"render_start", "F5"},
                                                                 {"render_stop", "Shift+F5"}};
         for (const auto& [name, keys] : expected) {
@@ -367,6 +368,33 @@ private slots:
         QCOMPARE(w.viewport()->pick(centre), 0);
         QTest::mouseClick(w.viewport(), Qt::LeftButton, {}, centre);
         QCOMPARE(w.tree()->selected_pointer(), QString("/objects/0"));
+    }
+
+    // File ▸ Import lens: the Thorlabs AC254-100-A's .zmx comes in as one lens_group of its two
+    // cemented elements and their catalogue glasses, selected, one undo step; a file the
+    // reader refuses leaves the scene as it was and says which line.
+    void a_lens_file_is_imported_as_a_lens_group() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        QString error;
+        QVERIFY2(w.import_lens(LENSLAB_TEST_DATA "/lensfile/data/AC254-100-A.zmx", &error),
+                 qPrintable(error));
+        const json& objects = w.document()->json()["objects"];
+        QCOMPARE(objects.size(), size_t(4));
+        const json& group = objects[3];
+        QCOMPARE(group["type"].get<std::string>(), std::string("lens_group"));
+        QCOMPARE(group["name"].get<std::string>(), std::string("AC254-100-A"));
+        QCOMPARE(group["elements"].size(), size_t(2));
+        QCOMPARE(group["elements"][0]["material"]["glass"].get<std::string>(),
+                 std::string("SCHOTT:N-BK7"));
+        QCOMPARE(w.tree()->selected_pointer(), QString("/objects/3"));
+        w.document()->undo_stack()->undo();
+        QCOMPARE(w.document()->json()["objects"].size(), size_t(3));
+
+        const json before = w.document()->json();
+        QVERIFY(!w.import_lens(LENSLAB_TEST_DATA "/lensfile/data/bad_unknown_surface.zmx", &error));
+        QVERIFY2(error.contains("bad_unknown_surface.zmx:"), qPrintable(error));
+        QCOMPARE(w.document()->json(), before);
     }
 
     // The Add actions come from the declared types: each adds its declaration's example
