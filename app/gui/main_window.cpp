@@ -511,8 +511,12 @@ void MainWindow::export_image() {
 }
 
 bool MainWindow::export_image_to(const QString& path, QString* error) {
+    // The view's render waits meanwhile (the export gets every core) and then goes on.
+    m_renderer->set_paused(true);
     QString message;
-    if (!export_scene_image(m_document->scene(), path, this, &message)) {
+    const bool written = export_scene_image(m_document->scene(), path, this, &message);
+    m_renderer->set_paused(false);
+    if (!written) {
         if (error)
             *error = message;
         else

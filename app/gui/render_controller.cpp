@@ -74,6 +74,13 @@ void RenderController::stop_rendering() {
     m_stop = true;
     m_job.reset();
     if (m_control) m_control->cancel();
+    m_wake.wakeAll();  // a paused worker
+}
+
+void RenderController::set_paused(bool paused) {
+    QMutexLocker lock(&m_mutex);
+    m_paused = paused;
+    m_wake.wakeAll();
 }
 
 bool RenderController::is_rendering() const {
@@ -113,6 +120,7 @@ void RenderController::run() {
                 RenderControl control;
                 {
                     QMutexLocker lock(&m_mutex);
+                    while (m_paused && !m_quit && !m_stop && !m_job) m_wake.wait(&m_mutex);
                     if (m_quit || m_stop || m_job) break;  // a newer scene waits, or stopped
                     m_control = &control;
                 }

@@ -46,6 +46,10 @@ public:
     // Stops after cancelling the pass in flight; the last frame stays.
     void stop_rendering();
     bool is_rendering() const;
+    // Paused, the worker finishes the pass in flight and waits, keeping what it has summed;
+    // resumed, it goes on from there (an export renders meanwhile on all the cores). Stop and
+    // a new scene still end the paused render.
+    void set_paused(bool paused);
     int max_passes() const { return m_max_passes; }
     void set_max_passes(int n) { m_max_passes = n; }
     // false (the default): render with sppm; true: with the scene's `render.integrator`.
@@ -87,7 +91,7 @@ private:
     QWaitCondition m_wake;
     std::optional<Scene> m_job;          // handed to the worker
     RenderControl* m_control = nullptr;  // the pass in flight, to cancel it
-    bool m_quit = false, m_stop = false, m_busy = false;
+    bool m_quit = false, m_stop = false, m_busy = false, m_paused = false;
     Film m_last;
 };
 

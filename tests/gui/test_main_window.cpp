@@ -294,6 +294,30 @@ private slots:
         QCOMPARE(other.document()->json()["objects"][0]["center"][1].get<double>(), 0.75);
     }
 
+    // While paused (an export renders), the view adds no passes; resumed, it goes on from the
+    // pass it had reached rather than starting again.
+    void a_paused_view_render_resumes_where_it_was() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        QVERIFY(wait_for_fresh_frame(w));
+        // Shared, not a local: a frame still queued after the test would write into it.
+        const auto seen = std::make_shared<std::vector<int>>();
+        const QMetaObject::Connection watch = QObject::connect(
+            w.renderer(), &RenderController::frame_ready, &w,
+            [seen](const QImage&, int passes) { seen->push_back(passes); }, Qt::QueuedConnection);
+        w.renderer()->set_paused(true);
+        QTest::qWait(300);  // the pass in flight ends
+        const size_t before = seen->size();
+        QTest::qWait(500);
+        QCOMPARE(seen->size(), before);
+        QVERIFY(before > 0);
+        const int reached = seen->back();
+        w.renderer()->set_paused(false);
+        QTRY_VERIFY_WITH_TIMEOUT(seen->size() > before, 20000);
+        QCOMPARE((*seen)[before], reached + 1);  // the next pass, not pass 1
+        QObject::disconnect(watch);
+    }
+
     void export_writes_a_whole_image_and_nothing_else() {
         MainWindow w;
         QVERIFY(w.open_file(kSmallScene));
