@@ -1,0 +1,258 @@
+#include "analysis/analyze_request.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "analysis/curve_figures.h"
+#include "analysis/curve_report.h"
+#include "analysis/diffraction_report.h"
+#include "analysis/fan_report.h"
+#include "analysis/field_figures.h"
+#include "analysis/lens_lookup.h"
+#include "analysis/ray_diagram.h"
+#include "analysis/ray_diagram_image.h"
+#include "analysis/ray_diagram_svg.h"
+#include "analysis/spot_report.h"
+#include "render/image_io.h"
+#include "scene/json_reader.h"
+#include "scene/scene_error.h"
+#include "util/atomic_file.h"
+
+namespace lenslab {
+
+namespace {
+
+// A figure as SVG, or as PNG when the file's name ends in ".png"; atomically either way, so a
+// failed write leaves no half file and says why it failed.
+void write_bench_figure(const std::string& file, const RayDiagram& diagram, double width,
+                        double min_height) {
+    const std::string png = ".png";
+    if (file.size() > png.size() && file.compare(file.size() - png.size(), png.size(), png) == 0) {
+        write_png_image(ray_diagram_image(diagram, width, min_height), file);
+    } else {
+        write_text_atomically(file, ray_diagram_svg(diagram, width, min_height));
+    }
+}
+
+// The middle of the wavelengths as given (for an even count, the one before the middle).
+double middle_wavelength(const std::vector<double>& wavelengths) {
+    return wavelengths[(wavelengths.size() - 1) / 2];
+}
+
+// A figure file of a request and its key in the JSON document.
+struct FigureFile {
+    const std::string& file;
+    const char* key;
+};
+
+AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optional<int> lens) {
+    AnalyzeResults out;
+    out.system = build_optical_system(scene, lens);
+    const OpticalSystem& system = out.system;
+    const int surfaces = static_cast<int>(system.surfaces.size());
+    if (a.stop < 1 || a.stop > surfaces) {
+        throw AnalyzeRequestError("--stop " + std::to_string(a.stop) + ": the system has " +
+                                  std::to_string(surfaces) + " surfaces, numbered 1 to " +
+                                  std::to_string(surfaces));
+    }
+    for (double angle : a.fields) {
+        if (!(std::abs(angle) < 90.0)) {
+            throw AnalyzeRequestError("--fields: " + format_number(angle) +
+                                      " degrees is not a field angle (between -90 and 90)");
+        }
+    }
+    LensReportOptions options;
+    options.wavelength_nm =
+        a.wavelengths.empty() ? a.wavelength_nm : middle_wavelength(a.wavelengths);
+    options.wavelengths = a.wavelengths;
+    FirstOrderOptions& first = options.first_order;
+    first.stop = a.stop - 1;
+    first.epd = a.epd;
+    first.f_number = a.f_number;
+    if (a.object_distance > 0) {
+        first.object_distance = a.object_distance;
+        if (!a.field_heights.empty()) first.fields = a.field_heights;
+    } else if (!a.fields.empty()) {
+        first.fields = a.fields;
+    }
+    if (a.aperture > 0) {
+        check_wavelength(system, options.wavelength_nm, "--wavelength");
+        const double usable = usable_aperture_radius(system, options.wavelength_nm);
+        if (0.5 * a.aperture > usable * (1.0 + 1e-9)) {
+            char usable_text[32];
+            std::snprintf(usable_text, sizeof usable_text, "%.6g", 2.0 * usable);
+            throw AnalyzeRequestError(
+                "--aperture: a beam of diameter " + format_number(a.aperture) +
+                " does not pass the lenses (the largest that does is " + usable_text + ")");
+        }
+        options.aperture_radius = 0.5 * a.aperture;
+    }
+    out.report = analyze_lens_system(system, options);
+    const LensReport& report = out.report;
+    if (a.spots) {
+        SpotOptions spot;
+        spot.fields = first.fields;
+        spot.wavelengths = report.wavelengths;
+        spot.weights = a.wavelength_weights;
+        spot.rings = a.rings;
+        if (a.image_distance) spot.image_z = system.last_vertex() + *a.image_distance;
+        out.spots = spot_diagrams(system, report.first_order, spot);
+    }
+    if (a.fans) {
+        RayFanOptions fan;
+        fan.fields = first.fields;
+        fan.wavelengths = report.wavelengths;
+        fan.points = a.fan_points;
+        if (a.image_distance) fan.image_z = system.last_vertex() + *a.image_distance;
+        out.fans = ray_fans(system, report.first_order, fan);
+    }
+    if (a.psf || a.mtf) {
+        RayPupilOptions pupil;
+        pupil.wavelength_nm = options.wavelength_nm;
+        pupil.aperture_radius = 0.5 * report.first_order.entrance_pupil.diameter;
+        out.diffraction = diffraction_figures(system, pupil, a.mtf_frequencies);
+    }
+    if (!a.svg.empty()) {
+        RayDiagramOptions diagram;
+        diagram.unit = a.unit;
+        write_bench_figure(a.svg, make_ray_diagram(system, report, diagram), 1200, 360);
+    }
+    if (a.field_curves) {
+        FieldCurveOptions curve;
+        for (double field : first.fields) {
+            curve.max_field = std::max(curve.max_field, std::abs(field));
+        }
+        curve.points = a.field_curve_points;
+        curve.wavelengths = report.wavelengths;
+        if (a.image_distance) curve.image_z = system.last_vertex() + *a.image_distance;
+        out.curves = field_curves(system, report.first_order, curve);
+    }
+    if (a.focal_shift) {
+        FirstOrderOptions reference = first;
+        reference.wavelength_nm = options.wavelength_nm;
+        const double from = a.band.empty() ? report.short_nm : a.band[0];
+        const double to = a.band.empty() ? report.long_nm : a.band[1];
+        out.shift = chromatic_focal_shift(system, reference, from, to, a.focal_shift_points);
+    }
+    const std::string field_unit =
+        first.object_distance ? (a.unit.empty() ? "units" : a.unit) : "deg";
+    const auto write_figure = [](const std::string& file, const RayDiagram& figure, int panels) {
+        write_bench_figure(file, figure, field_figure_width(panels), 300);
+    };
+    if (!a.spots_svg.empty()) {
+        write_figure(a.spots_svg, spot_diagram_figure(*out.spots, a.unit, field_unit),
+                     static_cast<int>(out.spots->fields.size()));
+    }
+    if (!a.fans_svg.empty()) {
+        write_figure(a.fans_svg, ray_fan_figure(*out.fans, a.unit, field_unit), 2);
+    }
+    if (!a.curves_svg.empty()) {
+        write_figure(a.curves_svg, field_curves_figure(*out.curves, a.unit, field_unit), 2);
+    }
+    if (!a.focal_shift_svg.empty()) {
+        write_figure(a.focal_shift_svg, focal_shift_figure(*out.shift, a.unit), 1);
+    }
+    if (!a.mtf_svg.empty()) {
+        write_figure(a.mtf_svg, mtf_figure(*out.diffraction, a.unit), 1);
+    }
+    return out;
+}
+
+}  // namespace
+
+AnalyzeRequest with_implied_tables(AnalyzeRequest a) {
+    a.spots = a.spots || !a.spots_svg.empty();
+    a.fans = a.fans || !a.fans_svg.empty();
+    a.field_curves = a.field_curves || !a.curves_svg.empty();
+    a.focal_shift = a.focal_shift || !a.focal_shift_svg.empty();
+    a.mtf = a.mtf || !a.mtf_svg.empty();
+    return a;
+}
+
+std::optional<std::string> figure_option_error(const AnalyzeRequest& a) {
+    const std::vector<double>& weights = a.wavelength_weights;
+    if (a.image_distance && !a.spots && !a.fans && !a.field_curves) {
+        return "--image-distance: it places the image plane of --spots, --fans "
+               "and --field-curves, none of which was asked for";
+    }
+    if (!a.mtf_frequencies.empty() && !a.mtf) {
+        return "--mtf-frequencies requires --mtf (or --mtf-svg)";
+    }
+    if (!a.band.empty() && !a.focal_shift) {
+        return "--band: it sets the band of --focal-shift, which was not asked for";
+    }
+    if (!a.band.empty() && (a.band.size() != 2 || !(a.band[0] < a.band[1]))) {
+        return "--band: two wavelengths in nm, the shorter first (e.g. 450,700)";
+    }
+    if (!weights.empty()) {
+        const size_t count = std::max<size_t>(1, a.wavelengths.size());
+        if (weights.size() != count) {
+            return "--wavelength-weights: " + std::to_string(weights.size()) + " weights for " +
+                   std::to_string(count) + " wavelengths (one each, in the order of --wavelengths)";
+        }
+        double sum = 0;
+        for (double w : weights) {
+            if (w < 0) {
+                return "--wavelength-weights: " + format_number(w) +
+                       " is negative (a weight is 0 or more)";
+            }
+            sum += w;
+        }
+        if (!(sum > 0)) return "--wavelength-weights: they add up to zero";
+    }
+    return std::nullopt;
+}
+
+AnalyzeResults analyze_scene(const Scene& scene, const AnalyzeRequest& request,
+                             const std::string& scene_file) {
+    const AnalyzeRequest a = with_implied_tables(request);
+    if (const auto error = figure_option_error(a)) throw AnalyzeRequestError(*error);
+    std::optional<int> lens;
+    if (!a.lens.empty()) {
+        const LensLookup lookup = find_lens(scene, a.lens);
+        if (!lookup.index) {
+            throw AnalyzeRequestError(
+                "--lens: " +
+                no_lens_message(a.lens, scene_file.empty() ? "the scene" : scene_file, lookup));
+        }
+        lens = lookup.index;
+    }
+    try {
+        return measure(scene, a, lens);
+    } catch (const SceneError& e) {
+        // The scene loaded but is not a lens system the bench can measure: name the file too.
+        if (scene_file.empty()) throw;
+        throw SceneError(scene_file + ": " + e.path(), e.reason());
+    }
+}
+
+nlohmann::ordered_json analyze_json(const AnalyzeResults& results, const AnalyzeRequest& request,
+                                    const std::string& scene_file) {
+    const AnalyzeRequest a = with_implied_tables(request);
+    nlohmann::ordered_json j = report_json(results.system, results.report);
+    if (!scene_file.empty()) j["scene"] = scene_file;
+    if (!a.svg.empty()) j["svg"] = a.svg;
+    const FigureFile figures[] = {{a.spots_svg, "spots_svg"},
+                                  {a.fans_svg, "fans_svg"},
+                                  {a.curves_svg, "curves_svg"},
+                                  {a.focal_shift_svg, "focal_shift_svg"},
+                                  {a.mtf_svg, "mtf_svg"}};
+    for (const FigureFile& figure : figures) {
+        if (!figure.file.empty()) j[figure.key] = figure.file;
+    }
+    if (a.psf) j["psf"] = psf_json(*results.diffraction);
+    if (a.mtf) j["mtf"] = mtf_json(*results.diffraction);
+    if (results.spots) j["spots"] = spots_json(results.system, *results.spots);
+    if (results.fans) j["fans"] = fans_json(results.system, *results.fans);
+    if (results.curves) j["field_curves"] = field_curves_json(results.system, *results.curves);
+    if (results.shift) j["focal_shift"] = focal_shift_json(*results.shift);
+    return j;
+}
+
+nlohmann::ordered_json analyze_report(const Scene& scene, const AnalyzeRequest& request,
+                                      const std::string& scene_file) {
+    return analyze_json(analyze_scene(scene, request, scene_file), request, scene_file);
+}
+
+}  // namespace lenslab

@@ -1,0 +1,93 @@
+#pragma once
+// What the optical bench is asked of a scene's lenses (`lenslab analyze`, `lenslab sweep
+// --analyze`, Python) and the answer: the figures, the figure files, and the JSON document
+// `lenslab analyze --json` prints. One place, so every caller measures the same way.
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/diffraction_figures.h"
+#include "analysis/field_curves.h"
+#include "analysis/focal_shift.h"
+#include "analysis/lens_report.h"
+#include "analysis/optical_system.h"
+#include "analysis/ray_fans.h"
+#include "analysis/spot_diagrams.h"
+#include "optics/glass.h"
+#include "scene/scene.h"
+#include "util/error.h"
+
+namespace lenslab {
+
+struct AnalyzeRequest {
+    double wavelength_nm = kLineD;
+    std::vector<double> wavelengths;  // the primary is the middle one
+    bool json = false;                // the command line's choice of output, JSON or a table
+    std::string svg;
+    double aperture = 0;  // beam diameter; 0: the usable aperture
+    std::string lens;
+    std::string unit;  // for the ray diagram's labels; empty: "units"
+    int stop = 1;      // 1-based surface index, as lens design programs count
+    double epd = 0, f_number = 0;
+    double object_distance = 0;  // 0: the object at infinity
+    std::vector<double> fields, field_heights;
+    bool seidel = false;
+    bool psf = false, mtf = false;
+    std::vector<double> mtf_frequencies;  // empty: ten up to the cutoff
+    bool spots = false;
+    int rings = 6;                           // hexapolar rings of the spot diagrams
+    std::optional<double> image_distance;    // image plane from the last vertex
+    std::vector<double> wavelength_weights;  // one per wavelength; empty: equal
+    bool fans = false;
+    int fan_points = 21;
+    // Figures; each implies its table.
+    std::string spots_svg, fans_svg, curves_svg, focal_shift_svg, mtf_svg;
+    bool field_curves = false;
+    int field_curve_points = 11;
+    bool focal_shift = false;
+    std::vector<double> band;  // the focal shift's; empty: the wavelengths' range, or F to C
+    int focal_shift_points = 21;
+};
+
+// An option that does not fit the others or the system (a stop past the last surface, an
+// unknown --lens): the command line's usage error, exit code 2 rather than 1.
+class AnalyzeRequestError : public Error {
+public:
+    using Error::Error;
+};
+
+// The request with each figure file's table turned on (--spots-svg implies --spots, ...).
+AnalyzeRequest with_implied_tables(AnalyzeRequest request);
+
+// What the options of the figures say against each other, before any work: the message of
+// the first conflict, if any.
+std::optional<std::string> figure_option_error(const AnalyzeRequest& request);
+
+struct AnalyzeResults {
+    OpticalSystem system;
+    LensReport report;
+    std::optional<SpotDiagrams> spots;
+    std::optional<RayFans> fans;
+    std::optional<DiffractionFigures> diffraction;
+    std::optional<FieldCurves> curves;
+    std::optional<FocalShift> shift;
+};
+
+// Measures the scene's lenses as `request` asks (with_implied_tables applied) and writes the
+// figure files it names. `scene_file` names the scene in messages ("" for none). Throws
+// AnalyzeRequestError for options that do not fit, SceneError for a system it cannot measure.
+AnalyzeResults analyze_scene(const Scene& scene, const AnalyzeRequest& request,
+                             const std::string& scene_file);
+
+// `lenslab analyze --json`'s document for results of analyze_scene; "scene" is `scene_file`,
+// left out when that is "".
+nlohmann::ordered_json analyze_json(const AnalyzeResults& results, const AnalyzeRequest& request,
+                                    const std::string& scene_file);
+
+// Both steps: the document `lenslab analyze SCENE_FILE --json ...` prints.
+nlohmann::ordered_json analyze_report(const Scene& scene, const AnalyzeRequest& request,
+                                      const std::string& scene_file = "");
+
+}  // namespace lenslab
