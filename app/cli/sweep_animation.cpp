@@ -80,8 +80,10 @@ void assemble_animation(const std::string& ffmpeg, const std::string& frames, in
                                     : r.exit_code == 127
                                         ? "could not be started"
                                         : "failed (exit code " + std::to_string(r.exit_code) + ")";
-            throw Error("--animation " + output + ": " + ffmpeg + " " + how + ": " +
-                        ffmpeg_tail(r.output) + "\n  command: " + shell_command_line(argv));
+            const std::string said = ffmpeg_tail(r.output);
+            throw Error("--animation " + output + ": " + ffmpeg + " " + how +
+                        (said.empty() ? "" : ": " + said) +
+                        "\n  command: " + shell_command_line(argv));
         }
     });
 }
