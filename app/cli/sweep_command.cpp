@@ -48,7 +48,7 @@ int sweep_usage_error(const std::string& message) {
 // The first option of `group` given on the command line, if any.
 const CLI::Option* first_given(const CLI::App& group) {
     for (const CLI::Option* option : group.get_options()) {
-        if (option->count() > 0 && option->get_name() != "--quiet") return option;
+        if (option->count() > 0) return option;
     }
     return nullptr;
 }
@@ -252,12 +252,16 @@ Action add_sweep_command(CLI::App& app) {
     args->render_options =
         cmd->add_option_group("Rendered frames", "As lenslab render; not with --analyze");
     add_render_image_options(*args->render_options, args->image);
+    // --quiet serves --analyze too, so it belongs to the sweep itself.
+    args->render_options->remove_option(args->render_options->get_option("--quiet"));
+    cmd->add_flag("-q,--quiet", args->image.quiet, "No progress on stderr");
     args->bench_options =
         cmd->add_option_group("Optical bench", "With --analyze; as lenslab analyze");
     add_analyze_options(*args->bench_options, args->request);
-    // A file per figure would be overwritten frame after frame, and the table is not printed.
+    // A file per figure would be overwritten frame after frame (--unit only labels them), and
+    // the table is not printed.
     for (const char* name : {"--json", "--svg", "--spots-svg", "--fans-svg", "--curves-svg",
-                             "--focal-shift-svg", "--mtf-svg", "--seidel"}) {
+                             "--focal-shift-svg", "--mtf-svg", "--seidel", "--unit"}) {
         args->bench_options->remove_option(args->bench_options->get_option(name));
     }
     cmd->get_option("--fps")->needs(cmd->get_option("--animation"));
