@@ -45,7 +45,7 @@ std::string find_ffmpeg(const std::string& program) {
     return found;
 }
 
-void assemble_animation(const std::string& ffmpeg, const std::string& frames, int fps,
+void assemble_animation(const std::string& ffmpeg, const std::string& frames, int count, int fps,
                         const std::string& output) {
     const bool gif = has_extension(output, ".gif");
     // A GIF gets a palette made from its own frames; H.264 wants even sizes and 4:2:0 colour
@@ -53,25 +53,14 @@ void assemble_animation(const std::string& ffmpeg, const std::string& frames, in
     const std::string filter =
         gif ? "split[a][b];[a]palettegen[p];[b][p]paletteuse" : "pad=ceil(iw/2)*2:ceil(ih/2)*2";
     write_atomically(output, [&](const std::string& temporary) {
-        std::vector<std::string> argv = {ffmpeg,
-                                         "-hide_banner",
-                                         "-loglevel",
-                                         "error",
-                                         "-y",
-                                         "-framerate",
-                                         std::to_string(fps),
-                                         "-start_number",
-                                         "0",
-                                         "-i",
-                                         frames,
-                                         "-vf",
-                                         filter};
-        if (!gif) {
-            for (const char* a : {"-c:v", "libx264", "-pix_fmt", "yuv420p", "-f", "mp4"})
-                argv.push_back(a);
-        } else {
-            argv.insert(argv.end(), {"-f", "gif"});
-        }
+        // -frames:v: a longer earlier sweep's frames may follow ours in the folder.
+        std::vector<std::string> argv = {ffmpeg, "-hide_banner", "-loglevel", "error", "-y"};
+        argv.insert(argv.end(), {"-framerate", std::to_string(fps), "-start_number", "0", "-i",
+                                 frames, "-vf", filter, "-frames:v", std::to_string(count)});
+        const std::vector<std::string> encoder =
+            gif ? std::vector<std::string>{"-f", "gif"}
+                : std::vector<std::string>{"-c:v", "libx264", "-pix_fmt", "yuv420p", "-f", "mp4"};
+        argv.insert(argv.end(), encoder.begin(), encoder.end());
         argv.push_back(temporary);
         const std::filesystem::path log = temporary + ".log";
         const ChildResult r = run_child(argv, std::filesystem::current_path(), log);

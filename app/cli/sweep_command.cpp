@@ -160,14 +160,13 @@ void assemble_sweep(const SweepArgs& a, const SweepPlan& plan) {
     }
     if (!a.animation.empty()) {
         const std::string pattern = (dir / "frames" / "%05d.png").string();
-        assemble_animation(find_ffmpeg(a.ffmpeg), pattern, a.fps, a.animation);
+        assemble_animation(find_ffmpeg(a.ffmpeg), pattern, plan.count, a.fps, a.animation);
         std::printf("wrote %s (%d frames at %d fps)\n", a.animation.c_str(), plan.count, a.fps);
     }
 }
 
 int run(const SweepArgs& a) {
-    // the cluster's rank and size once MPI is wired
-    const int rank = 0, size = 1;
+    const int rank = 0, size = 1;  // the cluster's rank and size once MPI is wired
 
     SweepPlan plan;
     try {
@@ -215,6 +214,8 @@ int run(const SweepArgs& a) {
             return sweep_usage_error(e.what());
         }
     }
+    // With several ranks, rank 0 must first wait for the others' frames (a barrier): it
+    // assembles from the frame files, all of them.
     if (rank == 0) assemble_sweep(a, plan);
     return 0;
 }
