@@ -113,25 +113,33 @@ nlohmann::ordered_json read_frame_report(const std::string& file) {
     }
 }
 
-// Frame `frame`: its scene checked by the scene reader, then rendered or measured into its
-// file. False when the render was cancelled (Ctrl-C).
-bool sweep_frame(const SweepArgs& a, const SweepPlan& plan, const nlohmann::json& base, int frame) {
+// Frame `frame`'s scene, read by the scene reader; its errors name the frame and its values.
+Scene frame_scene(const SweepArgs& a, const SweepPlan& plan, const nlohmann::json& base,
+                  int frame) {
     const nlohmann::json root = sweep_frame_json(base, plan, frame);
-    const std::string file = frame_file(a, frame);
     try {
-        if (a.analyze) {
-            const Scene scene = scene_from_file_json(root, a.scene, {.require_camera = false});
-            write_text_atomically(file, analyze_report(scene, a.request, a.scene).dump(2) + "\n");
-            std::printf("wrote %s\n", file.c_str());
-            return true;
-        }
-        const Scene scene = a.image.overrides->scene_from(root, a.scene);
-        return render_image(scene, a.image, file) == RenderImageOutcome::Written;
+        if (a.analyze) return scene_from_file_json(root, a.scene, {.require_camera = false});
+        return a.image.overrides->scene_from(root, a.scene);
+    } catch (const SceneError& e) {
+        throw Error(frame_label(plan, frame) + ": " + e.what());
+    }
+}
+
+// Frame `frame` rendered or measured into its file. False when the render was cancelled
+// (Ctrl-C).
+bool sweep_frame(const SweepArgs& a, const SweepPlan& plan, const nlohmann::json& base, int frame) {
+    const Scene scene = frame_scene(a, plan, base, frame);
+    const std::string file = frame_file(a, frame);
+    if (!a.analyze) return render_image(scene, a.image, file) == RenderImageOutcome::Written;
+    try {
+        write_text_atomically(file, analyze_report(scene, a.request, a.scene).dump(2) + "\n");
     } catch (const AnalyzeRequestError& e) {
         throw AnalyzeRequestError(frame_label(plan, frame) + ": " + e.what());
     } catch (const SceneError& e) {
         throw Error(frame_label(plan, frame) + ": " + e.what());
     }
+    std::printf("wrote %s\n", file.c_str());
+    return true;
 }
 
 // On rank 0, once every frame is written: sweep.json, and sweep.csv or the animation.
@@ -188,6 +196,10 @@ int run(const SweepArgs& a) {
             return sweep_usage_error(*error);
     }
     check_sweep_targets(base, plan);
+    // A linear range's values lie between its ends, and the reader's bounds are ranges, so
+    // reading the two end frames' scenes finds nearly every bad range before any work.
+    (void)frame_scene(a, plan, base, 0);
+    if (plan.count > 1) (void)frame_scene(a, plan, base, plan.count - 1);
     create_output_directory(frames_dir);
     if (!a.animation.empty()) check_output_file(a.animation);  // it may go into the new folder
 

@@ -714,3 +714,8 @@ lenslab_cli_test(NAME sweep.bad.animation_kind
          --animation ${sweep_bad}/sweep.avi
     CHECKS -DEXPECT_EXIT=2
            "-DSTDERR_LINE=lenslab: error: --animation '${sweep_bad}/sweep.avi': unknown kind of animation (use a .gif or .mp4 file name)")
+lenslab_cli_test(NAME sweep.bad.last_frame
+    ARGS sweep scenes/lens_caustic.json --set /objects/1/thickness=0.3:-1:3 -o ${sweep_bad}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: frame 3/3 (/objects/1/thickness = -1): scenes/lens_caustic.json: objects[1].thickness: must be > 0, got -1"
+           -DOUTPUT=${sweep_bad}/frames/00000.png -DOUTPUT_CREATED=OFF)
