@@ -147,6 +147,35 @@ TEST(SweepCommand, AnalyzeCsvFollowsTheLensmakersEquation) {
     fs::remove_all(dir);
 }
 
+// analyze's options reach every frame: at the F line the EFL is R / (n_F - 1).
+TEST(SweepCommand, AnalyzeTakesTheBenchOptions) {
+    const fs::path dir = sweep_test_folder("analyze_options");
+    const SweepRun run = run_sweep_command(
+        "sweep tests/analysis/data/lens_only.json --set /objects/0/front/radius=30:40:2 "
+        "--analyze --wavelength 486.1327 --spots --fields 0,2 -q -o " +
+        dir.string());
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    const auto rows = read_csv_rows(dir / "sweep.csv");
+    ASSERT_EQ(rows.size(), 3u);
+    const auto& header = rows[0];
+    const auto efl = std::find(header.begin(), header.end(), "efl") - header.begin();
+    const auto wavelength =
+        std::find(header.begin(), header.end(), "wavelength_nm") - header.begin();
+    ASSERT_LT(efl, static_cast<long>(header.size()));
+    ASSERT_LT(wavelength, static_cast<long>(header.size()));
+    const double n_f = lenslab::lookup_glass("N-BK7").glass->model->n(lenslab::kLineF);
+    for (int frame = 0; frame < 2; ++frame) {
+        const auto& row = rows[frame + 1];
+        EXPECT_DOUBLE_EQ(std::stod(row[wavelength]), 486.1327);
+        EXPECT_NEAR(std::stod(row[efl]), std::stod(row[1]) / (n_f - 1.0), 1e-9 * 40);
+    }
+    std::ifstream frame(dir / "frames" / "00001.json");
+    std::stringstream text;
+    text << frame.rdbuf();
+    EXPECT_NE(text.str().find("\"spots\""), std::string::npos) << "--spots reaches the frame";
+    fs::remove_all(dir);
+}
+
 TEST(SweepCommand, AnimationAssemblesTheFrames) {
     if (access("/usr/bin/ffmpeg", X_OK) != 0) GTEST_SKIP() << "no /usr/bin/ffmpeg";
     const fs::path dir = sweep_test_folder("animation");
