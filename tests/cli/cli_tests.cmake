@@ -653,3 +653,69 @@ lenslab_cli_test(NAME optimize.glass_choice
 lenslab_cli_test(NAME bench.optimize
     ARGS bench optimize ${optimize_data}/triplet_near.design.json --threads 2
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=median" "-DSTDOUT_CONTAINS=rms_spot 20°")
+
+# `sweep`: one scene per value of a swept number (test_sweep_command.cpp runs the sweeps
+# through: every frame once, resuming, the CSV). Here: a small one, and the bad inputs, each
+# refused before any frame is written with a message naming the problem.
+set(sweep_out ${LENSLAB_CLI_OUT}/sweep)
+set(sweep_tiny --width|24|--height|16|--spp|1|--photons|2000|--caustic-photons|2000|--threads|1)
+lenslab_cli_test(NAME sweep.render
+    ARGS sweep scenes/lens_caustic.json --set /objects/1/center/1=1.5:4.5:3 -o ${sweep_out}
+         ${sweep_tiny} --overwrite
+    CHECKS -DEXPECT_EXIT=zero "-DSTDERR_CONTAINS=frame 3/3 (/objects/1/center/1 = 4.5)"
+           "-DSTDOUT_CONTAINS=wrote ${sweep_out}/sweep.json (3 frames)"
+           -DOUTPUT=${sweep_out}/frames/00002.png -DOUTPUT_CREATED=ON)
+set(sweep_bad ${LENSLAB_CLI_OUT}/sweep_bad)
+lenslab_cli_test(NAME sweep.bad.pointer
+    ARGS sweep scenes/lens_caustic.json --set /objects/5/center/1=1:2:3 -o ${sweep_bad}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: --set /objects/5/center/1: the scene has nothing at /objects/5 (/objects holds 2 elements, 0 to 1)"
+           -DOUTPUT=${sweep_bad}/frames/00000.png -DOUTPUT_CREATED=OFF)
+lenslab_cli_test(NAME sweep.bad.not_a_number
+    ARGS sweep scenes/lens_caustic.json --set /objects/1/material=1:2:3 -o ${sweep_bad}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: --set /objects/1/material: the scene has \"glass\" there, not a number"
+           -DOUTPUT=${sweep_bad}/frames/00000.png -DOUTPUT_CREATED=OFF)
+lenslab_cli_test(NAME sweep.bad.range
+    ARGS sweep scenes/lens_caustic.json --set /objects/1/center/1=1:2 -o ${sweep_bad}
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_PREFIX=lenslab: error: --set '/objects/1/center/1=1:2': the range '1:2' is not FROM:TO:COUNT"
+           -DOUTPUT=${sweep_bad}/frames/00000.png -DOUTPUT_CREATED=OFF)
+lenslab_cli_test(NAME sweep.bad.count
+    ARGS sweep scenes/lens_caustic.json --set /objects/1/center/1=1:2:0 -o ${sweep_bad}
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --set '/objects/1/center/1=1:2:0': COUNT '0' is not a whole number from 1 to 100000")
+lenslab_cli_test(NAME sweep.bad.counts_differ
+    ARGS sweep scenes/lens_caustic.json --set /objects/1/center/1=1:2:3
+         --set /objects/1/thickness=0.2:0.3:4 -o ${sweep_bad}
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --set: /objects/1/thickness has 4 frames but /objects/1/center/1 has 3 (the parameters change together, so their COUNTs must agree)")
+lenslab_cli_test(NAME sweep.bad.missing_scene
+    ARGS sweep tests/scene/bad/no_such_scene.json --set /objects/1/center/1=1:2:3 -o ${sweep_bad}
+    CHECKS -DEXPECT_EXIT=1 "-DSTDERR_PREFIX=lenslab: error: tests/scene/bad/no_such_scene.json: cannot open scene file")
+lenslab_cli_test(NAME sweep.bad.frame_scene
+    ARGS sweep scenes/lens_caustic.json --set /objects/1/thickness=-1:0.3:3 -o ${sweep_bad}
+         ${sweep_tiny} --quiet
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: frame 1/3 (/objects/1/thickness = -1): scenes/lens_caustic.json: objects[1].thickness: must be > 0, got -1"
+           -DOUTPUT=${sweep_bad}/frames/00000.png -DOUTPUT_CREATED=OFF)
+lenslab_cli_test(NAME sweep.bad.bench_option_without_analyze
+    ARGS sweep scenes/lens_caustic.json --set /objects/1/center/1=1:2:3 -o ${sweep_bad} --stop 2
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --stop: an option of the optical bench, which needs --analyze")
+lenslab_cli_test(NAME sweep.bad.no_ffmpeg
+    ARGS sweep scenes/lens_caustic.json --set /objects/1/center/1=1:2:3 -o ${sweep_bad}
+         --animation ${sweep_bad}/sweep.gif --ffmpeg ${sweep_bad}/no_ffmpeg
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: --ffmpeg '${sweep_bad}/no_ffmpeg': not an executable file"
+           -DOUTPUT=${sweep_bad}/frames/00000.png -DOUTPUT_CREATED=OFF)
+lenslab_cli_test(NAME sweep.bad.animation_kind
+    ARGS sweep scenes/lens_caustic.json --set /objects/1/center/1=1:2:3 -o ${sweep_bad}
+         --animation ${sweep_bad}/sweep.avi
+    CHECKS -DEXPECT_EXIT=2
+           "-DSTDERR_LINE=lenslab: error: --animation '${sweep_bad}/sweep.avi': unknown kind of animation (use a .gif or .mp4 file name)")
+lenslab_cli_test(NAME sweep.bad.last_frame
+    ARGS sweep scenes/lens_caustic.json --set /objects/1/thickness=0.3:-1:3 -o ${sweep_bad}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: frame 3/3 (/objects/1/thickness = -1): scenes/lens_caustic.json: objects[1].thickness: must be > 0, got -1"
+           -DOUTPUT=${sweep_bad}/frames/00000.png -DOUTPUT_CREATED=OFF)
