@@ -5,12 +5,12 @@ from __future__ import annotations
 import copy
 import json
 import os
-from collections.abc import Iterator, Mapping
 from typing import Any, Callable, Optional
 
 import numpy as np
 
 from . import _lenslab
+from ._document import JsonDocument
 from ._render import _thread_count
 from ._scene import PathLike, SceneSource, _dumps, as_scene, scene_json
 
@@ -65,7 +65,7 @@ class Detector:
         return f"<lenslab.Detector {self.name!r}: {shape} cells, {self.total_power:.6g} W>"
 
 
-class Detection(Mapping):
+class Detection(JsonDocument):
     """The result of lenslab.detect: a read-only dict equal to what `lenslab detect --json`
     prints (scene, photons_per_light, photons_emitted, photons_aimed, seed, seconds,
     detectors), less each detector's "files"; `detectors`, the measurements with their maps
@@ -122,15 +122,6 @@ class Detection(Mapping):
         `lenslab detect -o FOLDER` writes (log: the PNG on a log scale, as --log); returns
         their paths, per detector."""
         return self._run.save(os.fspath(folder), bool(log))
-
-    def __getitem__(self, key: str) -> Any:
-        return self._data[key]
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self._data)
-
-    def __len__(self) -> int:
-        return len(self._data)
 
     def __repr__(self) -> str:
         return f"<lenslab.Detection of {self._data['scene']!r}: {self.detectors!r}>"

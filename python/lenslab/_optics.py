@@ -5,12 +5,13 @@ from __future__ import annotations
 import json
 import math
 import numbers
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Iterable
 from typing import Any, Optional, Sequence
 
 import numpy as np
 
 from . import _lenslab
+from ._document import JsonDocument
 from ._scene import SceneSource, source_json
 
 
@@ -58,7 +59,7 @@ def _excludes(given: dict[str, Any], name: str, others: Sequence[str], why: str)
             raise ValueError(f"{name} excludes {other} ({why})")
 
 
-class Analysis(Mapping):
+class Analysis(JsonDocument):
     """The result of lenslab.analyze: a read-only dict equal to what `lenslab analyze FILE
     --json` prints with the same options (less the names of figure files, which Python asks
     for with figure()); spot_points, the spot diagrams' ray hits; figure(name), a figure as
@@ -84,15 +85,6 @@ class Analysis(Mapping):
         "focal_shift" (--focal-shift-svg), "mtf" (--mtf-svg). All but the ray diagram need
         their table asked for (spots=True, ...)."""
         return self._run.figure(name)
-
-    def __getitem__(self, key: str) -> Any:
-        return self._data[key]
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self._data)
-
-    def __len__(self) -> int:
-        return len(self._data)
 
     def __eq__(self, other: object) -> bool:
         if isinstance(other, Analysis):
