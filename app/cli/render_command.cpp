@@ -8,6 +8,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cluster/cluster_session.h"
 #include "commands.h"
 #include "render/image_io.h"
 #include "render/render_session.h"
@@ -94,14 +95,19 @@ int run(const RenderArgs& a, const RenderOverrides& overrides) {
         amount = s.passes > 0 ? std::to_string(s.passes) + " passes" : "";
         if (s.time > 0) amount += (amount.empty() ? "" : " or ") + format_seconds(s.time);
     }
+    const int ranks = world_communicator().size();
     const std::string label = "rendering " + std::to_string(s.width) + "x" +
                               std::to_string(s.height) + ", " + s.integrator + ", " + amount +
                               ", " + std::to_string(threads) + " thread" +
-                              (threads > 1 ? "s" : "") + ":";
+                              (threads > 1 ? "s" : "") +
+                              (ranks > 1 ? " x " + std::to_string(ranks) + " ranks" : "") + ":";
     ProgressPrinter printer(label);
     RenderControl control(a.quiet ? RenderControl::ProgressFn{}
                                   : RenderControl::ProgressFn{std::ref(printer)});
     g_control = &control;
+    // Under mpirun or srun the ranks share the render; rank 0 writes the image.
+    Communicator& world = world_communicator();
+    control.set_cluster(world);
     // The first Ctrl-C asks the render to stop; SA_RESETHAND makes a second one end the
     // process at once.
     struct sigaction action {};
@@ -114,6 +120,11 @@ int run(const RenderArgs& a, const RenderOverrides& overrides) {
         g_control = nullptr;
         std::cerr << "\nlenslab: render cancelled; nothing written\n";
         return 130;
+    }
+    if (!world.is_root()) {
+        signal(SIGINT, SIG_DFL);
+        g_control = nullptr;
+        return 0;
     }
     if (!result.stats.summary.empty() && !a.quiet)
         std::fprintf(stderr, "%s\n", result.stats.summary.c_str());
