@@ -30,6 +30,7 @@ bool has_variable(const char* name) {
     return v && *v;
 }
 
+#ifdef LENSLAB_HAVE_MPI
 // stdout and stderr to /dev/null; returns a copy of the old stderr for errors.
 int silence_output() {
     const int null = open("/dev/null", O_WRONLY);
@@ -42,6 +43,7 @@ int silence_output() {
     close(null);
     return saved;
 }
+#endif
 
 }  // namespace
 

@@ -39,7 +39,7 @@ public:
 private:
     std::unique_ptr<Communicator> m_world_owned;
     Communicator* m_world = nullptr;
-    bool m_mpi = false;
+    [[maybe_unused]] bool m_mpi = false;  // MPI was initialised (only with MPI built in)
     int m_saved_stderr = -1;  // rank > 0: the stderr it had before /dev/null
 };
 
