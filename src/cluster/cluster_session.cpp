@@ -73,6 +73,12 @@ ClusterSession::ClusterSession() {
         m_world = m_world_owned.get();
         if (!m_world->is_root()) m_saved_stderr = silence_output();
     }
+#else
+    if (launched_as_parallel_job()) {
+        std::cerr << "lenslab: warning: started as one rank of a parallel job, but this lenslab "
+                     "was built without MPI: every rank does the whole job alone "
+                     "(docs/cluster.md)\n";
+    }
 #endif
     g_session = this;
 }

@@ -40,7 +40,7 @@ private:
     std::unique_ptr<Communicator> m_world_owned;
     Communicator* m_world = nullptr;
     [[maybe_unused]] bool m_mpi = false;  // MPI was initialised (only with MPI built in)
-    int m_saved_stderr = -1;  // rank > 0: the stderr it had before /dev/null
+    int m_saved_stderr = -1;              // rank > 0: the stderr it had before /dev/null
 };
 
 // The world of the live ClusterSession, or this process alone when there is none (the

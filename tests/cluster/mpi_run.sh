@@ -69,7 +69,8 @@ case $case in
         set -e
         [ "$status" != 0 ] || fail "the job exited 0"
         [ ! -e "$out/image.png" ] || fail "a partial image was written"
-        ls "$out" | grep -q '\.tmp' && fail "a temporary file was left: $(ls "$out")"
+        [ "$(ls -A "$out")" = "$(printf 'stderr.txt\nstdout.txt')" ] ||
+            fail "a file was left: $(ls -A "$out")"
         if [ "$case" = failing_rank ]; then
             grep -q "^lenslab: error (rank 1 of 2): rank 1 failed on purpose" "$out/stderr.txt" ||
                 fail "no message from the failing rank: $(cat "$out/stderr.txt")"

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <vector>
 
 #include "cluster/byte_packing.h"
@@ -12,6 +13,7 @@
 #include "cluster/local_communicator.h"
 #include "cluster/rank_order_sum.h"
 #include "render/render_control.h"
+#include "util/error.h"
 
 namespace lenslab {
 namespace {
@@ -96,11 +98,74 @@ TEST(Cluster, SumsAloneAreTheValuesThemselves) {
     EXPECT_EQ(u, (std::vector<uint64_t>{7, 9}));
 }
 
-TEST(Cluster, RankOrderMattersForFloatingPointSums) {
-    // Why the sums gather to rank 0 and add in rank order rather than use MPI_Allreduce:
-    // floating-point addition is not associative, so another order can change the bits.
+// Rank 0 of three, whose ranks 1 and 2 sent `others` (what MPI would deliver).
+struct ClusterTestRoot final : Communicator {
+    std::vector<Bytes> others;
+    int rank() const override { return 0; }
+    int size() const override { return 3; }
+    void barrier() override {}
+    std::vector<Bytes> all_gather(std::span<const std::byte> mine) override {
+        return gather_to_root(mine);
+    }
+    std::vector<Bytes> gather_to_root(std::span<const std::byte> mine) override {
+        std::vector<Bytes> all{Bytes(mine.begin(), mine.end())};
+        all.insert(all.end(), others.begin(), others.end());
+        return all;
+    }
+    void broadcast(Bytes&) override {}  // the root keeps what it sends
+};
+
+TEST(Cluster, SumsAddTheRanksInRankOrder) {
+    // Floating-point addition is not associative: (1e16 + -1e16) + 1 = 1, but
+    // 1e16 + (-1e16 + 1) = 0. Rank order 0, 1, 2 must give the first, every time (which
+    // MPI_Allreduce does not promise).
     const double a = 1e16, b = -1e16, c = 1.0;
-    EXPECT_NE((a + b) + c, a + (b + c));
+    ASSERT_NE((a + b) + c, a + (b + c));
+    ClusterTestRoot root;
+    for (double v : {b, c}) {
+        Bytes part;
+        append_value(part, v);
+        append_value(part, 2.0);
+        root.others.push_back(part);
+    }
+    std::vector<double> values{a, 2.0};
+    sum_in_rank_order(root, values);
+    EXPECT_EQ(values, (std::vector<double>{(a + b) + c, 6.0}));
+
+    ClusterTestRoot counts;
+    for (uint64_t v : {uint64_t{2}, uint64_t{3}}) {
+        Bytes part;
+        append_value(part, v);
+        counts.others.push_back(part);
+    }
+    std::vector<uint64_t> n{1};
+    sum_in_rank_order(counts, n);
+    EXPECT_EQ(n[0], 6u);
+}
+
+TEST(Cluster, SumsRefuseArraysOfDifferentLengths) {
+    ClusterTestRoot root;
+    root.others = {Bytes(8), Bytes(16)};
+    std::vector<double> values{1.0};
+    EXPECT_THROW(sum_in_rank_order(root, values), std::logic_error);
+}
+
+TEST(Cluster, RootGetsEveryRanksPartsInItemOrder) {
+    // Items 0..5 over 3 ranks: rank 1 has 1 and 4, rank 2 has 2 and 5.
+    ClusterTestRoot root;
+    Bytes from1, from2;
+    for (uint64_t item : {1, 4}) {
+        append_value(from1, uint64_t{1});
+        append_value(from1, static_cast<int>(10 * item));
+    }
+    for (uint64_t item : {2, 5}) {
+        append_value(from2, uint64_t{1});
+        append_value(from2, static_cast<int>(10 * item));
+    }
+    root.others = {from1, from2};
+    std::vector<std::vector<int>> parts{{0}, {}, {}, {30}, {}, {}};
+    gather_dealt_parts_to_root(root, parts);
+    EXPECT_EQ(parts, (std::vector<std::vector<int>>{{0}, {10}, {20}, {30}, {40}, {50}}));
 }
 
 TEST(Cluster, BytesRoundTrip) {
@@ -134,6 +199,9 @@ TEST(Cluster, NoSessionMeansThisProcessAlone) {
 TEST(Cluster, FaultHooksActOnlyInJobsOfSeveralRanks) {
     setenv("LENSLAB_TEST_FAIL_RANK", "0", 1);
     EXPECT_NO_THROW(cluster_fault_point(this_process_alone()));
+    EXPECT_THROW(cluster_fault_point(ClusterTestRoot{}), Error);
+    setenv("LENSLAB_TEST_FAIL_RANK", "2", 1);
+    EXPECT_NO_THROW(cluster_fault_point(ClusterTestRoot{}));
     unsetenv("LENSLAB_TEST_FAIL_RANK");
 }
 
