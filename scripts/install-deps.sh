@@ -15,6 +15,7 @@ PACKAGES=(
     lld
     pybind11-dev python3-dev python3-numpy python3-pytest
     jupyter-nbconvert python3-nbformat python3-ipykernel python3-matplotlib ffmpeg
+    libopenmpi-dev openmpi-bin
 )
 # libfftw3-dev: the FFTs of the diffraction PSF and MTF (src/analysis/fft_grid.cpp).
 # clang + libclang-rt-14-dev: libFuzzer and clang's sanitizers for the fuzz targets
@@ -27,6 +28,7 @@ PACKAGES=(
 # python3-ipykernel: the Python 3 kernel the notebooks execute in.
 # python3-matplotlib: the notebooks' plots (Agg backend) and the caustic's animation.
 # ffmpeg: the animation writer matplotlib uses for the caustic notebook's MP4.
+# libopenmpi-dev, openmpi-bin: Open MPI and mpirun, for renders split across ranks (docs/cluster.md).
 
 missing=()
 for p in "${PACKAGES[@]}"; do

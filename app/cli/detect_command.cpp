@@ -12,6 +12,7 @@
 #include "analysis/detection_run.h"
 #include "analysis/detector.h"
 #include "analysis/detector_files.h"
+#include "cluster/cluster_session.h"
 #include "commands.h"
 #include "render/photon_tracer.h"
 #include "render_overrides.h"
@@ -56,6 +57,9 @@ int run(const DetectArgs& a, const RenderOverrides& overrides) {
                                         std::fprintf(stderr, "detecting %3d%%\n", percent);
                                     }});
     g_control = &control;
+    // Under mpirun or srun the ranks share the photons; rank 0 writes the files.
+    Communicator& world = world_communicator();
+    control.set_cluster(world);
     struct sigaction action {};
     action.sa_handler = on_detect_interrupt;
     action.sa_flags = SA_RESETHAND;  // a second Ctrl-C ends the process at once
@@ -67,6 +71,7 @@ int run(const DetectArgs& a, const RenderOverrides& overrides) {
         std::cerr << "lenslab: detection cancelled; nothing written\n";
         return 130;
     }
+    if (!world.is_root()) return 0;
 
     create_output_directory(a.output);
     const std::vector<std::string> stems = detector_file_stems(result);

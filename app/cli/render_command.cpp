@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cluster/cluster_session.h"
 #include "commands.h"
 #include "render/image_io.h"
 #include "render_image.h"
@@ -32,7 +33,11 @@ int run(const RenderArgs& a) {
         return 2;
     }
     const Scene scene = overrides.scene_from(root, a.scene);
-    return render_image(scene, a.image, a.output) == RenderImageOutcome::Written ? 0 : 130;
+    // Under mpirun or srun the ranks share the render; rank 0 writes the image.
+    return render_image(scene, a.image, a.output, world_communicator()) ==
+                   RenderImageOutcome::Written
+               ? 0
+               : 130;
 }
 
 }  // namespace

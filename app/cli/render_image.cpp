@@ -76,7 +76,7 @@ std::optional<std::string> unbounded_passes_error(const RenderOverrides& overrid
 }
 
 RenderImageOutcome render_image(const Scene& scene, const RenderImageOptions& options,
-                                const std::string& output) {
+                                const std::string& output, Communicator& cluster) {
     const RenderSettings& s = scene.render;
     const int threads = options.threads > 0 ? options.threads : tbb::info::default_concurrency();
     const bool progressive = integrator_info(s.integrator).progressive;
@@ -88,11 +88,15 @@ RenderImageOutcome render_image(const Scene& scene, const RenderImageOptions& op
     const std::string label = "rendering " + std::to_string(s.width) + "x" +
                               std::to_string(s.height) + ", " + s.integrator + ", " + amount +
                               ", " + std::to_string(threads) + " thread" +
-                              (threads > 1 ? "s" : "") + ":";
+                              (threads > 1 ? "s" : "") +
+                              (cluster.size() > 1 ? " x " + std::to_string(cluster.size()) + " ranks"
+                                                  : "") +
+                              ":";
     ProgressPrinter printer(label);
     RenderControl control(options.quiet ? RenderControl::ProgressFn{}
                                         : RenderControl::ProgressFn{std::ref(printer)});
     g_control = &control;
+    control.set_cluster(cluster);
     // The first Ctrl-C asks the render to stop; SA_RESETHAND makes a second one end the
     // process at once.
     struct sigaction action {};
@@ -105,6 +109,11 @@ RenderImageOutcome render_image(const Scene& scene, const RenderImageOptions& op
         g_control = nullptr;
         std::cerr << "\nlenslab: render cancelled; nothing written\n";
         return RenderImageOutcome::Cancelled;
+    }
+    if (!cluster.is_root()) {
+        signal(SIGINT, SIG_DFL);
+        g_control = nullptr;
+        return RenderImageOutcome::Written;  // by the root
     }
     if (!result.stats.summary.empty() && !options.quiet)
         std::fprintf(stderr, "%s\n", result.stats.summary.c_str());

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "cluster/communicator.h"
 #include "render_overrides.h"
 #include "scene/scene.h"
 
@@ -35,7 +36,10 @@ enum class RenderImageOutcome { Written, Cancelled };
 
 // Renders `scene` and writes it to `output` (PNG or EXR) atomically, with progress on stderr
 // unless quiet and "wrote ..." on stdout. Ctrl-C cancels the render and writes nothing.
+// `cluster`: the ranks that share the render (`lenslab render` under mpirun); its root writes
+// the image, the others return Written having written nothing.
 RenderImageOutcome render_image(const Scene& scene, const RenderImageOptions& options,
-                                const std::string& output);
+                                const std::string& output,
+                                Communicator& cluster = this_process_alone());
 
 }  // namespace lenslab::cli

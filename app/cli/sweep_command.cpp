@@ -12,6 +12,7 @@
 #include "analysis/analyze_request.h"
 #include "analysis/sweep_table.h"
 #include "analyze_options.h"
+#include "cluster/cluster_session.h"
 #include "commands.h"
 #include "render_image.h"
 #include "scene/json_reader.h"
@@ -176,7 +177,9 @@ void assemble_sweep(const SweepArgs& a, const SweepPlan& plan) {
 }
 
 int run(const SweepArgs& a) {
-    const int rank = 0, size = 1;  // the cluster's rank and size once MPI is wired
+    // Under mpirun or srun the ranks share the frames, each rendering its own ones alone.
+    Communicator& world = world_communicator();
+    const int rank = world.rank(), size = world.size();
 
     SweepPlan plan;
     try {
@@ -202,7 +205,8 @@ int run(const SweepArgs& a) {
     // reading the two end frames' scenes finds nearly every bad range before any work.
     (void)frame_scene(a, plan, base, 0);
     if (plan.count > 1) (void)frame_scene(a, plan, base, plan.count - 1);
-    create_output_directory(frames_dir);
+    if (rank == 0) create_output_directory(frames_dir);
+    world.barrier();  // the folder is there for every rank
     if (!a.animation.empty()) check_output_file(a.animation);  // it may go into the new folder
 
     std::vector<int> todo;
@@ -228,8 +232,8 @@ int run(const SweepArgs& a) {
             return sweep_usage_error(e.what());
         }
     }
-    // With several ranks, rank 0 must first wait for the others' frames (a barrier): it
-    // assembles from the frame files, all of them.
+    // Rank 0 assembles from the frame files, all of them: it waits for the others' first.
+    world.barrier();
     if (rank == 0) assemble_sweep(a, plan);
     return 0;
 }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "cluster/dealt_parts.h"
 #include "optics/spectrum.h"
 #include "render/photon_tracer.h"
 #include "scene/scene_error.h"
@@ -35,8 +36,8 @@ struct Arrival {
     int band;  // the band of a single-wavelength photon; -1: the light's whole spectrum
     double u, v;
     double watts;
-    double scale;  // whole-spectrum photons: the share of `spectrum`
-    const SpectrumWatts* spectrum;
+    double scale;  // whole-spectrum photons: the share of their light's spectrum
+    int spectrum;  // whole-spectrum photons: index of the light's spectrum in scene.lights()
 };
 
 bool counts(DetectorSide side, const Vec3& direction, const Vec3& normal) {
@@ -129,8 +130,11 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
     // photon carries (whatever order the tracer numbers lights in).
     std::vector<const Spectrum*> spectra;
     for (const LightPtr& l : scene.lights()) spectra.push_back(&l->spectrum());
-    // watts[detector][spectrum]
-    std::vector<std::unordered_map<const Spectrum*, SpectrumWatts>> watts(result.detectors.size());
+    // watts[detector][light]; spectrum_index: a light's spectrum to its index (as numbers, the
+    // arrivals can go to another rank).
+    std::unordered_map<const Spectrum*, int> spectrum_index;
+    for (size_t l = 0; l < spectra.size(); ++l) spectrum_index[spectra[l]] = static_cast<int>(l);
+    std::vector<std::vector<SpectrumWatts>> watts(result.detectors.size());
     for (size_t d = 0; d < result.detectors.size(); ++d) {
         const std::vector<double>& edges = result.detectors[d].settings.band_edges;
         for (const Spectrum* s : spectra) {
@@ -138,9 +142,12 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
             w.total = radiant_watts(*s);
             for (size_t b = 0; b + 1 < edges.size(); ++b)
                 w.band.push_back(radiant_watts(*s, edges[b], edges[b + 1]));
-            watts[d][s] = w;
+            watts[d].push_back(w);
         }
     }
+    // In a job of several ranks each traces the chunks dealt to it and rank 0 sums all the
+    // arrivals in photon order, as one process does: the same maps, byte for byte.
+    Communicator& comm = control.cluster();
 
     PhotonTracingSettings tracing;
     tracing.photons_per_light = settings.photons_per_light;
@@ -164,6 +171,7 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
                 tbb::blocked_range<int64_t>(0, chunks, 1),
                 [&](const tbb::blocked_range<int64_t>& r) {
                     for (int64_t chunk = r.begin(); chunk != r.end(); ++chunk) {
+                        if (!dealt_to(chunk, comm)) continue;
                         std::vector<Arrival>& out = found[static_cast<size_t>(chunk)];
                         const PhotonArrivalFn on_arrival = [&](const PhotonArrival& a) {
                             const int d =
@@ -176,20 +184,21 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
                             rec.u = m.grid.frame().u_of(a.interaction->point());
                             rec.v = m.grid.frame().v_of(a.interaction->point());
                             rec.cell = m.grid.cell_at(rec.u, rec.v);
-                            const auto& table = watts[static_cast<size_t>(d)];
-                            const auto it = table.find(a.spectrum);
-                            if (it == table.end())
+                            const auto it = spectrum_index.find(a.spectrum);
+                            if (it == spectrum_index.end())
                                 throw std::logic_error("detector: a photon from an unknown light");
+                            const SpectrumWatts& w =
+                                watts[static_cast<size_t>(d)][static_cast<size_t>(it->second)];
                             if (a.lambda_nm > 0) {
                                 // Dispersed: its whole share of the light's power, at one
                                 // wavelength.
                                 rec.band = band_of(m.settings.band_edges, a.lambda_nm);
-                                rec.watts = a.scale * it->second.total;
+                                rec.watts = a.scale * w.total;
                             } else {
                                 rec.band = -1;
-                                rec.spectrum = &it->second;
+                                rec.spectrum = it->second;
                                 rec.scale = a.scale;
-                                rec.watts = a.scale * it->second.total;
+                                rec.watts = a.scale * w.total;
                             }
                             out.push_back(rec);
                         };
@@ -201,6 +210,7 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
                     }
                 });
         });
+        gather_dealt_parts_to_root(comm, found);
         // Summed in photon order, so the result does not depend on the threads.
         for (const std::vector<Arrival>& chunk : found) {
             for (const Arrival& a : chunk) {
@@ -214,7 +224,10 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
                     m.band_total[static_cast<size_t>(a.band)] += a.watts;
                 } else if (a.band == -1) {
                     for (size_t b = 0; b < m.band_power.size(); ++b) {
-                        const double w = a.scale * a.spectrum->band[b];
+                        const double w =
+                            a.scale *
+                            watts[static_cast<size_t>(a.detector)][static_cast<size_t>(a.spectrum)]
+                                .band[b];
                         m.band_power[b][c] += w;
                         m.band_total[b] += w;
                     }

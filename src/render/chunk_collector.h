@@ -55,6 +55,12 @@ public:
         }
     }
 
+    // A copy of slot `slot`'s items (none if it was never put).
+    std::vector<T> items(size_t slot) const {
+        const Slot& s = m_slots[slot];
+        return std::vector<T>(s.data, s.data + s.count);
+    }
+
     // Every slot's items in slot order; `offset[s]` is where slot s's begin (`offset.back()`
     // the total). Frees the staging. The copy runs in parallel and is the first write to the
     // array, so its page faults are spread over the threads too.

@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "cluster/dealt_parts.h"
 #include "render/chunk_collector.h"
 #include "render/photon_walk.h"
 
@@ -122,6 +123,26 @@ struct MapDeposit {
         }
     }
 };
+// In a job of several ranks: the chunks the others traced, into `found` (slot c holds chunk
+// c's direct photons, chunks + c its caustic ones), so every rank builds the whole maps with
+// the photons in the order one process stores them.
+void share_map_chunks(Communicator& comm, ChunkCollector<Photon>& found, size_t chunks) {
+    if (comm.alone()) return;
+    std::vector<std::vector<Photon>> direct(chunks), caustic(chunks);
+    for (size_t c = 0; c < chunks; ++c) {
+        if (!dealt_to(static_cast<int64_t>(c), comm)) continue;
+        direct[c] = found.items(c);
+        caustic[c] = found.items(chunks + c);
+    }
+    share_dealt_parts(comm, direct);
+    share_dealt_parts(comm, caustic);
+    for (size_t c = 0; c < chunks; ++c) {
+        if (dealt_to(static_cast<int64_t>(c), comm)) continue;
+        found.put(c, direct[c]);
+        found.put(chunks + c, caustic[c]);
+    }
+}
+
 }  // namespace
 
 PhotonPlan photon_plan(const Scene& scene, const PhotonTracingSettings& settings) {
@@ -170,6 +191,7 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
         found.put(static_cast<size_t>(chunk), direct);
         found.put(chunks + static_cast<size_t>(chunk), caustic);
     });
+    share_map_chunks(control.cluster(), found, chunks);
     // Cancelled: the render throws the photons away, so do not build a tree over them.
     if (control.cancelled()) return {};
     // In photon order, direct then caustic.

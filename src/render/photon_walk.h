@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "cluster/dealt_parts.h"
 #include "math/rng.h"
 #include "render/photon_emission.h"
 #include "render/render_control.h"
@@ -64,12 +65,15 @@ void trace_photon_range(int64_t first, int64_t last, const RenderControl& contro
 
 // Calls `body(chunk, first, last)` for each chunk of photons [first, last) of `photons`, in
 // parallel; chunks not begun when `control` is cancelled are skipped (the body stops within
-// its chunk with trace_photon_range).
+// its chunk with trace_photon_range). In a job of several ranks, only the chunks dealt to
+// this one (cluster/dealt_parts.h): the caller shares the deposits afterwards.
 template <class Body>
 void for_each_photon_chunk(int64_t photons, RenderControl& control, const Body& body) {
+    const Communicator& comm = control.cluster();
     tbb::parallel_for(tbb::blocked_range<int64_t>(0, photon_chunks(photons), 1),
                       [&](const tbb::blocked_range<int64_t>& r) {
                           for (int64_t chunk = r.begin(); chunk != r.end(); ++chunk) {
+                              if (!dealt_to(chunk, comm)) continue;
                               if (control.cancelled()) return;
                               const int64_t first = chunk * kPhotonChunk;
                               body(chunk, first, std::min(photons, first + kPhotonChunk));

@@ -4,6 +4,8 @@
 #include <atomic>
 #include <cmath>
 
+#include "cluster/dealt_parts.h"
+#include "cluster/rank_order_sum.h"
 #include "math/rng.h"
 #include "render/integrator.h"
 
@@ -16,6 +18,36 @@ constexpr int kTileSize = 16;
 // Stream index for a pixel: distinct per pixel, independent of which thread runs it.
 uint64_t pixel_stream(int x, int y, int width) {
     return static_cast<uint64_t>(y) * static_cast<uint64_t>(width) + static_cast<uint64_t>(x);
+}
+
+// Tile `tile`'s pixels, row by row, out of or into `film`.
+template <class Visit>
+void for_each_tile_pixel(const Film& film, int tile, const Visit& visit) {
+    const int tiles_x = (film.width() + kTileSize - 1) / kTileSize;
+    const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+    for (int y = y0; y < std::min(y0 + kTileSize, film.height()); ++y)
+        for (int x = x0; x < std::min(x0 + kTileSize, film.width()); ++x) visit(x, y);
+}
+
+// Rank 0 receives the tiles the other ranks rendered. Each pixel's samples come from its own
+// random stream (pixel_stream), so a tile is the same whichever rank renders it.
+void gather_tiles_to_root(Communicator& comm, Film& film, int tiles) {
+    std::vector<std::vector<PixelRgb>> parts(static_cast<size_t>(tiles));
+    for (int tile = comm.rank(); tile < tiles; tile += comm.size()) {
+        for_each_tile_pixel(film, tile, [&](int x, int y) {
+            parts[static_cast<size_t>(tile)].push_back(film.at(x, y));
+        });
+    }
+    gather_dealt_parts_to_root(comm, parts);
+    if (!comm.is_root()) return;
+    for (int tile = 0; tile < tiles; ++tile) {
+        if (dealt_to(tile, comm)) continue;
+        const std::vector<PixelRgb>& part = parts[static_cast<size_t>(tile)];
+        size_t i = 0;
+        for_each_tile_pixel(film, tile, [&](int x, int y) {
+            if (i < part.size()) film.at(x, y) = part[i++];
+        });
+    }
 }
 
 }  // namespace
@@ -31,10 +63,15 @@ bool PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& fil
     const int strata = static_cast<int>(std::lround(std::sqrt(spp)));
     const bool stratified = strata * strata == spp;
     std::atomic<int> done{0};
+    // In a job of several ranks each renders the tiles dealt to it.
+    Communicator& comm = control.cluster();
+    int mine = 0;
+    for (int tile = 0; tile < tiles; ++tile) mine += dealt_to(tile, comm);
 
     tbb::parallel_for(
         tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& range) {
             for (int tile = range.begin(); tile != range.end(); ++tile) {
+                if (!dealt_to(tile, comm)) continue;
                 if (control.cancelled()) return;
                 const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
                 for (int y = y0; y < std::min(y0 + kTileSize, h); ++y) {
@@ -68,10 +105,14 @@ bool PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& fil
                         film.set(x, y, sum * (1.0 / spp));
                     }
                 }
-                control.report(static_cast<double>(++done) / tiles);
+                control.report(static_cast<double>(++done) / mine);
             }
         });
-    return done == tiles;
+    if (comm.alone()) return done == tiles;
+    gather_tiles_to_root(comm, film, tiles);
+    uint64_t unfinished[1] = {done == mine ? 0u : 1u};
+    sum_in_rank_order(comm, unfinished);
+    return unfinished[0] == 0;
 }
 
 }  // namespace lenslab

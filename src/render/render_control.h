@@ -1,10 +1,13 @@
 #pragma once
-// Progress reporting and cancellation shared between a render and whoever started it.
+// Progress reporting and cancellation shared between a render and whoever started it, and
+// the processes the render is split across (this one alone unless set: src/cluster/).
 
 #include <atomic>
 #include <cstdint>
 #include <functional>
 #include <mutex>
+
+#include "cluster/communicator.h"
 
 namespace lenslab {
 
@@ -24,6 +27,11 @@ public:
     void count_non_finite_sample() { m_non_finite.fetch_add(1, std::memory_order_relaxed); }
     int64_t non_finite_samples() const { return m_non_finite.load(std::memory_order_relaxed); }
 
+    // The ranks that render together: each does its dealt share and they exchange results
+    // so that rank 0 ends with the image one process would make (the same bytes).
+    Communicator& cluster() const { return *m_cluster; }
+    void set_cluster(Communicator& comm) { m_cluster = &comm; }
+
     void report(double fraction) {
         if (!m_progress) return;
         std::lock_guard lock(m_mutex);
@@ -35,6 +43,7 @@ private:
     std::atomic<bool> m_cancelled{false};
     std::atomic<int64_t> m_non_finite{0};
     std::mutex m_mutex;
+    Communicator* m_cluster = &this_process_alone();
 };
 
 }  // namespace lenslab

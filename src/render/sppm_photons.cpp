@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "accel/photon.h"
+#include "cluster/dealt_parts.h"
 #include "optics/glass.h"
 #include "render/pass_wavelength.h"
 #include "render/photon_walk.h"
@@ -130,6 +131,10 @@ PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s,
             });
         });
     });
+    // In a job of several ranks each traced the chunks dealt to it: every rank gets them all,
+    // chunk by chunk, so the pass is the one a single process traces.
+    share_dealt_parts(control.cluster(), hits);
+    share_dealt_parts(control.cluster(), chains);
     PhotonPass pass;
     if (control.cancelled()) return pass;
     std::vector<size_t> chain_at, hit_at;

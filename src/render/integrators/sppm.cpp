@@ -10,6 +10,8 @@
 
 #include "accel/hash_grid.h"
 #include "accel/photon.h"
+#include "cluster/dealt_parts.h"
+#include "cluster/rank_order_sum.h"
 #include "math/constants.h"
 #include "math/rng.h"
 #include "optics/glass.h"
@@ -210,6 +212,11 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     pass.lambda_nm = m_pass_wavelength.sample(
         pass.index, Rng(r.seed, kSppmRotationStream - 1).uniform(), pass.lambda_pdf);
 
+    // In a job of several ranks each traces the camera paths and gathers the photons of the
+    // image rows dealt to it, and traces the photon chunks dealt to it (docs/cluster.md).
+    Communicator& comm = control.cluster();
+    m_cluster = &comm;
+
     // 1. Camera paths to this pass's visible points.
     auto t0 = std::chrono::steady_clock::now();
     std::vector<VisiblePoint>& points = m_points;
@@ -217,12 +224,21 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     tbb::parallel_for(tbb::blocked_range<int>(0, m_height, 1),
                       [&](const tbb::blocked_range<int>& rows) {
                           for (int y = rows.begin(); y != rows.end(); ++y) {
+                              if (!dealt_to(y, comm)) continue;
                               if (control.cancelled()) return;
                               for (int x = 0; x < m_width; ++x)
                                   trace_camera_path(x, y, pass, points[size_t(y) * m_width + x]);
                           }
                       });
     if (control.cancelled()) return false;
+    // A pixel's radius starts at its first visible point.
+    for (size_t i = 0; i < points.size(); ++i) {
+        if (!points[i].valid || m_pixels[i].radius != 0.0) continue;
+        if (!dealt_to(static_cast<int64_t>(i) / m_width, comm)) continue;
+        m_pixels[i].radius =
+            r.initial_radius > 0 ? r.initial_radius : auto_radius(points[i].path_length);
+    }
+    share_visible_points(comm);
     const double camera_seconds = seconds_since(t0);
 
     // 2. Photons. Dispersed photons take the pass wavelength in proportion to the camera
@@ -249,14 +265,8 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     t0 = std::chrono::steady_clock::now();
     std::vector<double> radii;
     radii.reserve(points.size());
-    for (size_t i = 0; i < points.size(); ++i) {
-        if (!points[i].valid) continue;
-        if (m_pixels[i].radius == 0.0) {
-            m_pixels[i].radius =
-                r.initial_radius > 0 ? r.initial_radius : auto_radius(points[i].path_length);
-        }
-        radii.push_back(m_pixels[i].radius);
-    }
+    for (size_t i = 0; i < points.size(); ++i)
+        if (points[i].valid) radii.push_back(m_pixels[i].radius);
     double cell = m_radius_cap;
     if (!radii.empty()) {
         // Cells twice the median radius: most queries look at 8 cells or fewer. At least an
@@ -285,6 +295,7 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
         tbb::blocked_range<size_t>(0, m_pixels.size(), 256),
         [&](const tbb::blocked_range<size_t>& range) {
             for (size_t i = range.begin(); i != range.end(); ++i) {
+                if (!dealt_to(static_cast<int64_t>(i) / m_width, comm)) continue;
                 const VisiblePoint& vp = points[i];
                 Pixel& px = m_pixels[i];
                 px.direct += vp.direct;
@@ -350,24 +361,62 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     m_stats.camera_seconds += camera_seconds;
     m_stats.photon_seconds += photon_seconds;
     m_stats.gather_seconds += seconds_since(t0);
-    double sum = 0;
-    size_t count = 0;
-    for (const Pixel& px : m_pixels) {
-        if (px.radius > 0) {
-            sum += px.radius;
-            ++count;
+    double sum[2] = {0, 0};  // of the radii, and their count
+    for (size_t i = 0; i < m_pixels.size(); ++i) {
+        if (m_pixels[i].radius > 0 && dealt_to(static_cast<int64_t>(i) / m_width, comm)) {
+            sum[0] += m_pixels[i].radius;
+            sum[1] += 1;
         }
     }
-    m_stats.mean_radius = count ? sum / static_cast<double>(count) : 0.0;
+    sum_in_rank_order(comm, sum);
+    m_stats.mean_radius = sum[1] > 0 ? sum[0] / sum[1] : 0.0;
     return true;
+}
+
+void SppmIntegrator::share_visible_points(Communicator& comm) {
+    if (comm.alone()) return;
+    // Per row: each pixel's radius, and whether its visible point is valid (1) and dispersed
+    // (2). Every rank then picks the same grid cell and the same share of dispersed photons.
+    const size_t rows = static_cast<size_t>(m_height), width = static_cast<size_t>(m_width);
+    std::vector<std::vector<double>> radius(rows);
+    std::vector<std::vector<uint8_t>> flags(rows);
+    for (size_t y = static_cast<size_t>(comm.rank()); y < rows; y += size_t(comm.size())) {
+        for (size_t i = y * width; i < (y + 1) * width; ++i) {
+            radius[y].push_back(m_pixels[i].radius);
+            flags[y].push_back(uint8_t(m_points[i].valid) | uint8_t(m_points[i].dispersed << 1));
+        }
+    }
+    share_dealt_parts(comm, radius);
+    share_dealt_parts(comm, flags);
+    for (size_t y = 0; y < rows; ++y) {
+        if (dealt_to(static_cast<int64_t>(y), comm)) continue;
+        for (size_t x = 0; x < width; ++x) {
+            m_pixels[y * width + x].radius = radius[y][x];
+            m_points[y * width + x].valid = flags[y][x] & 1;
+            m_points[y * width + x].dispersed = flags[y][x] & 2;
+        }
+    }
 }
 
 void SppmIntegrator::develop(Film& film) const {
     if (m_stats.passes == 0) return;
+    // In a job of several ranks, rank 0 receives the statistics of the rows it did not
+    // gather (collective: every rank calls develop).
+    Communicator& comm = *m_cluster;
+    std::vector<std::vector<Pixel>> rows(static_cast<size_t>(m_height));
+    if (!comm.alone()) {
+        for (int y = comm.rank(); y < m_height; y += comm.size()) {
+            const auto row = m_pixels.begin() + static_cast<ptrdiff_t>(y) * m_width;
+            rows[static_cast<size_t>(y)].assign(row, row + m_width);
+        }
+        gather_dealt_parts_to_root(comm, rows);
+    }
     const double inv_passes = 1.0 / m_stats.passes;
     for (int y = 0; y < m_height; ++y) {
+        const bool here = dealt_to(y, comm) || !comm.is_root();
         for (int x = 0; x < m_width; ++x) {
-            const Pixel& px = m_pixels[size_t(y) * m_width + x];
+            const Pixel& px = here ? m_pixels[size_t(y) * m_width + x]
+                                   : rows[static_cast<size_t>(y)][static_cast<size_t>(x)];
             Rgb l = px.direct * inv_passes;
             if (px.radius > 0) l += px.tau * (inv_passes / (kPi * px.radius * px.radius));
             film.set(x, y, l.is_finite() ? l : Rgb{});

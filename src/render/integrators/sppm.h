@@ -23,9 +23,18 @@
 // (pass_wavelength.h) and count through the density it was drawn with. Output is the same
 // for any thread count: per-pixel and per-photon random streams, and each pixel sums its
 // photons in photon order.
+//
+// In a job of several ranks (src/cluster/) the pass is split twice: camera paths and the
+// gather by image rows (row y to rank y mod N), photons by chunk (chunk c to rank c mod N).
+// Per pass every rank sends every other its photon hits (32 bytes each, plus 4 per diffuse
+// bounce) and per pixel of its rows the radius and two flags (9 bytes); rank 0 receives the
+// pixels' statistics once at the end (64 bytes a pixel). Every rank then sees the photons in
+// the order one process traces them and gathers its pixels exactly as it would: the image
+// is the same, byte for byte, at any number of ranks.
 
 #include <vector>
 
+#include "cluster/communicator.h"
 #include "render/integrator.h"
 #include "render/pass_wavelength.h"
 
@@ -58,6 +67,7 @@ private:
 
     void trace_camera_path(int x, int y, const PassState& pass, VisiblePoint& vp) const;
     double auto_radius(double path_length) const;
+    void share_visible_points(Communicator& comm);
     int64_t pass_photons() const;
 
     const Scene& m_scene;
@@ -69,6 +79,7 @@ private:
     std::vector<Pixel> m_pixels;
     std::vector<VisiblePoint> m_points;  // this pass's, kept to reuse the memory
     SppmStats m_stats;
+    Communicator* m_cluster = &this_process_alone();  // of the last pass, for develop()
 };
 
 }  // namespace lenslab
