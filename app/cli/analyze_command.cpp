@@ -54,6 +54,13 @@ int run(const AnalyzeArgs& args) {
     const OpticalSystem& system = results.system;
     std::cout << "lenslab analyze " << args.scene << ": "
               << report_table(system, results.report, a.seidel);
+    if (!results.from_lens_file.empty()) {
+        std::cout << "\nFrom the lens file's bench data (options given here win):";
+        for (const std::string& key : results.from_lens_file) std::cout << " " << key;
+        std::cout << "\n";
+    }
+    for (const std::string& why : results.not_from_lens_file)
+        std::cout << "Not taken from the lens file: " << why << "\n";
     if (results.diffraction) std::cout << diffraction_table(*results.diffraction, a.psf, a.mtf);
     if (results.spots) std::cout << spots_table(system, *results.spots);
     if (results.fans) std::cout << fans_table(system, *results.fans);

@@ -8,8 +8,10 @@ void add_analyze_options(CLI::App& cmd, AnalyzeRequest& request) {
     CLI::Option* wavelength =
         cmd.add_option("-w,--wavelength", request.wavelength_nm,
                        "Wavelength in air in nm for the figures (default: the d line, 587.56 "
-                       "nm; in vacuum for a scene with \"ambient\": \"vacuum\")")
-            ->check(CLI::PositiveNumber);
+                       "nm; in vacuum for a scene with \"ambient\": \"vacuum\"; an imported "
+                       "lens file's wavelengths when its scene has them)")
+            ->check(CLI::PositiveNumber)
+            ->each([&request](const std::string&) { request.wavelength_given = true; });
     cmd.add_option("--wavelengths", request.wavelengths,
                    "Wavelengths in nm, comma-separated (e.g. 486.1327,587.5618,656.2725): the "
                    "middle one is the primary, for every single-wavelength figure; the "

@@ -46,6 +46,7 @@ void take(const json& j, const char* key, T& into) {
 AnalyzeRequest request_from(const json& j) {
     AnalyzeRequest a;
     take(j, "wavelength_nm", a.wavelength_nm);
+    a.wavelength_given = j.contains("wavelength_nm");
     take(j, "wavelengths", a.wavelengths);
     take(j, "aperture", a.aperture);
     take(j, "lens", a.lens);

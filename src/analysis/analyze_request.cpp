@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/lens_bench_defaults.h"
 #include "analysis/curve_figures.h"
 #include "analysis/curve_report.h"
 #include "analysis/diffraction_report.h"
@@ -159,6 +160,13 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
     return out;
 }
 
+// A lens file's data is for its own lens: not when --lens picks another object.
+bool bench_applies(const Scene& scene, const LensBench& bench, const std::string& lens) {
+    if (bench.object < 0 || lens.empty()) return true;
+    const LensLookup lookup = find_lens(scene, lens);
+    return lookup.index && scene.objects[static_cast<size_t>(*lookup.index)].source == bench.object;
+}
+
 }  // namespace
 
 AnalyzeRequest with_implied_tables(AnalyzeRequest a) {
@@ -206,7 +214,10 @@ std::optional<std::string> figure_option_error(const AnalyzeRequest& a) {
 
 AnalyzeResults analyze_scene(const Scene& scene, const AnalyzeRequest& request,
                              const std::string& scene_file) {
-    const AnalyzeRequest a = with_implied_tables(request);
+    LensBenchDefaults defaults{request, {}, {}};
+    if (scene.bench && bench_applies(scene, *scene.bench, request.lens))
+        defaults = with_lens_bench_defaults(request, *scene.bench);
+    const AnalyzeRequest a = with_implied_tables(defaults.request);
     if (const auto error = figure_option_error(a)) throw AnalyzeRequestError(*error);
     std::optional<int> lens;
     if (!a.lens.empty()) {
@@ -219,7 +230,10 @@ AnalyzeResults analyze_scene(const Scene& scene, const AnalyzeRequest& request,
         lens = lookup.index;
     }
     try {
-        return measure(scene, a, lens);
+        AnalyzeResults results = measure(scene, a, lens);
+        results.from_lens_file = defaults.taken;
+        results.not_from_lens_file = defaults.not_taken;
+        return results;
     } catch (const SceneError& e) {
         // The scene loaded but is not a lens system the bench can measure: name the file too.
         if (scene_file.empty()) throw;
@@ -232,6 +246,10 @@ nlohmann::ordered_json analyze_json(const AnalyzeResults& results, const Analyze
     const AnalyzeRequest a = with_implied_tables(request);
     nlohmann::ordered_json j = report_json(results.system, results.report);
     if (!scene_file.empty()) j["scene"] = scene_file;
+    if (!results.from_lens_file.empty() || !results.not_from_lens_file.empty()) {
+        j["lens_file_bench"] = {{"taken", results.from_lens_file},
+                                {"not_taken", results.not_from_lens_file}};
+    }
     if (!a.svg.empty()) j["svg"] = a.svg;
     const FigureFile figures[] = {{a.spots_svg, "spots_svg"},
                                   {a.fans_svg, "fans_svg"},

@@ -23,6 +23,8 @@ namespace lenslab {
 
 struct AnalyzeRequest {
     double wavelength_nm = kLineD;
+    // --wavelength was given: an imported lens file's wavelengths do not replace it.
+    bool wavelength_given = false;
     std::vector<double> wavelengths;  // the primary is the middle one
     bool json = false;                // the command line's choice of output, JSON or a table
     std::string svg;
@@ -66,6 +68,9 @@ AnalyzeRequest with_implied_tables(AnalyzeRequest request);
 std::optional<std::string> figure_option_error(const AnalyzeRequest& request);
 
 struct AnalyzeResults {
+    // What an imported lens file's bench data set (lens_bench_defaults.h), and what of it was
+    // left out and why.
+    std::vector<std::string> from_lens_file, not_from_lens_file;
     OpticalSystem system;
     LensReport report;
     std::optional<SpotDiagrams> spots;

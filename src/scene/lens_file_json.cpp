@@ -34,7 +34,7 @@ const ElementSpec& lens_file_spec() {
 }
 
 nlohmann::json lens_group_from_lens_file(const nlohmann::json& j, const std::string& path,
-                                         const std::string& base_dir) {
+                                         const std::string& base_dir, nlohmann::json* bench) {
     SpecReader r(j, path, lens_file_spec());
     const std::string name = r.string("name", path);
     const std::string file = r.text("file");
@@ -47,6 +47,7 @@ nlohmann::json lens_group_from_lens_file(const nlohmann::json& j, const std::str
     } catch (const LensFileError& e) {
         throw SceneError(r.child_path("file"), e.what());
     }
+    if (bench) *bench = lens.bench;
     nlohmann::json group = lens.group;
     for (const char* key : {"vertex", "axis", "x_axis", "photon_target"}) {
         if (j.contains(key)) group[key] = j.at(key);

@@ -11,6 +11,7 @@
 #include "geometry/sphere.h"
 #include "scene/camera_settings.h"
 #include "scene/detector_settings.h"
+#include "scene/lens_bench.h"
 #include "scene/light.h"
 #include "scene/light_sampler.h"
 #include "scene/light_source.h"
@@ -69,6 +70,8 @@ public:
     std::vector<SpotLight> spots;
     // The medium filling the space outside every object (fog in the room), if any.
     std::optional<Medium> atmosphere;
+    // An imported lens file's system data (wavelengths, fields, aperture), if the scene has it.
+    std::optional<LensBench> bench;
 
     // Builds the acceleration structure and the emitter list; call after filling the fields.
     void build();

@@ -327,15 +327,17 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
     const SceneMediumConvention convention{
         r.choice("ambient", "air", {"air", "vacuum"}) == "vacuum",
         r.positive("length_unit_mm", 1.0)};
-    // The system data of an imported lens file (wavelengths, fields, aperture), kept for
-    // `lenslab export`; nothing here reads them.
-    if (const json* b = r.find("bench"); b && !b->is_object()) {
+    // The system data of an imported lens file (wavelengths, fields, aperture): the optical
+    // bench's defaults, and `lenslab export` writes them back.
+    const json* bench = r.find("bench");
+    if (bench && !bench->is_object()) {
         throw SceneError("bench", "must be an object (the system data of an imported lens file)");
     }
 
     // Before the materials: they may name the catalogues' glasses.
     if (const json* jc = r.find("glass_catalogues")) read_glass_catalogues(*jc, base_dir);
     Scene scene;
+    if (bench) scene.bench = read_lens_bench(*bench);
     if (options.require_camera || r.has("camera")) read_camera(r.require("camera"), scene.camera);
     if (const json* jr = r.find("render")) read_render(*jr, scene.render);
     std::map<std::string, int> by_name;
@@ -351,9 +353,16 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
             const std::string path = index_path("objects", i);
             const std::string type = peek_type((*jo)[i], path);
             if (type == "lens_group" || type == "lens_file") {
-                const json group = type == "lens_file"
-                                       ? lens_group_from_lens_file((*jo)[i], path, base_dir)
-                                       : (*jo)[i];
+                json file_bench;
+                const json group =
+                    type == "lens_file"
+                        ? lens_group_from_lens_file((*jo)[i], path, base_dir, &file_bench)
+                        : (*jo)[i];
+                // The first lens file's system data, unless the scene has its own.
+                if (!scene.bench && file_bench.is_object() && !file_bench.empty()) {
+                    scene.bench = read_lens_bench(file_bench);
+                    scene.bench->object = static_cast<int>(i);
+                }
                 const auto material = [&](JsonObjectReader& element, const std::string& owner) {
                     const int m = read_material_ref(element, owner, by_name, scene.materials);
                     check_not_emitting(element, scene.materials[m]);
