@@ -85,13 +85,11 @@ RenderImageOutcome render_image(const Scene& scene, const RenderImageOptions& op
         amount = s.passes > 0 ? std::to_string(s.passes) + " passes" : "";
         if (s.time > 0) amount += (amount.empty() ? "" : " or ") + format_seconds(s.time);
     }
-    const std::string label = "rendering " + std::to_string(s.width) + "x" +
-                              std::to_string(s.height) + ", " + s.integrator + ", " + amount +
-                              ", " + std::to_string(threads) + " thread" +
-                              (threads > 1 ? "s" : "") +
-                              (cluster.size() > 1 ? " x " + std::to_string(cluster.size()) + " ranks"
-                                                  : "") +
-                              ":";
+    const std::string label =
+        "rendering " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", " +
+        s.integrator + ", " + amount + ", " + std::to_string(threads) + " thread" +
+        (threads > 1 ? "s" : "") +
+        (cluster.size() > 1 ? " x " + std::to_string(cluster.size()) + " ranks" : "") + ":";
     ProgressPrinter printer(label);
     RenderControl control(options.quiet ? RenderControl::ProgressFn{}
                                         : RenderControl::ProgressFn{std::ref(printer)});

@@ -206,7 +206,7 @@ int run(const SweepArgs& a) {
     (void)frame_scene(a, plan, base, 0);
     if (plan.count > 1) (void)frame_scene(a, plan, base, plan.count - 1);
     if (rank == 0) create_output_directory(frames_dir);
-    world.barrier();  // the folder is there for every rank
+    world.barrier();                                           // the folder is there for every rank
     if (!a.animation.empty()) check_output_file(a.animation);  // it may go into the new folder
 
     std::vector<int> todo;

@@ -275,12 +275,13 @@ void MainWindow::build_menus() {
     file->addAction(tr("Save &as..."), QKeySequence(tr("Ctrl+Shift+S")), this,
                     [this] { save_as(); })
         ->setObjectName("save_as");
-    file->addAction(tr("&Import lens..."), QKeySequence(tr("Ctrl+I")), this, [this] {
-            const QString path = QFileDialog::getOpenFileName(
-                this, tr("Import lens"), QString(),
-                tr("Lens files (*.zmx *.ZMX *.seq *.SEQ);;All files (*)"));
-            if (!path.isEmpty()) import_lens(path);
-        })
+    file->addAction(tr("&Import lens..."), QKeySequence(tr("Ctrl+I")), this,
+                    [this] {
+                        const QString path = QFileDialog::getOpenFileName(
+                            this, tr("Import lens"), QString(),
+                            tr("Lens files (*.zmx *.ZMX *.seq *.SEQ);;All files (*)"));
+                        if (!path.isEmpty()) import_lens(path);
+                    })
         ->setObjectName("import_lens");
     file->addAction(tr("&Export image..."), QKeySequence(tr("Ctrl+E")), this,
                     &MainWindow::export_image)

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "analysis/lens_bench_defaults.h"
 #include "analysis/curve_figures.h"
 #include "analysis/curve_report.h"
 #include "analysis/diffraction_report.h"
 #include "analysis/fan_report.h"
 #include "analysis/field_figures.h"
+#include "analysis/lens_bench_defaults.h"
 #include "analysis/lens_lookup.h"
 #include "analysis/ray_diagram.h"
 #include "analysis/ray_diagram_image.h"

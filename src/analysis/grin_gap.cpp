@@ -19,7 +19,8 @@ GapTransfer gap_transfer(const OpticalSystem& system, size_t i, double nm) {
     if (g.kind == GrinKind::Axial) {
         // n linear in z from n1 to n2: integral dz / n = t ln(n2 / n1) / (n2 - n1).
         const double n2 = system.n_before(i + 1, nm);
-        const double b = std::abs(n2 - n1) < 1e-12 * n1 ? t / n1 : t * std::log(n2 / n1) / (n2 - n1);
+        const double b =
+            std::abs(n2 - n1) < 1e-12 * n1 ? t / n1 : t * std::log(n2 / n1) / (n2 - n1);
         return {1, b, 0, 1};
     }
     // Radial: n1 is the index on the axis, n0 scaled by the dispersion.
@@ -39,9 +40,9 @@ GrinTransit trace_grin_gap(const OpticalSystem& system, size_t i, const Vec3& po
     const SystemElement& e = system.elements[system.surfaces[i].element_after];
     const GrinMedium medium{e.grin.get(), e.grin_centre, e.index->n(nm) / e.index->n(kLineD)};
     std::vector<Vec3> steps;
-    const GrinExit exit = trace_grin_ray(medium, *e.solid, system.to_world(point),
-                                         system.direction_to_world(direction), {},
-                                         path ? &steps : nullptr);
+    const GrinExit exit =
+        trace_grin_ray(medium, *e.solid, system.to_world(point),
+                       system.direction_to_world(direction), {}, path ? &steps : nullptr);
     // The first point is `point` itself, already on the path.
     for (size_t k = 1; k < steps.size(); ++k) path->push_back(system.to_system(steps[k]));
     GrinTransit out;

@@ -41,8 +41,8 @@ LensBenchDefaults with_lens_bench_defaults(const AnalyzeRequest& request, const 
         if (b.wavelengths.size() == 1) {
             a.wavelength_nm = b.wavelengths[0];
         } else {
-            a.wavelengths = primary_in_the_middle(
-                b.wavelengths, b.primary_wavelength.value_or(b.wavelengths[0]));
+            a.wavelengths = primary_in_the_middle(b.wavelengths,
+                                                  b.primary_wavelength.value_or(b.wavelengths[0]));
         }
         d.taken.push_back("wavelengths");
     }

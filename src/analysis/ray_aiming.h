@@ -45,8 +45,8 @@ private:
     const FirstOrder& first_order_;
     double field_, nm_;
     IndexRatios ratios_;  // index_ratios(system_, nm_), once for every ray
-    double scale_;                // the system's size, for tolerances and difference steps
-    double z_start_ = 0;          // object at infinity: where the collimated rays start
+    double scale_;        // the system's size, for tolerances and difference steps
+    double z_start_ = 0;  // object at infinity: where the collimated rays start
     double direction_y_ = 0, direction_z_ = 1;  // object at infinity: the field direction
 };
 

@@ -54,7 +54,8 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, const IndexR
         // Next to a gradient index, the indices where the ray meets the surface.
         double ratio = indices.ratios[i];
         if (std::isnan(ratio))
-            ratio = system.index_at(s.element_before, p, nm) / system.index_at(s.element_after, p, nm);
+            ratio =
+                system.index_at(s.element_before, p, nm) / system.index_at(s.element_after, p, nm);
         const auto refracted = refract(d, n, ratio);
         if (!refracted) {
             out.fate = RayFate::Reflected;

@@ -27,11 +27,11 @@ std::optional<double> bench_number(JsonObjectReader& r, const std::string& key) 
 }  // namespace
 
 LensBench read_lens_bench(const nlohmann::json& bench) {
-    JsonObjectReader r(bench, "bench",
-                       {"unit", "wavelengths", "primary_wavelength", "field_type", "fields_x",
-                        "fields_y", "aperture_type", "aperture", "stop_position",
-                        "stop_semi_diameter", "image_distance"},
-                       "a lens file's bench");
+    JsonObjectReader r(
+        bench, "bench",
+        {"unit", "wavelengths", "primary_wavelength", "field_type", "fields_x", "fields_y",
+         "aperture_type", "aperture", "stop_position", "stop_semi_diameter", "image_distance"},
+        "a lens file's bench");
     (void)r.choice("unit", "mm", {"mm"});
     LensBench b;
     b.wavelengths = bench_numbers(r, "wavelengths");
@@ -42,14 +42,15 @@ LensBench read_lens_bench(const nlohmann::json& bench) {
         }
     }
     if (r.has("primary_wavelength")) b.primary_wavelength = r.positive("primary_wavelength");
-    b.field_type = r.choice("field_type", "angle",
-                            {"angle", "object_height", "paraxial_image_height", "real_image_height"});
+    b.field_type =
+        r.choice("field_type", "angle",
+                 {"angle", "object_height", "paraxial_image_height", "real_image_height"});
     b.fields_x = bench_numbers(r, "fields_x");
     b.fields_y = bench_numbers(r, "fields_y");
     if (r.has("aperture_type")) {
-        b.aperture_type = r.choice("aperture_type", "",
-                                   {"entrance_pupil_diameter", "f_number", "image_na",
-                                    "object_na", "float_by_stop_size"});
+        b.aperture_type = r.choice(
+            "aperture_type", "",
+            {"entrance_pupil_diameter", "f_number", "image_na", "object_na", "float_by_stop_size"});
     }
     b.aperture = r.number("aperture", 0.0);
     b.stop_position = bench_number(r, "stop_position");

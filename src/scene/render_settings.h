@@ -24,10 +24,10 @@ struct RenderSettings {
     int spp = 4;        // camera samples per pixel
     int max_depth = 8;  // longest chain of specular bounces followed
     uint64_t seed = 1;
-    Rgb ambient{0, 0, 0};                // ambient radiance Ia lighting every diffuse surface
-    Rgb background{0, 0, 0};             // radiance of rays that leave the scene
-    int light_samples = 1;               // shadow rays per area light per camera sample
-    double min_weight = 1e-4;            // specular branches carrying less are not followed
+    Rgb ambient{0, 0, 0};      // ambient radiance Ia lighting every diffuse surface
+    Rgb background{0, 0, 0};   // radiance of rays that leave the scene
+    int light_samples = 1;     // shadow rays per area light per camera sample
+    double min_weight = 1e-4;  // specular branches carrying less are not followed
     // Local error of a step through a GRIN medium, relative to the solid's size: far below a
     // pixel (the bench traces at 1e-9, scene/grin_ray.h).
     double grin_tolerance = 1e-7;

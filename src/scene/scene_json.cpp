@@ -354,10 +354,9 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
             const std::string type = peek_type((*jo)[i], path);
             if (type == "lens_group" || type == "lens_file") {
                 json file_bench;
-                const json group =
-                    type == "lens_file"
-                        ? lens_group_from_lens_file((*jo)[i], path, base_dir, &file_bench)
-                        : (*jo)[i];
+                const json group = type == "lens_file" ? lens_group_from_lens_file(
+                                                             (*jo)[i], path, base_dir, &file_bench)
+                                                       : (*jo)[i];
                 // The first lens file's system data, unless the scene has its own.
                 if (!scene.bench && file_bench.is_object() && !file_bench.empty()) {
                     scene.bench = read_lens_bench(file_bench);

@@ -79,8 +79,12 @@ TEST(GrinGap, UniformProfileIsPlainGlass) {
     // A = 0: the radial profile is a constant n0, and a biconvex lens of it has the
     // thick-lens focal lengths of ordinary glass of index n0.
     const auto lens = [](const std::string& material) {
-        LensSpec spec{.name = "l", .thickness = 5, .diameter = 20, .front = sphere(50),
-                      .back = sphere(-50), .material = material};
+        LensSpec spec{.name = "l",
+                      .thickness = 5,
+                      .diameter = 20,
+                      .front = sphere(50),
+                      .back = sphere(-50),
+                      .material = material};
         return paraxial_trace(build_optical_system(lens_scene({spec})), kLineD);
     };
     const ParaxialResult grin = lens(radial(1.5, 0));
@@ -95,7 +99,10 @@ TEST(GrinGap, AxialGradientMovesTheFocusByTheLogIntegral) {
     // profile's "center"): n = 1.56 at the front vertex and 1.64 at the flat back.
     const double r = 20, t = 4, n0 = 1.6, a = 0.02;
     const double n1 = n0 - a * t / 2, n2 = n0 + a * t / 2;
-    LensSpec spec{.name = "axial", .thickness = t, .diameter = 8, .front = sphere(r),
+    LensSpec spec{.name = "axial",
+                  .thickness = t,
+                  .diameter = 8,
+                  .front = sphere(r),
                   .material = R"({"transparency": 1, "grin": {"profile": "axial", "n0": 1.6,
                                   "A": 0.02, "center": [0, 0, 2]}})"};
     const OpticalSystem system = build_optical_system(lens_scene({spec}));
@@ -161,8 +168,7 @@ TEST(GrinGap, ProfilesWithoutTheAxisSymmetryAreRefused) {
         build_optical_system(lens_scene({spec}));
         FAIL() << "a Luneburg profile is not a coaxial system";
     } catch (const SceneError& e) {
-        EXPECT_NE(std::string(e.what()).find("objects[0].material"), std::string::npos)
-            << e.what();
+        EXPECT_NE(std::string(e.what()).find("objects[0].material"), std::string::npos) << e.what();
     }
 }
 

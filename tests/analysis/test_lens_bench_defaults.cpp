@@ -74,10 +74,12 @@ TEST(LensBenchDefaults, TheImageSurfaceIsForFiguresMeasuredOnIt) {
 }
 
 Scene achromat_from_its_file(const std::string& extra = "") {
-    return parse_scene(R"({"objects": [{"name": "achromat", "type": "lens_file", "file": ")" LENSLAB_SOURCE_DIR
-                       R"(/tests/lensfile/data/AC254-100-A.zmx", "vertex": [0, 0, 0],
-                       "axis": [0, 0, 1]})" + extra + "]}",
-                       "test", "", {.require_camera = false});
+    return parse_scene(
+        R"({"objects": [{"name": "achromat", "type": "lens_file", "file": ")" LENSLAB_SOURCE_DIR
+        R"(/tests/lensfile/data/AC254-100-A.zmx", "vertex": [0, 0, 0],
+                       "axis": [0, 0, 1]})" +
+            extra + "]}",
+        "test", "", {.require_camera = false});
 }
 
 TEST(LensBenchDefaults, AnalyzeOfALensFileMeasuresAsItsFileSays) {
@@ -88,8 +90,7 @@ TEST(LensBenchDefaults, AnalyzeOfALensFileMeasuresAsItsFileSays) {
               nlohmann::json::array({"wavelengths", "fields", "epd", "image_distance"}));
     EXPECT_DOUBLE_EQ(j["first_order"]["entrance_pupil"]["diameter"].get<double>(), 25.4);
     EXPECT_DOUBLE_EQ(j["spots"]["image_position"].get<double>(), 97.1);
-    EXPECT_EQ(j["spots"]["wavelengths_nm"],
-              nlohmann::json::array({486.1327, 587.5618, 656.2725}));
+    EXPECT_EQ(j["spots"]["wavelengths_nm"], nlohmann::json::array({486.1327, 587.5618, 656.2725}));
     // --lens naming another lens: the file's data are not that lens's.
     request.lens = "other";
     const nlohmann::ordered_json other = analyze_report(

@@ -171,9 +171,9 @@ private slots:
         QTemporaryDir dir;
         MainWindow w;
         const json glass = {{"transparency", 1}, {"ior", 1.5}};
-        open_objects(w, dir,
-                     {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 0.5},
-                       {"material", glass}}});
+        open_objects(
+            w, dir,
+            {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 0.5}, {"material", glass}}});
         for (const std::string& profile : lenslab::grin_spec().param("profile").choices) {
             const QByteArray where = QByteArray::fromStdString(profile);
             auto* box = w.panel()->findChild<QComboBox*>("field:material/grin/profile");
