@@ -217,6 +217,7 @@ MainWindow::MainWindow(QWidget* parent)
                 m_viewport->set_image(image);
                 show_frame(passes, photons, seconds, integrator);
             });
+    connect(m_renderer, &RenderController::preview_ready, m_viewport, &Viewport::set_image);
     connect(m_renderer, &RenderController::render_ended, this, &MainWindow::show_render_end);
     // A refused render keeps its reason in the status line until the next frame (a message
     // there would time out and bring the old status back, as if nothing had failed).

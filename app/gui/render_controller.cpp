@@ -93,6 +93,33 @@ Film RenderController::last_film() const {
     return m_last;
 }
 
+void RenderController::render_preview(Scene& scene) {
+    RenderSettings& s = scene.render;
+    const int limit = std::max(1, m_preview_size / kDraftDivisor);
+    // photon_map traces its photons whatever the size, as does sppm given its photon count.
+    const bool scales = s.integrator != integrators::kPhotonMap &&
+                        !(s.integrator == integrators::kSppm && s.pass_photons > 0);
+    if (!scales || std::max(s.width, s.height) <= limit) return;
+    const int width = s.width, height = s.height;
+    const double scale = double(limit) / std::max(width, height);
+    s.width = std::max(1, int(std::lround(width * scale)));
+    s.height = std::max(1, int(std::lround(height * scale)));
+    RenderControl control;
+    bool go = false;
+    {
+        QMutexLocker lock(&m_mutex);
+        go = !(m_quit || m_stop || m_job);
+        if (go) m_control = &control;
+    }
+    if (go) {
+        const ForgetControl forget{this};
+        ProgressiveRender preview(scene);
+        if (preview.add_pass(control)) emit preview_ready(to_qimage(preview.image()));
+    }
+    s.width = width;
+    s.height = height;
+}
+
 RenderController::ForgetControl::~ForgetControl() {
     QMutexLocker lock(&owner->m_mutex);
     owner->m_control = nullptr;
@@ -115,6 +142,7 @@ void RenderController::run() {
         RenderEnd end = RenderEnd::Restarted;
         int passes = 0;
         try {
+            render_preview(scene);
             ProgressiveRender render(scene);
             for (int pass = 0; pass < m_max_passes; ++pass) {
                 RenderControl control;

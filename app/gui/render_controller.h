@@ -65,6 +65,9 @@ signals:
     void frame_ready(const QImage& image, int passes, qint64 photons, double seconds,
                      const QString& integrator);
     void render_failed(const QString& message);
+    // The first moments of a full-size restart: one pass at the draft size, to show until
+    // the first full-size frame comes (for integrators whose pass cost follows the pixels).
+    void preview_ready(const QImage& image);
     // The render ended after `passes` passes (not sent when the editor closes).
     void render_ended(lenslab::gui::RenderEnd end, int passes);
     void rendering_changed(bool rendering);
@@ -74,6 +77,9 @@ protected:
 
 private:
     void start_pending();
+    // Renders and emits the restart's draft preview of `scene` (the worker's own copy, its
+    // size restored after); skipped where a pass costs as much at any size.
+    void render_preview(Scene& scene);
     // Clears m_control when the pass it points to ends, however it ends.
     struct ForgetControl {
         RenderController* owner;

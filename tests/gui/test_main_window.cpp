@@ -294,6 +294,32 @@ private slots:
         QCOMPARE(other.document()->json()["objects"][0]["center"][1].get<double>(), 0.75);
     }
 
+    // A restart shows a draft pass (a quarter of the preview's size each way) before its first
+    // full-size frame, and the view draws it.
+    void a_restart_shows_a_draft_preview_first() {
+        MainWindow w;
+        // Shared, not locals: a signal still queued after the test would write into them.
+        const auto order = std::make_shared<QStringList>();
+        const auto preview_width = std::make_shared<int>(0);
+        QObject::connect(
+            w.renderer(), &RenderController::preview_ready, &w,
+            [order, preview_width](const QImage& image) {
+                order->append("preview");
+                *preview_width = image.width();
+            },
+            Qt::QueuedConnection);
+        QObject::connect(
+            w.renderer(), &RenderController::frame_ready, &w,
+            [order](const QImage&, int passes) {
+                if (passes == 1) order->append("pass 1");
+            },
+            Qt::QueuedConnection);
+        QVERIFY(w.open_file(LENSLAB_SOURCE_DIR "/scenes/default.json"));  // 640 x 480
+        QTRY_VERIFY_WITH_TIMEOUT(order->contains("pass 1"), 60000);
+        QCOMPARE(order->first(), QString("preview"));
+        QVERIFY(*preview_width > 0 && *preview_width <= 160);
+    }
+
     // While paused (an export renders), the view adds no passes; resumed, it goes on from the
     // pass it had reached rather than starting again.
     void a_paused_view_render_resumes_where_it_was() {
