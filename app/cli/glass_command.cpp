@@ -14,6 +14,7 @@
 #include "optics/glass_library.h"
 #include "optics/glass_map.h"
 #include "optics/glass_search.h"
+#include "optics/user_glass_catalogues.h"
 #include "render/image_io.h"
 #include "util/atomic_file.h"
 
@@ -109,6 +110,9 @@ int search_catalogues(const GlassArgs& a) {
     if (!a.vd.empty()) query.v_d = parse_value_range(a.vd);
     if (!a.maker.empty() && !known_maker(a.maker)) {
         std::string makers = "builtin";
+        for (const Glass* g : user_glasses()) {  // --catalogue's files, by name
+            if (makers.find(", " + g->maker) == std::string::npos) makers += ", " + g->maker;
+        }
         for (const std::string& m : glass_makers()) makers += ", " + m;
         std::cerr << "lenslab: error: --maker: unknown maker '" << a.maker
                   << "' (makers: " << makers << ")\n";

@@ -21,6 +21,7 @@
 #include "number_field.h"
 #include "optics/glass_library.h"
 #include "optics/spectrum.h"
+#include "optics/user_glass_catalogues.h"
 #include "render/image_io.h"
 #include "scene/camera_spec.h"
 #include "scene/json_reader.h"
@@ -664,14 +665,20 @@ void PropertyPanel::add_glass_choice(const std::string& key, const std::string& 
     box->setInsertPolicy(QComboBox::NoInsert);
     box->setMaxVisibleItems(20);
     box->addItems(glass_choices());
+    // The scene's own catalogues ("glass_catalogues"), after the built-in materials, as
+    // lookups take them; loaded when the scene was read, so listed afresh each time.
+    int at = 1 + int(glass_catalogue().size());
+    for (const Glass* g : user_glasses())
+        box->insertItem(at++, QString::fromStdString(g->maker + ":" + g->name));
     // Typing finds a glass anywhere in its name ("bk7" offers N-BK7, S-BSL7 needs "bsl").
     box->completer()->setFilterMode(Qt::MatchContains);
     box->completer()->setCaseSensitivity(Qt::CaseInsensitive);
     box->completer()->setCompletionMode(QCompleter::PopupCompletion);
     box->setToolTip(
-        tr("A built-in material or a glass of the SCHOTT, OHARA, CDGM, HOYA, HIKARI "
-           "and SUMITA catalogues (MAKER:NAME where makers share a name); type to "
-           "search. \"constant index\" types an index instead."));
+        tr("A built-in material, a glass of the scene's own catalogues (CATALOGUE:NAME), or "
+           "a glass of the SCHOTT, OHARA, CDGM, HOYA, HIKARI and SUMITA catalogues "
+           "(MAKER:NAME where makers share a name); type to search. \"constant index\" "
+           "types an index instead."));
     box->setCurrentText(QString::fromStdString(current.empty() ? "constant index" : current));
     const auto choose = [this, box, material_key, current] {
         const std::string chosen = box->currentText().trimmed().toStdString();

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "optics/glass_library.h"
+#include "optics/user_glass_catalogues.h"
 
 namespace lenslab {
 
@@ -70,6 +71,10 @@ std::vector<const Glass*> search_glasses(const GlassQuery& query) {
     std::vector<const Glass*> found;
     for (const Glass& g : glass_catalogue()) {
         if (matches(g)) found.push_back(&g);
+    }
+    // The users' catalogues (--catalogue, a scene's "glass_catalogues"), as lookups take them.
+    for (const Glass* g : user_glasses()) {
+        if (matches(*g)) found.push_back(g);
     }
     // The built-in materials alone need no catalogue files (they may be missing).
     if (same_maker(query.maker, "builtin")) return found;

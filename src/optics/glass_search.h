@@ -28,7 +28,8 @@ struct GlassQuery {
 double glass_n_d(const Glass& g);
 double glass_v_d(const Glass& g);
 
-// The built-in materials, then every maker's glasses, that match the query, in that order.
+// The built-in materials, then the users' catalogues loaded so far, then every maker's
+// glasses, that match the query, in that order. A user catalogue's maker is its file's name.
 std::vector<const Glass*> search_glasses(const GlassQuery& query);
 
 }  // namespace lenslab

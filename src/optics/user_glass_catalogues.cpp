@@ -51,6 +51,15 @@ void load_user_glass_catalogue(const std::string& path) {
     user_catalogues().push_back({key, std::move(glasses)});
 }
 
+std::vector<const Glass*> user_glasses() {
+    std::lock_guard lock(user_catalogue_mutex());
+    std::vector<const Glass*> out;
+    for (const UserCatalogue& c : user_catalogues()) {
+        for (const Glass& g : c.glasses) out.push_back(&g);
+    }
+    return out;
+}
+
 const Glass* find_user_glass(const std::string& wanted_upper) {
     std::lock_guard lock(user_catalogue_mutex());
     const size_t colon = wanted_upper.find(':');

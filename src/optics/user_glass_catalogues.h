@@ -19,4 +19,8 @@ void load_user_glass_catalogue(const std::string& path);
 // nullptr when no user catalogue has it.
 const Glass* find_user_glass(const std::string& wanted_upper);
 
+// Every glass of the catalogues loaded so far, in the order they were loaded (for searches,
+// the glass map and the editor's picker).
+std::vector<const Glass*> user_glasses();
+
 }  // namespace lenslab

@@ -575,6 +575,9 @@ set_tests_properties(cli.glass.bad.data_missing PROPERTIES ENVIRONMENT LENSLAB_G
 lenslab_cli_test(NAME glass.user_catalogue
     ARGS glass MY-CROWN --catalogue tests/cli/data/user.agf
     CHECKS "-DSTDOUT_CONTAINS=MY-CROWN (USER) at 587.562 nm: n = 1.516800")
+lenslab_cli_test(NAME glass.search_user_catalogue
+    ARGS glass --catalogue tests/cli/data/user.agf --nd 1.5167:1.5169
+    CHECKS "-DSTDOUT_CONTAINS=MY-CROWN         USER      1.51680   64.17")
 lenslab_cli_test(NAME glass.bad.catalogue_line
     ARGS glass N-BK7 --catalogue tests/cli/data/bad.agf
     CHECKS -DEXPECT_EXIT=1

@@ -410,6 +410,38 @@ private slots:
         QVERIFY2(w.panel()->error_text().contains("N-BK7"), qPrintable(w.panel()->error_text()));
     }
 
+    // A scene's own AGF catalogue: its glasses are offered as CATALOGUE:NAME and picked.
+    void a_scene_catalogues_glass_is_offered() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("own_glass.json");
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QByteArray::fromStdString(
+            json{{"glass_catalogues", json::array({LENSLAB_SOURCE_DIR "/tests/cli/data/user.agf"})},
+                 {"camera", {{"position", {0, 0, 5}}, {"look_at", {0, 0, 0}}}},
+                 {"render", {{"width", 32}, {"height", 24}}},
+                 {"materials", {{"glass", {{"transparency", 1}, {"ior", 1.5}}}}},
+                 {"objects", json::array({json{{"type", "sphere"},
+                                               {"center", {0, 0, 0}},
+                                               {"radius", 1},
+                                               {"material", "glass"}}})}}
+                .dump()));
+        file.close();
+        MainWindow w;
+        QString error;
+        QVERIFY2(w.open_file(path, &error), qPrintable(error));
+        w.tree()->select_pointer("/materials/glass");
+        auto* glass = w.panel()->findChild<QComboBox*>("field:glass");
+        QVERIFY(glass);
+        const int at = glass->findText("USER:MY-CROWN");
+        QVERIFY(at > 0);
+        QVERIFY(at < glass->findText("S-BSL7"));  // before the makers', as lookups take them
+        glass->setCurrentIndex(at);
+        emit glass->activated(at);
+        QCOMPARE(w.document()->json()["materials"]["glass"]["glass"].get<std::string>(),
+                 std::string("USER:MY-CROWN"));
+    }
+
     // Fractions (transparency, specular) have a slider beside their field: a drag shows its
     // value and commits once when released; a key commits at once.
     void a_fraction_has_a_slider() {
