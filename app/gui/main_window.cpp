@@ -202,8 +202,8 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_panel, &PropertyPanel::pointer_requested, m_tree, &SceneTree::select_pointer);
     connect(m_viewport, &Viewport::edit_refused, this, &MainWindow::show_message);
     connect(m_document, &SceneDocument::changed, this, [this] {
-        // While the view is dragged, a coarse frame at once for every step.
-        if (m_viewport->is_interacting())
+        // While the view or the section is dragged, a coarse frame at once for every step.
+        if (m_viewport->is_interacting() || m_section->is_dragging())
             m_renderer->restart(m_document->scene(), 0, RenderQuality::Draft);
         else
             m_renderer->restart(m_document->scene());

@@ -35,6 +35,9 @@ public:
     DiagramView placement() const;
     QPointF to_widget(const DiagramPoint& p) const;
 
+    // An object is being dragged (the button down and moved): the 3-D view renders drafts.
+    bool is_dragging() const { return m_dragged && m_drag_object >= 0; }
+
     // Writes the drawing as SVG, atomically; `error` says why not.
     bool export_svg(const QString& path, QString* error) const;
 

@@ -10,6 +10,7 @@
 #include <QtTest>
 
 #include "main_window.h"
+#include "render_controller.h"
 #include "scene_document.h"
 #include "scene_tree.h"
 #include "section_widget.h"
@@ -64,8 +65,17 @@ private slots:
         const QPoint shift(60, 0);  // to the right: along the plane's u
         const lenslab::Vec3 u = view->section().plane.u;
         const lenslab::DiagramView placement = view->placement();
+        // Frames while the button is down are drafts, a quarter of the preview each way.
+        const auto widest = std::make_shared<int>(0);
+        const QMetaObject::Connection watch = QObject::connect(
+            w.renderer(), &lenslab::gui::RenderController::frame_ready, &w,
+            [widest](const QImage& image) { *widest = std::max(*widest, image.width()); },
+            Qt::QueuedConnection);
         QTest::mousePress(view, Qt::LeftButton, {}, press);
         for (int i = 1; i <= 6; ++i) QTest::mouseMove(view, press + shift * i / 6);
+        QTRY_VERIFY_WITH_TIMEOUT(*widest > 0, 20000);
+        QVERIFY2(*widest <= 160, qPrintable(QString::number(*widest)));
+        QObject::disconnect(watch);
         // The rays follow while the button is still down.
         QVERIFY(w.document()->json() != before);
         QVERIFY(view->section().rays.size() != rays_before.size() ||
