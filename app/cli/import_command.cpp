@@ -44,8 +44,11 @@ Action add_import_command(CLI::App& app) {
     auto args = std::make_shared<ImportArgs>();
     CLI::App* cmd = app.add_subcommand(
         "import",
-        "Read a Zemax .zmx or CODE V .seq lens file into a scene holding its lens_group (in mm)");
-    cmd->add_option("file", args->file, "The lens file (.zmx: UTF-16 or UTF-8; .seq)")->required();
+        "Read a Zemax .zmx or .zar or CODE V .seq lens file into a scene holding its lens_group "
+        "(in mm)");
+    cmd->add_option("file", args->file,
+                    "The lens file (.zmx: UTF-16 or UTF-8; .zar: a Zemax archive; .seq)")
+        ->required();
     cmd->add_option("-o,--output", args->output,
                     "Write the scene (JSON) to this file (default: standard output)");
     cmd->add_option("--name", args->name, "The lens_group's name (default: the file's stem)");

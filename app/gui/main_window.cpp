@@ -280,7 +280,7 @@ void MainWindow::build_menus() {
                     [this] {
                         const QString path = QFileDialog::getOpenFileName(
                             this, tr("Import lens"), QString(),
-                            tr("Lens files (*.zmx *.ZMX *.seq *.SEQ);;All files (*)"));
+                            tr("Lens files (*.zmx *.ZMX *.zar *.ZAR *.seq *.SEQ);;All files (*)"));
                         if (!path.isEmpty()) import_lens(path);
                     })
         ->setObjectName("import_lens");

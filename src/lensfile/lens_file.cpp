@@ -2,10 +2,13 @@
 
 #include <filesystem>
 #include <regex>
+#include <tuple>
+#include <utility>
 
 #include "lensfile/lens_file_text.h"
 #include "lensfile/lens_file_tokens.h"
 #include "lensfile/seq_reader.h"
+#include "lensfile/zar_archive.h"
 #include "lensfile/zmx_reader.h"
 #include "scene/scene_error.h"
 #include "scene/scene_json.h"
@@ -37,20 +40,42 @@ void check_imported_lens(const ImportedLens& lens, const std::string& path) {
     }
 }
 
+// The .zmx file packed in a Zemax archive (the first; the archive's glass catalogues and
+// other files are left: the lens's glasses come from lenslab's catalogues), and the name
+// its lines are reported under: "ARCHIVE.zar/LENS.zmx".
+std::pair<std::string, std::string> zmx_in_archive(const std::string& path) {
+    std::string names;
+    for (ZarEntry& e : read_zar_archive(read_lens_file_bytes(path), path)) {
+        const std::string upper = lens_file_upper(e.name);
+        if (upper.size() > 4 && upper.substr(upper.size() - 4) == ".ZMX")
+            return {std::move(e.data), path + "/" + e.name};
+        names += (names.empty() ? "" : ", ") + e.name;
+    }
+    throw LensFileError(path, 0,
+                        "the archive holds no .zmx file (it holds: " +
+                            (names.empty() ? std::string("nothing") : names) + ")");
+}
+
 }  // namespace
 
 ImportedLens import_lens_file(const std::string& path, const std::string& name) {
     const std::string extension = lens_file_upper(std::filesystem::path(path).extension().string());
-    if (extension != ".ZMX" && extension != ".SEQ") {
+    if (extension != ".ZMX" && extension != ".SEQ" && extension != ".ZAR") {
         throw LensFileError(path, 0,
-                            "not a lens file lenslab reads: it takes Zemax .zmx and CODE V .seq "
-                            "files (by their extension)");
+                            "not a lens file lenslab reads: it takes Zemax .zmx and .zar and "
+                            "CODE V .seq files (by their extension)");
     }
-    const std::vector<std::string> lines = decode_lens_file_lines(read_lens_file_bytes(path), path);
+    std::string bytes, file = path;
+    if (extension == ".ZAR") {
+        std::tie(bytes, file) = zmx_in_archive(path);
+    } else {
+        bytes = read_lens_file_bytes(path);
+    }
+    const std::vector<std::string> lines = decode_lens_file_lines(bytes, file);
     const LensFilePrescription p =
-        extension == ".ZMX" ? read_zmx(lines, path) : read_seq(lines, path);
+        extension == ".SEQ" ? read_seq(lines, file) : read_zmx(lines, file);
     ImportedLens lens = lens_group_from_prescription(p, name);
-    check_imported_lens(lens, path);
+    check_imported_lens(lens, file);
     return lens;
 }
 
