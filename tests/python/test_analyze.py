@@ -178,3 +178,14 @@ def test_calls_on_threads_give_the_same_documents():
     with ThreadPoolExecutor(4) as pool:
         pooled = list(pool.map(lambda s: lenslab.analyze(SCENE, stop=s, spots=True), stops))
     assert pooled == alone
+
+
+def test_a_lens_file_is_measured_as_its_file_says():
+    # AC254-100-A.zmx: F, d and C, a 25.4 mm entrance pupil; the CLI takes the same.
+    imported = "scenes/imported_achromat.json"
+    report = lenslab.analyze(imported)
+    assert report == cli_json("analyze", imported, "--json")
+    assert report["lens_file_bench"]["taken"] == ["wavelengths", "fields", "epd"]
+    assert report["first_order"]["entrance_pupil"]["diameter"] == 25.4
+    # A wavelength asked for wins over the file's.
+    assert "wavelengths" not in lenslab.analyze(imported, wavelength=550)["lens_file_bench"]["taken"]
