@@ -19,6 +19,22 @@ bool interaction_inside_grin(const Interaction& it, const Ray& ray) {
            dot(ray.direction, it.normal()) > 0.0;
 }
 
+// Where a GRIN solid is cemented to another (a GRIN crystalline lens between the humours),
+// the straight ray may first meet the neighbour's copy of the shared surface, entering it:
+// the ray is then inside the GRIN solid on its own side, whose curved path decides where it
+// goes. Points the interaction at that solid; false when the ray comes from air or glass.
+bool enter_cemented_grin(const Scene& scene, const Ray& ray, Interaction& it) {
+    if (!(dot(ray.direction, it.normal()) < 0.0)) return false;  // leaving, not entering
+    const int from = scene.solid_beyond(it.hit.object, it.point(), it.normal());
+    if (from < 0) return false;
+    const Material& m = scene.material_of(from);
+    if (!m.grin || !(m.transparency > 0.0)) return false;
+    it.hit.object = from;
+    it.object = &scene.objects[static_cast<size_t>(from)];
+    it.material = &m;
+    return true;
+}
+
 }  // namespace
 
 bool next_interaction(const Scene& scene, const Ray& ray, double lambda_nm, Interaction& out,
@@ -32,7 +48,7 @@ bool next_interaction(const Scene& scene, const Ray& ray, double lambda_nm, Inte
     out.material = &scene.materials[out.object->material];
     out.direction = ray.direction;
     out.grin_steps = 0;
-    if (interaction_inside_grin(out, ray)) {
+    if (interaction_inside_grin(out, ray) || enter_cemented_grin(scene, ray, out)) {
         const GrinMedium medium = grin_medium_of(*out.object, *out.material, lambda_nm);
         GrinRayOptions options;
         options.tolerance = scene.render.grin_tolerance;
@@ -42,6 +58,7 @@ bool next_interaction(const Scene& scene, const Ray& ray, double lambda_nm, Inte
             // Trapped (or no medium to follow): its light stays inside, absorbed where the
             // straight ray would have met the surface; nothing goes on from there.
             out.beyond = nullptr;
+            out.beyond_object = nullptr;
             out.scattering = Scattering{};
             out.grin_steps = exit.steps;
             return true;
@@ -55,7 +72,9 @@ bool next_interaction(const Scene& scene, const Ray& ray, double lambda_nm, Inte
                             : normalize(exit.direction + exit.hit.normal * (1e-12 - outwards));
         out.grin_steps = exit.steps;
     }
-    out.beyond = scene.medium_beyond(out.hit.object, out.point(), out.normal());
+    const int other = scene.solid_beyond(out.hit.object, out.point(), out.normal());
+    out.beyond_object = other < 0 ? nullptr : &scene.objects[static_cast<size_t>(other)];
+    out.beyond = other < 0 ? nullptr : &scene.material_of(other);
     out.scattering = scatter_at(out, out.direction, lambda_nm);
     return true;
 }
@@ -75,14 +94,28 @@ double segment_transmittance(const Interaction& it, const Vec3& d, double lambda
     return a ? a->transmittance(lambda_nm, it.hit.surface.t * std::sqrt(dot(d, d))) : 1.0;
 }
 
+namespace {
+
+// The index of `object`'s material at `point`: its GRIN profile's there, else its own.
+double index_of_solid(const SceneObject& object, const Material& m, const Vec3& point,
+                      double lambda_nm) {
+    if (m.grin && object.shape->is_closed())
+        return grin_medium_of(object, m, lambda_nm).index(point);
+    return m.ior(lambda_nm);
+}
+
+}  // namespace
+
 Scattering scatter_at(const Interaction& it, const Vec3& d, double lambda_nm) {
     const Material& m = *it.material;
     const bool closed = it.object->shape->is_closed();
-    if (m.grin && closed) {
-        const double n = grin_medium_of(*it.object, m, lambda_nm).index(it.point());
-        return scatter_with_index(m, n, closed, d, it.normal(), lambda_nm, it.beyond);
-    }
-    return scatter(m, closed, d, it.normal(), lambda_nm, it.beyond);
+    // Either side may be a gradient index (a GRIN lens cemented to glass): each is taken where
+    // the ray meets the surface.
+    const double n_beyond =
+        it.beyond ? index_of_solid(*it.beyond_object, *it.beyond, it.point(), lambda_nm)
+                  : kOutsideIor;
+    return scatter_with_index(m, index_of_solid(*it.object, m, it.point(), lambda_nm), closed, d,
+                              it.normal(), lambda_nm, it.beyond, n_beyond);
 }
 
 }  // namespace lenslab

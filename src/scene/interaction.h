@@ -16,6 +16,7 @@ struct Interaction {
     const SceneObject* object = nullptr;
     const Material* material = nullptr;
     const Material* beyond = nullptr;  // the cemented glass on the other side, or nullptr: air
+    const SceneObject* beyond_object = nullptr;  // the solid it fills
     Scattering scattering;
     // Unit direction in which the ray arrives: the ray's own, or, leaving a GRIN solid, the
     // direction its curved path has at the surface.

@@ -25,12 +25,13 @@ const char* event_name(Event e) {
 
 Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& outward_normal,
                    double lambda_nm, const Material* beyond) {
-    return scatter_with_index(m, m.ior(lambda_nm), closed, d, outward_normal, lambda_nm, beyond);
+    return scatter_with_index(m, m.ior(lambda_nm), closed, d, outward_normal, lambda_nm, beyond,
+                              beyond ? beyond->ior(lambda_nm) : kOutsideIor);
 }
 
 Scattering scatter_with_index(const Material& m, double n_inside, bool closed, const Vec3& d,
-                              const Vec3& outward_normal, double lambda_nm,
-                              const Material* beyond) {
+                              const Vec3& outward_normal, double lambda_nm, const Material* beyond,
+                              double n_beyond) {
     Scattering s;
     s.diffuse = m.diffuse_weight();
     const bool entering = dot(d, outward_normal) < 0.0;
@@ -43,7 +44,6 @@ Scattering scatter_with_index(const Material& m, double n_inside, bool closed, c
     if (m.transparency > 0.0) {
         if (closed) {
             const double n = n_inside;
-            const double n_beyond = beyond ? beyond->ior(lambda_nm) : kOutsideIor;
             const double eta_i = entering ? n_beyond : n;
             const double eta_t = entering ? n : n_beyond;
             const FresnelTerms f = eta_i == eta_t ? FresnelTerms{0.0, 0.0, false}

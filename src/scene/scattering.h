@@ -81,9 +81,10 @@ inline constexpr double kOutsideIor = 1.0;
 // nullptr for air: the interface then refracts by the ratio of the two glasses' indices.
 Scattering scatter(const Material& m, bool closed, const Vec3& d, const Vec3& outward_normal,
                    double lambda_nm, const Material* beyond = nullptr);
-// The same with the inside's index `n_inside` given (a GRIN solid's, at the hit point).
+// The same with the indices given: the inside's `n_inside` and the other side's `n_beyond`
+// (a GRIN solid's, at the hit point; air's when `beyond` is null).
 Scattering scatter_with_index(const Material& m, double n_inside, bool closed, const Vec3& d,
-                              const Vec3& outward_normal, double lambda_nm,
-                              const Material* beyond = nullptr);
+                              const Vec3& outward_normal, double lambda_nm, const Material* beyond,
+                              double n_beyond);
 
 }  // namespace lenslab

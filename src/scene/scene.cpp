@@ -105,16 +105,21 @@ void Scene::find_touching_solids() {
 
 const Material* Scene::medium_beyond(int object, const Vec3& point,
                                      const Vec3& outward_normal) const {
+    const int other = solid_beyond(object, point, outward_normal);
+    return other < 0 ? nullptr : &material_of(other);
+}
+
+int Scene::solid_beyond(int object, const Vec3& point, const Vec3& outward_normal) const {
     const std::vector<int>& candidates = m_touching[object];
-    if (candidates.empty()) return nullptr;
+    if (candidates.empty()) return -1;
     // Step just off the surface, to the side away from `object`: ten times the offset rays
     // use to leave a surface, far above the rounding of two solids' shared surface and far
     // below any air gap a scene means.
     const Vec3 probe = point + outward_normal * (10.0 * surface_epsilon(point));
     for (int other : candidates) {
-        if (objects[other].shape->contains(probe)) return &material_of(other);
+        if (objects[other].shape->contains(probe)) return other;
     }
-    return nullptr;
+    return -1;
 }
 
 bool Scene::intersect(const Ray& ray, double t_min, double t_max, SceneHit& hit) const {

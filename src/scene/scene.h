@@ -87,6 +87,8 @@ public:
     // neighbour sharing that surface), or nullptr when the other side is air.
     // `outward_normal` points out of `object`.
     const Material* medium_beyond(int object, const Vec3& point, const Vec3& outward_normal) const;
+    // The same as the index of that solid in `objects`, or -1.
+    int solid_beyond(int object, const Vec3& point, const Vec3& outward_normal) const;
     // Objects whose material emits light: spheres (the report's lights).
     const std::vector<SphereEmitter>& emitters() const { return m_emitters; }
     // Every light: emitting spheres first, then point lights, beams, spots.

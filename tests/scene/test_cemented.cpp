@@ -222,3 +222,61 @@ TEST(Cemented, AchromaticDoubletFocusesTheFAndCLinesTogether) {
 
 }  // namespace
 }  // namespace lenslab
+
+namespace lenslab {
+namespace {
+
+// The chain of refracted branches from the camera ray: each surface the ray crosses (nodes
+// of `tree`, which must outlive them).
+std::vector<const RayTreeNode*> refracted_path(const RayTree& tree) {
+    std::vector<const RayTreeNode*> path;
+    for (const RayTreeNode* n = child(tree.root, Event::Refract); n; n = child(*n, Event::Refract))
+        path.push_back(n);
+    return path;
+}
+
+TEST(CementedGrin, AGradientIndexNeighbourRefractsWithItsOwnIndex) {
+    // The flint as a uniform formula n = 1.7 (its plain ior left at the default 1.5): the
+    // shared surface must refract by 1.5 / 1.7 as with plain glass, whichever of the two
+    // copies of that surface a ray meets first.
+    std::string grin = doublet(1.5, 1.7);
+    const std::string plain_flint = R"("flint": {"transparency": 1, "ior": 1.700000})";
+    const size_t at = grin.find(plain_flint);
+    ASSERT_NE(at, std::string::npos);
+    grin.replace(
+        at, plain_flint.size(),
+        R"("flint": {"transparency": 1, "grin": {"profile": "formula", "formula": "1.7"}})");
+    const Scene graded = parse_scene(grin), plain = parse_scene(doublet(1.5, 1.7));
+    for (double h : {1.0, 4.0, 9.0}) {
+        const Ray ray{{0, h, -10}, {0, 0, 1}};
+        const RayTree tree_a = trace_ray_tree(graded, ray, {}),
+                      tree_b = trace_ray_tree(plain, ray, {});
+        const std::vector<const RayTreeNode*> a = refracted_path(tree_a),
+                                              b = refracted_path(tree_b);
+        ASSERT_EQ(a.size(), 3u) << h;
+        ASSERT_EQ(b.size(), 3u) << h;
+        EXPECT_NEAR(length(a.back()->direction - b.back()->direction), 0.0, 1e-9) << h;
+        EXPECT_NEAR(length(*a.back()->to - *b.back()->to), 0.0, 1e-7) << h;
+    }
+}
+
+TEST(CementedGrin, TheSchematicEyeFocusesOnItsRetina) {
+    // scenes/grin_eye.json, the Liou-Brennan eye: its paraxial ray equation, integrated for
+    // the published profile, puts the focus 16.2388 mm behind the crystalline lens, 23.9689
+    // mm behind the cornea: on the retina (23.96), as the model was designed (emmetropic).
+    const Scene eye = load_scene_file(LENSLAB_SOURCE_DIR "/scenes/grin_eye.json");
+    const auto crossing = [&](double h) {
+        const RayTree tree = trace_ray_tree(eye, {{0, h, -5}, {0, 0, 1}}, {});
+        const std::vector<const RayTreeNode*> path = refracted_path(tree);
+        EXPECT_EQ(path.size(), 5u) << h;  // cornea, aqueous, lens, vitreous, retina
+        const RayTreeNode& vitreous = *path[path.size() - 2];
+        const Vec3 p = *vitreous.to, d = vitreous.direction;
+        return std::pair{p.z - p.y / d.y * d.z, path.back()->to->y};
+    };
+    EXPECT_NEAR(crossing(0.01).first, 23.9689, 0.002);
+    // A 1 mm pupil's rim ray lands within 2 um of the fovea's centre.
+    EXPECT_NEAR(crossing(0.5).second, 0.0, 0.002);
+}
+
+}  // namespace
+}  // namespace lenslab
