@@ -4,14 +4,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "analysis/curve_figures.h"
+#include "analysis/analyze_figures.h"
 #include "analysis/curve_report.h"
 #include "analysis/diffraction_report.h"
 #include "analysis/fan_report.h"
-#include "analysis/field_figures.h"
 #include "analysis/lens_bench_defaults.h"
 #include "analysis/lens_lookup.h"
-#include "analysis/ray_diagram.h"
 #include "analysis/ray_diagram_image.h"
 #include "analysis/ray_diagram_svg.h"
 #include "analysis/spot_report.h"
@@ -26,13 +24,12 @@ namespace {
 
 // A figure as SVG, or as PNG when the file's name ends in ".png"; atomically either way, so a
 // failed write leaves no half file and says why it failed.
-void write_bench_figure(const std::string& file, const RayDiagram& diagram, double width,
-                        double min_height) {
+void write_bench_figure(const std::string& file, const BenchFigure& f) {
     const std::string png = ".png";
     if (file.size() > png.size() && file.compare(file.size() - png.size(), png.size(), png) == 0) {
-        write_png_image(ray_diagram_image(diagram, width, min_height), file);
+        write_png_image(ray_diagram_image(f.diagram, f.width, f.min_height), file);
     } else {
-        write_text_atomically(file, ray_diagram_svg(diagram, width, min_height));
+        write_text_atomically(file, ray_diagram_svg(f.diagram, f.width, f.min_height));
     }
 }
 
@@ -114,11 +111,6 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         pupil.aperture_radius = 0.5 * report.first_order.entrance_pupil.diameter;
         out.diffraction = diffraction_figures(system, pupil, a.mtf_frequencies);
     }
-    if (!a.svg.empty()) {
-        RayDiagramOptions diagram;
-        diagram.unit = a.unit;
-        write_bench_figure(a.svg, make_ray_diagram(system, report, diagram), 1200, 360);
-    }
     if (a.field_curves) {
         FieldCurveOptions curve;
         for (double field : first.fields) {
@@ -136,26 +128,14 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         const double to = a.band.empty() ? report.long_nm : a.band[1];
         out.shift = chromatic_focal_shift(system, reference, from, to, a.focal_shift_points);
     }
-    const std::string field_unit =
-        first.object_distance ? (a.unit.empty() ? "units" : a.unit) : "deg";
-    const auto write_figure = [](const std::string& file, const RayDiagram& figure, int panels) {
-        write_bench_figure(file, figure, field_figure_width(panels), 300);
-    };
-    if (!a.spots_svg.empty()) {
-        write_figure(a.spots_svg, spot_diagram_figure(*out.spots, a.unit, field_unit),
-                     static_cast<int>(out.spots->fields.size()));
-    }
-    if (!a.fans_svg.empty()) {
-        write_figure(a.fans_svg, ray_fan_figure(*out.fans, a.unit, field_unit), 2);
-    }
-    if (!a.curves_svg.empty()) {
-        write_figure(a.curves_svg, field_curves_figure(*out.curves, a.unit, field_unit), 2);
-    }
-    if (!a.focal_shift_svg.empty()) {
-        write_figure(a.focal_shift_svg, focal_shift_figure(*out.shift, a.unit), 1);
-    }
-    if (!a.mtf_svg.empty()) {
-        write_figure(a.mtf_svg, mtf_figure(*out.diffraction, a.unit), 1);
+    const std::pair<const std::string*, const char*> files[] = {{&a.svg, "ray_diagram"},
+                                                                {&a.spots_svg, "spots"},
+                                                                {&a.fans_svg, "fans"},
+                                                                {&a.curves_svg, "field_curves"},
+                                                                {&a.focal_shift_svg, "focal_shift"},
+                                                                {&a.mtf_svg, "mtf"}};
+    for (const auto& [file, name] : files) {
+        if (!file->empty()) write_bench_figure(*file, bench_figure(out, a, name));
     }
     return out;
 }
