@@ -105,19 +105,21 @@ void RenderController::render_preview(Scene& scene) {
     s.width = std::max(1, int(std::lround(width * scale)));
     s.height = std::max(1, int(std::lround(height * scale)));
     RenderControl control;
-    bool go = false;
-    {
-        QMutexLocker lock(&m_mutex);
-        go = !(m_quit || m_stop || m_job);
-        if (go) m_control = &control;
-    }
-    if (go) {
+    if (begin_pass(control)) {
         const ForgetControl forget{this};
         ProgressiveRender preview(scene);
         if (preview.add_pass(control)) emit preview_ready(to_qimage(preview.image()));
     }
     s.width = width;
     s.height = height;
+}
+
+bool RenderController::begin_pass(RenderControl& control) {
+    QMutexLocker lock(&m_mutex);
+    while (m_paused && !m_quit && !m_stop && !m_job) m_wake.wait(&m_mutex);
+    if (m_quit || m_stop || m_job) return false;  // a newer scene waits, or stopped
+    m_control = &control;
+    return true;
 }
 
 RenderController::ForgetControl::~ForgetControl() {
@@ -146,12 +148,7 @@ void RenderController::run() {
             ProgressiveRender render(scene);
             for (int pass = 0; pass < m_max_passes; ++pass) {
                 RenderControl control;
-                {
-                    QMutexLocker lock(&m_mutex);
-                    while (m_paused && !m_quit && !m_stop && !m_job) m_wake.wait(&m_mutex);
-                    if (m_quit || m_stop || m_job) break;  // a newer scene waits, or stopped
-                    m_control = &control;
-                }
+                if (!begin_pass(control)) break;
                 // Forgotten before `control` goes, also when the pass throws (a refused render):
                 // restart() would otherwise cancel a dead stack object (ASan caught it).
                 const ForgetControl forget{this};

@@ -77,6 +77,9 @@ protected:
 
 private:
     void start_pending();
+    // Makes `control` the pass in flight (waiting while paused), unless the render is to end:
+    // the editor closes, Stop, or a newer scene waits.
+    bool begin_pass(RenderControl& control);
     // Renders and emits the restart's draft preview of `scene` (the worker's own copy, its
     // size restored after); skipped where a pass costs as much at any size.
     void render_preview(Scene& scene);
