@@ -9,6 +9,7 @@
 #include "geometry/lens/flat_surface.h"
 #include "geometry/lens/lens_solid.h"
 #include "geometry/lens/spherical_surface.h"
+#include "scene/interaction.h"
 #include "scene/scattering.h"
 #include "scene/scene_error.h"
 
@@ -72,7 +73,7 @@ void attach_grin(const Scene& scene, int object, const Vec3& axis, const Vec3& a
                                     "(radial and axial profiles are); trace or detect it");
     }
     const SceneObject& o = scene.objects[object];
-    const Vec3 centre = g.has_centre ? g.centre : o.shape->bounds().centre();
+    const Vec3 centre = grin_medium_of(o, m, kLineD).centre;  // where the renderer puts it
     const double size = length(o.shape->bounds().extent());
     const Vec3 offset = centre - axis_point;
     const double off_axis = length(offset - axis * dot(offset, axis));
