@@ -8,6 +8,7 @@
 #include "render/medium_transport.h"
 #include "render/path_colour.h"
 #include "scene/interaction.h"
+#include "scene/segment_medium.h"
 
 namespace lenslab {
 
@@ -24,30 +25,28 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
     Ray ray = camera_ray;
     bool seen_from_camera = true;  // no diffuse bounce yet: the camera sees this chain
     bool count_emission = true;    // the last event was the camera or a specular one
-    const Medium* atmosphere = scene.atmosphere ? &*scene.atmosphere : nullptr;
     for (int bounce = 0;; ++bounce) {
         Interaction it;
         // Refraction follows the hero wavelength (the others are dropped at a dispersive one).
         const bool hit = next_interaction(scene, ray, path.hero_nm(), it);
-        // The atmosphere fills the space outside the objects: the ray crosses it unless it is
-        // leaving a solid (it meets the back of a surface).
-        if (atmosphere && (!hit || dot(ray.direction, it.normal()) < 0.0)) {
+        const Medium* medium = segment_medium(scene, ray, hit ? &it : nullptr);
+        if (medium) {
             const double t_max = hit ? it.hit.surface.t : INFINITY;
             if (bounce < scene.render.max_depth) {
                 LightSum in_scattered(path);
-                add_delta_in_scattering(scene, *atmosphere, ray, t_max, rng, in_scattered);
+                add_delta_in_scattering(scene, *medium, ray, t_max, rng, in_scattered);
                 l += path.of(in_scattered);
             }
-            const FreeFlight f = sample_free_flight(*atmosphere, t_max, rng);
+            const FreeFlight f = sample_free_flight(*medium, t_max, rng);
             path *= f.weight;
             if (f.scattered) {
                 if (bounce >= scene.render.max_depth) break;
                 const Vec3 p = ray.at(f.t);
-                const HenyeyGreenstein phase(atmosphere->g);
+                const HenyeyGreenstein phase(medium->g);
                 LightSum e(path);
                 // Points, spots and beams: add_delta_in_scattering's, on every segment.
                 add_direct_light(
-                    scene, atmosphere, p, scene.render.light_samples, rng,
+                    scene, medium, p, scene.render.light_samples, rng,
                     [&](const Vec3& wi) { return phase.eval(dot(wi, ray.direction)); }, e, false);
                 l += path.of(e);
                 ray = {p, phase.sample(ray.direction, rng.uniform(), rng.uniform())};
@@ -78,9 +77,9 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
         const bool diffuse = s.diffuse > 0.0 && !m.color.is_black();
         if (diffuse) {
             LightSum e(path);
-            if (atmosphere) {
+            if (scene.atmosphere) {
                 add_direct_light(
-                    scene, atmosphere, p, scene.render.light_samples, rng,
+                    scene, &*scene.atmosphere, p, scene.render.light_samples, rng,
                     [&](const Vec3& wi) { return dot(facing, wi); }, e);
             } else {
                 for_each_direct_light(
