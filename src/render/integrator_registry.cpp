@@ -87,13 +87,14 @@ std::vector<std::string> integrator_names() {
 
 namespace {
 
-// Media are traced by the path integrator alone so far: the others would render the scene
-// as if the air were clear.
+// Media are traced by the path and sppm integrators: the others would render the scene as
+// if the air were clear.
 void check_integrator_renders(const Scene& scene) {
-    if (scene.atmosphere && scene.render.integrator != integrators::kPath) {
+    const std::string& name = scene.render.integrator;
+    if (scene.atmosphere && name != integrators::kPath && name != integrators::kSppm) {
         throw SceneError("atmosphere",
-                         "is rendered by the path integrator so far (use "
-                         "\"integrator\": \"path\" or --integrator path)");
+                         "is rendered by the path and sppm integrators (use \"integrator\": "
+                         "\"path\" or \"sppm\", or --integrator)");
     }
 }
 

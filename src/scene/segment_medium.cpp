@@ -8,4 +8,6 @@ const Medium* segment_medium(const Scene& scene, const Ray& ray, const Interacti
     return scene.atmosphere ? &*scene.atmosphere : nullptr;
 }
 
+bool has_media(const Scene& scene) { return scene.atmosphere.has_value(); }
+
 }  // namespace lenslab

@@ -14,4 +14,7 @@ namespace lenslab {
 // lies inside that solid; any other lies outside the objects, in the scene's atmosphere.
 const Medium* segment_medium(const Scene& scene, const Ray& ray, const Interaction* hit);
 
+// Whether any segment can cross a medium (tracers skip the question otherwise).
+bool has_media(const Scene& scene);
+
 }  // namespace lenslab
