@@ -80,6 +80,7 @@ struct SppmIntegrator::VisiblePoint {
     double path_length = 0;      // camera to point, through mirrors and glass
     bool valid = false;          // the path reached a diffuse surface
     bool dispersed = false;      // it went through dispersive glass: pass wavelength only
+    bool in_medium = false;      // it crossed a medium (its segments gather volume photons)
     Rgb direct;
 };
 
@@ -179,6 +180,7 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, Visi
             found += colour.of(e) * beta;
             if (segment_count < kMaxSegments)
                 segments[segment_count++] = {ray, t_max, beta, medium, vp.dispersed};
+            vp.in_medium = true;
             const int band = vp.dispersed ? band_of(pass.lambda_nm) : 0;
             beta *= medium->transmittance(t_max)[band];
             if (!(beta > 0.0)) break;
@@ -345,11 +347,15 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     photon_settings.aim = r.aim_photons;
     photon_settings.wavelengths = &m_pass_wavelength;
     if (!m_segments.empty()) {
-        // The objects and the camera, and a tenth of their size around them.
+        // The objects, the camera and the lights, and a quarter of their diagonal around them.
         Aabb box = scene.bounds();
         box.expand(scene.camera.position);
-        const Vec3 margin = box.extent() * 0.1;
-        photon_settings.volume_bounds = Aabb{box.lo - margin, box.hi + margin};
+        for (const PointLight& l : scene.point_lights) box.expand(l.position);
+        for (const BeamLight& l : scene.beams) box.expand(l.origin);
+        for (const SpotLight& l : scene.spots) box.expand(l.position);
+        const double margin = 0.25 * length(box.extent());
+        photon_settings.volume_bounds =
+            Aabb{box.lo - Vec3{margin, margin, margin}, box.hi + Vec3{margin, margin, margin}};
     }
     if (m_stats.passes == 0) {
         const uint64_t need = photon_pass_bytes(scene, photon_settings);
@@ -400,8 +406,9 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     // paths that went through dispersive glass (at least 10%, at most half, none if none).
     size_t dispersed_points = 0, valid_points = 0;
     for (const VisiblePoint& vp : points) {
-        valid_points += vp.valid;
-        dispersed_points += vp.valid && vp.dispersed;
+        const bool gathers = vp.valid || vp.in_medium;
+        valid_points += gathers;
+        dispersed_points += gathers && vp.dispersed;
     }
     const double pass_share =
         dispersed_points == 0
@@ -537,14 +544,16 @@ void SppmIntegrator::gather_volume(const PassState& pass, const PhotonPass& phot
 void SppmIntegrator::share_visible_points(Communicator& comm) {
     if (comm.alone()) return;
     // Per row: each pixel's radius, and whether its visible point is valid (1) and dispersed
-    // (2). Every rank then picks the same grid cell and the same share of dispersed photons.
+    // (2), and its path crossed a medium (4). Every rank then picks the same grid cell and the same
+    // share of dispersed photons.
     const size_t rows = static_cast<size_t>(m_height), width = static_cast<size_t>(m_width);
     std::vector<std::vector<double>> radius(rows);
     std::vector<std::vector<uint8_t>> flags(rows);
     for (size_t y = static_cast<size_t>(comm.rank()); y < rows; y += size_t(comm.size())) {
         for (size_t i = y * width; i < (y + 1) * width; ++i) {
             radius[y].push_back(m_pixels[i].radius);
-            flags[y].push_back(uint8_t(m_points[i].valid) | uint8_t(m_points[i].dispersed << 1));
+            flags[y].push_back(uint8_t(m_points[i].valid) | uint8_t(m_points[i].dispersed << 1) |
+                               uint8_t(m_points[i].in_medium << 2));
         }
     }
     share_dealt_parts(comm, radius);
@@ -555,6 +564,7 @@ void SppmIntegrator::share_visible_points(Communicator& comm) {
             m_pixels[y * width + x].radius = radius[y][x];
             m_points[y * width + x].valid = flags[y][x] & 1;
             m_points[y * width + x].dispersed = flags[y][x] & 2;
+            m_points[y * width + x].in_medium = flags[y][x] & 4;
         }
     }
 }
