@@ -150,6 +150,32 @@ TEST(PathInMedium, AbsorbingBoxKeepsBeerLambertsFraction) {
     }
 }
 
+// A shadow ray from inside a smoke box to a light outside keeps exp(-sigma d) of each medium
+// it crosses: 2 units of the box's smoke, then 8 of the atmosphere; a glass lens in the way
+// blocks it (shadow rays do not refract); the box's walls do not.
+TEST(ShadowTransmittance, MultipliesTheMediaCrossed) {
+    const Scene scene = parse_scene(R"({
+      "camera": {"position": [0, 0, -10], "look_at": [0, 0, 0]},
+      "atmosphere": {"absorption": [0.1, 0.2, 0.3]},
+      "objects": [
+        {"type": "box", "center": [0, 0, 0], "size": [4, 4, 4], "medium": {"scattering": 0.5}},
+        {"type": "sphere", "center": [0, 1, 0], "radius": 0.5,
+         "material": {"transparency": 1, "ior": 1.5}}]
+    })");
+    // The coefficients per band, as the colours became them.
+    const BandWeights air = scene.atmosphere->extinction();
+    const BandWeights smoke = scene.objects[0].medium->extinction();
+    const BandWeights tr = shadow_transmittance(scene, {0, 0, 0}, {1, 0, 0}, 10);
+    for (int b = 0; b < 3; ++b) EXPECT_NEAR(tr[b], std::exp(-smoke[b] * 2 - air[b] * 8), 1e-12);
+    // From outside, through the whole box: 4 units of smoke, 6 of air.
+    const BandWeights across = shadow_transmittance(scene, {-5, -1, 0}, {1, 0, 0}, 10);
+    for (int b = 0; b < 3; ++b) {
+        EXPECT_NEAR(across[b], std::exp(-smoke[b] * 4 - air[b] * 6), 1e-12);
+    }
+    const BandWeights blocked = shadow_transmittance(scene, {0, 0, 0}, {0, 1, 0}, 10);
+    for (int b = 0; b < 3; ++b) EXPECT_EQ(blocked[b], 0.0);
+}
+
 // A camera ray crossing a laser-like beam at right angles through its axis gathers, from
 // single isotropic scattering (the same integral as the airlight's, with the beam's
 // irradiance P / (pi r^2) arriving along it from its disc 10 units away):
