@@ -77,6 +77,18 @@ TEST(SegmentMedium, MilkyGlassInsideSmokeIsTheInnermost) {
     EXPECT_EQ(medium_at(scene, {0, 0, 0}), milk);
 }
 
+// A clear medium makes a pocket of clear air in the fog: inside it, no medium.
+TEST(SegmentMedium, ClearPocketInTheAtmosphere) {
+    const Scene scene = parse_scene(R"({
+      "camera": {"position": [0, 0, -10], "look_at": [0, 0, 0]},
+      "atmosphere": {"scattering": 0.1},
+      "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "medium": {}}]
+    })");
+    EXPECT_EQ(medium_ahead(scene, {0, 0, 0}, {0, 0, 1}), nullptr);
+    EXPECT_EQ(medium_at(scene, {0, 0.5, 0}), nullptr);
+    EXPECT_EQ(medium_ahead(scene, {0, 0, -5}, {0, 0, 1}), &*scene.atmosphere);
+}
+
 TEST(SurfacelessBoundary, PassesLightAndShadowsStraightThrough) {
     const Scene scene = smoke_box_with_lens("");
     const Vec3 d = normalize(Vec3{0.3, 0.2, 1});
