@@ -124,6 +124,32 @@ TEST(SurfacelessBoundary, AMaterialKeepsItsSurface) {
     EXPECT_EQ(medium_ahead(scene, {0, 0, 0}, {0, 0, 1}), &*scene.objects[0].medium);
 }
 
+// A glass ball in a tank of milky water: the ball refracts against the water around it (the
+// tank is the solid beyond its surface, as for cemented glass): at normal incidence it
+// reflects ((1.5 - 1.33) / (1.5 + 1.33))^2, not air's 4%; the water around it is milky.
+TEST(SurfacelessBoundary, GlassInAWaterTankRefractsAgainstTheWater) {
+    const Scene scene = parse_scene(R"({
+      "camera": {"position": [0, 0, -10], "look_at": [0, 0, 0]},
+      "objects": [
+        {"type": "box", "center": [0, 0, 0], "size": [4, 4, 4],
+         "medium": {"scattering": 0.2}, "material": {"transparency": 1, "ior": 1.33}},
+        {"type": "sphere", "center": [0, 0, 0], "radius": 0.5,
+         "material": {"transparency": 1, "ior": 1.5}}]
+    })");
+    Interaction it;
+    const Ray ray{{0, 0, -1}, {0, 0, 1}};
+    ASSERT_TRUE(next_interaction(scene, ray, 550, it));
+    EXPECT_EQ(it.object, &scene.objects[1]);
+    double reflected = 0;
+    for (int i = 0; i < it.scattering.count; ++i) {
+        if (it.scattering.branches[i].event == Event::Reflect)
+            reflected += it.scattering.branches[i].weight;
+    }
+    const double r = (1.5 - 1.33) / (1.5 + 1.33);
+    EXPECT_NEAR(reflected, r * r, 1e-9);
+    EXPECT_EQ(segment_medium(scene, ray, &it), &*scene.objects[0].medium);
+}
+
 std::string error_of(const std::string& object) {
     try {
         (void)parse_scene(R"({"camera": {"position": [0, 0, -10], "look_at": [0, 0, 0]},
