@@ -103,12 +103,6 @@ std::vector<int> detector_objects(const Scene& scene) {
 
 DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& settings,
                                   RenderControl& control) {
-    // Detector photons do not cross media yet: they would read the power of clear air.
-    if (scene.atmosphere) {
-        throw SceneError("atmosphere",
-                         "detectors do not measure through an atmosphere yet (remove it to "
-                         "measure the clear-air light)");
-    }
     const auto t0 = std::chrono::steady_clock::now();
     DetectionResult result;
     std::vector<int> detector_of(scene.objects.size(), -1);

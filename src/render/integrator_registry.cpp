@@ -88,20 +88,27 @@ std::vector<std::string> integrator_names() {
 
 namespace {
 
-// The JSON path of a medium of `scene`: its atmosphere, else a shape's.
-std::string medium_path(const Scene& scene) {
-    if (scene.atmosphere) return "atmosphere";
+// The JSON path of the first shape holding a medium.
+std::string shape_medium_path(const Scene& scene) {
     const SceneObject& o = scene.objects[static_cast<size_t>(scene.medium_solids().front())];
     return "objects[" + std::to_string(o.source) + "].medium";
 }
 
-// Media are traced by the path integrator alone so far: the others would render the scene
-// as if the air were clear.
+// Media are traced by the path and sppm integrators (media in shapes by the path integrator
+// alone so far): the others would render the scene as if the air were clear.
 void check_integrator_renders(const Scene& scene) {
-    if (!scene.has_media() || scene.render.integrator == integrators::kPath) return;
-    throw SceneError(medium_path(scene),
-                     "is rendered by the path integrator so far (use "
-                     "\"integrator\": \"path\" or --integrator path)");
+    const std::string& name = scene.render.integrator;
+    if (name == integrators::kPath) return;
+    if (scene.atmosphere && name != integrators::kSppm) {
+        throw SceneError("atmosphere",
+                         "is rendered by the path and sppm integrators (use \"integrator\": "
+                         "\"path\" or \"sppm\", or --integrator)");
+    }
+    if (!scene.medium_solids().empty()) {
+        throw SceneError(shape_medium_path(scene),
+                         "is rendered by the path integrator so far (use "
+                         "\"integrator\": \"path\" or --integrator path)");
+    }
 }
 
 }  // namespace

@@ -44,6 +44,14 @@ BandWeights shadow_transmittance(const Scene& scene, const Vec3& p, const Vec3& 
 void add_direct_light(const Scene& scene, const Vec3& p, int samples, Rng& rng,
                       const std::function<double(const Vec3& wi)>& angular, LightSum& e,
                       bool delta_lights = true);
+// The same for callers that still name the medium around `p` (sppm): shadow_transmittance
+// finds every medium on the way, so the one named is not needed.
+inline void add_direct_light(const Scene& scene, const Medium* /*around_p*/, const Vec3& p,
+                             int samples, Rng& rng,
+                             const std::function<double(const Vec3& wi)>& angular, LightSum& e,
+                             bool delta_lights = true) {
+    add_direct_light(scene, p, samples, rng, angular, e, delta_lights);
+}
 
 // The light of the delta lights (points, spots, beams) scattered once into a ray's segment
 // [0, t_max) in `medium`: one distance per light from Light::sample_in_scattering, weighted

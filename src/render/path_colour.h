@@ -21,6 +21,9 @@ class LightSum;
 class PathColour {
 public:
     explicit PathColour(const SampledWavelengths& w) : m_hero_nm(w.nm[0]) {}
+    // A path that, once dispersed, follows `hero_nm` drawn with density `hero_pdf` (sppm's
+    // pass wavelength).
+    PathColour(double hero_nm, double hero_pdf) : m_hero_nm(hero_nm), m_hero_pdf(hero_pdf) {}
 
     double hero_nm() const { return m_hero_nm; }
     bool dispersed() const { return m_dispersed; }
@@ -46,6 +49,7 @@ private:
     Rgb hero_colour(double value) const;
 
     double m_hero_nm;
+    double m_hero_pdf = SampledWavelengths::pdf();
     bool m_dispersed = false;
     BandWeights m_beta{1.0, 1.0, 1.0};
 };

@@ -109,6 +109,10 @@ struct MapDeposit {
 
     void attenuate(double t) { carry(t); }
 
+    // The photon map holds surface photons only (the photon_map integrator refuses media); a
+    // detector measures what reaches it, wherever the photon scattered on the way.
+    void scatter(const Vec3&, const Vec3&, int) const {}
+
     void carry(double w) {
         power = power * w;
         scale *= w;

@@ -14,23 +14,36 @@
 //   diffuse(it, ray, p, depth, rng)  roulette chose it: false ends the path, true goes on
 //                          along `ray` (set by the policy)
 //   attenuate(t)           Beer-Lambert: it kept the fraction t of its power through glass
+//                          or a medium
+//   scatter(p, dir, depth) it scattered in a participating medium at p, travelling along dir
+//                          (a volume photon, if at all); it goes on in a new direction
 //   scale, carry(w)        splitting only: its share of its light, and a branch keeping `w`
 // Each photon draws from its own random stream, so it takes the same path whoever traces it.
+//
+// Through a participating medium (scene/segment_medium.h) a photon scatters where free flight
+// by the scattering coefficient says, and loses to absorption exactly exp(-sigma_a d) of its
+// power on the way (no roulette: a beam through a clear absorbing slab arrives with exactly
+// the Beer-Lambert share). A scattering event counts as a bounce towards max_depth. In a
+// medium that is not grey a photon still carrying the whole spectrum takes one wavelength
+// first, as in absorbing glass, and the coefficients of its band apply.
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include "cluster/dealt_parts.h"
 #include "math/rng.h"
+#include "optics/phase_function.h"
 #include "render/photon_emission.h"
 #include "render/render_control.h"
 #include "scene/interaction.h"
 #include "scene/scattering.h"
 #include "scene/scene.h"
+#include "scene/segment_medium.h"
 
 namespace lenslab {
 
@@ -120,13 +133,20 @@ public:
     }
 
 private:
-    // The next surface, or false; the first surface must be in this stream's part of the
-    // light's emission (photon_emission.h).
-    bool reach(const Ray& ray, Policy& policy, int depth, Interaction& it) {
+    enum class Step { Lost, Surface, Scattered };
+
+    // The next surface (Surface, `it` filled), a scattering event in a medium on the way
+    // (Scattered, `ray` turned there), or Lost; the first surface along the emitted ray must
+    // be in this stream's part of the light's emission (photon_emission.h).
+    Step reach(Ray& ray, Policy& policy, int depth, Interaction& it) {
         const double nm = policy.lambda_nm > 0 ? policy.lambda_nm : kLineD;
-        if (!next_interaction(m_scene, ray, nm, it)) return false;
-        if (depth == 0 && !m_plan.counts(m_scene, m_photon->light, m_photon->aimed, it.hit.object))
-            return false;
+        const bool hit = next_interaction(m_scene, ray, nm, it);
+        if (depth == 0 && !counts(hit ? it.hit.object : -1)) return Step::Lost;
+        if (const Medium* medium = segment_medium(m_scene, ray, hit ? &it : nullptr)) {
+            if (cross_medium(*medium, ray, hit ? it.hit.surface.t : INFINITY, policy, depth))
+                return Step::Scattered;
+        }
+        if (!hit) return Step::Lost;
         if (absorption_before(it, ray.direction)) {
             // Absorption depends on wavelength: a photon still carrying the whole spectrum
             // (emitted inside the glass) takes one first.
@@ -140,6 +160,33 @@ private:
             it.scattering = scatter_at(it, it.direction, policy.lambda_nm);
         }
         policy.hit(it, ray.direction, depth);
+        return Step::Surface;
+    }
+
+    bool counts(int first_object) const {
+        if (first_object >= 0)
+            return m_plan.counts(m_scene, m_photon->light, m_photon->aimed, first_object);
+        return !m_photon->aimed;  // nothing hit: only the emitted stream sends photons there
+    }
+
+    // Free flight along `ray` through `medium` up to the surface at `t_max`: true when the
+    // photon scattered on the way (the policy saw it, `ray` leaves from there), false when it
+    // reached the surface, dimmed by absorption.
+    bool cross_medium(const Medium& medium, Ray& ray, double t_max, Policy& policy, int depth) {
+        if (policy.lambda_nm == 0 && !medium.is_grey()) policy.disperse(*m_rng);
+        const int band = policy.lambda_nm > 0 ? band_of(policy.lambda_nm) : 0;
+        const double sigma_s = medium.scattering[band], sigma_a = medium.absorption[band];
+        const double t = sigma_s > 0 ? -std::log1p(-m_rng->uniform()) / sigma_s : INFINITY;
+        if (!(t < t_max)) {
+            if (sigma_a > 0) policy.attenuate(std::exp(-sigma_a * t_max));
+            return false;
+        }
+        if (sigma_a > 0) policy.attenuate(std::exp(-sigma_a * t));
+        const Vec3 p = ray.at(t);
+        policy.scatter(p, ray.direction, depth);
+        const HenyeyGreenstein phase(medium.g);
+        const double u1 = m_rng->uniform(), u2 = m_rng->uniform();
+        ray = {p, phase.sample(ray.direction, u1, u2)};
         return true;
     }
 
@@ -148,7 +195,9 @@ private:
     void roulette(Policy& policy, Ray ray) {
         for (int depth = 0; depth <= m_max_depth; ++depth) {
             Interaction it;
-            if (!reach(ray, policy, depth, it)) return;
+            const Step step = reach(ray, policy, depth, it);
+            if (step == Step::Lost) return;
+            if (step == Step::Scattered) continue;
             const double p = policy.diffuse_probability(it);
             const EventPick event = pick_event(it.scattering, p, m_rng->uniform());
             if (event.diffuse) {
@@ -170,7 +219,13 @@ private:
             Pending p = m_pending.back();
             m_pending.pop_back();
             Interaction it;
-            if (p.depth > m_max_depth || !reach(p.ray, p.policy, p.depth, it)) continue;
+            if (p.depth > m_max_depth) continue;
+            const Step step = reach(p.ray, p.policy, p.depth, it);
+            if (step == Step::Lost) continue;
+            if (step == Step::Scattered) {
+                m_pending.push_back({p.policy, p.ray, p.depth + 1});
+                continue;
+            }
             const Scattering& s = it.scattering;
             for (int i = 0; i < s.count; ++i) {
                 double w = s.branches[i].weight;

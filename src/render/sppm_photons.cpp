@@ -22,6 +22,7 @@ struct PassDeposit {
     const Scene& scene;
     const PhotonPassSettings& s;
     std::vector<PhotonHit>& hits;  // the chunk's
+    std::vector<PhotonHit>& volume;
     std::vector<uint32_t>& chains;
     const Spectrum* spectrum;  // of its light
     int light;
@@ -52,12 +53,24 @@ struct PassDeposit {
 
     void hit(const Interaction& it, const Vec3& direction, int depth) {
         if (!(it.scattering.diffuse > 0.0 && !it.material->color.is_black()) || depth == 0) return;
+        hits.push_back(record(it.point(), facing(it, direction)));
+    }
+
+    void scatter(const Vec3& p, const Vec3& direction, int depth) {
+        if (depth == 0 && scene.lights()[static_cast<size_t>(light)]->is_delta()) return;
+        const Aabb& box = s.volume_bounds;
+        if (!box.empty() && (p.x < box.lo.x || p.y < box.lo.y || p.z < box.lo.z || p.x > box.hi.x ||
+                             p.y > box.hi.y || p.z > box.hi.z))
+            return;
+        volume.push_back(record(p, direction));
+    }
+
+    PhotonHit record(const Vec3& p, const Vec3& unit) const {
         PhotonHit h{};
-        const Vec3& p = it.point();
         h.position[0] = static_cast<float>(p.x);
         h.position[1] = static_cast<float>(p.y);
         h.position[2] = static_cast<float>(p.z);
-        encode_octahedral(facing(it, direction), h.normal);
+        encode_octahedral(unit, h.normal);
         h.power = static_cast<float>(power);
         if (lambda_nm > 0) {
             h.lambda_nm = static_cast<float>(lambda_nm);
@@ -67,7 +80,7 @@ struct PassDeposit {
         }
         h.light = static_cast<uint16_t>(light);
         h.wavelength = kind;
-        hits.push_back(h);
+        return h;
     }
 
     void attenuate(double t) { power *= t; }
@@ -113,7 +126,7 @@ PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s,
                              RenderControl& control) {
     const PhotonPlan plan = photon_pass_plan(scene, s);
     const size_t chunks = static_cast<size_t>(photon_chunks(plan.total()));
-    std::vector<std::vector<PhotonHit>> hits(chunks);
+    std::vector<std::vector<PhotonHit>> hits(chunks), volume(chunks);
     std::vector<std::vector<uint32_t>> chains(chunks);
     for_each_photon_chunk(plan.total(), control, [&](int64_t chunk, int64_t first, int64_t last) {
         const size_t c = static_cast<size_t>(chunk);
@@ -123,6 +136,7 @@ PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s,
                 return PassDeposit{scene,
                                    s,
                                    hits[c],
+                                   volume[c],
                                    chains[c],
                                    p.start.spectrum,
                                    p.light,
@@ -134,17 +148,20 @@ PhotonPass trace_photon_pass(const Scene& scene, const PhotonPassSettings& s,
     // In a job of several ranks each traced the chunks dealt to it: every rank gets them all,
     // chunk by chunk, so the pass is the one a single process traces.
     share_dealt_parts(control.cluster(), hits);
+    share_dealt_parts(control.cluster(), volume);
     share_dealt_parts(control.cluster(), chains);
     PhotonPass pass;
     if (control.cancelled()) return pass;
     std::vector<size_t> chain_at, hit_at;
     pass.chains = join_chunks(chains, chain_at);
     tbb::parallel_for(size_t{0}, chunks, [&](size_t c) {  // chains counted from the pass's first
-        for (PhotonHit& h : hits[c])
-            if (h.wavelength == PhotonWavelength::All)
-                h.chain += static_cast<uint32_t>(chain_at[c]);
+        for (auto* part : {&hits[c], &volume[c]})
+            for (PhotonHit& h : *part)
+                if (h.wavelength == PhotonWavelength::All)
+                    h.chain += static_cast<uint32_t>(chain_at[c]);
     });
     pass.hits = join_chunks(hits, hit_at);
+    pass.volume = join_chunks(volume, hit_at);
     pass.emitted = plan.total();
     pass.aimed = plan.aimed_total();
     return pass;

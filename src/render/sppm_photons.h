@@ -17,10 +17,18 @@
 // own from the same density and light the rest, so a spectrum seen directly is smooth after
 // a few passes, not one band per pass. `power` is divided by the wavelength's density and by
 // the probability of the photon's share.
+//
+// In a participating medium (fog, smoke) a photon leaves a volume photon where it scatters:
+// the same record, its `normal` holding its direction of travel before scattering, its power
+// what arrived there (absorption on the way taken off). Camera rays through the medium
+// gather them with the beam radiance estimate (integrators/sppm.h). The first scattering of
+// light coming straight from a point, spot or beam is left out: camera rays compute it
+// exactly (render/medium_transport.h), as surfaces compute the direct light.
 
 #include <cstdint>
 #include <vector>
 
+#include "geometry/aabb.h"
 #include "render/render_control.h"
 #include "scene/scene.h"
 
@@ -52,6 +60,7 @@ static_assert(sizeof(PhotonHit) == 32, "a photon hit takes 32 bytes");
 
 struct PhotonPass {
     std::vector<PhotonHit> hits;
+    std::vector<PhotonHit> volume;  // scattering events in media
     // Material indices of the diffuse surfaces each photon bounced off, in order: the flux
     // of a hit is power * spectrum_light(l) * prod albedo(chains[chain .. chain + length)).
     std::vector<uint32_t> chains;
@@ -69,6 +78,9 @@ struct PhotonPassSettings {
     const class PassWavelength* wavelengths = nullptr;  // where dispersed photons draw their own
     int64_t caustic_photons_per_light = 0;              // aimed at the photon targets, per light
     bool aim = true;
+    // Volume photons are kept inside this box only (the camera's view of the scene): in an
+    // atmosphere without bounds photons scatter on far from everything (empty: everywhere).
+    Aabb volume_bounds;
 };
 
 // Deterministic for a given seed at any thread count (one random stream per photon, hits

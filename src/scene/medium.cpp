@@ -44,8 +44,13 @@ const ElementSpec& medium_spec() {
 Medium read_medium(const nlohmann::json& j, const std::string& path) {
     SpecReader r(j, path, medium_spec());
     Medium m;
-    m.absorption = coefficient_bands(r.colour("absorption"));
-    m.scattering = coefficient_bands(r.colour("scattering"));
+    // A grey coefficient is the same number in every band, exactly: light of any colour
+    // crosses the medium alike, and the tracers need not split it by wavelength.
+    const auto bands = [](const Rgb& c) {
+        return c.r == c.g && c.g == c.b ? BandWeights{c.r, c.r, c.r} : coefficient_bands(c);
+    };
+    m.absorption = bands(r.colour("absorption"));
+    m.scattering = bands(r.colour("scattering"));
     m.g = r.real("g");
     return m;
 }

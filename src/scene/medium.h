@@ -25,6 +25,11 @@ struct Medium {
     // exp(-sigma_t d) in each band.
     BandWeights transmittance(double d) const;
     bool is_clear() const { return extinction() == BandWeights{0, 0, 0}; }
+    // The same in every band: light of any colour keeps its colour through it.
+    bool is_grey() const {
+        return absorption[0] == absorption[1] && absorption[1] == absorption[2] &&
+               scattering[0] == scattering[1] && scattering[1] == scattering[2];
+    }
 };
 
 // The keys of a medium (a shape's `medium`, the scene's `atmosphere`).

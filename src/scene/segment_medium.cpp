@@ -31,4 +31,6 @@ const Medium* segment_medium(const Scene& scene, const Ray& ray, const Interacti
     return medium_at(scene, ray.at(0.5 * hit->hit.surface.t));
 }
 
+bool has_media(const Scene& scene) { return scene.has_media(); }
+
 }  // namespace lenslab

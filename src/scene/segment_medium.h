@@ -20,4 +20,7 @@ const Medium* segment_medium(const Scene& scene, const Ray& ray, const Interacti
 // the atmosphere; nullptr where that is clear.
 const Medium* medium_at(const Scene& scene, const Vec3& point);
 
+// Whether any segment can cross a medium (tracers skip the question otherwise).
+bool has_media(const Scene& scene);
+
 }  // namespace lenslab

@@ -129,16 +129,6 @@ TEST(Detector, PointLightIrradianceFollowsInverseSquareAndCosine) {
     }
 }
 
-// Detector photons do not cross media yet: a scene with fog is refused, not measured clear.
-TEST(Detector, RefusesAnAtmosphere) {
-    const Scene scene = parse_scene(R"({"camera": {"position": [0, 5, 5], "look_at": [0, 0, 0]},
-        "atmosphere": {"scattering": 0.1},
-        "objects": [{"type": "rectangle", "center": [0, 0, 0], "normal": [0, 1, 0], "size": [4, 4],
-                     "material": {"color": 0.5}, "detector": true}],
-        "lights": [{"type": "point", "position": [0, 1, 0], "power": 100}]})");
-    EXPECT_THROW((void)measure(scene, 1000), SceneError);
-}
-
 TEST(Detector, DiscInterceptsTheSolidAngleItSubtendsOfAPointLight) {
     // A disc of radius a on the axis at distance d from an isotropic source of power P
     // receives P Omega / (4 pi) = P / 2 (1 - d / sqrt(d^2 + a^2)) (the solid angle of a

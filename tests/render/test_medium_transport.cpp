@@ -198,38 +198,47 @@ TEST(PathInMedium, SingleScatteringFromABeamMatchesItsClosedForm) {
     EXPECT_NEAR(mean, expected, 0.01 * expected);
 }
 
-// Other integrators would render the scene as if the air were clear: they refuse it.
-TEST(PathInMedium, OtherIntegratorsRefuseAnAtmosphere) {
-    Scene scene = parse_scene(R"({
-      "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0]},
-      "render": {"width": 4, "height": 4, "integrator": "sppm"},
-      "atmosphere": {"scattering": 0.1},
-      "lights": [{"type": "point", "position": [0, 0, 0], "power": 50}]
-    })");
-    RenderControl control;
-    try {
-        (void)render_scene(scene, control);
-        ADD_FAILURE() << "rendered";
-    } catch (const SceneError& e) {
-        EXPECT_EQ(e.path(), "atmosphere");
+// The integrators without media would render the scene as if the air were clear: they
+// refuse it.
+TEST(PathInMedium, IntegratorsWithoutMediaRefuseAnAtmosphere) {
+    for (const char* integrator : {"whitted", "photon_map"}) {
+        Scene scene = parse_scene(R"({
+          "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0]},
+          "render": {"width": 4, "height": 4, "integrator": ")" +
+                                  std::string(integrator) + R"("},
+          "atmosphere": {"scattering": 0.1},
+          "lights": [{"type": "point", "position": [0, 0, 0], "power": 50}]
+        })");
+        RenderControl control;
+        try {
+            (void)render_scene(scene, control);
+            ADD_FAILURE() << integrator << " rendered";
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.path(), "atmosphere");
+        }
     }
 }
 
+// Media in shapes are the path integrator's alone so far.
 TEST(PathInMedium, OtherIntegratorsRefuseAShapesMedium) {
-    Scene scene = parse_scene(R"({
-      "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0]},
-      "render": {"width": 4, "height": 4, "integrator": "whitted"},
-      "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": {"color": 0.5}},
-                  {"type": "sphere", "center": [0, 0, 0], "radius": 2,
-                   "medium": {"scattering": 0.1}}],
-      "lights": [{"type": "point", "position": [0, 3, 0], "power": 50}]
-    })");
-    RenderControl control;
-    try {
-        (void)render_scene(scene, control);
-        ADD_FAILURE() << "rendered";
-    } catch (const SceneError& e) {
-        EXPECT_EQ(e.path(), "objects[1].medium");
+    for (const char* integrator : {"whitted", "photon_map", "sppm"}) {
+        Scene scene = parse_scene(R"({
+          "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0]},
+          "render": {"width": 4, "height": 4, "integrator": ")" +
+                                  std::string(integrator) + R"("},
+          "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                       "material": {"color": 0.5}},
+                      {"type": "sphere", "center": [0, 0, 0], "radius": 2,
+                       "medium": {"scattering": 0.1}}],
+          "lights": [{"type": "point", "position": [0, 3, 0], "power": 50}]
+        })");
+        RenderControl control;
+        try {
+            (void)render_scene(scene, control);
+            ADD_FAILURE() << integrator << " rendered";
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.path(), "objects[1].medium");
+        }
     }
 }
 

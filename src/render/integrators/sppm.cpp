@@ -10,18 +10,23 @@
 
 #include "accel/hash_grid.h"
 #include "accel/photon.h"
+#include "accel/point_bvh.h"
 #include "cluster/dealt_parts.h"
 #include "cluster/rank_order_sum.h"
 #include "math/constants.h"
 #include "math/rng.h"
 #include "optics/glass.h"
+#include "optics/phase_function.h"
 #include "render/camera.h"
 #include "render/direct_light.h"
+#include "render/medium_transport.h"
 #include "render/memory_budget.h"
+#include "render/path_colour.h"
 #include "render/photon_emission.h"
 #include "render/photon_tracer.h"
 #include "render/sppm_photons.h"
 #include "scene/interaction.h"
+#include "scene/segment_medium.h"
 
 namespace lenslab {
 
@@ -39,6 +44,13 @@ constexpr double kSceneShare = 0.005;
 // arrived on the side the camera sees (no light through thin objects) and on a surface
 // turned less than 60 degrees from the point's (not the wall round a corner).
 constexpr double kSameSurfaceCos = 0.5;
+// Segments through media a camera path keeps for the volume gather (a ray through a fog box,
+// a lens in it, and out again is three).
+constexpr int kMaxSegments = 4;
+// A volume photon's radius: this many pixel footprints at its distance from the camera, at
+// most the volume radius. A fixed radius in the scene would make a photon near the camera a
+// disc across half the image.
+constexpr double kVolumeFootprints = 3.0;
 
 uint64_t splitmix64(uint64_t x) {
     x += 0x9E3779B97F4A7C15ull;
@@ -68,7 +80,16 @@ struct SppmIntegrator::VisiblePoint {
     double path_length = 0;      // camera to point, through mirrors and glass
     bool valid = false;          // the path reached a diffuse surface
     bool dispersed = false;      // it went through dispersive glass: pass wavelength only
+    bool in_medium = false;      // it crossed a medium (its segments gather volume photons)
     Rgb direct;
+};
+
+struct SppmIntegrator::MediumSegment {
+    Ray ray;
+    double t_max = 0;  // where it meets the next surface (INFINITY: none)
+    double beta = 0;   // the camera path's throughput at the ray's origin; 0: no segment
+    const Medium* medium = nullptr;
+    bool dispersed = false;  // the path follows the pass wavelength alone
 };
 
 struct SppmIntegrator::PassState {
@@ -90,6 +111,12 @@ SppmIntegrator::SppmIntegrator(const Scene& scene)
     if (!scene.render.ambient.is_black()) m_ambient = illuminant_from_rgb(scene.render.ambient);
     if (!scene.render.background.is_black())
         m_background = illuminant_from_rgb(scene.render.background);
+    if (has_media(scene)) {
+        m_segments.resize(m_pixels.size() * kMaxSegments);
+        m_volume_radius =
+            scene.render.initial_radius > 0 ? scene.render.initial_radius : m_radius_cap;
+        m_volume_radius_start = m_volume_radius;
+    }
 }
 
 SppmIntegrator::~SppmIntegrator() = default;
@@ -107,8 +134,8 @@ double SppmIntegrator::auto_radius(double path_length) const {
     return std::max(r, 1e-6 * m_radius_cap);
 }
 
-void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
-                                       VisiblePoint& vp) const {
+void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, VisiblePoint& vp,
+                                       MediumSegment* segments) const {
     const Scene& scene = m_scene;
     const uint64_t pixel = uint64_t(y) * uint64_t(m_width) + uint64_t(x);
     Rng rng(pass.seed, pixel);
@@ -128,9 +155,37 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
             found += s.band_colour().total() * beta;
         }
     };
+    int segment_count = 0;
+    if (segments) std::fill(segments, segments + kMaxSegments, MediumSegment{});
+    // The colour of light found along the path (medium_transport's sums) at beta = 1.
+    auto path_colour = [&] {
+        PathColour c(pass.lambda_nm, pass.lambda_pdf);
+        if (vp.dispersed) c.disperse();
+        return c;
+    };
     for (int depth = 0; depth <= scene.render.max_depth; ++depth) {
         Interaction it;
-        if (!next_interaction(scene, ray, vp.dispersed ? pass.lambda_nm : kLineD, it)) {
+        const bool hit = next_interaction(scene, ray, vp.dispersed ? pass.lambda_nm : kLineD, it);
+        const Medium* medium = segments ? segment_medium(scene, ray, hit ? &it : nullptr) : nullptr;
+        if (medium) {
+            // A coloured medium, like absorbing glass, leaves the pass wavelength alone.
+            if (!vp.dispersed && !medium->is_grey()) {
+                vp.dispersed = true;
+                if (hit) it.scattering = scatter_at(it, it.direction, pass.lambda_nm);
+            }
+            const double t_max = hit ? it.hit.surface.t : INFINITY;
+            const PathColour colour = path_colour();
+            LightSum e(colour);
+            add_delta_in_scattering(scene, *medium, ray, t_max, rng, e);
+            found += colour.of(e) * beta;
+            if (segment_count < kMaxSegments)
+                segments[segment_count++] = {ray, t_max, beta, medium, vp.dispersed};
+            vp.in_medium = true;
+            const int band = vp.dispersed ? band_of(pass.lambda_nm) : 0;
+            beta *= medium->transmittance(t_max)[band];
+            if (!(beta > 0.0)) break;
+        }
+        if (!hit) {
             if (m_background) add(*m_background);
             break;
         }
@@ -166,7 +221,17 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
             vp.albedo = m.albedo.get();
             vp.albedo_bands = m.albedo_bands;
             const int samples = scene.render.light_samples;
-            if (vp.dispersed) {
+            if (segments) {
+                // Through the atmosphere: the direct light dimmed on its way.
+                PathColour colour = path_colour();
+                LightSum e(colour);
+                add_direct_light(
+                    scene, scene.atmosphere ? &*scene.atmosphere : nullptr, p, samples, rng,
+                    [&](const Vec3& wi) { return dot(facing, wi); }, e);
+                if (m_ambient) e.add(*m_ambient, kPi);
+                colour *= m.albedo_bands;
+                found += colour.of(e) * (beta / kPi);
+            } else if (vp.dispersed) {
                 const SampledWavelengths at_pass = SampledWavelengths::single(pass.lambda_nm);
                 double e = direct_irradiance(scene, p, facing, samples, at_pass, rng).v[0];
                 if (m_ambient) e += kPi * m_ambient->eval(pass.lambda_nm);
@@ -187,6 +252,88 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass,
     if (found_pass != 0.0) vp.direct += sample_to_rgb(found_pass, pass.lambda_nm, pass.lambda_pdf);
 }
 
+// What the photons found near a receiver bring to it: a visible point (its surface reflects
+// with its albedo) or a camera segment through a medium (albedo 1: its phase function and
+// transmittance weigh each photon). Sums stay in the photons' forms (sppm_photons.h) until
+// colour(): exact band colours for photons that never dispersed, the pass wavelength's
+// density for those at it, and their own wavelength for the others.
+class SppmIntegrator::PhotonColours {
+public:
+    struct Receiver {
+        bool dispersed;          // the camera path follows the pass wavelength
+        double scale;            // its throughput and factor (a surface's 1/pi)
+        const Spectrum* albedo;  // nullptr: 1
+        BandWeights albedo_bands;
+    };
+    struct Sum {
+        Rgb flux;         // not dispersed: exact colour, the receiver's albedo in
+        double pass = 0;  // at the pass wavelength, over its density's share
+        Rgb own;          // at wavelengths of their own, scaled already
+    };
+
+    PhotonColours(const Scene& scene, const PhotonPass& photons, const PassState& pass)
+        : m_scene(scene), m_photons(photons), m_pass(pass) {
+        const int lights = photon_light_count(scene);
+        m_light_at_pass.resize(size_t(lights));
+        m_light_bands.resize(size_t(lights));
+        for (int l = 0; l < lights; ++l) {
+            m_light_at_pass[size_t(l)] = emitted_spectrum(scene, l).eval(pass.lambda_nm);
+            m_light_bands[size_t(l)] = emitted_spectrum(scene, l).band_colour();
+        }
+        for (const Material& m : scene.materials)
+            m_albedo_at_pass.push_back(m.albedo ? m.albedo->eval(pass.lambda_nm) : 0.0);
+    }
+
+    // Photon `ph` with the share `weight` of its power.
+    void add(Sum& sum, const PhotonHit& ph, const Receiver& to, double weight) const {
+        const double power = ph.power * weight;
+        if (ph.wavelength == PhotonWavelength::Pass) {
+            // Dispersed photons at the pass wavelength light only camera paths dispersed at
+            // it; the others only the rest (sppm_photons.h).
+            if (to.dispersed) sum.pass += power * m_pass.lambda_pdf;
+        } else if (ph.wavelength == PhotonWavelength::Own) {
+            if (!to.dispersed) {
+                const double nm = ph.lambda_nm;
+                const double albedo = to.albedo ? to.albedo->eval(nm) : 1.0;
+                sum.own += sample_to_rgb(to.scale * albedo * power, nm, 1.0);
+            }
+        } else if (to.dispersed) {
+            double f = power * m_light_at_pass[ph.light];
+            for (uint32_t k = 0; k < ph.chain_length; ++k)
+                f *= m_albedo_at_pass[m_photons.chains[ph.chain + k]];
+            sum.pass += f;
+        } else {
+            // power x the albedos it met (band-constant) x its light's spectrum, reflected by
+            // the receiver's albedo: exact per band.
+            BandWeights f = to.albedo_bands;
+            for (double& b : f) b *= power;
+            for (uint32_t k = 0; k < ph.chain_length; ++k) {
+                const BandWeights& a =
+                    m_scene.materials[m_photons.chains[ph.chain + k]].albedo_bands;
+                for (int b = 0; b < 3; ++b) f[b] *= a[b];
+            }
+            sum.flux += m_light_bands[ph.light].through(f);
+        }
+    }
+
+    Rgb colour(const Sum& sum, const Receiver& to) const {
+        Rgb phi = sum.own;
+        if (!to.dispersed) phi += sum.flux * to.scale;
+        if (sum.pass != 0.0) {
+            const double albedo = to.albedo ? to.albedo->eval(m_pass.lambda_nm) : 1.0;
+            phi += sample_to_rgb(to.scale * albedo * sum.pass, m_pass.lambda_nm, m_pass.lambda_pdf);
+        }
+        return phi;
+    }
+
+private:
+    const Scene& m_scene;
+    const PhotonPass& m_photons;
+    const PassState& m_pass;
+    std::vector<double> m_light_at_pass, m_albedo_at_pass;
+    std::vector<BandColour> m_light_bands;
+};
+
 bool SppmIntegrator::add_pass(RenderControl& control) {
     const Scene& scene = m_scene;
     const RenderSettings& r = scene.render;
@@ -199,6 +346,17 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
         r.caustic_photons > 0 ? r.caustic_photons : std::max<int64_t>(1, pass_photons() / 4);
     photon_settings.aim = r.aim_photons;
     photon_settings.wavelengths = &m_pass_wavelength;
+    if (!m_segments.empty()) {
+        // The objects, the camera and the lights, and a quarter of their diagonal around them.
+        Aabb box = scene.bounds();
+        box.expand(scene.camera.position);
+        for (const PointLight& l : scene.point_lights) box.expand(l.position);
+        for (const BeamLight& l : scene.beams) box.expand(l.origin);
+        for (const SpotLight& l : scene.spots) box.expand(l.position);
+        const double margin = 0.25 * length(box.extent());
+        photon_settings.volume_bounds =
+            Aabb{box.lo - Vec3{margin, margin, margin}, box.hi + Vec3{margin, margin, margin}};
+    }
     if (m_stats.passes == 0) {
         const uint64_t need = photon_pass_bytes(scene, photon_settings);
         check_memory_budget(
@@ -221,15 +379,18 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     auto t0 = std::chrono::steady_clock::now();
     std::vector<VisiblePoint>& points = m_points;
     points.resize(m_pixels.size());
-    tbb::parallel_for(tbb::blocked_range<int>(0, m_height, 1),
-                      [&](const tbb::blocked_range<int>& rows) {
-                          for (int y = rows.begin(); y != rows.end(); ++y) {
-                              if (!dealt_to(y, comm)) continue;
-                              if (control.cancelled()) return;
-                              for (int x = 0; x < m_width; ++x)
-                                  trace_camera_path(x, y, pass, points[size_t(y) * m_width + x]);
-                          }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, m_height, 1), [&](const tbb::blocked_range<int>& rows) {
+            for (int y = rows.begin(); y != rows.end(); ++y) {
+                if (!dealt_to(y, comm)) continue;
+                if (control.cancelled()) return;
+                for (int x = 0; x < m_width; ++x) {
+                    const size_t i = size_t(y) * m_width + x;
+                    trace_camera_path(x, y, pass, points[i],
+                                      m_segments.empty() ? nullptr : &m_segments[i * kMaxSegments]);
+                }
+            }
+        });
     if (control.cancelled()) return false;
     // A pixel's radius starts at its first visible point.
     for (size_t i = 0; i < points.size(); ++i) {
@@ -245,8 +406,9 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     // paths that went through dispersive glass (at least 10%, at most half, none if none).
     size_t dispersed_points = 0, valid_points = 0;
     for (const VisiblePoint& vp : points) {
-        valid_points += vp.valid;
-        dispersed_points += vp.valid && vp.dispersed;
+        const bool gathers = vp.valid || vp.in_medium;
+        valid_points += gathers;
+        dispersed_points += gathers && vp.dispersed;
     }
     const double pass_share =
         dispersed_points == 0
@@ -279,82 +441,45 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     const HashGrid grid(
         photons.hits.size(), [&](size_t i) { return photons.hits[i].pos(); }, cell);
     const std::vector<PhotonHit> hits = grid.reorder(photons.hits);
-    const int lights = photon_light_count(scene);
-    std::vector<double> light_at_pass(lights), albedo_at_pass(scene.materials.size());
-    std::vector<BandColour> light_bands(lights);
-    for (int l = 0; l < lights; ++l) {
-        light_at_pass[l] = emitted_spectrum(scene, l).eval(pass.lambda_nm);
-        light_bands[l] = emitted_spectrum(scene, l).band_colour();
-    }
-    for (size_t m = 0; m < scene.materials.size(); ++m) {
-        albedo_at_pass[m] =
-            scene.materials[m].albedo ? scene.materials[m].albedo->eval(pass.lambda_nm) : 0.0;
-    }
+    const PhotonColours colours(scene, photons, pass);
     const double alpha = r.alpha;
-    tbb::parallel_for(
-        tbb::blocked_range<size_t>(0, m_pixels.size(), 256),
-        [&](const tbb::blocked_range<size_t>& range) {
-            for (size_t i = range.begin(); i != range.end(); ++i) {
-                if (!dealt_to(static_cast<int64_t>(i) / m_width, comm)) continue;
-                const VisiblePoint& vp = points[i];
-                Pixel& px = m_pixels[i];
-                px.direct += vp.direct;
-                if (!vp.valid) continue;
-                const double radius2 = px.radius * px.radius;
-                Rgb flux;                // photons not dispersed, reflected: exact colour
-                double flux_pass = 0.0;  // at the pass wavelength
-                Rgb dispersed;           // photons at wavelengths of their own
-                int64_t found = 0;
-                grid.for_each_near(vp.p, px.radius, [&](size_t h) {
-                    const PhotonHit& ph = hits[h];
-                    if (length_squared(ph.pos() - vp.p) > radius2) return;
-                    if (dot(decode_octahedral(ph.normal), vp.n) < kSameSurfaceCos) return;
-                    ++found;
-                    if (ph.wavelength == PhotonWavelength::Pass) {
-                        // Dispersed photons at the pass wavelength light only camera paths
-                        // dispersed at it; the others only the rest (sppm_photons.h).
-                        if (vp.dispersed) flux_pass += ph.power * pass.lambda_pdf;
-                    } else if (ph.wavelength == PhotonWavelength::Own) {
-                        if (!vp.dispersed) {
-                            const double nm = ph.lambda_nm;
-                            dispersed += sample_to_rgb(
-                                vp.beta * vp.albedo->eval(nm) / kPi * ph.power, nm, 1.0);
-                        }
-                    } else if (vp.dispersed) {
-                        double f = ph.power * light_at_pass[ph.light];
-                        for (uint32_t k = 0; k < ph.chain_length; ++k)
-                            f *= albedo_at_pass[photons.chains[ph.chain + k]];
-                        flux_pass += f;
-                    } else {
-                        // power x the albedos it met (band-constant) x its light's spectrum,
-                        // reflected by the visible point's albedo: exact per band.
-                        BandWeights f = vp.albedo_bands;
-                        for (double& b : f) b *= ph.power;
-                        for (uint32_t k = 0; k < ph.chain_length; ++k) {
-                            const BandWeights& a =
-                                scene.materials[photons.chains[ph.chain + k]].albedo_bands;
-                            for (int b = 0; b < 3; ++b) f[b] *= a[b];
-                        }
-                        flux += light_bands[ph.light].through(f);
-                    }
-                });
-                if (found == 0) continue;
-                Rgb phi = dispersed;
-                if (!vp.dispersed) phi += flux * (vp.beta / kPi);
-                if (flux_pass != 0.0) {
-                    const double weight_pass = vp.beta * vp.albedo->eval(pass.lambda_nm) / kPi;
-                    phi += sample_to_rgb(weight_pass * flux_pass, pass.lambda_nm, pass.lambda_pdf);
-                }
-                // Hachisuka & Jensen 2009, eqs. 6 and 7 (and tau scaled with the disc's area).
-                const double n_new = px.n + alpha * static_cast<double>(found);
-                const double ratio = n_new / (px.n + static_cast<double>(found));
-                px.tau = (px.tau + phi) * ratio;
-                px.radius *= std::sqrt(ratio);
-                px.n = n_new;
-            }
-        });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, m_pixels.size(), 256),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                          for (size_t i = range.begin(); i != range.end(); ++i) {
+                              if (!dealt_to(static_cast<int64_t>(i) / m_width, comm)) continue;
+                              const VisiblePoint& vp = points[i];
+                              Pixel& px = m_pixels[i];
+                              px.direct += vp.direct;
+                              if (!vp.valid) continue;
+                              const double radius2 = px.radius * px.radius;
+                              const PhotonColours::Receiver at_point{vp.dispersed, vp.beta / kPi,
+                                                                     vp.albedo, vp.albedo_bands};
+                              PhotonColours::Sum sum;
+                              int64_t found = 0;
+                              grid.for_each_near(vp.p, px.radius, [&](size_t h) {
+                                  const PhotonHit& ph = hits[h];
+                                  if (length_squared(ph.pos() - vp.p) > radius2) return;
+                                  if (dot(decode_octahedral(ph.normal), vp.n) < kSameSurfaceCos)
+                                      return;
+                                  ++found;
+                                  colours.add(sum, ph, at_point, 1.0);
+                              });
+                              if (found == 0) continue;
+                              const Rgb phi = colours.colour(sum, at_point);
+                              // Hachisuka & Jensen 2009, eqs. 6 and 7 (and tau scaled with the
+                              // disc's area).
+                              const double n_new = px.n + alpha * static_cast<double>(found);
+                              const double ratio = n_new / (px.n + static_cast<double>(found));
+                              px.tau = (px.tau + phi) * ratio;
+                              px.radius *= std::sqrt(ratio);
+                              px.n = n_new;
+                          }
+                      });
+
+    gather_volume(pass, photons, colours);
 
     ++m_stats.passes;
+    m_stats.volume_photons = photons.volume.size();
     m_stats.photons_emitted += photons.emitted;
     m_stats.photons_aimed += photons.aimed;
     m_stats.photon_hits = hits.size();
@@ -373,17 +498,62 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
     return true;
 }
 
+void SppmIntegrator::gather_volume(const PassState& pass, const PhotonPass& photons,
+                                   const PhotonColours& colours) {
+    if (m_segments.empty()) return;
+    const double radius = m_volume_radius;
+    const double footprint = kVolumeFootprints * m_pixel_angle * radius / m_volume_radius_start;
+    const Vec3 eye = m_scene.camera.position;
+    const PointBvh photon_discs(
+        photons.volume.size(), [&](size_t i) { return photons.volume[i].pos(); },
+        [&](size_t i) {
+            return std::min(radius, footprint * length(photons.volume[i].pos() - eye));
+        });
+    const Communicator& comm = *m_cluster;
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, m_pixels.size(), 256), [&](const tbb::
+                                                                                   blocked_range<
+                                                                                       size_t>&
+                                                                                       range) {
+        for (size_t i = range.begin(); i != range.end(); ++i) {
+            if (!dealt_to(static_cast<int64_t>(i) / m_width, comm)) continue;
+            for (int k = 0; k < kMaxSegments; ++k) {
+                const MediumSegment& seg = m_segments[i * kMaxSegments + size_t(k)];
+                if (!(seg.beta > 0.0)) break;
+                const HenyeyGreenstein phase(seg.medium->g);
+                const int band = seg.dispersed ? band_of(pass.lambda_nm) : 0;
+                const double sigma_t = seg.medium->extinction()[size_t(band)];
+                const PhotonColours::Receiver to{seg.dispersed, seg.beta / kPi, nullptr, {1, 1, 1}};
+                PhotonColours::Sum sum;
+                photon_discs.for_each_near(seg.ray, seg.t_max, [&](size_t p, double t, double r2) {
+                    const PhotonHit& ph = photons.volume[p];
+                    const Vec3 travel = decode_octahedral(ph.normal);
+                    const double w =
+                        phase.eval(-dot(travel, seg.ray.direction)) * std::exp(-sigma_t * t) / r2;
+                    colours.add(sum, ph, to, w);
+                });
+                m_pixels[i].direct += colours.colour(sum, to);
+            }
+        }
+    });
+    m_stats.volume_radius = radius;
+    // Knaus and Zwicker 2011: r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1), i the pass (from 1).
+    const double i = m_stats.passes + 1;
+    m_volume_radius *= std::sqrt((i + m_scene.render.alpha) / (i + 1.0));
+}
+
 void SppmIntegrator::share_visible_points(Communicator& comm) {
     if (comm.alone()) return;
     // Per row: each pixel's radius, and whether its visible point is valid (1) and dispersed
-    // (2). Every rank then picks the same grid cell and the same share of dispersed photons.
+    // (2), and its path crossed a medium (4). Every rank then picks the same grid cell and the same
+    // share of dispersed photons.
     const size_t rows = static_cast<size_t>(m_height), width = static_cast<size_t>(m_width);
     std::vector<std::vector<double>> radius(rows);
     std::vector<std::vector<uint8_t>> flags(rows);
     for (size_t y = static_cast<size_t>(comm.rank()); y < rows; y += size_t(comm.size())) {
         for (size_t i = y * width; i < (y + 1) * width; ++i) {
             radius[y].push_back(m_pixels[i].radius);
-            flags[y].push_back(uint8_t(m_points[i].valid) | uint8_t(m_points[i].dispersed << 1));
+            flags[y].push_back(uint8_t(m_points[i].valid) | uint8_t(m_points[i].dispersed << 1) |
+                               uint8_t(m_points[i].in_medium << 2));
         }
     }
     share_dealt_parts(comm, radius);
@@ -394,6 +564,7 @@ void SppmIntegrator::share_visible_points(Communicator& comm) {
             m_pixels[y * width + x].radius = radius[y][x];
             m_points[y * width + x].valid = flags[y][x] & 1;
             m_points[y * width + x].dispersed = flags[y][x] & 2;
+            m_points[y * width + x].in_medium = flags[y][x] & 4;
         }
     }
 }
@@ -440,7 +611,9 @@ RenderStats SppmIntegrator::stats(double seconds) const {
                   {"camera_seconds", p.camera_seconds},
                   {"photon_seconds", p.photon_seconds},
                   {"gather_seconds", p.gather_seconds},
-                  {"mean_radius", p.mean_radius}};
+                  {"mean_radius", p.mean_radius},
+                  {"volume_photons", double(p.volume_photons)},
+                  {"volume_radius", p.volume_radius}};
     const auto rate = [seconds](auto n) { return seconds > 0 ? double(n) / seconds : 0.0; };
     // Tools parse this line: keep its wording.
     char line[512];

@@ -24,6 +24,19 @@
 // for any thread count: per-pixel and per-photon random streams, and each pixel sums its
 // photons in photon order.
 //
+// Participating media (fog, smoke): a camera path crossing a medium is dimmed by its
+// transmittance, gathers the single scattering of points, spots and beams exactly
+// (medium_transport.h), and after the photon pass gathers the volume photons whose discs its
+// segment crosses: the beam radiance estimate (Jarosz, Zwicker and Jensen 2008),
+//   L = sum_p T(t_p) p(cos theta_p) Phi_p / (pi r^2),
+// t_p where photon p projects onto the segment, theta_p between its travel and the way to the
+// camera. That light refracted by a lens into fog shows where it goes: the converging cone,
+// the focus. A photon's radius r is 3 pixel footprints at its distance from the camera, at
+// most the volume radius, which starts at render.initial_radius (auto: 0.5% of the scene's
+// diagonal); both shrink pass by pass as r_{i+1}^2 = r_i^2 (i + alpha) / (i + 1) (Knaus and
+// Zwicker 2011), each pass's estimate averaged, so the estimate converges as the surface one
+// does.
+//
 // In a job of several ranks (src/cluster/) the pass is split twice: camera paths and the
 // gather by image rows (row y to rank y mod N), photons by chunk (chunk c to rank c mod N).
 // Per pass every rank sends every other its photon hits (32 bytes each, plus 4 per diffuse
@@ -46,7 +59,9 @@ struct SppmStats {
     int64_t photons_aimed = 0;    // of which aimed at the photon targets
     size_t photon_hits = 0;       // stored in the last pass
     double camera_seconds = 0, photon_seconds = 0, gather_seconds = 0;  // summed over passes
-    double mean_radius = 0;  // over pixels with a visible point, after the last pass
+    double mean_radius = 0;     // over pixels with a visible point, after the last pass
+    size_t volume_photons = 0;  // stored in media in the last pass
+    double volume_radius = 0;   // of the last pass
 };
 
 class SppmIntegrator final : public ProgressiveIntegrator {
@@ -64,10 +79,16 @@ private:
     struct Pixel;
     struct VisiblePoint;
     struct PassState;
+    struct MediumSegment;
+    class PhotonColours;
 
-    void trace_camera_path(int x, int y, const PassState& pass, VisiblePoint& vp) const;
+    // `segments`: where the path's kMaxSegments segments through media go (nullptr: none).
+    void trace_camera_path(int x, int y, const PassState& pass, VisiblePoint& vp,
+                           MediumSegment* segments) const;
     double auto_radius(double path_length) const;
     void share_visible_points(Communicator& comm);
+    void gather_volume(const PassState& pass, const struct PhotonPass& photons,
+                       const PhotonColours& colours);
     int64_t pass_photons() const;
 
     const Scene& m_scene;
@@ -78,6 +99,10 @@ private:
     SpectrumPtr m_ambient, m_background;  // null when black
     std::vector<Pixel> m_pixels;
     std::vector<VisiblePoint> m_points;  // this pass's, kept to reuse the memory
+    // Media: each pixel's segments through them this pass (kMaxSegments a pixel), and the
+    // volume radius of the next pass. Empty and 0 in a scene without media.
+    std::vector<MediumSegment> m_segments;
+    double m_volume_radius = 0, m_volume_radius_start = 0;
     SppmStats m_stats;
     Communicator* m_cluster = &this_process_alone();  // of the last pass, for develop()
 };
