@@ -219,21 +219,26 @@ TEST(PathInMedium, IntegratorsWithoutMediaRefuseAnAtmosphere) {
     }
 }
 
-TEST(PathInMedium, OtherIntegratorsRefuseAShapesMedium) {
-    Scene scene = parse_scene(R"({
-      "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0]},
-      "render": {"width": 4, "height": 4, "integrator": "whitted"},
-      "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": {"color": 0.5}},
-                  {"type": "sphere", "center": [0, 0, 0], "radius": 2,
-                   "medium": {"scattering": 0.1}}],
-      "lights": [{"type": "point", "position": [0, 3, 0], "power": 50}]
-    })");
-    RenderControl control;
-    try {
-        (void)render_scene(scene, control);
-        ADD_FAILURE() << "rendered";
-    } catch (const SceneError& e) {
-        EXPECT_EQ(e.path(), "objects[1].medium");
+// Media in shapes are the path and sppm integrators'.
+TEST(PathInMedium, IntegratorsWithoutMediaRefuseAShapesMedium) {
+    for (const char* integrator : {"whitted", "photon_map"}) {
+        Scene scene = parse_scene(R"({
+          "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0]},
+          "render": {"width": 4, "height": 4, "integrator": ")" +
+                                  std::string(integrator) + R"("},
+          "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                       "material": {"color": 0.5}},
+                      {"type": "sphere", "center": [0, 0, 0], "radius": 2,
+                       "medium": {"scattering": 0.1}}],
+          "lights": [{"type": "point", "position": [0, 3, 0], "power": 50}]
+        })");
+        RenderControl control;
+        try {
+            (void)render_scene(scene, control);
+            ADD_FAILURE() << integrator << " rendered";
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.path(), "objects[1].medium");
+        }
     }
 }
 
