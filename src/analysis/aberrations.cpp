@@ -53,11 +53,13 @@ std::vector<ExitRay> trace_collimated_beam(const OpticalSystem& system, double n
                                            int rings, int* lost) {
     const double z0 = beam_start_z(system);
     const IndexRatios ratios = index_ratios(system, nm);
+    const std::vector<PupilPoint> pupil = hexapolar_pupil(rings);
     std::vector<ExitRay> out;
+    out.reserve(pupil.size());
     int missing = 0;
-    for (const PupilPoint& q : hexapolar_pupil(rings)) {
-        const RealRay r =
-            trace_real_ray(system, {{aperture * q.x, aperture * q.y, z0}, {0, 0, 1}}, ratios);
+    RealRay r;
+    for (const PupilPoint& q : pupil) {
+        trace_real_ray_into(r, system, {{aperture * q.x, aperture * q.y, z0}, {0, 0, 1}}, ratios);
         if (r.fate == RayFate::Passed && r.direction.z > 0) {
             out.push_back({r.exit_point(), r.direction});
         } else {
@@ -91,6 +93,7 @@ SpotDiagram spot_at(const std::vector<ExitRay>& rays, double z_plane) {
     SpotDiagram s;
     s.z = z_plane;
     if (rays.empty()) return s;
+    s.points.reserve(rays.size());
     for (const ExitRay& r : rays) {
         const Vec3 q = at_plane(r.point, r.direction, z_plane);
         s.points.push_back(q);
@@ -115,6 +118,8 @@ double best_focus_z(const std::vector<ExitRay>& rays, double z_ref) {
     // mean |Δq_i + s Δm_i|^2 is least at s = -Σ Δq·Δm / Σ |Δm|^2.
     if (rays.size() < 2) return z_ref;
     std::vector<Vec3> q, m;
+    q.reserve(rays.size());
+    m.reserve(rays.size());
     Vec3 q_mean, m_mean;
     for (const ExitRay& r : rays) {
         q.push_back(at_plane(r.point, r.direction, z_ref));

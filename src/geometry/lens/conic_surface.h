@@ -18,6 +18,7 @@ public:
     double max_semi_diameter() const override;
     bool intersect(const Ray& ray, const SurfaceSpan& span, double t_min, double t_max,
                    double& t) const override;
+    bool intersect_reads_bounds() const override { return false; }
     Vec3 normal(const Vec3& p) const override;
     std::string describe() const override;
     std::string why_undefined(double x, double y) const override;
