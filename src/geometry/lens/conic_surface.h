@@ -12,7 +12,7 @@ namespace lenslab {
 // through the vertex, where (1 + k) c z <= 1, belongs to the surface.
 class ConicSurface final : public LensSurface {
 public:
-    ConicSurface(double radius, double k) : m_radius(radius), m_k(k) {}
+    ConicSurface(double radius, double k) : m_radius(radius), m_k(k), m_curvature(1.0 / radius) {}
 
     double sag(double r) const override;
     double max_semi_diameter() const override;
@@ -35,6 +35,7 @@ public:
 private:
     double m_radius;
     double m_k;
+    double m_curvature;  // 1 / R, divided once: a beam's rays ask for it at every hit
 };
 
 }  // namespace lenslab

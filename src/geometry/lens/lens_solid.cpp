@@ -37,8 +37,8 @@ std::string where(const DiscPoint& q, bool symmetric) {
 
 LensSolid::LensSolid(LensPrescription p) : m_p(std::move(p)), m_frame(lens_frame(m_p)) {
     const double a = 0.5 * m_p.diameter;
-    m_front_span = measure_span(*m_p.front, a);
-    m_back_span = measure_span(*m_p.back, a);
+    m_front_span = intersect_span(*m_p.front, a);
+    m_back_span = intersect_span(*m_p.back, a);
     m_rim_lo = front_z(a);
     m_rim_hi = back_z(a);
 }
@@ -192,10 +192,23 @@ bool LensSolid::intersect(const Ray& world_ray, double t_min, double t_max, Surf
     return true;
 }
 
+const LensSolid::Slab& LensSolid::slab() const {
+    std::call_once(m_slab->measured, [this] {
+        // A closed-form face's intersect_span has no z-range: measure it now.
+        const double a = 0.5 * m_p.diameter;
+        const auto spanned = [a](const LensSurface& face, const SurfaceSpan& kept) {
+            return face.intersect_reads_bounds() ? kept : measure_span(face, a);
+        };
+        m_slab->z_lo = -0.5 * m_p.thickness + spanned(*m_p.front, m_front_span).z_min;
+        m_slab->z_hi = 0.5 * m_p.thickness + spanned(*m_p.back, m_back_span).z_max;
+    });
+    return *m_slab;
+}
+
 BoundingSphere LensSolid::bounding_sphere() const {
     const double a = 0.5 * m_p.diameter;
-    const double z_lo = -0.5 * m_p.thickness + m_front_span.z_min;
-    const double z_hi = 0.5 * m_p.thickness + m_back_span.z_max;
+    const double z_lo = slab().z_lo;
+    const double z_hi = slab().z_hi;
     const double half = 0.5 * (z_hi - z_lo);
     const double pad = 1e-6 * std::max(1.0, a);
     return {m_p.centre + m_frame.to_world({0, 0, 0.5 * (z_lo + z_hi)}),
@@ -205,8 +218,8 @@ BoundingSphere LensSolid::bounding_sphere() const {
 Aabb LensSolid::bounds() const {
     const double a = 0.5 * m_p.diameter;
     // The spans' slabs hold every point of the faces (they are padded for the sampling).
-    const double z_lo = -0.5 * m_p.thickness + m_front_span.z_min;
-    const double z_hi = 0.5 * m_p.thickness + m_back_span.z_max;
+    const double z_lo = slab().z_lo;
+    const double z_hi = slab().z_hi;
     const double pad = 1e-6 * std::max(1.0, a);
     Aabb box;
     for (int corner = 0; corner < 8; ++corner) {

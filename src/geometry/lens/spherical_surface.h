@@ -9,7 +9,7 @@ namespace lenslab {
 // the half of the sphere containing the origin, belongs to the surface.
 class SphericalSurface final : public LensSurface {
 public:
-    explicit SphericalSurface(double radius) : m_radius(radius) {}
+    explicit SphericalSurface(double radius) : m_radius(radius), m_curvature(1.0 / radius) {}
 
     double sag(double r) const override;
     double max_semi_diameter() const override;
@@ -23,6 +23,7 @@ public:
 
 private:
     double m_radius;
+    double m_curvature;  // 1 / R, divided once: a beam's rays ask for it at every hit
 };
 
 }  // namespace lenslab
