@@ -107,7 +107,7 @@ LensReport analyze_lens_system(const OpticalSystem& system, const LensReportOpti
         const std::vector<ExitRay> rays = trace_collimated_beam(
             system, options.wavelength_nm, r.aperture_radius, options.spot_rings, &r.rays_lost);
         r.rays = static_cast<int>(rays.size()) + r.rays_lost;
-        r.spot_paraxial = spot_at(rays, r.paraxial.z_rear_focus);
+        if (options.parts.paraxial_spot) r.spot_paraxial = spot_at(rays, r.paraxial.z_rear_focus);
         r.spot_best = spot_at(rays, best_focus_z(rays, r.paraxial.z_rear_focus));
         r.best_focus = r.spot_best.z - system.last_vertex();
     }
@@ -129,11 +129,12 @@ struct ReportKey {
     Json (*value)(const OpticalSystem& system, const LensReport& r);
 };
 
-constexpr LensReportParts kNeedsNoPart{false, false, false, false};
-constexpr LensReportParts kNeedsBeam{true, false, false, false};
-constexpr LensReportParts kNeedsLsa{false, true, false, false};
-constexpr LensReportParts kNeedsSeidel{false, false, true, false};
-constexpr LensReportParts kNeedsRealChief{false, false, false, true};
+constexpr LensReportParts kNeedsNoPart{false, false, false, false, false};
+constexpr LensReportParts kNeedsBeam{true, false, false, false, false};
+constexpr LensReportParts kNeedsLsa{false, true, false, false, false};
+constexpr LensReportParts kNeedsSeidel{false, false, true, false, false};
+constexpr LensReportParts kNeedsRealChief{false, false, false, true, false};
+constexpr LensReportParts kNeedsParaxialSpot{true, false, false, false, true};
 
 Json surfaces_json(const OpticalSystem& system, const LensReport& r) {
     Json surfaces = Json::array();
@@ -203,9 +204,9 @@ const ReportKey kReportKeys[] = {
     {"rays", kNeedsBeam, [](const OpticalSystem&, const LensReport& r) { return Json(r.rays); }},
     {"rays_lost", kNeedsBeam,
      [](const OpticalSystem&, const LensReport& r) { return Json(r.rays_lost); }},
-    {"rms_spot_paraxial", kNeedsBeam,
+    {"rms_spot_paraxial", kNeedsParaxialSpot,
      [](const OpticalSystem&, const LensReport& r) { return Json(r.spot_paraxial.rms_radius); }},
-    {"geometric_spot_paraxial", kNeedsBeam,
+    {"geometric_spot_paraxial", kNeedsParaxialSpot,
      [](const OpticalSystem&, const LensReport& r) {
          return Json(r.spot_paraxial.geometric_radius);
      }},
@@ -274,6 +275,7 @@ LensReportParts report_parts(const std::vector<std::string>& keys) {
         parts.lsa = parts.lsa || key.needs.lsa;
         parts.seidel = parts.seidel || key.needs.seidel;
         parts.real_chief = parts.real_chief || key.needs.real_chief;
+        parts.paraxial_spot = parts.paraxial_spot || key.needs.paraxial_spot;
     }
     return parts;
 }

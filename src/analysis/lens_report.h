@@ -18,10 +18,11 @@ namespace lenslab {
 // All of it by default; a caller that wants a few of the document's keys (report_parts) skips
 // the rest, and those keys come out the same either way.
 struct LensReportParts {
-    bool beam = true;  // the collimated beam: rays, the spot sizes, the best focus
+    bool beam = true;  // the collimated beam: rays, the best focus and its spot
     bool lsa = true;   // the longitudinal spherical aberration curve
     bool seidel = true;
     bool real_chief = true;
+    bool paraxial_spot = true;  // the beam's spot at the paraxial focus (with `beam`)
 };
 
 struct LensReportOptions {

@@ -61,6 +61,8 @@ TEST(AnalyzeRequest, ReportKeysGiveTheWholeDocumentsValuesAlone) {
     EXPECT_FALSE(report_parts({"efl"}).beam);
     EXPECT_TRUE(report_parts({"rms_spot_best"}).beam);
     EXPECT_FALSE(report_parts({"rms_spot_best"}).seidel);
+    EXPECT_FALSE(report_parts({"rms_spot_best"}).paraxial_spot);
+    EXPECT_TRUE(report_parts({"rms_spot_paraxial"}).paraxial_spot);
 }
 
 TEST(AnalyzeRequest, OptionsThatDoNotFitAreRefused) {

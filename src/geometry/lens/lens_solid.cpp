@@ -73,10 +73,16 @@ std::optional<LensSolid::Problem> LensSolid::check_prescription(const LensPrescr
         p.front->is_rotationally_symmetric() && p.back->is_rotationally_symmetric();
     const std::vector<DiscPoint> points = disc_sample_points(a, symmetric);
     // Typed formulas can be undefined (sqrt of a negative) or infinite somewhere: refuse
-    // that here rather than render holes.
-    for (const auto& [name, s] : {std::pair{"front", p.front}, std::pair{"back", p.back}}) {
+    // that here rather than render holes. The sags are kept for the gaps below.
+    std::vector<double> sags[2];
+    const std::pair<const char*, const LensSurface*> faces[] = {{"front", p.front.get()},
+                                                                {"back", p.back.get()}};
+    for (int f = 0; f < 2; ++f) {
+        const auto& [name, s] = faces[f];
+        sags[f].reserve(points.size());
         for (const DiscPoint& q : points) {
-            if (std::isfinite(s->sag_xy(q.x, q.y))) continue;
+            sags[f].push_back(s->sag_xy(q.x, q.y));
+            if (std::isfinite(sags[f].back())) continue;
             const std::string why = s->why_undefined(q.x, q.y);
             msg << "sag undefined at " << where(q, symmetric) << " inside the diameter"
                 << (why.empty() ? "" : " (" + why + ")");
@@ -87,8 +93,9 @@ std::optional<LensSolid::Problem> LensSolid::check_prescription(const LensPrescr
     const double tolerance = 1e-12 * std::max(1.0, p.thickness);
     double worst_gap = 0.0;
     DiscPoint worst{0, 0};
-    for (const DiscPoint& q : points) {
-        const double gap = p.thickness + p.back->sag_xy(q.x, q.y) - p.front->sag_xy(q.x, q.y);
+    for (size_t i = 0; i < points.size(); ++i) {
+        const DiscPoint& q = points[i];
+        const double gap = p.thickness + sags[1][i] - sags[0][i];
         if (gap < worst_gap) {
             worst_gap = gap;
             worst = q;
