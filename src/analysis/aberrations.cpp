@@ -6,6 +6,7 @@
 #include <mutex>
 
 #include "analysis/real_ray.h"
+#include "optics/refraction.h"
 
 namespace lenslab {
 
@@ -25,6 +26,44 @@ const std::vector<PupilPoint>& shared_hexapolar_pupil(int rings) {
     auto [grid, fresh] = grids.try_emplace(rings);
     if (fresh) grid->second = hexapolar_pupil(rings);
     return grid->second;
+}
+
+// A ray of a beam traced in step with others: where it is, where it goes, whether it is
+// still on its way through the surfaces.
+struct StepRay {
+    Vec3 p, d;
+    bool on = true;
+};
+
+// A few rays of a beam through a system without gradient index, surface by surface in step:
+// each ray's arithmetic is trace_real_ray's, bit for bit, and the processor overlaps one
+// ray's chain of square roots and divisions with the others'. A ray that misses a surface
+// or is totally reflected there stops (on = false).
+void trace_in_step(const OpticalSystem& system, const IndexRatios& ratios, StepRay* rays,
+                   size_t count) {
+    for (size_t i = 0; i < system.surfaces.size(); ++i) {
+        const SystemSurface& s = system.surfaces[i];
+        const double o = s.orientation;
+        for (StepRay* r = rays; r != rays + count; ++r) {
+            if (!r->on) continue;
+            const Ray local{{r->p.x, r->p.y, o * (r->p.z - s.z)}, {r->d.x, r->d.y, o * r->d.z}};
+            double t = 0;
+            if (!s.shape->intersect(local, s.span, 0.0, INFINITY, t)) {
+                r->on = false;
+                continue;
+            }
+            r->p = r->p + r->d * t;
+            const Vec3 nl = s.shape->normal(local.at(t));
+            Vec3 n{nl.x, nl.y, o * nl.z};
+            if (dot(n, r->d) > 0) n = -n;  // facing the arriving ray
+            const auto refracted = refract(r->d, n, ratios.ratios[i]);
+            if (!refracted) {
+                r->on = false;
+                continue;
+            }
+            r->d = *refracted;
+        }
+    }
 }
 
 }  // namespace
@@ -70,13 +109,31 @@ std::vector<ExitRay> trace_collimated_beam(const OpticalSystem& system, double n
     std::vector<ExitRay> out;
     out.reserve(pupil.size());
     int missing = 0;
-    RealRay r;
-    for (const PupilPoint& q : pupil) {
-        trace_real_ray_into(r, system, {{aperture * q.x, aperture * q.y, z0}, {0, 0, 1}}, ratios);
-        if (r.fate == RayFate::Passed && r.direction.z > 0) {
-            out.push_back({r.exit_point(), r.direction});
+    const auto keep = [&](const Vec3& point, const Vec3& direction, bool passed) {
+        if (passed && direction.z > 0) {
+            out.push_back({point, direction});
         } else {
             ++missing;
+        }
+    };
+    if (system.has_grin()) {
+        RealRay r;
+        for (const PupilPoint& q : pupil) {
+            trace_real_ray_into(r, system, {{aperture * q.x, aperture * q.y, z0}, {0, 0, 1}},
+                                ratios);
+            keep(r.exit_point(), r.direction, r.fate == RayFate::Passed);
+        }
+    } else {
+        constexpr size_t kInStep = 4;
+        for (size_t first = 0; first < pupil.size(); first += kInStep) {
+            StepRay rays[kInStep];
+            const size_t count = std::min(kInStep, pupil.size() - first);
+            for (size_t k = 0; k < count; ++k) {
+                const PupilPoint& q = pupil[first + k];
+                rays[k] = {{aperture * q.x, aperture * q.y, z0}, {0, 0, 1}};
+            }
+            trace_in_step(system, ratios, rays, count);
+            for (size_t k = 0; k < count; ++k) keep(rays[k].p, rays[k].d, rays[k].on);
         }
     }
     if (lost) *lost = missing;
