@@ -26,8 +26,11 @@ def trace(scene: SceneSource, origin: Sequence[float], direction: Sequence[float
                                      min_weight))
 
 
+# A plain float or int skips the abstract number classes' isinstance checks, the slow part
+# of a call in a sweep of many (bench/python_sweep.py); bool is neither type.
 def _number(name: str, value: Any, *, positive: bool = False) -> float:
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+    if type(value) is not float and type(value) is not int and (
+            isinstance(value, bool) or not isinstance(value, numbers.Real)):
         raise ValueError(f"{name}: must be a number, got {value!r}")
     value = float(value)
     if positive and not value > 0:
@@ -46,7 +49,8 @@ def _numbers(name: str, values: Any, *, positive: bool = False) -> list[float]:
 
 
 def _whole(name: str, value: Any, low: Optional[int] = None, high: Optional[int] = None) -> int:
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+    if type(value) is not int and (isinstance(value, bool) or
+                                   not isinstance(value, numbers.Integral)):
         raise ValueError(f"{name}: must be a whole number, got {value!r}")
     if (low is not None and value < low) or (high is not None and value > high):
         raise ValueError(f"{name}: must be from {low} to {high}, got {value!r}")
