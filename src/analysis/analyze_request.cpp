@@ -229,23 +229,23 @@ namespace {
 template <class Put>
 void for_each_bench_key(const AnalyzeResults& results, const AnalyzeRequest& request,
                         const std::string& scene_file, Put&& put) {
-    using Json = nlohmann::ordered_json;
+    using BenchJson = nlohmann::ordered_json;
     const AnalyzeRequest a = with_implied_tables(request);
-    if (!scene_file.empty()) put("scene", [&] { return Json(scene_file); });
+    if (!scene_file.empty()) put("scene", [&] { return BenchJson(scene_file); });
     if (!results.from_lens_file.empty() || !results.not_from_lens_file.empty()) {
         put("lens_file_bench", [&] {
-            return Json{{"taken", results.from_lens_file},
-                        {"not_taken", results.not_from_lens_file}};
+            return BenchJson{{"taken", results.from_lens_file},
+                             {"not_taken", results.not_from_lens_file}};
         });
     }
-    if (!a.svg.empty()) put("svg", [&] { return Json(a.svg); });
+    if (!a.svg.empty()) put("svg", [&] { return BenchJson(a.svg); });
     const FigureFile figures[] = {{a.spots_svg, "spots_svg"},
                                   {a.fans_svg, "fans_svg"},
                                   {a.curves_svg, "curves_svg"},
                                   {a.focal_shift_svg, "focal_shift_svg"},
                                   {a.mtf_svg, "mtf_svg"}};
     for (const FigureFile& figure : figures) {
-        if (!figure.file.empty()) put(figure.key, [&] { return Json(figure.file); });
+        if (!figure.file.empty()) put(figure.key, [&] { return BenchJson(figure.file); });
     }
     if (a.psf) put("psf", [&] { return psf_json(*results.diffraction); });
     if (a.mtf) put("mtf", [&] { return mtf_json(*results.diffraction); });
