@@ -1,7 +1,7 @@
 // POV-Ray 3.7 version of scenes/smoke_tank.json, for the side-by-side in docs/performance.md:
 // ten green laser beams (cylinder lights) through a biconvex and a biconcave lens (ior 1.5168,
-// N-BK7 at the d line) in smoke (Henyey-Greenstein scattering 0.12 per unit, g = 0.5), with
-// media photons for the bent beams. lenslab's scene is right-handed; POV-Ray's is
+// N-BK7 at the d line) in a box of smoke (Henyey-Greenstein scattering 0.12 per unit,
+// g = 0.5), with media photons for the bent beams. lenslab's scene is right-handed; POV-Ray's is
 // left-handed, so z is mirrored (the lenses lie in z = 0, the camera at z = -9.5 here).
 // Render: povray bench/smoke_tank.pov +W480 +H270 +A0.0 -D +Osmoke_tank_povray.png
 
@@ -62,9 +62,9 @@ box {
   texture { pigment { rgb 0.5 } finish { ambient 0 diffuse 1 } }
 }
 
-// The smoke: a hollow box holding everything, the camera included (lenslab's atmosphere).
+// The smoke: a hollow box round the lenses and the screen, as lenslab's (no walls).
 box {
-  <-12, -8, -12>, <12, 8, 12>
+  <-4.8, -2.3, -1.2>, <4.4, 2.3, 1.2>
   hollow
   texture { pigment { rgbt 1 } }
   interior {
