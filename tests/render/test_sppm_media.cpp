@@ -79,5 +79,29 @@ TEST(SppmMedia, PhotonsShowAMirroredBeamAsBrightAsTheExactSumShowsTheBeam) {
     EXPECT_NEAR(mirrored / direct, expected, 0.06 * expected);
 }
 
+TEST(SppmMedia, TheSameImageAtAnyThreadCount) {
+    // Volume photons are gathered per pixel from one hierarchy over the pass's photons, in
+    // photon order: the image must not depend on the threads.
+    const Scene scene = parse_scene(R"({
+      "camera": {"position": [0, 0, 6], "look_at": [0, 0, 0]},
+      "render": {"width": 40, "height": 24, "integrator": "sppm", "passes": 3},
+      "objects": [{"type": "box", "center": [0, 0, 0], "size": [4, 2, 2],
+                   "medium": {"scattering": 0.3, "g": 0.4}},
+                  {"type": "sphere", "center": [0, 0, 0], "radius": 0.5,
+                   "material": {"transparency": 1, "ior": 1.5}}],
+      "lights": [{"type": "beam", "origin": [-3, 0.2, 0], "direction": [1, 0, 0], "radius": 0.2,
+                  "power": 5}]
+    })");
+    RenderControl one, two;
+    const Film a = render_scene(scene, one, 1).film;
+    const Film b = render_scene(scene, two, 2).film;
+    double total = 0;
+    for (size_t i = 0; i < a.pixels().size(); ++i) {
+        EXPECT_EQ(a.pixels()[i].g, b.pixels()[i].g) << "pixel " << i;
+        total += a.pixels()[i].g;
+    }
+    EXPECT_GT(total, 0.0);
+}
+
 }  // namespace
 }  // namespace lenslab
