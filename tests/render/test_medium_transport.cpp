@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "render/medium_transport.h"
 #include "render/render_session.h"
@@ -199,45 +200,32 @@ TEST(PathInMedium, SingleScatteringFromABeamMatchesItsClosedForm) {
 }
 
 // The integrators without media would render the scene as if the air were clear: they
-// refuse it.
-TEST(PathInMedium, IntegratorsWithoutMediaRefuseAnAtmosphere) {
-    for (const char* integrator : {"whitted", "photon_map"}) {
-        Scene scene = parse_scene(R"({
-          "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0]},
-          "render": {"width": 4, "height": 4, "integrator": ")" +
-                                  std::string(integrator) + R"("},
-          "atmosphere": {"scattering": 0.1},
-          "lights": [{"type": "point", "position": [0, 0, 0], "power": 50}]
-        })");
-        RenderControl control;
-        try {
-            (void)render_scene(scene, control);
-            ADD_FAILURE() << integrator << " rendered";
-        } catch (const SceneError& e) {
-            EXPECT_EQ(e.path(), "atmosphere");
-        }
-    }
-}
-
-// Media in shapes are the path and sppm integrators'.
-TEST(PathInMedium, IntegratorsWithoutMediaRefuseAShapesMedium) {
-    for (const char* integrator : {"whitted", "photon_map"}) {
-        Scene scene = parse_scene(R"({
-          "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0]},
-          "render": {"width": 4, "height": 4, "integrator": ")" +
-                                  std::string(integrator) + R"("},
-          "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
-                       "material": {"color": 0.5}},
-                      {"type": "sphere", "center": [0, 0, 0], "radius": 2,
-                       "medium": {"scattering": 0.1}}],
-          "lights": [{"type": "point", "position": [0, 3, 0], "power": 50}]
-        })");
-        RenderControl control;
-        try {
-            (void)render_scene(scene, control);
-            ADD_FAILURE() << integrator << " rendered";
-        } catch (const SceneError& e) {
-            EXPECT_EQ(e.path(), "objects[1].medium");
+// refuse an atmosphere and a shape's medium, naming it.
+TEST(PathInMedium, IntegratorsWithoutMediaRefuseMedia) {
+    const std::pair<const char*, const char*> media[] = {
+        {R"("atmosphere": {"scattering": 0.1},
+            "objects": [],)",
+         "atmosphere"},
+        {R"("objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                         "material": {"color": 0.5}},
+                        {"type": "sphere", "center": [0, 0, 0], "radius": 2,
+                         "medium": {"scattering": 0.1}}],)",
+         "objects[1].medium"}};
+    for (const auto& [medium, path] : media) {
+        for (const char* integrator : {"whitted", "photon_map"}) {
+            Scene scene = parse_scene(R"({
+              "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0]},
+              "render": {"width": 4, "height": 4, "integrator": ")" +
+                                      std::string(integrator) + R"("},)" + medium + R"(
+              "lights": [{"type": "point", "position": [0, 3, 0], "power": 50}]
+            })");
+            RenderControl control;
+            try {
+                (void)render_scene(scene, control);
+                ADD_FAILURE() << integrator << " rendered";
+            } catch (const SceneError& e) {
+                EXPECT_EQ(e.path(), path);
+            }
         }
     }
 }
