@@ -24,9 +24,9 @@
 // by the scattering coefficient says, and loses to absorption exactly exp(-sigma_a d) of its
 // power on the way (no roulette: a beam through a clear absorbing slab arrives with exactly
 // the Beer-Lambert share). A scattering event counts as a bounce towards max_depth, crossing a
-// medium's surfaceless edge does not. In a
-// medium that is not grey a photon still carrying the whole spectrum takes one wavelength
-// first, as in absorbing glass, and the coefficients of its band apply.
+// medium's surfaceless edge does not. In a medium that is not grey a photon still carrying
+// the whole spectrum takes one wavelength first, as in absorbing glass, and the coefficients
+// of its band apply.
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
