@@ -1,7 +1,7 @@
 // The scene's atmosphere in the editor: added from the Edit menu with its declaration's
 // example, edited through a form generated from that declaration (scene/medium.h), every step
-// undoable, removed from its form or with Edit ▸ Delete; and the view renders it with its usual
-// integrator.
+// undoable, removed from its form or with Edit ▸ Delete, none of it rebuilding the objects'
+// BVH; and the view renders it with its usual integrator.
 
 #include <QAction>
 #include <QPushButton>
@@ -9,6 +9,7 @@
 #include <QtTest>
 #include <memory>
 
+#include "accel/bvh_build.h"
 #include "main_window.h"
 #include "number_field.h"
 #include "property_panel.h"
@@ -71,6 +72,7 @@ private slots:
         QVERIFY(w.open_file(kSmallScene));
         QVERIFY(!w.document()->json().contains("atmosphere"));
         QVERIFY(!tree_shows(w, "/atmosphere"));
+        const uint64_t builds = lenslab::bvh_build_count();
 
         QAction* add = w.findChild<QAction*>("add_atmosphere");
         QVERIFY(add);
@@ -134,6 +136,8 @@ private slots:
         w.tree()->select_pointer("/atmosphere");
         w.delete_selected();
         QVERIFY(!w.document()->json().contains("atmosphere"));
+        // Fog is no part of the objects' acceleration structure.
+        QCOMPARE(lenslab::bvh_build_count() - builds, uint64_t(0));
     }
 
     // Adding an atmosphere to a scene that has one selects it and changes nothing.
