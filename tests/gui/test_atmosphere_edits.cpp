@@ -157,6 +157,20 @@ private slots:
         QCOMPARE(w.tree()->selected_pointer(), QString("/atmosphere"));
     }
 
+    // Fog with no absorption and no scattering is clear air to the renderer (read as none, the
+    // same rule as the scene reader's) while the file keeps it.
+    void a_clear_atmosphere_is_none() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.add_atmosphere();
+        QVERIFY(w.document()->set_value(json::json_pointer("/atmosphere/scattering"), 0, "clear",
+                                        nullptr));
+        QVERIFY(w.document()->json().contains("atmosphere"));
+        QVERIFY(!w.document()->scene().atmosphere);
+        w.document()->undo_stack()->undo();
+        QVERIFY(w.document()->scene().atmosphere);
+    }
+
     // sppm renders media, so the view keeps its integrator for a scene with fog.
     void the_view_renders_an_atmosphere_with_its_usual_integrator() {
         MainWindow w;
