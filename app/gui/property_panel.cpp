@@ -749,6 +749,9 @@ void PropertyPanel::build_object() {
         build_declared(kind->spec(), {"name", "photon_target"});
     }
     if (type == "triangle" || type == "disc" || type == "rectangle") build_detector();
+    const bool solid = type == "sphere" || type == "lens" || type == "implicit" || type == "box" ||
+                       type == "prism" || type == "mesh";
+    if (solid) build_medium();
     add_flag(tr("Photon target (aim caustic photons)"), "photon_target", tr("auto"));
     add_heading(tr("Material"));
     build_material_ref(tr("Material"), "material");
@@ -914,6 +917,25 @@ void PropertyPanel::build_detector() {
     }
     add_number_list(tr("Band edges (nm)"), "detector/bands", edges, 17);
     add_param(declared.param("unit"), "detector/");
+}
+
+void PropertyPanel::build_medium() {
+    add_heading(tr("Medium"));
+    const bool on = value_at("medium") != nullptr;
+    add_choice(tr("Fills it"), "medium", on ? "yes" : "no", {"no", "yes"},
+               [this](const std::string& chosen) {
+                   json element = *value_at("");
+                   if (chosen == "yes") {
+                       element["medium"] = medium_spec().example;
+                   } else {
+                       element.erase("medium");
+                       // Only a medium's edge had no material: it becomes a plain surface.
+                       if (!element.contains("material")) element["material"] = {{"color", 0.7}};
+                   }
+                   commit("", element, tr("medium"));
+               });
+    if (!on) return;
+    build_medium_fields("medium/");
 }
 
 void PropertyPanel::build_implicit() {

@@ -120,6 +120,8 @@ private:
     void build_implicit();
     void build_flat(const std::string& type);  // disc, rectangle
     void build_detector();
+    // A closed shape's medium: none, or its coefficients (scene/medium.h).
+    void build_medium();
     void build_light();
     void build_spectrum(const std::string& prefix);
     // A material's gradient index (docs/grin.md): its profile and that profile's parameters.

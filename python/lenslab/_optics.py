@@ -26,8 +26,11 @@ def trace(scene: SceneSource, origin: Sequence[float], direction: Sequence[float
                                      min_weight))
 
 
+# A plain float or int skips the abstract number classes' isinstance checks, the slow part
+# of a call in a sweep of many (bench/python_sweep.py); bool is neither type.
 def _number(name: str, value: Any, *, positive: bool = False) -> float:
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+    if type(value) is not float and type(value) is not int and (
+            isinstance(value, bool) or not isinstance(value, numbers.Real)):
         raise ValueError(f"{name}: must be a number, got {value!r}")
     value = float(value)
     if positive and not value > 0:
@@ -46,7 +49,8 @@ def _numbers(name: str, values: Any, *, positive: bool = False) -> list[float]:
 
 
 def _whole(name: str, value: Any, low: Optional[int] = None, high: Optional[int] = None) -> int:
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+    if type(value) is not int and (isinstance(value, bool) or
+                                   not isinstance(value, numbers.Integral)):
         raise ValueError(f"{name}: must be a whole number, got {value!r}")
     if (low is not None and value < low) or (high is not None and value > high):
         raise ValueError(f"{name}: must be from {low} to {high}, got {value!r}")
@@ -65,9 +69,9 @@ class Analysis(JsonDocument):
     for with figure()); spot_points, the spot diagrams' ray hits; figure(name), a figure as
     SVG text."""
 
-    def __init__(self, run: Any, report: Optional[Sequence[str]]) -> None:
+    def __init__(self, run: Any) -> None:
         self._run = run
-        self._data: dict[str, Any] = json.loads(run.document(list(report or [])))
+        self._data: dict[str, Any] = json.loads(run.document())
         self._spot_points: Optional[dict[tuple[float, float], np.ndarray]] = None
 
     @property
@@ -112,8 +116,8 @@ def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
             report: Optional[Sequence[str]] = None) -> Analysis:
     """The optical bench: `lenslab analyze FILE --json` with the same options (named as the
     command line's, "-" as "_"), as a lenslab.Analysis. report: only these top-level keys of
-    the document (e.g. ["efl", "rms_spot_best"]). seidel changes nothing here (the document
-    always has the Seidel sums). Bad options raise ValueError; a scene the bench cannot
+    the document (e.g. ["efl", "rms_spot_best"]), and only what they need is computed.
+    seidel changes nothing here (the document always has the Seidel sums). Bad options raise ValueError; a scene the bench cannot
     measure raises lenslab.SceneError with the JSON path."""
     given = dict(wavelength=wavelength, wavelengths=wavelengths, aperture=aperture, epd=epd,
                  f_number=f_number, object_distance=object_distance, fields=fields,
@@ -157,5 +161,7 @@ def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
     if report is not None and (isinstance(report, str) or
                                not all(isinstance(k, str) for k in report)):
         raise ValueError(f"report: must be a list of the document's keys, got {report!r}")
+    if report:
+        request["report"] = list(report)
     text, path = source_json(scene_or_file)
-    return Analysis(_lenslab.analyze(text, path, json.dumps(request)), report)
+    return Analysis(_lenslab.analyze(text, path, json.dumps(request)))

@@ -22,8 +22,12 @@ def _json_default(value: Any) -> Any:
     raise TypeError(f"{type(value).__name__} is not a JSON value")
 
 
+# One encoder for every scene: json.dumps with these options would build a new one each call.
+_ENCODER = json.JSONEncoder(allow_nan=False, default=_json_default)
+
+
 def _dumps(data: Any) -> str:
-    return json.dumps(data, allow_nan=False, default=_json_default)
+    return _ENCODER.encode(data)
 
 
 class Scene(MutableMapping):

@@ -73,6 +73,7 @@ AnalyzeRequest request_from(const json& j) {
     take(j, "focal_shift", a.focal_shift);
     take(j, "band", a.band);
     take(j, "focal_shift_points", a.focal_shift_points);
+    take(j, "report", a.report_keys);
     return a;
 }
 
@@ -83,24 +84,20 @@ struct AnalyzeRun {
     std::string scene_file;
 };
 
-// The document, or only its top-level `keys` (in the document's order) when any are given.
-std::string document(const AnalyzeRun& run, const std::vector<std::string>& keys) {
-    nlohmann::ordered_json j = analyze_json(run.results, run.request, run.scene_file);
-    if (keys.empty()) return j.dump();
-    for (const std::string& key : keys) {
-        if (!j.contains(key)) {
-            std::string known;
-            for (const auto& item : j.items()) known += (known.empty() ? "" : ", ") + item.key();
-            throw py::value_error("report: no key '" + key + "' in this analysis (keys: " + known +
-                                  ")");
+// The document, or only the keys of request.report_keys (in the document's order).
+std::string document(const AnalyzeRun& run) {
+    const nlohmann::ordered_json j = analyze_json(run.results, run.request, run.scene_file);
+    for (const std::string& key : run.request.report_keys) {
+        if (j.contains(key)) continue;
+        std::string known;
+        for (const std::string& name :
+             analyze_json_keys(run.results, run.request, run.scene_file)) {
+            known += (known.empty() ? "" : ", ") + name;
         }
+        throw py::value_error("report: no key '" + key + "' in this analysis (keys: " + known +
+                              ")");
     }
-    nlohmann::ordered_json out = nlohmann::ordered_json::object();
-    for (const auto& item : j.items()) {
-        if (std::find(keys.begin(), keys.end(), item.key()) != keys.end())
-            out[item.key()] = item.value();
-    }
-    return out.dump();
+    return j.dump();
 }
 
 std::string figure(const AnalyzeRun& run, const std::string& name) {
@@ -152,7 +149,7 @@ AnalyzeRun analyze(const std::string& json_text, const std::string& path,
 
 void bind_analyze(py::module_& m) {
     py::class_<AnalyzeRun>(m, "AnalyzeRun", "A finished lenslab.analyze (use lenslab.Analysis)")
-        .def("document", &document, py::arg("keys"))
+        .def("document", &document)
         .def("figure", &figure, py::arg("name"))
         .def("spot_points", &spot_points);
     m.def("analyze", &analyze, py::arg("json_text"), py::arg("path"), py::arg("request_json"),

@@ -31,17 +31,21 @@ bool Bvh::intersect(const Ray& ray, double t_min, double t_max, BvhHit& hit) con
                         });
 }
 
-bool Bvh::occluded(const Ray& ray, double t_min, double t_max) const {
+bool Bvh::occluded(const Ray& ray, double t_min, double t_max,
+                   const std::vector<char>* see_through) const {
     SurfaceHit candidate;
-    return traverse_bvh(
-        m_layout.nodes, ray, t_min, t_max, true, [&](int first, int count, double& t_far) {
-            for (int i = first; i < first + count; ++i) {
-                if (m_shapes[m_layout.order[i]]->intersect(ray, t_min, t_far, candidate)) {
-                    return true;
-                }
-            }
-            return false;
-        });
+    return traverse_bvh(m_layout.nodes, ray, t_min, t_max, true,
+                        [&](int first, int count, double& t_far) {
+                            for (int i = first; i < first + count; ++i) {
+                                const int shape = m_layout.order[i];
+                                if (see_through && (*see_through)[static_cast<size_t>(shape)])
+                                    continue;
+                                if (m_shapes[shape]->intersect(ray, t_min, t_far, candidate)) {
+                                    return true;
+                                }
+                            }
+                            return false;
+                        });
 }
 
 }  // namespace lenslab

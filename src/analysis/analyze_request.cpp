@@ -86,6 +86,7 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         }
         options.aperture_radius = 0.5 * a.aperture;
     }
+    options.parts = report_parts(a.report_keys);
     out.report = analyze_lens_system(system, options);
     const LensReport& report = out.report;
     if (a.spots) {
@@ -221,31 +222,61 @@ AnalyzeResults analyze_scene(const Scene& scene, const AnalyzeRequest& request,
     }
 }
 
-nlohmann::ordered_json analyze_json(const AnalyzeResults& results, const AnalyzeRequest& request,
-                                    const std::string& scene_file) {
+namespace {
+
+// The document's keys past the lens report's, in order, each as `put(key, value)` with a
+// callable for its value: one list for analyze_json and analyze_json_keys.
+template <class Put>
+void for_each_bench_key(const AnalyzeResults& results, const AnalyzeRequest& request,
+                        const std::string& scene_file, Put&& put) {
+    using BenchJson = nlohmann::ordered_json;
     const AnalyzeRequest a = with_implied_tables(request);
-    nlohmann::ordered_json j = report_json(results.system, results.report);
-    if (!scene_file.empty()) j["scene"] = scene_file;
+    if (!scene_file.empty()) put("scene", [&] { return BenchJson(scene_file); });
     if (!results.from_lens_file.empty() || !results.not_from_lens_file.empty()) {
-        j["lens_file_bench"] = {{"taken", results.from_lens_file},
-                                {"not_taken", results.not_from_lens_file}};
+        put("lens_file_bench", [&] {
+            return BenchJson{{"taken", results.from_lens_file},
+                             {"not_taken", results.not_from_lens_file}};
+        });
     }
-    if (!a.svg.empty()) j["svg"] = a.svg;
+    if (!a.svg.empty()) put("svg", [&] { return BenchJson(a.svg); });
     const FigureFile figures[] = {{a.spots_svg, "spots_svg"},
                                   {a.fans_svg, "fans_svg"},
                                   {a.curves_svg, "curves_svg"},
                                   {a.focal_shift_svg, "focal_shift_svg"},
                                   {a.mtf_svg, "mtf_svg"}};
     for (const FigureFile& figure : figures) {
-        if (!figure.file.empty()) j[figure.key] = figure.file;
+        if (!figure.file.empty()) put(figure.key, [&] { return BenchJson(figure.file); });
     }
-    if (a.psf) j["psf"] = psf_json(*results.diffraction);
-    if (a.mtf) j["mtf"] = mtf_json(*results.diffraction);
-    if (results.spots) j["spots"] = spots_json(results.system, *results.spots);
-    if (results.fans) j["fans"] = fans_json(results.system, *results.fans);
-    if (results.curves) j["field_curves"] = field_curves_json(results.system, *results.curves);
-    if (results.shift) j["focal_shift"] = focal_shift_json(*results.shift);
+    if (a.psf) put("psf", [&] { return psf_json(*results.diffraction); });
+    if (a.mtf) put("mtf", [&] { return mtf_json(*results.diffraction); });
+    if (results.spots) put("spots", [&] { return spots_json(results.system, *results.spots); });
+    if (results.fans) put("fans", [&] { return fans_json(results.system, *results.fans); });
+    if (results.curves) {
+        put("field_curves", [&] { return field_curves_json(results.system, *results.curves); });
+    }
+    if (results.shift) put("focal_shift", [&] { return focal_shift_json(*results.shift); });
+}
+
+}  // namespace
+
+nlohmann::ordered_json analyze_json(const AnalyzeResults& results, const AnalyzeRequest& request,
+                                    const std::string& scene_file) {
+    const std::vector<std::string>& keys = request.report_keys;
+    nlohmann::ordered_json j = report_json(results.system, results.report, keys);
+    for_each_bench_key(results, request, scene_file, [&](const char* key, auto value) {
+        if (keys.empty() || std::find(keys.begin(), keys.end(), key) != keys.end())
+            j[key] = value();
+    });
     return j;
+}
+
+std::vector<std::string> analyze_json_keys(const AnalyzeResults& results,
+                                           const AnalyzeRequest& request,
+                                           const std::string& scene_file) {
+    std::vector<std::string> keys = report_json_keys();
+    for_each_bench_key(results, request, scene_file,
+                       [&](const char* key, auto) { keys.emplace_back(key); });
+    return keys;
 }
 
 nlohmann::ordered_json analyze_report(const Scene& scene, const AnalyzeRequest& request,

@@ -51,6 +51,9 @@ struct AnalyzeRequest {
     bool focal_shift = false;
     std::vector<double> band;  // the focal shift's; empty: the wavelengths' range, or F to C
     int focal_shift_points = 21;
+    // The document's top-level keys wanted (empty: all): the lens report computes only what
+    // they need (report_parts) and analyze_json writes only them.
+    std::vector<std::string> report_keys;
 };
 
 // An option that does not fit the others or the system (a stop past the last surface, an
@@ -86,10 +89,16 @@ struct AnalyzeResults {
 AnalyzeResults analyze_scene(const Scene& scene, const AnalyzeRequest& request,
                              const std::string& scene_file);
 
-// `lenslab analyze --json`'s document for results of analyze_scene; "scene" is `scene_file`,
-// left out when that is "".
+// `lenslab analyze --json`'s document for results of analyze_scene, or only its keys in
+// request.report_keys (unknown ones left out); "scene" is `scene_file`, left out when that
+// is "".
 nlohmann::ordered_json analyze_json(const AnalyzeResults& results, const AnalyzeRequest& request,
                                     const std::string& scene_file);
+// The top-level keys of the whole document analyze_json would write, in order: what a
+// message about an unknown report key lists.
+std::vector<std::string> analyze_json_keys(const AnalyzeResults& results,
+                                           const AnalyzeRequest& request,
+                                           const std::string& scene_file);
 
 // Both steps: the document `lenslab analyze SCENE_FILE --json ...` prints.
 nlohmann::ordered_json analyze_report(const Scene& scene, const AnalyzeRequest& request,

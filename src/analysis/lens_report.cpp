@@ -95,90 +95,189 @@ LensReport analyze_lens_system(const OpticalSystem& system, const LensReportOpti
     r.first_order = first_order(system, r.paraxial, first);
     // Seidel sums count surfaces alone; a gradient index adds transfer terms (Sands 1970)
     // that are not modelled, so a GRIN system gets none.
-    if (!system.has_grin()) r.seidel = seidel_sums(system, r.first_order, r.short_nm, r.long_nm);
-    r.real_chief = trace_real_chief_ray(system, r.first_order);
+    if (options.parts.seidel && !system.has_grin())
+        r.seidel = seidel_sums(system, r.first_order, r.short_nm, r.long_nm);
+    if (options.parts.real_chief) r.real_chief = trace_real_chief_ray(system, r.first_order);
     // The axial beam fills the entrance pupil, as far as the lenses let it through.
     if (options.aperture_radius <= 0) {
         r.aperture_radius = std::min(usable, 0.5 * r.first_order.entrance_pupil.diameter);
     }
 
-    const std::vector<ExitRay> rays = trace_collimated_beam(
-        system, options.wavelength_nm, r.aperture_radius, options.spot_rings, &r.rays_lost);
-    r.rays = static_cast<int>(rays.size()) + r.rays_lost;
-    r.lsa = longitudinal_spherical_aberration(system, r.paraxial, r.aperture_radius,
-                                              options.lsa_samples);
-    r.spot_paraxial = spot_at(rays, r.paraxial.z_rear_focus);
-    r.spot_best = spot_at(rays, best_focus_z(rays, r.paraxial.z_rear_focus));
-    r.best_focus = r.spot_best.z - system.last_vertex();
+    if (options.parts.beam) {
+        const std::vector<ExitRay> rays = trace_collimated_beam(
+            system, options.wavelength_nm, r.aperture_radius, options.spot_rings, &r.rays_lost);
+        r.rays = static_cast<int>(rays.size()) + r.rays_lost;
+        if (options.parts.paraxial_spot) r.spot_paraxial = spot_at(rays, r.paraxial.z_rear_focus);
+        r.spot_best = spot_at(rays, best_focus_z(rays, r.paraxial.z_rear_focus));
+        r.best_focus = r.spot_best.z - system.last_vertex();
+    }
+    if (options.parts.lsa) {
+        r.lsa = longitudinal_spherical_aberration(system, r.paraxial, r.aperture_radius,
+                                                  options.lsa_samples);
+    }
     return r;
 }
 
-nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport& r) {
-    using nlohmann::ordered_json;
-    const double last = system.last_vertex();
-    ordered_json lsa = ordered_json::array();
-    for (const LsaPoint& p : r.lsa) {
-        lsa.push_back({{"height", p.height}, {"lsa", p.lsa}, {"transverse", p.transverse}});
-    }
-    ordered_json surfaces = ordered_json::array();
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// One top-level key of report_json's document: what of the report it needs, and its value.
+struct ReportKey {
+    const char* name;
+    LensReportParts needs;
+    Json (*value)(const OpticalSystem& system, const LensReport& r);
+};
+
+constexpr LensReportParts kNeedsNoPart{false, false, false, false, false};
+constexpr LensReportParts kNeedsBeam{true, false, false, false, false};
+constexpr LensReportParts kNeedsLsa{false, true, false, false, false};
+constexpr LensReportParts kNeedsSeidel{false, false, true, false, false};
+constexpr LensReportParts kNeedsRealChief{false, false, false, true, false};
+constexpr LensReportParts kNeedsParaxialSpot{true, false, false, false, true};
+
+Json surfaces_json(const OpticalSystem& system, const LensReport& r) {
+    Json surfaces = Json::array();
     for (size_t i = 0; i < system.surfaces.size(); ++i) {
         const SystemSurface& s = system.surfaces[i];
-        surfaces.push_back(
-            {{"surface", s.label},
-             {"shape", s.shape->describe()},
-             {"z", s.z},
-             {"radius", s.curvature == 0 ? ordered_json() : ordered_json(1.0 / s.curvature)},
-             {"semi_diameter", s.semi_diameter},
-             {"medium_after", medium_name(system, s.element_after)},
-             {"n_after", system.n_after(i, r.wavelength_nm)}});
+        surfaces.push_back({{"surface", s.label},
+                            {"shape", s.shape->describe()},
+                            {"z", s.z},
+                            {"radius", s.curvature == 0 ? Json() : Json(1.0 / s.curvature)},
+                            {"semi_diameter", s.semi_diameter},
+                            {"medium_after", medium_name(system, s.element_after)},
+                            {"n_after", system.n_after(i, r.wavelength_nm)}});
     }
-    ordered_json lenses = ordered_json::array();
+    return surfaces;
+}
+
+Json lenses_json(const OpticalSystem& system) {
+    Json lenses = Json::array();
     for (const SystemElement& e : system.elements) {
-        ordered_json lens = {{"object", e.path}, {"name", e.name}, {"glass", e.glass}};
+        Json lens = {{"object", e.path}, {"name", e.name}, {"glass", e.glass}};
         if (e.grin) lens["grin"] = grin_json(system, e);
         lenses.push_back(lens);
     }
-    const ParaxialResult& p = r.paraxial;
-    ordered_json first = first_order_json(system, r.first_order);
-    first["real_chief_ray"] = r.real_chief
-                                  ? ordered_json{{"image_height", r.real_chief->image_height},
-                                                 {"distortion", r.real_chief->distortion}}
-                                  : ordered_json();
-    return {
-        {"wavelength_nm", r.wavelength_nm},
-        {"length_unit", "scene unit (mm for lens prescriptions)"},
-        {"efl", p.efl},
-        {"bfl", p.bfl},
-        {"ffl", p.ffl},
-        {"power", p.power},
-        {"principal_planes",
-         {{"front", p.z_front_principal},
-          {"back", p.z_rear_principal - last},
-          {"note", "front: from the first vertex; back: from the last vertex"}}},
-        {"aperture_diameter", 2.0 * r.aperture_radius},
-        {"rays", r.rays},
-        {"rays_lost", r.rays_lost},
-        {"rms_spot_paraxial", r.spot_paraxial.rms_radius},
-        {"geometric_spot_paraxial", r.spot_paraxial.geometric_radius},
-        {"best_focus", r.best_focus},
-        {"best_focus_shift", r.spot_best.z - p.z_rear_focus},
-        {"rms_spot_best", r.spot_best.rms_radius},
-        {"geometric_spot_best", r.spot_best.geometric_radius},
-        {"chromatic_shift_FC", r.chromatic_shift_FC},
-        {"wavelengths_nm", r.wavelengths},
-        {"chromatic",
-         {{"wavelengths_nm", {r.short_nm, r.long_nm}},
-          {"bfl_F", r.paraxial_F.bfl},
-          {"bfl_C", r.paraxial_C.bfl},
-          {"efl_F", r.paraxial_F.efl},
-          {"efl_C", r.paraxial_C.efl}}},
-        {"lsa", lsa},
-        {"surfaces", surfaces},
-        {"lenses", lenses},
-        {"ignored", system.ignored},
-        {"first_order", first},
-        {"seidel", system.has_grin() ? ordered_json() : seidel_json(system, r.seidel)},
-    };
+    return lenses;
+}
+
+Json lsa_json(const LensReport& r) {
+    Json lsa = Json::array();
+    for (const LsaPoint& p : r.lsa) {
+        lsa.push_back({{"height", p.height}, {"lsa", p.lsa}, {"transverse", p.transverse}});
+    }
+    return lsa;
+}
+
+Json first_order_with_chief_json(const OpticalSystem& system, const LensReport& r) {
+    Json first = first_order_json(system, r.first_order);
+    first["real_chief_ray"] = r.real_chief ? Json{{"image_height", r.real_chief->image_height},
+                                                  {"distortion", r.real_chief->distortion}}
+                                           : Json();
+    return first;
+}
+
+// The document's keys in its order.
+const ReportKey kReportKeys[] = {
+    {"wavelength_nm", kNeedsNoPart,
+     [](const OpticalSystem&, const LensReport& r) { return Json(r.wavelength_nm); }},
+    {"length_unit", kNeedsNoPart,
+     [](const OpticalSystem&, const LensReport&) {
+         return Json("scene unit (mm for lens prescriptions)");
+     }},
+    {"efl", kNeedsNoPart,
+     [](const OpticalSystem&, const LensReport& r) { return Json(r.paraxial.efl); }},
+    {"bfl", kNeedsNoPart,
+     [](const OpticalSystem&, const LensReport& r) { return Json(r.paraxial.bfl); }},
+    {"ffl", kNeedsNoPart,
+     [](const OpticalSystem&, const LensReport& r) { return Json(r.paraxial.ffl); }},
+    {"power", kNeedsNoPart,
+     [](const OpticalSystem&, const LensReport& r) { return Json(r.paraxial.power); }},
+    {"principal_planes", kNeedsNoPart,
+     [](const OpticalSystem& system, const LensReport& r) {
+         return Json{{"front", r.paraxial.z_front_principal},
+                     {"back", r.paraxial.z_rear_principal - system.last_vertex()},
+                     {"note", "front: from the first vertex; back: from the last vertex"}};
+     }},
+    {"aperture_diameter", kNeedsNoPart,
+     [](const OpticalSystem&, const LensReport& r) { return Json(2.0 * r.aperture_radius); }},
+    {"rays", kNeedsBeam, [](const OpticalSystem&, const LensReport& r) { return Json(r.rays); }},
+    {"rays_lost", kNeedsBeam,
+     [](const OpticalSystem&, const LensReport& r) { return Json(r.rays_lost); }},
+    {"rms_spot_paraxial", kNeedsParaxialSpot,
+     [](const OpticalSystem&, const LensReport& r) { return Json(r.spot_paraxial.rms_radius); }},
+    {"geometric_spot_paraxial", kNeedsParaxialSpot,
+     [](const OpticalSystem&, const LensReport& r) {
+         return Json(r.spot_paraxial.geometric_radius);
+     }},
+    {"best_focus", kNeedsBeam,
+     [](const OpticalSystem&, const LensReport& r) { return Json(r.best_focus); }},
+    {"best_focus_shift", kNeedsBeam,
+     [](const OpticalSystem&, const LensReport& r) {
+         return Json(r.spot_best.z - r.paraxial.z_rear_focus);
+     }},
+    {"rms_spot_best", kNeedsBeam,
+     [](const OpticalSystem&, const LensReport& r) { return Json(r.spot_best.rms_radius); }},
+    {"geometric_spot_best", kNeedsBeam,
+     [](const OpticalSystem&, const LensReport& r) { return Json(r.spot_best.geometric_radius); }},
+    {"chromatic_shift_FC", kNeedsNoPart,
+     [](const OpticalSystem&, const LensReport& r) { return Json(r.chromatic_shift_FC); }},
+    {"wavelengths_nm", kNeedsNoPart,
+     [](const OpticalSystem&, const LensReport& r) { return Json(r.wavelengths); }},
+    {"chromatic", kNeedsNoPart,
+     [](const OpticalSystem&, const LensReport& r) {
+         return Json{{"wavelengths_nm", {r.short_nm, r.long_nm}},
+                     {"bfl_F", r.paraxial_F.bfl},
+                     {"bfl_C", r.paraxial_C.bfl},
+                     {"efl_F", r.paraxial_F.efl},
+                     {"efl_C", r.paraxial_C.efl}};
+     }},
+    {"lsa", kNeedsLsa, [](const OpticalSystem&, const LensReport& r) { return lsa_json(r); }},
+    {"surfaces", kNeedsNoPart, &surfaces_json},
+    {"lenses", kNeedsNoPart,
+     [](const OpticalSystem& system, const LensReport&) { return lenses_json(system); }},
+    {"ignored", kNeedsNoPart,
+     [](const OpticalSystem& system, const LensReport&) { return Json(system.ignored); }},
+    {"first_order", kNeedsRealChief, &first_order_with_chief_json},
+    {"seidel", kNeedsSeidel,
+     [](const OpticalSystem& system, const LensReport& r) {
+         return system.has_grin() ? Json() : seidel_json(system, r.seidel);
+     }},
+};
+
+bool asked_for(const std::vector<std::string>& keys, const char* key) {
+    return keys.empty() || std::find(keys.begin(), keys.end(), key) != keys.end();
+}
+
+}  // namespace
+
+nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport& r,
+                                   const std::vector<std::string>& keys) {
+    Json j = Json::object();
+    for (const ReportKey& key : kReportKeys) {
+        if (asked_for(keys, key.name)) j[key.name] = key.value(system, r);
+    }
+    return j;
+}
+
+std::vector<std::string> report_json_keys() {
+    std::vector<std::string> out;
+    for (const ReportKey& key : kReportKeys) out.emplace_back(key.name);
+    return out;
+}
+
+LensReportParts report_parts(const std::vector<std::string>& keys) {
+    if (keys.empty()) return {};
+    LensReportParts parts = kNeedsNoPart;
+    for (const ReportKey& key : kReportKeys) {
+        if (!asked_for(keys, key.name)) continue;
+        parts.beam = parts.beam || key.needs.beam;
+        parts.lsa = parts.lsa || key.needs.lsa;
+        parts.seidel = parts.seidel || key.needs.seidel;
+        parts.real_chief = parts.real_chief || key.needs.real_chief;
+        parts.paraxial_spot = parts.paraxial_spot || key.needs.paraxial_spot;
+    }
+    return parts;
 }
 
 std::string report_table(const OpticalSystem& system, const LensReport& r, bool seidel) {

@@ -14,6 +14,17 @@
 
 namespace lenslab {
 
+// What a report computes past the paraxial and first-order figures, which all else rests on.
+// All of it by default; a caller that wants a few of the document's keys (report_parts) skips
+// the rest, and those keys come out the same either way.
+struct LensReportParts {
+    bool beam = true;  // the collimated beam: rays, the best focus and its spot
+    bool lsa = true;   // the longitudinal spherical aberration curve
+    bool seidel = true;
+    bool real_chief = true;
+    bool paraxial_spot = true;  // the beam's spot at the paraxial focus (with `beam`)
+};
+
 struct LensReportOptions {
     double wavelength_nm = kLineD;  // the primary wavelength: the d line
     // Every wavelength asked for (the primary among them); with two or more, the chromatic
@@ -26,6 +37,7 @@ struct LensReportOptions {
     FirstOrderOptions first_order;
     int spot_rings = 16;  // hexapolar rings: 1 + 3 n (n + 1) rays
     int lsa_samples = 20;
+    LensReportParts parts;
 };
 
 struct LensReport {
@@ -49,7 +61,14 @@ struct LensReport {
 // Throws SceneError when a wavelength lies outside a glass's range or the system is afocal.
 LensReport analyze_lens_system(const OpticalSystem& system, const LensReportOptions& options);
 
-nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport& report);
+// The report as JSON: every key, or only `keys` (in the document's order) when any are given;
+// unknown keys are left out.
+nlohmann::ordered_json report_json(const OpticalSystem& system, const LensReport& report,
+                                   const std::vector<std::string>& keys = {});
+// The top-level keys of report_json's whole document, in order.
+std::vector<std::string> report_json_keys();
+// What a report must compute for `keys` of its document (empty: all of it).
+LensReportParts report_parts(const std::vector<std::string>& keys);
 // With `seidel`, the table lists the Seidel sums surface by surface.
 std::string report_table(const OpticalSystem& system, const LensReport& report,
                          bool seidel = false);

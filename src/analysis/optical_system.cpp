@@ -94,7 +94,7 @@ void attach_grin(const Scene& scene, int object, const Vec3& axis, const Vec3& a
 }
 
 SurfaceSpan measure_aim_span(const LensSurface& shape, double semi_diameter) {
-    return measure_span(shape, std::min(2.0 * semi_diameter, 0.999 * shape.max_semi_diameter()));
+    return intersect_span(shape, std::min(2.0 * semi_diameter, 0.999 * shape.max_semi_diameter()));
 }
 
 // The two surfaces of a lens in the order light meets them, as system surfaces.
@@ -110,7 +110,7 @@ void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
         s.orientation = p.orientation;
         s.z = z;
         s.semi_diameter = a;
-        s.span = measure_span(*shape, a);
+        s.span = intersect_span(*shape, a);
         s.aim_span = measure_aim_span(*shape, a);
         s.curvature = p.orientation * paraxial_curvature(*shape, a);
         s.label = path + "." + face;
@@ -151,7 +151,7 @@ void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
         if (largest <= tol && std::abs(prev.curvature - in.curvature) <= c_tol) {
             prev.element_after = element;
             prev.semi_diameter = common;
-            prev.span = measure_span(*prev.shape, common);
+            prev.span = intersect_span(*prev.shape, common);
             prev.aim_span = measure_aim_span(*prev.shape, common);
             prev.label += " = " + in.label;
             e.first_surface = static_cast<int>(system.surfaces.size()) - 1;

@@ -29,7 +29,7 @@ struct SystemSurface {
     double orientation = 1.0;  // +1: the shape's local +z is the system's +z; -1: reversed
     double z = 0.0;            // axial position of the vertex
     double semi_diameter = 0.0;
-    SurfaceSpan span;  // measured over `semi_diameter`, for the numerical surfaces
+    SurfaceSpan span;  // intersect_span over `semi_diameter` (bounds for the numerical surfaces)
     // Measured over twice the semi-diameter (within the shape's own limit): ray aiming traces
     // past the rims, as Zemax's does, so a stop point outside a lens's clear aperture can
     // still be aimed at and that lens then reported as vignetting the ray.

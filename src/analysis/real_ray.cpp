@@ -23,8 +23,17 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double nm, R
 
 RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, const IndexRatios& indices,
                        Rims rims, std::vector<Vec3>* path) {
-    const double nm = indices.wavelength_nm;
     RealRay out;
+    trace_real_ray_into(out, system, ray, indices, rims, path);
+    return out;
+}
+
+void trace_real_ray_into(RealRay& out, const OpticalSystem& system, const Ray& ray,
+                         const IndexRatios& indices, Rims rims, std::vector<Vec3>* path) {
+    const double nm = indices.wavelength_nm;
+    out.fate = RayFate::Passed;
+    out.surface = -1;
+    out.points.clear();
     out.points.reserve(system.surfaces.size() + 1);
     out.points.push_back(ray.origin);
     if (path) path->assign(1, ray.origin);
@@ -43,7 +52,7 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, const IndexR
             out.fate = RayFate::Missed;
             out.surface = static_cast<int>(i);
             out.direction = d;
-            return out;
+            return;
         }
         p = p + d * t;
         out.points.push_back(p);
@@ -61,7 +70,7 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, const IndexR
             out.fate = RayFate::Reflected;
             out.surface = static_cast<int>(i);
             out.direction = d;
-            return out;
+            return;
         }
         d = *refracted;
         on_surface = grin_gap(system, i);
@@ -71,14 +80,13 @@ RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, const IndexR
                 out.fate = RayFate::Missed;
                 out.surface = static_cast<int>(i + 1);
                 out.direction = d;
-                return out;
+                return;
             }
             p = transit.point;
             d = transit.direction;
         }
     }
     out.direction = d;
-    return out;
 }
 
 Vec3 at_plane(const Vec3& point, const Vec3& direction, double z_plane) {

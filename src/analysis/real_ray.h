@@ -47,6 +47,12 @@ IndexRatios index_ratios(const OpticalSystem& system, double wavelength_nm);
 RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, const IndexRatios& indices,
                        Rims rims = Rims::Clip, std::vector<Vec3>* path = nullptr);
 
+// As above into `out`, whose points keep their storage from ray to ray: a beam's rays cost
+// no allocation each.
+void trace_real_ray_into(RealRay& out, const OpticalSystem& system, const Ray& ray,
+                         const IndexRatios& indices, Rims rims = Rims::Clip,
+                         std::vector<Vec3>* path = nullptr);
+
 // Where a ray leaving along `direction` from `point` crosses the plane z = z_plane (x, y).
 Vec3 at_plane(const Vec3& point, const Vec3& direction, double z_plane);
 

@@ -1,6 +1,7 @@
 #include "render/integrator_registry.h"
 
 #include <stdexcept>
+#include <string>
 
 #include "render/averaged_passes.h"
 #include "render/integrators/path.h"
@@ -87,15 +88,21 @@ std::vector<std::string> integrator_names() {
 
 namespace {
 
+// The JSON path of a medium of `scene`: its atmosphere, else a shape's.
+std::string medium_path(const Scene& scene) {
+    if (scene.atmosphere) return "atmosphere";
+    const SceneObject& o = scene.objects[static_cast<size_t>(scene.medium_solids().front())];
+    return "objects[" + std::to_string(o.source) + "].medium";
+}
+
 // Media are traced by the path and sppm integrators: the others would render the scene as
 // if the air were clear.
 void check_integrator_renders(const Scene& scene) {
     const std::string& name = scene.render.integrator;
-    if (scene.atmosphere && name != integrators::kPath && name != integrators::kSppm) {
-        throw SceneError("atmosphere",
-                         "is rendered by the path and sppm integrators (use \"integrator\": "
-                         "\"path\" or \"sppm\", or --integrator)");
-    }
+    if (!scene.has_media() || name == integrators::kPath || name == integrators::kSppm) return;
+    throw SceneError(medium_path(scene),
+                     "is rendered by the path and sppm integrators (use \"integrator\": "
+                     "\"path\" or \"sppm\", or --integrator)");
 }
 
 }  // namespace

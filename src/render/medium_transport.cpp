@@ -3,11 +3,19 @@
 #include <cmath>
 
 #include "optics/phase_function.h"
+#include "scene/segment_medium.h"
 
 namespace lenslab {
 
 FreeFlight sample_free_flight(const Medium& medium, double t_max, Rng& rng) {
     const BandWeights sigma_t = medium.extinction();
+    if (medium.scattering == BandWeights{0, 0, 0}) {
+        // Nothing scatters: every path passes, carrying exactly Beer–Lambert's fraction.
+        FreeFlight out;
+        for (int b = 0; b < 3; ++b)
+            out.weight[b] = sigma_t[b] > 0 ? std::exp(-sigma_t[b] * t_max) : 1.0;
+        return out;
+    }
     const int band = std::min(2, static_cast<int>(rng.uniform() * 3));
     const double u = rng.uniform();
     const double t = sigma_t[band] > 0 ? -std::log1p(-u) / sigma_t[band] : INFINITY;
@@ -33,10 +41,48 @@ FreeFlight sample_free_flight(const Medium& medium, double t_max, Rng& rng) {
     return out;
 }
 
-void add_direct_light(const Scene& scene, const Medium* medium, const Vec3& p, int samples,
-                      Rng& rng, const std::function<double(const Vec3& wi)>& angular, LightSum& e,
-                      bool delta_lights) {
+namespace {
+
+bool is_dark(const BandWeights& w) { return w == BandWeights{0, 0, 0}; }
+
+}  // namespace
+
+BandWeights shadow_transmittance(const Scene& scene, const Vec3& p, const Vec3& wi,
+                                 double distance) {
     const double eps = surface_epsilon(p);
+    if (scene.occluded({p, wi}, eps, distance - eps)) return {0, 0, 0};
+    if (scene.medium_solids().empty()) {
+        return scene.atmosphere ? scene.atmosphere->transmittance(distance) : BandWeights{1, 1, 1};
+    }
+    // Nothing blocks the way: every surface left on it is a medium's boundary, crossed one
+    // segment at a time.
+    const double end_eps = surface_epsilon(p + wi * distance);
+    BandWeights tr{1, 1, 1};
+    Ray ray{p, wi};
+    double left = distance;
+    for (;;) {
+        Interaction it;
+        const bool hit = scene.intersect(ray, surface_epsilon(ray.origin), left - end_eps, it.hit);
+        if (hit) {
+            it.object = &scene.objects[static_cast<size_t>(it.hit.object)];
+            it.material = &scene.material_of(it.hit.object);
+        }
+        const double length = hit ? it.hit.surface.t : left;
+        const Medium* medium =
+            hit ? segment_medium(scene, ray, &it) : medium_at(scene, ray.at(0.5 * length));
+        if (medium) {
+            const BandWeights m = medium->transmittance(length);
+            for (int b = 0; b < 3; ++b) tr[b] *= m[b];
+        }
+        if (!hit) return tr;
+        ray.origin = it.point();
+        left -= length;
+    }
+}
+
+void add_direct_light(const Scene& scene, const Vec3& p, int samples, Rng& rng,
+                      const std::function<double(const Vec3& wi)>& angular, LightSum& e,
+                      bool delta_lights) {
     scene.light_sampler().for_each(rng, [&](const Light& light, double weight) {
         if (!delta_lights && light.is_delta()) return;
         // A point or a beam is exact in one sample; an area light takes `samples`.
@@ -45,9 +91,9 @@ void add_direct_light(const Scene& scene, const Medium* medium, const Vec3& p, i
             LightSample ls;
             if (!light.sample_li(p, rng, ls)) continue;
             const double a = angular(ls.wi);
-            if (a <= 0.0 || scene.occluded({p, ls.wi}, eps, ls.distance - eps)) continue;
-            const BandWeights tr =
-                medium ? medium->transmittance(ls.distance) : BandWeights{1, 1, 1};
+            if (a <= 0.0) continue;
+            const BandWeights tr = shadow_transmittance(scene, p, ls.wi, ls.distance);
+            if (is_dark(tr)) continue;
             e.add(light.spectrum(), ls.factor * a * weight / count, tr);
         }
     });
@@ -63,10 +109,9 @@ void add_delta_in_scattering(const Scene& scene, const Medium& medium, const Ray
         const Vec3 p = ray.at(t);
         LightSample ls;
         if (!light->sample_li(p, rng, ls)) continue;
-        const double eps = surface_epsilon(p);
-        if (scene.occluded({p, ls.wi}, eps, ls.distance - eps)) continue;
+        const BandWeights from_light = shadow_transmittance(scene, p, ls.wi, ls.distance);
+        if (is_dark(from_light)) continue;
         const BandWeights to_camera = medium.transmittance(t);
-        const BandWeights from_light = medium.transmittance(ls.distance);
         BandWeights bands;
         for (int b = 0; b < 3; ++b) bands[b] = medium.scattering[b] * to_camera[b] * from_light[b];
         e.add(light->spectrum(), ls.factor * phase.eval(dot(ls.wi, ray.direction)) / pdf, bands);

@@ -25,23 +25,32 @@ struct FreeFlight {
 };
 
 // Light leaving along a ray through `medium` with the next surface at `t_max` (INFINITY:
-// none). Scattered: weight = sigma_s T(t) / density(t); passed: T(t_max) / P(pass).
+// none). Scattered: weight = sigma_s T(t) / density(t); passed: T(t_max) / P(pass). A medium
+// that only absorbs is passed every time with weight T(t_max).
 FreeFlight sample_free_flight(const Medium& medium, double t_max, Rng& rng);
 
-// The light reaching `p` straight from each light (unoccluded), attenuated by `medium` (none:
-// nullptr) along the way, each sample weighted by `angular(wi)` (wi towards the light): the
+// The fraction of light, per band, that goes from `p` the `distance` along `wi` (a shadow
+// ray): 0 where a surface blocks it, else the product of the transmittances of the media it
+// crosses (segment_medium's, piece by piece), passing through surfaceless boundaries: from
+// inside a smoke box to a light outside, the box's smoke, then the air or the atmosphere.
+BandWeights shadow_transmittance(const Scene& scene, const Vec3& p, const Vec3& wi,
+                                 double distance);
+
+// The light reaching `p` straight from each light, attenuated by the media on the way
+// (shadow_transmittance), each sample weighted by `angular(wi)` (wi towards the light): the
 // cosine at a surface, the phase function at a point in a medium; <= 0 drops the sample.
 // Added to `e` as the spectrum of each light times its weights.
 // `delta_lights` false leaves out points, spots and beams (add_delta_in_scattering's part).
-void add_direct_light(const Scene& scene, const Medium* medium, const Vec3& p, int samples,
-                      Rng& rng, const std::function<double(const Vec3& wi)>& angular, LightSum& e,
+void add_direct_light(const Scene& scene, const Vec3& p, int samples, Rng& rng,
+                      const std::function<double(const Vec3& wi)>& angular, LightSum& e,
                       bool delta_lights = true);
 
 // The light of the delta lights (points, spots, beams) scattered once into a ray's segment
 // [0, t_max) in `medium`: one distance per light from Light::sample_in_scattering, weighted
-// by sigma_s, the transmittance from the ray's origin and from the light, and the phase
-// function. A laser a few millimetres wide is all but never met by free-flight scattering
-// points; sampled along the chord the ray cuts through it, it shows at once.
+// by sigma_s, the transmittance from the ray's origin and from the light (through whatever
+// media lie between, shadow_transmittance), and the phase function. A laser a few millimetres wide
+// is all but never met by free-flight scattering points; sampled along the chord the ray cuts
+// through it, it shows at once.
 void add_delta_in_scattering(const Scene& scene, const Medium& medium, const Ray& ray, double t_max,
                              Rng& rng, LightSum& e);
 

@@ -23,7 +23,8 @@
 // Through a participating medium (scene/segment_medium.h) a photon scatters where free flight
 // by the scattering coefficient says, and loses to absorption exactly exp(-sigma_a d) of its
 // power on the way (no roulette: a beam through a clear absorbing slab arrives with exactly
-// the Beer-Lambert share). A scattering event counts as a bounce towards max_depth. In a
+// the Beer-Lambert share). A scattering event counts as a bounce towards max_depth, crossing a
+// medium's surfaceless edge does not. In a
 // medium that is not grey a photon still carrying the whole spectrum takes one wavelength
 // first, as in absorbing glass, and the coefficients of its band apply.
 
@@ -126,6 +127,10 @@ public:
         m_photon = &photon;
         m_rng = &rng;
         Policy policy = make_policy(photon);
+        // With media in shapes the first surface may be only a medium's edge: the stream's
+        // part of the emission is decided by the first real surface along the emitted ray.
+        m_counted = m_scene.has_media();
+        if (m_counted && !counts(first_real_surface(photon.start.ray))) return;
         if constexpr (Policy::kSplitAimed) {
             if (photon.aimed) return split(policy, photon.start.ray);
         }
@@ -141,7 +146,7 @@ private:
     Step reach(Ray& ray, Policy& policy, int depth, Interaction& it) {
         const double nm = policy.lambda_nm > 0 ? policy.lambda_nm : kLineD;
         const bool hit = next_interaction(m_scene, ray, nm, it);
-        if (depth == 0 && !counts(hit ? it.hit.object : -1)) return Step::Lost;
+        if (depth == 0 && !m_counted && !counts(hit ? it.hit.object : -1)) return Step::Lost;
         if (const Medium* medium = segment_medium(m_scene, ray, hit ? &it : nullptr)) {
             if (cross_medium(*medium, ray, hit ? it.hit.surface.t : INFINITY, policy, depth))
                 return Step::Scattered;
@@ -161,6 +166,17 @@ private:
         }
         policy.hit(it, ray.direction, depth);
         return Step::Surface;
+    }
+
+    // The object of the first surface along `ray` that is not a medium's surfaceless edge,
+    // or -1.
+    int first_real_surface(Ray ray) const {
+        Interaction it;
+        while (next_interaction(m_scene, ray, kLineD, it)) {
+            if (!it.material->surfaceless) return it.hit.object;
+            ray = {it.point(), ray.direction};
+        }
+        return -1;
     }
 
     bool counts(int first_object) const {
@@ -198,6 +214,11 @@ private:
             const Step step = reach(ray, policy, depth, it);
             if (step == Step::Lost) return;
             if (step == Step::Scattered) continue;
+            if (it.material->surfaceless) {  // a medium's edge: no event, no bounce
+                ray = {it.point(), ray.direction};
+                --depth;
+                continue;
+            }
             const double p = policy.diffuse_probability(it);
             const EventPick event = pick_event(it.scattering, p, m_rng->uniform());
             if (event.diffuse) {
@@ -226,6 +247,10 @@ private:
                 m_pending.push_back({p.policy, p.ray, p.depth + 1});
                 continue;
             }
+            if (it.material->surfaceless) {
+                m_pending.push_back({p.policy, {it.point(), p.ray.direction}, p.depth});
+                continue;
+            }
             const Scattering& s = it.scattering;
             for (int i = 0; i < s.count; ++i) {
                 double w = s.branches[i].weight;
@@ -252,6 +277,7 @@ private:
     const PhotonPlan& m_plan;
     int m_max_depth;
     const PhotonPlan::Photon* m_photon = nullptr;  // the one being traced
+    bool m_counted = false;                        // its stream's part was checked at the start
     Rng* m_rng = nullptr;                          // its stream
     std::vector<Pending> m_pending;
 };

@@ -108,6 +108,13 @@ double index_of_solid(const SceneObject& object, const Material& m, const Vec3& 
 
 Scattering scatter_at(const Interaction& it, const Vec3& d, double lambda_nm) {
     const Material& m = *it.material;
+    if (m.surfaceless) {
+        // Index-matched: one transmitted branch, undeviated, at every wavelength.
+        Scattering s;
+        s.branches[0] = {Event::Refract, d, 1.0};
+        s.count = 1;
+        return s;
+    }
     const bool closed = it.object->shape->is_closed();
     // Either side may be a gradient index (a GRIN lens cemented to glass): each is taken where
     // the ray meets the surface.

@@ -13,7 +13,7 @@ namespace {
 ElementSpec declare_lens_file() {
     ElementSpec s{"lens_file", "a lens file", {}, {}};
     for (const ParamSpec& p : object_common_spec().params) {
-        if (p.key != "material" && p.key != "detector") s.params.push_back(p);
+        if (p.key != "material" && p.key != "detector" && p.key != "medium") s.params.push_back(p);
     }
     s.params.push_back(string_param("file", "")
                            .needed()

@@ -29,10 +29,10 @@ struct GroupElement {
 };
 
 ElementSpec declare_group() {
-    // The common keys but material (each element names its own) and detector.
+    // The common keys but material (each element names its own), detector and medium.
     ElementSpec s{"lens_group", "a lens group", {}, {}};
     for (const ParamSpec& p : object_common_spec().params) {
-        if (p.key != "material" && p.key != "detector") s.params.push_back(p);
+        if (p.key != "material" && p.key != "detector" && p.key != "medium") s.params.push_back(p);
     }
     s.params.push_back(point_param("vertex")
                            .describe("front vertex of the first element")

@@ -35,6 +35,9 @@ struct Material {
     Rgb emission_color{1.0, 1.0, 1.0};
     double emission_intensity = 0.0;  // radiance scale, W m^-2 sr^-1
     SpectrumPtr emission_spectrum;  // set when the emission gives a spectrum, else from the colour
+    // The edge of a medium and nothing else (a shape with a `medium` and no `material`): no
+    // surface, the index matched on both sides, so light passes straight through.
+    bool surfaceless = false;
 
     // Spectra derived from the colours; `finish()` builds them after the fields are set.
     SpectrumPtr albedo;

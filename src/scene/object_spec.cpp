@@ -15,9 +15,12 @@ ElementSpec declare_common() {
             .describe("shown by lenslab trace")
             .in_editor("Name"),
         nested_param(ParamKind::Object, "material")
-            .needed()
+            .meaning_auto("**required**, but for a shape with a `medium`")
             .as_written("string or object")
             .describe("a name from materials, or an inline material"),
+        nested_param(ParamKind::Object, "medium")
+            .as_written("object")
+            .describe("closed shapes only: the participating medium inside"),
         nested_param(ParamKind::Object, "detector")
             .as_written("`true`, `false` or object")
             .describe("triangles, discs and rectangles only: measure the light arriving"),

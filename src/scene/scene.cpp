@@ -19,7 +19,26 @@ void Scene::build() {
     }
     m_bvh = Bvh(std::move(shapes));
     find_touching_solids();
+    find_media();
     find_lights_and_targets();
+}
+
+void Scene::find_media() {
+    m_medium_solids.clear();
+    m_see_through.clear();
+    for (size_t i = 0; i < objects.size(); ++i) {
+        if (objects[i].medium) m_medium_solids.push_back(static_cast<int>(i));
+        if (material_of(static_cast<int>(i)).surfaceless) {
+            m_see_through.resize(objects.size(), 0);
+            m_see_through[i] = 1;
+        }
+    }
+    const auto volume = [this](int object) {
+        const Aabb b = objects[static_cast<size_t>(object)].shape->bounds();
+        return (b.hi.x - b.lo.x) * (b.hi.y - b.lo.y) * (b.hi.z - b.lo.z);
+    };
+    std::stable_sort(m_medium_solids.begin(), m_medium_solids.end(),
+                     [&](int a, int b) { return volume(a) < volume(b); });
 }
 
 void Scene::set_lights(SceneLights lights) {
@@ -131,7 +150,7 @@ bool Scene::intersect(const Ray& ray, double t_min, double t_max, SceneHit& hit)
 }
 
 bool Scene::occluded(const Ray& ray, double t_min, double t_max) const {
-    return m_bvh.occluded(ray, t_min, t_max);
+    return m_bvh.occluded(ray, t_min, t_max, m_see_through.empty() ? nullptr : &m_see_through);
 }
 
 }  // namespace lenslab

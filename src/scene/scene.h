@@ -45,6 +45,8 @@ struct SceneObject {
     // Whether photons are aimed at it (photon_targets.h); unset: when its material is
     // transparent or a mirror, so it makes caustics.
     std::optional<bool> photon_target;
+    // What fills the solid (smoke, fog, milky water): closed shapes only; unset: clear inside.
+    std::optional<Medium> medium;
 };
 
 // An emitting sphere: the report's light source.
@@ -80,7 +82,13 @@ public:
     void set_lights(SceneLights lights);
 
     bool intersect(const Ray& ray, double t_min, double t_max, SceneHit& hit) const;
+    // Surfaceless boundaries (a medium's edge) do not occlude.
     bool occluded(const Ray& ray, double t_min, double t_max) const;
+    // The objects holding a medium, the smallest (by bounding box) first: so the first that
+    // contains a point is the innermost there.
+    const std::vector<int>& medium_solids() const { return m_medium_solids; }
+    // Whether light may meet a medium anywhere: an atmosphere or a shape's medium.
+    bool has_media() const { return atmosphere || !m_medium_solids.empty(); }
 
     const Material& material_of(int object) const { return materials[objects[object].material]; }
     // The transparent solid on the other side of `object`'s surface at `point` (a cemented
@@ -106,6 +114,7 @@ public:
 
 private:
     void find_touching_solids();
+    void find_media();
     void find_lights_and_targets();
 
     Bvh m_bvh;
@@ -118,6 +127,10 @@ private:
     // For each object, the transparent solids whose boxes touch its box: the only candidates
     // for a shared surface. Empty for nearly every object, so medium_beyond costs nothing.
     std::vector<std::vector<int>> m_touching;
+    std::vector<int> m_medium_solids;
+    // Per object, whether shadow rays pass it (a surfaceless boundary); empty when none does,
+    // so occluded stays the BVH's plain any-hit test.
+    std::vector<char> m_see_through;
 };
 
 }  // namespace lenslab

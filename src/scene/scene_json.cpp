@@ -226,6 +226,17 @@ int read_material_ref(JsonObjectReader& r, const std::string& owner_name,
                                (best.empty() ? "" : "; did you mean '" + best + "'?") + ")");
 }
 
+// The material of a medium's boundary that is only that (scene/material.h's `surfaceless`).
+int add_surfaceless_material(std::vector<Material>& all) {
+    Material m;
+    m.name = "surfaceless";
+    m.color = Rgb{0, 0, 0};
+    m.surfaceless = true;
+    m.finish();
+    all.push_back(std::move(m));
+    return static_cast<int>(all.size()) - 1;
+}
+
 void check_not_emitting(JsonObjectReader& r, const Material& m) {
     if (m.is_emitter()) {
         throw SceneError(r.child_path("material"),
@@ -249,7 +260,15 @@ SceneObject read_object(const json& j, const std::string& path,
     o.shape = kind->read(r, base_dir);
     if (kind->may_detect) o.detector = read_detector(r);
     if (o.detector) check_detector_size(*o.shape, *o.detector, path);
-    o.material = read_material_ref(r, o.name, materials, all);
+    if (const json* m = r.find("medium")) {
+        if (!o.shape->is_closed()) {
+            throw SceneError(r.child_path("medium"),
+                             "a medium fills a solid: this " + type + " is an open surface");
+        }
+        o.medium = read_medium(*m, r.child_path("medium"));
+    }
+    o.material = o.medium && !r.has("material") ? add_surfaceless_material(all)
+                                                : read_material_ref(r, o.name, materials, all);
     if (kind->open_mesh_check) check_mesh_material(r, *o.shape, all[o.material]);
     if (!kind->may_emit) check_not_emitting(r, all[o.material]);
     if (all[o.material].grin && !o.shape->is_closed()) {

@@ -10,11 +10,14 @@
 namespace lenslab {
 
 // The medium between `ray`'s origin and the surface `hit` (nullptr: the ray leaves the
-// scene), or nullptr where the segment is clear. A segment ending at the back of a surface
-// lies inside that solid; any other lies outside the objects, in the scene's atmosphere.
+// scene), or nullptr where the segment is clear. A segment ending at the back of a closed
+// surface lies inside that solid: its medium, or none (clear glass). Any other lies in the
+// innermost medium-holding solid around it (medium_at at the segment's middle), else in the
+// scene's atmosphere; a ray leaving the scene is inside no solid.
 const Medium* segment_medium(const Scene& scene, const Ray& ray, const Interaction* hit);
 
-// Whether any segment can cross a medium (tracers skip the question otherwise).
-bool has_media(const Scene& scene);
+// The medium at `point`: that of the innermost solid holding a medium that contains it, else
+// the atmosphere; nullptr where that is clear.
+const Medium* medium_at(const Scene& scene, const Vec3& point);
 
 }  // namespace lenslab

@@ -40,6 +40,31 @@ TEST(AnalyzeRequest, DocumentIsTheReportWithWhatWasAskedFor) {
     EXPECT_DOUBLE_EQ(asked["efl"].get<double>(), plain["efl"].get<double>());
 }
 
+TEST(AnalyzeRequest, ReportKeysGiveTheWholeDocumentsValuesAlone) {
+    const Scene scene = test::lens_scene({kRequestLens});
+    AnalyzeRequest request;
+    request.spots = true;
+    const nlohmann::ordered_json whole = analyze_report(scene, request, "lens.json");
+    const AnalyzeResults results = analyze_scene(scene, request, "lens.json");
+    EXPECT_EQ(analyze_json_keys(results, request, "lens.json").size(), whole.size());
+    // Each key alone, and two together, each computing only what it needs.
+    for (const auto& item : whole.items()) {
+        request.report_keys = {item.key()};
+        const nlohmann::ordered_json one = analyze_report(scene, request, "lens.json");
+        ASSERT_EQ(one.size(), 1u) << item.key();
+        EXPECT_EQ(one[item.key()], item.value()) << item.key();
+    }
+    request.report_keys = {"rms_spot_best", "efl", "no_such_key"};
+    const nlohmann::ordered_json two = analyze_report(scene, request, "lens.json");
+    EXPECT_EQ(two, (nlohmann::ordered_json{{"efl", whole["efl"]},
+                                           {"rms_spot_best", whole["rms_spot_best"]}}));
+    EXPECT_FALSE(report_parts({"efl"}).beam);
+    EXPECT_TRUE(report_parts({"rms_spot_best"}).beam);
+    EXPECT_FALSE(report_parts({"rms_spot_best"}).seidel);
+    EXPECT_FALSE(report_parts({"rms_spot_best"}).paraxial_spot);
+    EXPECT_TRUE(report_parts({"rms_spot_paraxial"}).paraxial_spot);
+}
+
 TEST(AnalyzeRequest, OptionsThatDoNotFitAreRefused) {
     AnalyzeRequest stop;
     stop.stop = 3;

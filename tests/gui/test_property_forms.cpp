@@ -19,6 +19,7 @@
 #include "scene/lens_group_json.h"
 #include "scene/light_spec.h"
 #include "scene/material_spec.h"
+#include "scene/medium.h"
 #include "scene/mesh_json.h"
 #include "scene/object_spec.h"
 #include "scene/planar_json.h"
@@ -321,6 +322,20 @@ private slots:
         QCOMPARE(box->minimum(), cells.min->value);
         QCOMPARE(box->maximum(), cells.max->value);
         QCOMPARE(box->value(), cells.fallback.get<double>());
+    }
+
+    // A closed shape's medium: its fields follow the atmosphere's declaration; a shape with a
+    // medium and no material (only the medium's edge) opens without an error.
+    void medium_form_follows_the_declaration() {
+        QTemporaryDir dir;
+        MainWindow w;
+        open_objects(w, dir,
+                     {{{"type", "box"},
+                       {"center", {0, 0, 0}},
+                       {"size", {1, 1, 1}},
+                       {"medium", json::object()}}});
+        QVERIFY2(w.panel()->error_text().isEmpty(), qPrintable(w.panel()->error_text()));
+        check_form(w, lenslab::medium_spec(), {}, "medium/");
     }
 
     // Must-show: 0 means "auto" for the gather radius, and the field can be set to it.

@@ -1,6 +1,7 @@
 // Light in a participating medium against closed forms: free-flight sampling keeps
 // Beer–Lambert's exp(-sigma_t d) in every band of a coloured medium, and the path tracer's
-// single scattering from a point light matches the airlight integral.
+// single scattering from a point light matches the airlight integral, in the atmosphere and
+// in a smoke box; an absorbing box dims what is behind it by exp(-sigma_t d).
 
 #include <gtest/gtest.h>
 
@@ -68,15 +69,17 @@ TEST(FreeFlight, KeepsBeerLambertInEveryBand) {
 //   r(s) = sqrt(h^2 + (s - D)^2).
 // Evaluated here by Simpson's rule (the integrand is smooth; the tail beyond 40 free paths is
 // below 1e-17).
-double airlight(double sigma, double intensity, double h, double d) {
+// `entry`: where the ray enters the medium (0: it starts in it); the light is in the medium,
+// and the stretch from it to each point of the ray too.
+double airlight(double sigma, double intensity, double h, double d, double entry = 0) {
     const int n = 400000;
-    const double end = 40 / sigma, step = end / n;
+    const double end = entry + 40 / sigma, step = (end - entry) / n;
     double sum = 0;
     for (int i = 0; i <= n; ++i) {
-        const double s = i * step;
+        const double s = entry + i * step;
         const double r2 = h * h + (s - d) * (s - d);
-        const double f =
-            sigma * std::exp(-sigma * (s + std::sqrt(r2))) / (4 * kPiMedium) * intensity / r2;
+        const double f = sigma * std::exp(-sigma * (s - entry + std::sqrt(r2))) / (4 * kPiMedium) *
+                         intensity / r2;
         sum += f * ((i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2));
     }
     return sum * step / 3;
@@ -98,6 +101,79 @@ TEST(PathInMedium, SingleScatteringMatchesTheAirlightIntegral) {
     const double white = spectrum_to_rgb(*scene.point_lights[0].spectrum).g / power;
     const double expected = airlight(sigma, power / (4 * kPiMedium), h, d) * white;
     EXPECT_NEAR(mean, expected, 0.02 * expected);
+}
+
+// The same inside a smoke box seen from outside: the camera ray crosses the box's surfaceless
+// wall 2 units ahead (clear air before it), and the shadow rays to the light, inside the
+// box, run through the box's smoke alone.
+TEST(PathInMedium, SingleScatteringInASmokeBoxMatchesTheAirlightIntegral) {
+    const double sigma = 0.1, power = 50, h = 1, d = 5, entry = 2;
+    Scene scene = parse_scene(R"({
+      "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0], "fov": 0.001},
+      "render": {"width": 4, "height": 4, "spp": 10000, "max_depth": 1, "integrator": "path"},
+      "objects": [{"type": "box", "center": [0, 0, 200], "size": [400, 400, 406],
+                   "medium": {"scattering": 0.1}}],
+      "lights": [{"type": "point", "position": [0, 0, 0], "power": 50}]
+    })");
+    const double mean = mean_green_of_render(scene);
+    const double white = spectrum_to_rgb(*scene.point_lights[0].spectrum).g / power;
+    const double expected = airlight(sigma, power / (4 * kPiMedium), h, d, entry) * white;
+    EXPECT_NEAR(mean, expected, 0.02 * expected);
+}
+
+// Beer–Lambert through surfaceless boundaries: a camera ray through an absorbing box of
+// thickness 2 (and, around it, an absorbing atmosphere over 9 + 14 units) sees
+// exp(-sigma_box 2 - sigma_air 23) of the emitting sphere behind, exactly but for the film's
+// float pixels (a medium that only absorbs weights each path by its transmittance).
+TEST(PathInMedium, AbsorbingBoxKeepsBeerLambertsFraction) {
+    const auto render = [](const std::string& media) {
+        return mean_green_of_render(parse_scene(R"({
+          "camera": {"position": [0, 0, -10], "look_at": [0, 0, 0], "fov": 0.001},
+          "render": {"width": 2, "height": 2, "spp": 16, "integrator": "path"},
+          "objects": [{"type": "sphere", "center": [0, 0, 20], "radius": 5,
+                       "material": {"color": 0, "emission": {"intensity": 1}}})" +
+                                                media + "}"));
+    };
+    const double clear = render("]");
+    ASSERT_GT(clear, 0);
+    for (const double sigma : {0.1, 0.5, 2.0}) {
+        SCOPED_TRACE(sigma);
+        const std::string box = R"(, {"type": "box", "center": [0, 0, 0], "size": [4, 4, 2],
+                                      "medium": {"absorption": )" +
+                                std::to_string(sigma) + "}}]";
+        // To the film's float precision.
+        const double box_only = std::exp(-sigma * 2);
+        EXPECT_NEAR(render(box) / clear, box_only, 1e-6 * box_only);
+        const double in_air = std::exp(-sigma * 2 - 0.05 * 23);
+        EXPECT_NEAR(render(box + R"(, "atmosphere": {"absorption": 0.05})") / clear, in_air,
+                    1e-6 * in_air);
+    }
+}
+
+// A shadow ray from inside a smoke box to a light outside keeps exp(-sigma d) of each medium
+// it crosses: 2 units of the box's smoke, then 8 of the atmosphere; a glass lens in the way
+// blocks it (shadow rays do not refract); the box's walls do not.
+TEST(ShadowTransmittance, MultipliesTheMediaCrossed) {
+    const Scene scene = parse_scene(R"({
+      "camera": {"position": [0, 0, -10], "look_at": [0, 0, 0]},
+      "atmosphere": {"absorption": [0.1, 0.2, 0.3]},
+      "objects": [
+        {"type": "box", "center": [0, 0, 0], "size": [4, 4, 4], "medium": {"scattering": 0.5}},
+        {"type": "sphere", "center": [0, 1, 0], "radius": 0.5,
+         "material": {"transparency": 1, "ior": 1.5}}]
+    })");
+    // The coefficients per band, as the colours became them.
+    const BandWeights air = scene.atmosphere->extinction();
+    const BandWeights smoke = scene.objects[0].medium->extinction();
+    const BandWeights tr = shadow_transmittance(scene, {0, 0, 0}, {1, 0, 0}, 10);
+    for (int b = 0; b < 3; ++b) EXPECT_NEAR(tr[b], std::exp(-smoke[b] * 2 - air[b] * 8), 1e-12);
+    // From outside, through the whole box: 4 units of smoke, 6 of air.
+    const BandWeights across = shadow_transmittance(scene, {-5, -1, 0}, {1, 0, 0}, 10);
+    for (int b = 0; b < 3; ++b) {
+        EXPECT_NEAR(across[b], std::exp(-smoke[b] * 4 - air[b] * 6), 1e-12);
+    }
+    const BandWeights blocked = shadow_transmittance(scene, {0, 0, 0}, {0, 1, 0}, 10);
+    for (int b = 0; b < 3; ++b) EXPECT_EQ(blocked[b], 0.0);
 }
 
 // A camera ray crossing a laser-like beam at right angles through its axis gathers, from
@@ -139,6 +215,29 @@ TEST(PathInMedium, IntegratorsWithoutMediaRefuseAnAtmosphere) {
             ADD_FAILURE() << integrator << " rendered";
         } catch (const SceneError& e) {
             EXPECT_EQ(e.path(), "atmosphere");
+        }
+    }
+}
+
+// Media in shapes are the path and sppm integrators'.
+TEST(PathInMedium, IntegratorsWithoutMediaRefuseAShapesMedium) {
+    for (const char* integrator : {"whitted", "photon_map"}) {
+        Scene scene = parse_scene(R"({
+          "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0]},
+          "render": {"width": 4, "height": 4, "integrator": ")" +
+                                  std::string(integrator) + R"("},
+          "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                       "material": {"color": 0.5}},
+                      {"type": "sphere", "center": [0, 0, 0], "radius": 2,
+                       "medium": {"scattering": 0.1}}],
+          "lights": [{"type": "point", "position": [0, 3, 0], "power": 50}]
+        })");
+        RenderControl control;
+        try {
+            (void)render_scene(scene, control);
+            ADD_FAILURE() << integrator << " rendered";
+        } catch (const SceneError& e) {
+            EXPECT_EQ(e.path(), "objects[1].medium");
         }
     }
 }

@@ -80,6 +80,9 @@ const BadScene kBadScenes[] = {
      "a GRIN index needs a transparent material (transparency > 0)"},
     {"grin_radial_negative_index.json", "objects[0].material",
      "its GRIN index: the index is -4.5 at (x, y, z) = (-1, -1, -1) from its centre, in the object: it must be a number > 0 there"},
+    // A shape's medium.
+    {"medium_open_mesh.json", "objects[0].medium",
+     "a medium fills a solid: this mesh is an open surface"},
     {"albedo_above_one.json", "materials.glowing_paint.color[1]",
      "must be <= 1 (a surface cannot reflect more than it receives), got 1.5"},
     {"emission_negative_intensity.json", "materials.lamp.emission.intensity",

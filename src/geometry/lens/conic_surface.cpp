@@ -27,17 +27,15 @@ double ConicSurface::conic_max_semi_diameter(double c, double k) {
     return 1.0 / (std::abs(c) * std::sqrt(1.0 + k));
 }
 
-double ConicSurface::sag(double r) const { return conic_sag(1.0 / m_radius, m_k, r); }
+double ConicSurface::sag(double r) const { return conic_sag(m_curvature, m_k, r); }
 
-double ConicSurface::max_semi_diameter() const {
-    return conic_max_semi_diameter(1.0 / m_radius, m_k);
-}
+double ConicSurface::max_semi_diameter() const { return conic_max_semi_diameter(m_curvature, m_k); }
 
 bool ConicSurface::intersect(const Ray& ray, const SurfaceSpan& span, double t_min, double t_max,
                              double& t) const {
     // c (x^2 + y^2 + q z^2) - 2 z = 0 with q = 1 + k, along o + t d: a quadratic in
     // curvature form, like the sphere's (q = 1), with no R^2 term to lose precision to.
-    const double c = 1.0 / m_radius;
+    const double c = m_curvature;
     const double q = 1.0 + m_k;
     const Vec3& o = ray.origin;
     const Vec3& d = ray.direction;
@@ -65,7 +63,7 @@ bool ConicSurface::intersect(const Ray& ray, const SurfaceSpan& span, double t_m
 Vec3 ConicSurface::normal(const Vec3& p) const {
     // Minus the gradient of c (x^2 + y^2 + q z^2) - 2 z, halved: (-c x, -c y, 1 - q c z),
     // whose z component is sqrt(1 - q c^2 r^2) >= 0 on the vertex sheet.
-    const double c = 1.0 / m_radius;
+    const double c = m_curvature;
     return normalize(Vec3{-c * p.x, -c * p.y, 1.0 - (1.0 + m_k) * c * p.z});
 }
 
@@ -76,7 +74,7 @@ std::string ConicSurface::describe() const {
 }
 
 std::string ConicSurface::why_undefined(double x, double y) const {
-    const double c = 1.0 / m_radius;
+    const double c = m_curvature;
     if (1.0 - (1.0 + m_k) * c * c * (x * x + y * y) < 0) return "sqrt of a negative number";
     return "";
 }

@@ -12,12 +12,13 @@ namespace lenslab {
 // through the vertex, where (1 + k) c z <= 1, belongs to the surface.
 class ConicSurface final : public LensSurface {
 public:
-    ConicSurface(double radius, double k) : m_radius(radius), m_k(k) {}
+    ConicSurface(double radius, double k) : m_radius(radius), m_k(k), m_curvature(1.0 / radius) {}
 
     double sag(double r) const override;
     double max_semi_diameter() const override;
     bool intersect(const Ray& ray, const SurfaceSpan& span, double t_min, double t_max,
                    double& t) const override;
+    bool intersect_reads_bounds() const override { return false; }
     Vec3 normal(const Vec3& p) const override;
     std::string describe() const override;
     std::string why_undefined(double x, double y) const override;
@@ -34,6 +35,7 @@ public:
 private:
     double m_radius;
     double m_k;
+    double m_curvature;  // 1 / R, divided once: a beam's rays ask for it at every hit
 };
 
 }  // namespace lenslab

@@ -11,6 +11,7 @@ public:
     double max_semi_diameter() const override;
     bool intersect(const Ray& ray, const SurfaceSpan& span, double t_min, double t_max,
                    double& t) const override;
+    bool intersect_reads_bounds() const override { return false; }
     Vec3 normal(const Vec3&) const override { return {0, 0, 1}; }
     std::string describe() const override { return "flat"; }
 };

@@ -37,8 +37,8 @@ std::string where(const DiscPoint& q, bool symmetric) {
 
 LensSolid::LensSolid(LensPrescription p) : m_p(std::move(p)), m_frame(lens_frame(m_p)) {
     const double a = 0.5 * m_p.diameter;
-    m_front_span = measure_span(*m_p.front, a);
-    m_back_span = measure_span(*m_p.back, a);
+    m_front_span = intersect_span(*m_p.front, a);
+    m_back_span = intersect_span(*m_p.back, a);
     m_rim_lo = front_z(a);
     m_rim_hi = back_z(a);
 }
@@ -73,10 +73,16 @@ std::optional<LensSolid::Problem> LensSolid::check_prescription(const LensPrescr
         p.front->is_rotationally_symmetric() && p.back->is_rotationally_symmetric();
     const std::vector<DiscPoint> points = disc_sample_points(a, symmetric);
     // Typed formulas can be undefined (sqrt of a negative) or infinite somewhere: refuse
-    // that here rather than render holes.
-    for (const auto& [name, s] : {std::pair{"front", p.front}, std::pair{"back", p.back}}) {
+    // that here rather than render holes. The sags are kept for the gaps below.
+    std::vector<double> sags[2];
+    const std::pair<const char*, const LensSurface*> faces[] = {{"front", p.front.get()},
+                                                                {"back", p.back.get()}};
+    for (int f = 0; f < 2; ++f) {
+        const auto& [name, s] = faces[f];
+        sags[f].reserve(points.size());
         for (const DiscPoint& q : points) {
-            if (std::isfinite(s->sag_xy(q.x, q.y))) continue;
+            sags[f].push_back(s->sag_xy(q.x, q.y));
+            if (std::isfinite(sags[f].back())) continue;
             const std::string why = s->why_undefined(q.x, q.y);
             msg << "sag undefined at " << where(q, symmetric) << " inside the diameter"
                 << (why.empty() ? "" : " (" + why + ")");
@@ -87,8 +93,9 @@ std::optional<LensSolid::Problem> LensSolid::check_prescription(const LensPrescr
     const double tolerance = 1e-12 * std::max(1.0, p.thickness);
     double worst_gap = 0.0;
     DiscPoint worst{0, 0};
-    for (const DiscPoint& q : points) {
-        const double gap = p.thickness + p.back->sag_xy(q.x, q.y) - p.front->sag_xy(q.x, q.y);
+    for (size_t i = 0; i < points.size(); ++i) {
+        const DiscPoint& q = points[i];
+        const double gap = p.thickness + sags[1][i] - sags[0][i];
         if (gap < worst_gap) {
             worst_gap = gap;
             worst = q;
@@ -192,10 +199,23 @@ bool LensSolid::intersect(const Ray& world_ray, double t_min, double t_max, Surf
     return true;
 }
 
+const LensSolid::Slab& LensSolid::slab() const {
+    std::call_once(m_slab->measured, [this] {
+        // A closed-form face's intersect_span has no z-range: measure it now.
+        const double a = 0.5 * m_p.diameter;
+        const auto spanned = [a](const LensSurface& face, const SurfaceSpan& kept) {
+            return face.intersect_reads_bounds() ? kept : measure_span(face, a);
+        };
+        m_slab->z_lo = -0.5 * m_p.thickness + spanned(*m_p.front, m_front_span).z_min;
+        m_slab->z_hi = 0.5 * m_p.thickness + spanned(*m_p.back, m_back_span).z_max;
+    });
+    return *m_slab;
+}
+
 BoundingSphere LensSolid::bounding_sphere() const {
     const double a = 0.5 * m_p.diameter;
-    const double z_lo = -0.5 * m_p.thickness + m_front_span.z_min;
-    const double z_hi = 0.5 * m_p.thickness + m_back_span.z_max;
+    const double z_lo = slab().z_lo;
+    const double z_hi = slab().z_hi;
     const double half = 0.5 * (z_hi - z_lo);
     const double pad = 1e-6 * std::max(1.0, a);
     return {m_p.centre + m_frame.to_world({0, 0, 0.5 * (z_lo + z_hi)}),
@@ -205,8 +225,8 @@ BoundingSphere LensSolid::bounding_sphere() const {
 Aabb LensSolid::bounds() const {
     const double a = 0.5 * m_p.diameter;
     // The spans' slabs hold every point of the faces (they are padded for the sampling).
-    const double z_lo = -0.5 * m_p.thickness + m_front_span.z_min;
-    const double z_hi = 0.5 * m_p.thickness + m_back_span.z_max;
+    const double z_lo = slab().z_lo;
+    const double z_hi = slab().z_hi;
     const double pad = 1e-6 * std::max(1.0, a);
     Aabb box;
     for (int corner = 0; corner < 8; ++corner) {

@@ -5,6 +5,7 @@
 // only for faces that are not surfaces of revolution).
 
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 
@@ -70,9 +71,18 @@ public:
 private:
     bool symmetric() const;
 
+    // The slab the faces lie in, along the local z: what bounds() and bounding_sphere() need,
+    // measured when first asked for (the renderer asks; the optical bench never does).
+    struct Slab {
+        std::once_flag measured;
+        double z_lo = 0, z_hi = 0;
+    };
+    const Slab& slab() const;
+
     LensPrescription m_p;
     Frame m_frame;
-    SurfaceSpan m_front_span, m_back_span;
+    SurfaceSpan m_front_span, m_back_span;  // intersect_span: what the faces' intersect reads
+    std::shared_ptr<Slab> m_slab = std::make_shared<Slab>();  // copies share it
     double m_rim_lo = 0, m_rim_hi = 0;  // the rim's z-range when both faces are symmetric
 };
 

@@ -84,4 +84,8 @@ SurfaceSpan measure_span(const LensSurface& surface, double a) {
     return span;
 }
 
+SurfaceSpan intersect_span(const LensSurface& surface, double a) {
+    return surface.intersect_reads_bounds() ? measure_span(surface, a) : SurfaceSpan{a};
+}
+
 }  // namespace lenslab

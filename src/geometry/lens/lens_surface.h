@@ -40,6 +40,9 @@ public:
     // radial distance at most span.semi_diameter (up to kSeamTolerance).
     virtual bool intersect(const Ray& ray, const SurfaceSpan& span, double t_min, double t_max,
                            double& t) const = 0;
+    // Whether intersect reads the span's z-range and slope bound (the numerical surfaces,
+    // which bracket their roots with them) or its semi-diameter alone (the closed forms).
+    virtual bool intersect_reads_bounds() const { return true; }
     // Unit normal at a point on the surface, with a positive z component.
     virtual Vec3 normal(const Vec3& p) const = 0;
     // Short human-readable form for messages, e.g. "sphere R=50".
@@ -57,6 +60,10 @@ inline constexpr double kSeamTolerance = 1e-9;
 // of revolution, on a polar grid otherwise) and returns its padded z-range and slope bound.
 // For a sag that is not finite somewhere on the disc the span is unbounded.
 SurfaceSpan measure_span(const LensSurface& surface, double semi_diameter);
+
+// The span `surface.intersect` needs over the disc: measure_span's for a numerical surface,
+// the bare semi-diameter for a closed form (which reads nothing else), saving the sampling.
+SurfaceSpan intersect_span(const LensSurface& surface, double semi_diameter);
 
 // Points (x, y) on the disc of radius `semi_diameter` where a lens checks its faces: 513
 // radii along +x when both faces are surfaces of revolution (`symmetric`), otherwise a polar

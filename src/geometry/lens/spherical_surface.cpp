@@ -10,7 +10,7 @@ namespace lenslab {
 double SphericalSurface::sag(double r) const {
     // Written as c r^2 / (1 + sqrt(1 - c^2 r^2)) rather than R - sqrt(R^2 - r^2): no
     // cancellation near the axis, where lens sags are tiny against R.
-    const double c = 1.0 / m_radius;
+    const double c = m_curvature;
     return c * r * r / (1.0 + std::sqrt(std::max(0.0, 1.0 - c * c * r * r)));
 }
 
@@ -20,7 +20,7 @@ bool SphericalSurface::intersect(const Ray& ray, const SurfaceSpan& span, double
                                  double t_max, double& t) const {
     // In curvature form, c |p|^2 - 2 p_z = 0 with c = 1/R: no R^2 term to overflow or to
     // swamp the sag of a weakly curved surface, and it tends to the plane z = 0 as c -> 0.
-    const double c = 1.0 / m_radius;
+    const double c = m_curvature;
     const Vec3& o = ray.origin;
     const Vec3& d = ray.direction;
     double roots[2];
@@ -44,7 +44,7 @@ bool SphericalSurface::intersect(const Ray& ray, const SurfaceSpan& span, double
 Vec3 SphericalSurface::normal(const Vec3& p) const {
     // (centre - p) / R: the centre lies on the +z side for R > 0 and the -z side for R < 0,
     // so dividing by the signed radius always gives a positive z component on the cap.
-    const double c = 1.0 / m_radius;
+    const double c = m_curvature;
     return normalize(Vec3{-c * p.x, -c * p.y, 1.0 - c * p.z});
 }
 

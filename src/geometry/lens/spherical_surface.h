@@ -9,12 +9,13 @@ namespace lenslab {
 // the half of the sphere containing the origin, belongs to the surface.
 class SphericalSurface final : public LensSurface {
 public:
-    explicit SphericalSurface(double radius) : m_radius(radius) {}
+    explicit SphericalSurface(double radius) : m_radius(radius), m_curvature(1.0 / radius) {}
 
     double sag(double r) const override;
     double max_semi_diameter() const override;
     bool intersect(const Ray& ray, const SurfaceSpan& span, double t_min, double t_max,
                    double& t) const override;
+    bool intersect_reads_bounds() const override { return false; }
     Vec3 normal(const Vec3& p) const override;
     std::string describe() const override;
 
@@ -22,6 +23,7 @@ public:
 
 private:
     double m_radius;
+    double m_curvature;  // 1 / R, divided once: a beam's rays ask for it at every hit
 };
 
 }  // namespace lenslab

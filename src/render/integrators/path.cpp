@@ -25,7 +25,9 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
     Ray ray = camera_ray;
     bool seen_from_camera = true;  // no diffuse bounce yet: the camera sees this chain
     bool count_emission = true;    // the last event was the camera or a specular one
-    for (int bounce = 0;; ++bounce) {
+    // Events so far: scatterings in media and at surfaces; crossing a medium's surfaceless
+    // boundary is none.
+    for (int bounce = 0;;) {
         Interaction it;
         // Refraction follows the hero wavelength (the others are dropped at a dispersive one).
         const bool hit = next_interaction(scene, ray, path.hero_nm(), it);
@@ -46,12 +48,13 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
                 LightSum e(path);
                 // Points, spots and beams: add_delta_in_scattering's, on every segment.
                 add_direct_light(
-                    scene, medium, p, scene.render.light_samples, rng,
+                    scene, p, scene.render.light_samples, rng,
                     [&](const Vec3& wi) { return phase.eval(dot(wi, ray.direction)); }, e, false);
                 l += path.of(e);
                 ray = {p, phase.sample(ray.direction, rng.uniform(), rng.uniform())};
                 seen_from_camera = false;
                 count_emission = false;
+                ++bounce;
                 continue;
             }
         }
@@ -67,6 +70,11 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
         if (it.scattering.dispersive) path.disperse();
         const Material& m = *it.material;
         const Vec3& p = it.point();
+        if (m.surfaceless) {
+            // Only a medium's edge: the path goes straight on, as if nothing were there.
+            ray = {p, ray.direction};
+            continue;
+        }
         const Vec3& n = it.normal();
         const bool front_side = dot(ray.direction, n) < 0.0;
         const Vec3 facing = front_side ? n : -n;
@@ -77,9 +85,9 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
         const bool diffuse = s.diffuse > 0.0 && !m.color.is_black();
         if (diffuse) {
             LightSum e(path);
-            if (scene.atmosphere) {
+            if (scene.has_media()) {
                 add_direct_light(
-                    scene, &*scene.atmosphere, p, scene.render.light_samples, rng,
+                    scene, p, scene.render.light_samples, rng,
                     [&](const Vec3& wi) { return dot(facing, wi); }, e);
             } else {
                 for_each_direct_light(
@@ -103,11 +111,13 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
             ray = {p, sample_diffuse_direction(facing, rng)};
             seen_from_camera = false;
             count_emission = false;
+            ++bounce;
             continue;
         }
         if (!event.branch) break;  // absorbed
         ray = {p, event.branch->direction};
         count_emission = true;
+        ++bounce;
     }
     return l;
 }

@@ -111,7 +111,7 @@ SppmIntegrator::SppmIntegrator(const Scene& scene)
     if (!scene.render.ambient.is_black()) m_ambient = illuminant_from_rgb(scene.render.ambient);
     if (!scene.render.background.is_black())
         m_background = illuminant_from_rgb(scene.render.background);
-    if (has_media(scene)) {
+    if (scene.has_media()) {
         m_segments.resize(m_pixels.size() * kMaxSegments);
         m_volume_radius =
             scene.render.initial_radius > 0 ? scene.render.initial_radius : m_radius_cap;
@@ -198,6 +198,11 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, Visi
         }
         if (absorbed_on_the_way) beta *= segment_transmittance(it, ray.direction, pass.lambda_nm);
         vp.path_length += it.hit.surface.t;
+        if (it.material->surfaceless) {  // a medium's edge: no event, no bounce
+            ray = {it.point(), ray.direction};
+            --depth;
+            continue;
+        }
         const Material& m = *it.material;
         const Vec3& p = it.point();
         const bool front_side = dot(ray.direction, it.normal()) < 0.0;
@@ -222,12 +227,11 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, Visi
             vp.albedo_bands = m.albedo_bands;
             const int samples = scene.render.light_samples;
             if (segments) {
-                // Through the atmosphere: the direct light dimmed on its way.
+                // Through media: the direct light dimmed on its way.
                 PathColour colour = path_colour();
                 LightSum e(colour);
                 add_direct_light(
-                    scene, scene.atmosphere ? &*scene.atmosphere : nullptr, p, samples, rng,
-                    [&](const Vec3& wi) { return dot(facing, wi); }, e);
+                    scene, p, samples, rng, [&](const Vec3& wi) { return dot(facing, wi); }, e);
                 if (m_ambient) e.add(*m_ambient, kPi);
                 colour *= m.albedo_bands;
                 found += colour.of(e) * (beta / kPi);
