@@ -39,6 +39,7 @@
 #include "render/image_io.h"
 #include "render_controller.h"
 #include "scene/light_spec.h"
+#include "scene/medium.h"
 #include "scene/object_types.h"
 #include "scene/scene_json.h"
 #include "scene_document.h"
@@ -200,6 +201,7 @@ MainWindow::MainWindow(QWidget* parent)
             [this] { m_renderer->restart(m_document->scene(), 0); });
     connect(m_panel, &PropertyPanel::edit_refused, this, &MainWindow::show_message);
     connect(m_panel, &PropertyPanel::pointer_requested, m_tree, &SceneTree::select_pointer);
+    connect(m_panel, &PropertyPanel::delete_requested, this, &MainWindow::delete_selected);
     connect(m_viewport, &Viewport::edit_refused, this, &MainWindow::show_message);
     connect(m_document, &SceneDocument::changed, this, [this] {
         // While the view or the section is dragged, a coarse frame at once for every step.
@@ -329,6 +331,8 @@ void MainWindow::build_menus() {
     QAction* floor = edit->addAction(tr("Add &floor"), this, &MainWindow::add_floor);
     floor->setObjectName("add_floor");  // not a declared type (those are "add:TYPE")
     tools->addAction(floor);
+    edit->addAction(tr("Add &atmosphere"), this, &MainWindow::add_atmosphere)
+        ->setObjectName("add_atmosphere");
     edit->addAction(tr("&Duplicate"), QKeySequence(tr("Ctrl+D")), this,
                     &MainWindow::duplicate_selected);
     edit->addAction(tr("De&lete"), QKeySequence::Delete, this, &MainWindow::delete_selected);
@@ -628,6 +632,19 @@ void MainWindow::add_floor() {
     m_tree->select_pointer(join_pointer("/objects", qsizetype(edited["objects"].size() - 1)));
 }
 
+void MainWindow::add_atmosphere() {
+    if (!m_document->json().contains("atmosphere")) {
+        json edited = m_document->json();
+        edited["atmosphere"] = medium_spec().example;
+        QString error;
+        if (!m_document->apply(edited, tr("Add atmosphere"), &error)) {
+            show_message(error);
+            return;
+        }
+    }
+    m_tree->select_pointer("/atmosphere");
+}
+
 void MainWindow::duplicate_selected() {
     const QString pointer = m_tree->selected_pointer();
     if (!pointer.startsWith("/objects/") && !pointer.startsWith("/lights/")) return;
@@ -648,11 +665,15 @@ void MainWindow::duplicate_selected() {
 
 void MainWindow::delete_selected() {
     const QString pointer = m_tree->selected_pointer();
-    if (!pointer.startsWith("/objects/") && !pointer.startsWith("/lights/")) return;
     json edited = m_document->json();
-    const QStringList tokens = split_pointer(pointer);  // {"objects", "3"}
-    const std::string list = tokens[0].toStdString();
-    edited[list].erase(size_t(tokens[1].toInt()));
+    if (pointer == "/atmosphere") {
+        edited.erase("atmosphere");
+    } else if (pointer.startsWith("/objects/") || pointer.startsWith("/lights/")) {
+        const QStringList tokens = split_pointer(pointer);  // {"objects", "3"}
+        edited[tokens[0].toStdString()].erase(size_t(tokens[1].toInt()));
+    } else {
+        return;
+    }
     QString error;
     if (!m_document->apply(edited, tr("Delete"), &error)) {
         show_message(error);

@@ -67,7 +67,11 @@ public:
     bool import_lens(const QString& path, QString* error = nullptr);
     // A box floor under the scene's objects (Edit ▸ Add floor), selected.
     void add_floor();
+    // Edit ▸ Add atmosphere: fog filling the space outside the objects, the declaration's
+    // example (scene/medium.h), selected; an atmosphere already there is selected.
+    void add_atmosphere();
     void duplicate_selected();
+    // The selected object, light or atmosphere.
     void delete_selected();
     // Edit ▸ Optimise lenses…: the dialog for the lenses on the selected lens's axis, shown
     // (it deletes itself when closed); null, with a message, when no lens is selected.

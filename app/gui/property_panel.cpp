@@ -217,6 +217,8 @@ void PropertyPanel::build_form() {
         build_camera();
     else if (m_pointer == "/render")
         build_render();
+    else if (m_pointer == "/atmosphere")
+        build_atmosphere();
     else if (m_pointer.startsWith("/materials/"))
         build_material_entry();
     else if (m_pointer.startsWith("/objects/"))
@@ -515,7 +517,8 @@ void PropertyPanel::add_param(const ParamSpec& p, const std::string& prefix) {
     }
 }
 
-void PropertyPanel::build_declared(const ElementSpec& spec, const std::vector<std::string>& skip) {
+void PropertyPanel::build_declared(const ElementSpec& spec, const std::vector<std::string>& skip,
+                                   const std::string& prefix) {
     std::string group;
     for (const ParamSpec& p : spec.params) {
         if (p.label.empty() || std::find(skip.begin(), skip.end(), p.key) != skip.end()) continue;
@@ -523,7 +526,7 @@ void PropertyPanel::build_declared(const ElementSpec& spec, const std::vector<st
             group = p.group;
             add_heading(QString::fromStdString(group));
         }
-        add_param(p);
+        add_param(p, prefix);
     }
 }
 
@@ -536,6 +539,20 @@ void PropertyPanel::build_camera() {
 void PropertyPanel::build_render() {
     add_heading(tr("Render settings"));
     build_declared(render_settings_spec());
+}
+
+void PropertyPanel::build_atmosphere() {
+    add_heading(tr("Atmosphere"));
+    build_medium_fields("");
+    auto* remove = new QPushButton(tr("Remove atmosphere"), m_form_widget);
+    remove->setObjectName("atmosphere:remove");
+    remove->setToolTip(tr("Clear air again (Edit ▸ Delete does the same)"));
+    connect(remove, &QPushButton::clicked, this, &PropertyPanel::delete_requested);
+    m_form->addRow(QString(), remove);
+}
+
+void PropertyPanel::build_medium_fields(const std::string& prefix) {
+    build_declared(medium_spec(), {}, prefix);
 }
 
 template <class Edit>
@@ -918,7 +935,7 @@ void PropertyPanel::build_medium() {
                    commit("", element, tr("medium"));
                });
     if (!on) return;
-    for (const ParamSpec& p : medium_spec().params) add_param(p, "medium/");
+    build_medium_fields("medium/");
 }
 
 void PropertyPanel::build_implicit() {

@@ -1,12 +1,12 @@
 #pragma once
 // Edits what is selected in the scene tree: a form of typed fields (numbers with their valid
 // ranges, vectors, colours, choices) built for the kind of element selected: camera, render
-// settings, material, sphere, triangle, disc, rectangle (and the detector flag of these three),
-// lens (both forms, every surface shape: flat, sphere, conic, asphere, typed sag formula), implicit
-// solid, light. Formulas are checked as they are typed: the reason one would be refused shows next
-// to the field at once, and the field commits only a formula that parses. Each committed field is
-// one undoable edit; a value the scene reader refuses is not applied and the reason shows under the
-// form.
+// settings, atmosphere, material, sphere, triangle, disc, rectangle (and the detector flag of these
+// three), lens (both forms, every surface shape: flat, sphere, conic, asphere, typed sag formula),
+// implicit solid, light. Formulas are checked as they are typed: the reason one would be refused
+// shows next to the field at once, and the field commits only a formula that parses. Each committed
+// field is one undoable edit; a value the scene reader refuses is not applied and the reason shows
+// under the form.
 
 #include <QLabel>
 #include <QPointer>
@@ -43,6 +43,9 @@ signals:
     // An edit of the whole document (a material renamed, added, made unique) moved what
     // should be selected: the tree selects `pointer`.
     void pointer_requested(const QString& pointer);
+    // The form's Remove button (the atmosphere's): the selected element goes, as Edit ▸ Delete
+    // removes it.
+    void delete_requested();
 
 private:
     void rebuild();
@@ -87,11 +90,16 @@ private:
     // A declared parameter's field (param_spec.h): its label, fallback, range and choices.
     void add_param(const ParamSpec& p, const std::string& prefix = "");
     // Every parameter of `spec` the editor shows (those with a label) but `skip`, under the
-    // declared headings.
-    void build_declared(const ElementSpec& spec, const std::vector<std::string>& skip = {});
+    // declared headings; `prefix` is where the element is, relative to the selected one.
+    void build_declared(const ElementSpec& spec, const std::vector<std::string>& skip = {},
+                        const std::string& prefix = "");
 
     void build_camera();
     void build_render();
+    void build_atmosphere();
+    // A medium object's fields (scene/medium.h) at `prefix`: "" for the atmosphere itself,
+    // "medium/" for a shape's.
+    void build_medium_fields(const std::string& prefix);
     void build_material(const std::string& prefix);
     // The glass of the material at `material_key`: an editable list of every glass lenslab
     // knows, searched as one types; `current` is the glass named now (empty: an index).

@@ -37,9 +37,8 @@ RenderController::~RenderController() {
 
 void RenderController::restart(const Scene& scene, int delay_ms, RenderQuality quality) {
     Scene preview = scene;
-    // The path tracer alone renders media (an atmosphere, a shape's) so far.
-    if (!m_use_scene_integrator)
-        preview.render.integrator = scene.has_media() ? integrators::kPath : integrators::kView;
+    // The view's integrator renders media too (sppm's volume photons: an atmosphere, a shape's).
+    if (!m_use_scene_integrator) preview.render.integrator = integrators::kView;
     const int largest = std::max(preview.render.width, preview.render.height);
     const int limit = quality == RenderQuality::Draft ? std::max(1, m_preview_size / kDraftDivisor)
                                                       : m_preview_size;

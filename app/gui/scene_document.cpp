@@ -8,6 +8,7 @@
 
 #include "edit_scene_command.h"
 #include "scene/json_reader.h"
+#include "scene/medium.h"
 #include "scene/render_settings_json.h"
 
 namespace lenslab::gui {
@@ -33,7 +34,7 @@ std::set<std::string> differing_blocks(const nlohmann::json& a, const nlohmann::
 
 // Blocks the installed scene can take alone, keeping its objects, materials and BVH.
 bool updatable_alone(const std::string& key) {
-    return key == "camera" || key == "render" || key == "lights";
+    return key == "camera" || key == "render" || key == "lights" || key == "atmosphere";
 }
 }  // namespace
 
@@ -68,6 +69,10 @@ SceneUpdate SceneDocument::read_update(const nlohmann::json& j) const {
     }
     if (blocks.count("lights")) {
         update.lights = j.contains("lights") ? lights_from_json(j.at("lights")) : SceneLights{};
+    }
+    if (blocks.count("atmosphere")) {
+        update.atmosphere.emplace(j.contains("atmosphere") ? read_atmosphere(j.at("atmosphere"))
+                                                           : std::nullopt);
     }
     return update;
 }
@@ -173,13 +178,15 @@ void SceneDocument::install(const nlohmann::json& json) {
 }
 
 void SceneDocument::install(const nlohmann::json& json, SceneUpdate update) {
-    // Nothing the BVH holds depends on the camera, the render settings or the lights.
+    // Nothing the BVH holds depends on the camera, the render settings, the lights or the
+    // atmosphere.
     if (update.scene) {
         m_scene = std::move(*update.scene);
     } else {
         if (update.camera) m_scene.camera = *update.camera;
         if (update.render) m_scene.render = *update.render;
         if (update.lights) m_scene.set_lights(std::move(*update.lights));
+        if (update.atmosphere) m_scene.atmosphere = *update.atmosphere;
     }
     m_json = json;
     emit changed();

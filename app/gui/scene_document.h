@@ -3,8 +3,8 @@
 // the file it came from, and the undo stack. Every edit is checked by the same reader the
 // command line uses, so the editor cannot hold a scene that `lenslab render` would refuse.
 // An edit is read once and that result installed, and rebuilds only what it changed: an edit
-// of the camera (a camera drag), the render settings or the lights alone keeps the installed
-// objects and their BVH.
+// of the camera (a camera drag), the render settings, the lights or the atmosphere alone keeps
+// the installed objects and their BVH.
 
 #include <QObject>
 #include <QString>
@@ -19,13 +19,15 @@
 namespace lenslab::gui {
 
 // What installing a checked document changes in the installed scene: a whole new scene, or
-// only the blocks that differ among camera, render settings and lights (nothing set: nothing
-// the scene holds differs, e.g. the description).
+// only the blocks that differ among camera, render settings, lights and atmosphere (nothing
+// set: nothing the scene holds differs, e.g. the description).
 struct SceneUpdate {
     std::optional<Scene> scene;
     std::optional<CameraSettings> camera;
     std::optional<RenderSettings> render;
     std::optional<SceneLights> lights;
+    // Set when the atmosphere differs: the new one, or none (clear air).
+    std::optional<std::optional<Medium>> atmosphere;
 };
 
 class SceneDocument : public QObject {
@@ -75,7 +77,7 @@ signals:
 
 private:
     // Reads `j` with the scene reader, only as far as it differs from the installed document
-    // (the camera, render or lights blocks alone, or all of it). Throws SceneError.
+    // (the camera, render, lights or atmosphere blocks alone, or all of it). Throws SceneError.
     SceneUpdate read_update(const nlohmann::json& j) const;
     bool check(const nlohmann::json& j, SceneUpdate& out, QString* error) const;
     // `merge_pointer`: set for a set_value, whose step merges with the next one of the same

@@ -55,6 +55,7 @@ void SceneTree::rebuild() {
     const auto& j = m_document->json();
     add_item(invisibleRootItem(), tr("Camera"), "/camera");
     add_item(invisibleRootItem(), tr("Render settings"), "/render");
+    if (j.contains("atmosphere")) add_item(invisibleRootItem(), tr("Atmosphere"), "/atmosphere");
     auto* materials = add_item(invisibleRootItem(), tr("Materials"), "");
     if (j.contains("materials")) {
         for (const auto& [name, value] : j["materials"].items()) {

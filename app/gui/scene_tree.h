@@ -1,7 +1,7 @@
 #pragma once
-// The scene as a tree: camera, render settings, materials, objects and lights. Each item
-// carries the JSON pointer of what it shows ("/objects/3"), which is what selection means
-// everywhere in the editor.
+// The scene as a tree: camera, render settings, the atmosphere (when there is one),
+// materials, objects and lights. Each item carries the JSON pointer of what it shows
+// ("/objects/3"), which is what selection means everywhere in the editor.
 
 #include <QTreeWidget>
 

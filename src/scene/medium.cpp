@@ -55,4 +55,10 @@ Medium read_medium(const nlohmann::json& j, const std::string& path) {
     return m;
 }
 
+std::optional<Medium> read_atmosphere(const nlohmann::json& j) {
+    Medium m = read_medium(j, "atmosphere");
+    if (m.is_clear()) return std::nullopt;
+    return m;
+}
+
 }  // namespace lenslab

@@ -6,6 +6,7 @@
 // power, sigma_t = absorption + scattering (Beer–Lambert).
 
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <string>
 
 #include "optics/spectrum.h"
@@ -37,5 +38,9 @@ const ElementSpec& medium_spec();
 
 // Reads a medium object at JSON path `path`. Throws SceneError.
 Medium read_medium(const nlohmann::json& j, const std::string& path);
+
+// The scene's atmosphere from its `"atmosphere"` object: none when it is clear (no light is
+// lost in it, so the tracers need not look for media). Throws SceneError.
+std::optional<Medium> read_atmosphere(const nlohmann::json& j);
 
 }  // namespace lenslab

@@ -361,10 +361,7 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
     if (const json* jr = r.find("render")) read_render(*jr, scene.render);
     std::map<std::string, int> by_name;
     if (const json* jm = r.find("materials")) by_name = read_materials(*jm, scene.materials);
-    if (const json* ja = r.find("atmosphere")) {
-        scene.atmosphere = read_medium(*ja, "atmosphere");
-        if (scene.atmosphere->is_clear()) scene.atmosphere.reset();
-    }
+    if (const json* ja = r.find("atmosphere")) scene.atmosphere = read_atmosphere(*ja);
     if (const json* jo = r.find("objects")) {
         if (!jo->is_array()) throw SceneError("objects", "must be an array");
         check_count(jo->size(), kMaxObjects, "objects", "objects");

@@ -1,0 +1,186 @@
+// The scene's atmosphere in the editor: added from the Edit menu with its declaration's
+// example, edited through a form generated from that declaration (scene/medium.h), every step
+// undoable, removed from its form or with Edit ▸ Delete, none of it rebuilding the objects'
+// BVH; and the view renders it with its usual integrator.
+
+#include <QAction>
+#include <QPushButton>
+#include <QTreeWidgetItemIterator>
+#include <QtTest>
+#include <memory>
+
+#include "accel/bvh_build.h"
+#include "main_window.h"
+#include "number_field.h"
+#include "property_panel.h"
+#include "render/integrator_names.h"
+#include "render_controller.h"
+#include "scene/medium.h"
+#include "scene_document.h"
+#include "scene_tree.h"
+
+using lenslab::ParamKind;
+using lenslab::ParamSpec;
+using lenslab::gui::MainWindow;
+using lenslab::gui::NumberField;
+using lenslab::gui::RenderController;
+using nlohmann::json;
+
+namespace {
+
+const QString kSmallScene = QStringLiteral(LENSLAB_TEST_DATA "/gui/small_scene.json");
+
+NumberField* atmosphere_field(MainWindow& w, const QString& name) {
+    return w.panel()->findChild<NumberField*>("field:" + name);
+}
+
+bool tree_shows(MainWindow& w, const QString& pointer) {
+    for (QTreeWidgetItemIterator it(w.tree()); *it; ++it) {
+        if ((*it)->data(0, Qt::UserRole).toString() == pointer) return true;
+    }
+    return false;
+}
+
+const json& atmosphere_json(MainWindow& w) { return w.document()->json()["atmosphere"]; }
+
+// Waits for the first pass of a render started after now; its integrator's name, or "" when
+// none came. Counted through a queued connection, on this thread (frame_ready is emitted on
+// the render thread), into a shared result a late frame can still write.
+QString integrator_of_fresh_frame(MainWindow& w, int timeout_ms = 20000) {
+    const auto integrator = std::make_shared<QString>();
+    const QMetaObject::Connection watch = QObject::connect(
+        w.renderer(), &RenderController::frame_ready, &w,
+        [integrator](const QImage&, int passes, qint64, double, const QString& name) {
+            if (passes == 1 && integrator->isEmpty()) *integrator = name;
+        },
+        Qt::QueuedConnection);
+    QElapsedTimer t;
+    t.start();
+    while (integrator->isEmpty() && t.elapsed() < timeout_ms) QTest::qWait(5);
+    QObject::disconnect(watch);
+    return *integrator;
+}
+
+}  // namespace
+
+class TestAtmosphereEdits : public QObject {
+    Q_OBJECT
+
+private slots:
+    void an_atmosphere_is_added_edited_undone_and_removed() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        QVERIFY(!w.document()->json().contains("atmosphere"));
+        QVERIFY(!tree_shows(w, "/atmosphere"));
+        const uint64_t builds = lenslab::bvh_build_count();
+
+        QAction* add = w.findChild<QAction*>("add_atmosphere");
+        QVERIFY(add);
+        add->trigger();
+        QCOMPARE(atmosphere_json(w), lenslab::medium_spec().example);
+        QVERIFY(w.document()->scene().atmosphere);
+        QVERIFY(tree_shows(w, "/atmosphere"));
+        QCOMPARE(w.tree()->selected_pointer(), QString("/atmosphere"));
+        QCOMPARE(w.panel()->pointer(), QString("/atmosphere"));
+
+        // Every labelled key of the declaration has its field, showing the example's value
+        // or the declared default.
+        for (const ParamSpec& p : lenslab::medium_spec().params) {
+            if (p.label.empty()) continue;
+            const bool triple = p.kind == ParamKind::Colour;
+            const QString name = QString::fromStdString(p.key) + (triple ? ".x" : "");
+            NumberField* box = atmosphere_field(w, name);
+            QVERIFY2(box, qPrintable(name));
+            const json& example = lenslab::medium_spec().example;
+            const json shown = example.contains(p.key) ? example[p.key] : p.fallback;
+            const double first = shown.is_array() ? shown[0].get<double>() : shown.get<double>();
+            QCOMPARE(box->value(), first);
+        }
+
+        // The green band's scattering: a grey number becomes a triple.
+        NumberField* green = atmosphere_field(w, "scattering.y");
+        QVERIFY(green);
+        green->setText("0.2");
+        emit green->editingFinished();
+        QCOMPARE(atmosphere_json(w)["scattering"], json::array({0.05, 0.2, 0.05}));
+        QVERIFY(!w.document()->scene().atmosphere->is_grey());
+        QCOMPARE(atmosphere_json(w)["g"].get<double>(), 0.3);
+
+        // Undo: the example again, in the document, the scene and the form.
+        w.document()->undo_stack()->undo();
+        QCOMPARE(atmosphere_json(w), lenslab::medium_spec().example);
+        QVERIFY(w.document()->scene().atmosphere->is_grey());
+        QCOMPARE(atmosphere_field(w, "scattering.y")->value(), 0.05);
+        // Undo again: clear air, and no atmosphere in the tree.
+        w.document()->undo_stack()->undo();
+        QVERIFY(!w.document()->json().contains("atmosphere"));
+        QVERIFY(!w.document()->scene().atmosphere);
+        QVERIFY(!tree_shows(w, "/atmosphere"));
+
+        // Redone, then removed with the form's button (one undo step).
+        w.document()->undo_stack()->redo();
+        w.document()->undo_stack()->redo();
+        QCOMPARE(atmosphere_json(w)["scattering"], json::array({0.05, 0.2, 0.05}));
+        w.tree()->select_pointer("/atmosphere");
+        auto* remove = w.panel()->findChild<QPushButton*>("atmosphere:remove");
+        QVERIFY(remove);
+        QTest::mouseClick(remove, Qt::LeftButton);
+        QVERIFY(!w.document()->json().contains("atmosphere"));
+        QVERIFY(!w.document()->scene().atmosphere);
+        QVERIFY(!tree_shows(w, "/atmosphere"));
+        QCOMPARE(w.panel()->pointer(), QString());
+        w.document()->undo_stack()->undo();
+        QCOMPARE(atmosphere_json(w)["scattering"], json::array({0.05, 0.2, 0.05}));
+
+        // Edit ▸ Delete removes it too.
+        w.tree()->select_pointer("/atmosphere");
+        w.delete_selected();
+        QVERIFY(!w.document()->json().contains("atmosphere"));
+        // Fog is no part of the objects' acceleration structure.
+        QCOMPARE(lenslab::bvh_build_count() - builds, uint64_t(0));
+    }
+
+    // Adding an atmosphere to a scene that has one selects it and changes nothing.
+    void adding_a_second_atmosphere_selects_the_first() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.add_atmosphere();
+        NumberField* g = atmosphere_field(w, "g");
+        QVERIFY(g);
+        g->setText("-0.5");
+        emit g->editingFinished();
+        const int steps = w.document()->undo_stack()->count();
+        w.tree()->select_pointer("/camera");
+        w.add_atmosphere();
+        QCOMPARE(w.document()->undo_stack()->count(), steps);
+        QCOMPARE(atmosphere_json(w)["g"].get<double>(), -0.5);
+        QCOMPARE(w.tree()->selected_pointer(), QString("/atmosphere"));
+    }
+
+    // Fog with no absorption and no scattering is clear air to the renderer (read as none, the
+    // same rule as the scene reader's) while the file keeps it.
+    void a_clear_atmosphere_is_none() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.add_atmosphere();
+        QVERIFY(w.document()->set_value(json::json_pointer("/atmosphere/scattering"), 0, "clear",
+                                        nullptr));
+        QVERIFY(w.document()->json().contains("atmosphere"));
+        QVERIFY(!w.document()->scene().atmosphere);
+        w.document()->undo_stack()->undo();
+        QVERIFY(w.document()->scene().atmosphere);
+    }
+
+    // sppm renders media, so the view keeps its integrator for a scene with fog.
+    void the_view_renders_an_atmosphere_with_its_usual_integrator() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        w.add_atmosphere();
+        QCOMPARE(integrator_of_fresh_frame(w),
+                 QString::fromUtf8(lenslab::integrators::kView.data(),
+                                   qsizetype(lenslab::integrators::kView.size())));
+    }
+};
+
+QTEST_MAIN(TestAtmosphereEdits)
+#include "test_atmosphere_edits.moc"
