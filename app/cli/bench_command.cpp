@@ -94,8 +94,11 @@ int run_convergence_bench(const ConvergenceArgs& a) {
     write_text_atomically((dir / "convergence.csv").string(), convergence_csv(r));
     write_image(r.reference, (dir / "reference.png").string());
     write_image(r.sppm_last, (dir / "sppm.png").string());
+    const bool region_apart = r.region_reference.width() > 0;
+    if (region_apart) write_image(r.region_reference, (dir / "region_reference.png").string());
     const bool plotted = plot_convergence(dir, r);
-    std::printf("wrote %s/convergence.csv, reference.png, sppm.png%s\n", dir.c_str(),
+    std::printf("wrote %s/convergence.csv, reference.png, %ssppm.png%s\n", dir.c_str(),
+                region_apart ? "region_reference.png, " : "",
                 plotted ? ", convergence_time.png, convergence_passes.png"
                         : " (install gnuplot for the plots: convergence.gp is written)");
     return 0;
@@ -266,11 +269,18 @@ Action add_bench_command(CLI::App& app) {
     sppm->add_option("--aim-photons", conv->aim_photons,
                      "on: aim caustic photons at the glass (default: the scene's); off: uniform")
         ->check(CLI::IsMember({"on", "off"}));
-    sppm->add_option("--region", conv->region,
-                     "Also measure the error in the pixels X0,Y0,X1,Y1 (a caustic, say)")
-        ->delimiter(',')
-        ->expected(4)
-        ->check(CLI::Range(0, 16384));
+    CLI::Option* region =
+        sppm->add_option("--region", conv->region,
+                         "Also measure the error in the pixels X0,Y0,X1,Y1 (a caustic, say)")
+            ->delimiter(',')
+            ->expected(4)
+            ->check(CLI::Range(0, 16384));
+    sppm->add_option("--region-spp", c.region_spp,
+                     "Render the region's reference apart at this many samples per pixel "
+                     "(default: the reference's)")
+        ->check(whole_number<int>())
+        ->check(CLI::Range(1, 1 << 24))
+        ->needs(region);
 
     const Action povray = add_bench_povray_command(*bench);
     CLI::App* povray_cmd = bench->get_subcommand("povray");

@@ -26,12 +26,23 @@ public:
     virtual RenderStats stats(double /*seconds*/) const { return {}; }
 };
 
+// A rectangle of pixels [x0, x1) x [y0, y1).
+struct PixelWindow {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+};
+
 // Base for integrators that estimate radiance along independent camera rays. Handles the
 // tiles, the threads, the per-pixel random streams and the pixel samples.
 class PixelIntegrator : public Integrator {
 public:
     bool render(const Scene& scene, const Camera& camera, Film& film,
                 RenderControl& control) override;
+    // Renders only the pixels of `window`, each exactly as render() would (every pixel has a
+    // random stream of its own), and leaves the others black: a small part of an image at
+    // far more samples than the whole could take (a caustic's reference, bench/).
+    bool render_window(const Scene& scene, const Camera& camera, Film& film, RenderControl& control,
+                       const PixelWindow& window);
 
 protected:
     explicit PixelIntegrator(const Scene& scene) : m_scene(scene) {}

@@ -54,6 +54,11 @@ void gather_tiles_to_root(Communicator& comm, Film& film, int tiles) {
 
 bool PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& film,
                              RenderControl& control) {
+    return render_window(scene, camera, film, control, {0, 0, film.width(), film.height()});
+}
+
+bool PixelIntegrator::render_window(const Scene& scene, const Camera& camera, Film& film,
+                                    RenderControl& control, const PixelWindow& window) {
     const int w = film.width(), h = film.height();
     const int tiles_x = (w + kTileSize - 1) / kTileSize;
     const int tiles_y = (h + kTileSize - 1) / kTileSize;
@@ -65,17 +70,23 @@ bool PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& fil
     std::atomic<int> done{0};
     // In a job of several ranks each renders the tiles dealt to it.
     Communicator& comm = control.cluster();
+    auto in_window = [&](int tile) {
+        const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+        return x0 < window.x1 && x0 + kTileSize > window.x0 && y0 < window.y1 &&
+               y0 + kTileSize > window.y0;
+    };
     int mine = 0;
-    for (int tile = 0; tile < tiles; ++tile) mine += dealt_to(tile, comm);
+    for (int tile = 0; tile < tiles; ++tile) mine += dealt_to(tile, comm) && in_window(tile);
 
     tbb::parallel_for(
         tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& range) {
             for (int tile = range.begin(); tile != range.end(); ++tile) {
-                if (!dealt_to(tile, comm)) continue;
+                if (!dealt_to(tile, comm) || !in_window(tile)) continue;
                 if (control.cancelled()) return;
                 const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
                 for (int y = y0; y < std::min(y0 + kTileSize, h); ++y) {
                     for (int x = x0; x < std::min(x0 + kTileSize, w); ++x) {
+                        if (!window.contains(x, y)) continue;
                         // Checked per pixel: one pixel of a deep scene at many spp can take long.
                         if (control.cancelled()) return;
                         Rng rng(scene.render.seed, pixel_stream(x, y, w));
@@ -108,7 +119,7 @@ bool PixelIntegrator::render(const Scene& scene, const Camera& camera, Film& fil
                 control.report(static_cast<double>(++done) / mine);
             }
         });
-    if (comm.alone()) return done == tiles;
+    if (comm.alone()) return done == mine;
     gather_tiles_to_root(comm, film, tiles);
     uint64_t unfinished[1] = {done == mine ? 0u : 1u};
     sum_in_rank_order(comm, unfinished);

@@ -1,12 +1,16 @@
 #include "bench/sppm_convergence.h"
 
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
+#include "render/integrator.h"
 #include "render/integrator_names.h"
+#include "render/integrator_registry.h"
 #include "render/progressive_render.h"
 #include "render/render_session.h"
 
@@ -24,6 +28,21 @@ std::string format(const char* fmt, auto... args) {
     char line[256];
     std::snprintf(line, sizeof line, fmt, args...);
     return line;
+}
+
+// The path tracer's image of `window` alone: each pixel as a whole render would give it.
+Film render_path_window(const Scene& scene, const PixelWindow& window, int threads,
+                        double& seconds) {
+    Film film(scene.render.width, scene.render.height);
+    const Camera camera(scene.camera, scene.render.width, scene.render.height);
+    const std::unique_ptr<Integrator> integrator = make_integrator(scene);
+    auto* path = dynamic_cast<PixelIntegrator*>(integrator.get());
+    RenderControl control;
+    const auto t0 = std::chrono::steady_clock::now();
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    arena.execute([&] { path->render_window(scene, camera, film, control, window); });
+    seconds = seconds_since(t0);
+    return film;
 }
 
 }  // namespace
@@ -91,6 +110,16 @@ ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings&
     r.reference = std::move(reference.film);
     r.reference_seconds = reference.seconds;
     log(format("reference: path, %d spp, %.2f s", s.reference_spp, r.reference_seconds));
+    if (s.has_region() && s.region_spp > 0) {
+        Scene region = ref;
+        region.render.spp = s.region_spp;
+        r.region_reference =
+            render_path_window(region, {s.region[0], s.region[1], s.region[2], s.region[3]},
+                               s.threads, r.region_reference_seconds);
+        log(format("region reference: path, %d spp, %.2f s", s.region_spp,
+                   r.region_reference_seconds));
+    }
+    const Film& region_reference = s.region_spp > 0 ? r.region_reference : r.reference;
 
     auto add = [&](const std::string& integrator, int amount, double seconds, const Film& film) {
         ConvergencePoint p{
@@ -99,7 +128,7 @@ ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings&
             seconds,
             block_relative_error(film, r.reference),
             rms_relative_error(film, r.reference),
-            s.has_region() ? region_relative_error(film, r.reference, s.region) : 0.0};
+            s.has_region() ? region_relative_error(film, region_reference, s.region) : 0.0};
         r.points.push_back(p);
         log(format("%s %d: %.3f s, block error %.4f, rms error %.4f", integrator.c_str(), amount,
                    seconds, p.block_error, p.rms_error) +

@@ -22,6 +22,9 @@ struct ConvergenceSettings {
     // A rectangle of pixels [x0, x1) x [y0, y1) measured on its own too (a caustic, say);
     // empty (x1 <= x0) for none.
     int region[4] = {0, 0, 0, 0};
+    // Samples per pixel of the region's own reference, rendered apart (a caustic needs far
+    // more than the whole image can be given); 0: the region is measured on the reference.
+    int region_spp = 0;
     bool has_region() const { return region[2] > region[0] && region[3] > region[1]; }
 };
 
@@ -37,6 +40,8 @@ struct ConvergencePoint {
 struct ConvergenceResult {
     Film reference;
     double reference_seconds = 0;
+    Film region_reference;  // with region_spp: the region's pixels only, the rest black
+    double region_reference_seconds = 0;
     std::vector<ConvergencePoint> points;
     Film sppm_last;  // the sppm image after the most passes
 };
@@ -49,8 +54,9 @@ double rms_relative_error(const Film& a, const Film& reference);
 // rms_relative_error over the pixels [x0, x1) x [y0, y1) only (the reference's mean there).
 double region_relative_error(const Film& a, const Film& reference, const int region[4]);
 
-// Renders the reference (path, `reference_spp`, a seed of its own), then sppm pass by pass
-// and path at each sample count. `log` receives one line per measurement.
+// Renders the reference (path, `reference_spp`, a seed of its own; the region apart at
+// `region_spp`), then sppm pass by pass and path at each sample count. `log` receives one line per
+// measurement.
 ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings& s,
                                   const std::function<void(const std::string&)>& log);
 

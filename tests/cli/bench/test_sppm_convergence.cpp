@@ -19,6 +19,8 @@ Film filled(int w, int h, float v) {
     return f;
 }
 
+double luminance_of(const PixelRgb& p) { return p.r + p.g + p.b; }
+
 TEST(SppmConvergence, ErrorsAreRelativeToTheReference) {
     const Film reference = filled(16, 16, 2.0f), off = filled(16, 16, 2.5f);
     EXPECT_DOUBLE_EQ(block_relative_error(reference, reference), 0.0);
@@ -53,6 +55,27 @@ TEST(SppmConvergence, RunsSppmAndPathAgainstTheReference) {
     EXPECT_EQ(csv.rfind("integrator,passes_or_spp,seconds,block_error,rms_error,region_error\n", 0),
               0u);
     EXPECT_NE(csv.find("\npath,1,"), std::string::npos) << csv;
+}
+
+TEST(SppmConvergence, TheRegionHasAReferenceOfItsOwnAtItsSampleCount) {
+    ConvergenceSettings s;
+    s.width = s.height = 16;
+    s.reference_spp = 1;
+    s.passes = {1};
+    s.path_spp = {};
+    s.threads = 1;
+    s.region[0] = 6, s.region[1] = 7, s.region[2] = 10, s.region[3] = 9;  // on the back wall
+    s.region_spp = 64;
+    Scene scene = load_scene_file(LENSLAB_SOURCE_DIR "/scenes/caustic_room.json");
+    scene.render.pass_photons = 500;
+    const ConvergenceResult r = run_convergence(scene, s, [](const std::string&) {});
+    ASSERT_EQ(r.region_reference.width(), 16);
+    EXPECT_GT(luminance_of(r.region_reference.at(7, 8)), 0.0);
+    EXPECT_EQ(luminance_of(r.region_reference.at(2, 2)), 0.0) << "outside the region";
+    // The region's error is measured against its own reference, not the 1-spp whole one.
+    ASSERT_EQ(r.points.size(), 1u);
+    EXPECT_DOUBLE_EQ(r.points[0].region_error,
+                     region_relative_error(r.sppm_last, r.region_reference, s.region));
 }
 
 }  // namespace
