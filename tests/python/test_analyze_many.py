@@ -40,6 +40,8 @@ def test_a_batch_equals_one_call_each(threads):
     assert all(isinstance(a, lenslab.Analysis) for a in batch)
     assert batch == alone
     assert [dict(a) for a in batch] == [dict(a) for a in alone]  # the keys' order too
+    # The JSON text itself: bit for bit, -0.0 included.
+    assert [a._run.document() for a in batch] == [a._run.document() for a in alone]
     assert batch[-2]["scene"] == DOUBLET
     for many, one in zip(batch, alone):
         assert many.spot_points.keys() == one.spot_points.keys()
