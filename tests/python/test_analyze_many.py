@@ -91,6 +91,11 @@ def test_a_missing_file_names_its_index():
         lenslab.analyze_many([SINGLET, "scenes/no_such_scene.json"])
 
 
+def test_something_not_a_scene_names_its_index():
+    with pytest.raises(TypeError, match=r"^scenes\[2\]: expected a lenslab.Scene, a dict or a "):
+        lenslab.analyze_many([SINGLET, DOUBLET, 42])
+
+
 def test_a_scene_the_bench_cannot_measure_names_its_index():
     with pytest.raises(lenslab.SceneError) as e:
         lenslab.analyze_many([DOUBLET, "scenes/prism.json"])
