@@ -6,7 +6,8 @@ against the command line (`lenslab analyze FILE --json`, a process and a file pe
 
 Prints the times and their ratios (docs/performance.md records them): the Python sweep one call
 after another, asking only for the two figures (report=[...]); the same over a thread pool (the
-module releases the GIL while it computes); and the command line. Each Python sweep is the best
+module releases the GIL while it computes); one lenslab.analyze_many call for the 100 bendings,
+on one worker thread and on one per core; and the command line. Each Python sweep is the best
 of five runs, the command line's the best of two. Not part of the test suite: a wall-clock
 figure depends on the machine.
 """
@@ -46,6 +47,11 @@ def efl_and_spot(scene: dict) -> tuple[float, float]:
     return r["efl"], r["rms_spot_best"]
 
 
+def batch(scenes: list[dict], threads=None) -> list[tuple[float, float]]:
+    results = lenslab.analyze_many(scenes, threads=threads, f_number=8, report=KEYS)
+    return [(r["efl"], r["rms_spot_best"]) for r in results]
+
+
 def best_of(runs: int, sweep) -> tuple[float, list]:
     best, result = float("inf"), None
     for _ in range(runs):
@@ -77,12 +83,17 @@ def main() -> None:
     workers = os.cpu_count() or 1
     with ThreadPoolExecutor(workers) as pool:
         pooled_s, from_pool = best_of(5, lambda: list(pool.map(efl_and_spot, scenes)))
+    batch1_s, from_batch1 = best_of(5, lambda: batch(scenes, threads=1))
+    batch_s, from_batch = best_of(5, lambda: batch(scenes))
     cli_s, from_cli = best_of(2, lambda: cli_sweep(cli, scenes))
 
-    assert from_python == from_cli == from_pool, "the module and the command line disagree"
+    assert from_python == from_cli == from_pool == from_batch1 == from_batch, \
+        "the module and the command line disagree"
     print(f"100 bendings, EFL and RMS spot: command line {cli_s * 1e3:.1f} ms; "
           f"Python {python_s * 1e3:.1f} ms ({cli_s / python_s:.0f}x); "
           f"Python on {workers} threads {pooled_s * 1e3:.1f} ms ({cli_s / pooled_s:.0f}x); "
+          f"analyze_many on 1 thread {batch1_s * 1e3:.1f} ms ({cli_s / batch1_s:.0f}x); "
+          f"analyze_many on {workers} threads {batch_s * 1e3:.1f} ms ({cli_s / batch_s:.0f}x); "
           f"a call {python_s * 10:.3f} ms, a command-line run {cli_s * 10:.2f} ms")
 
 

@@ -1,6 +1,6 @@
 # Type stub of the `lenslab` package (docs/python.md).
 import os
-from collections.abc import Iterator, Mapping, MutableMapping
+from collections.abc import Iterable, Iterator, Mapping, MutableMapping
 from typing import Any, Callable, Optional, Sequence, Union
 
 import numpy as np
@@ -116,6 +116,39 @@ def analyze(
     wavelength_weights: Optional[Sequence[float]] = ...,
     report: Optional[Sequence[str]] = ...,
 ) -> Analysis: ...
+def analyze_many(
+    scenes: Iterable[_SceneSource],
+    *,
+    threads: Optional[int] = ...,
+    progress: Optional[Callable[[float], Any]] = ...,
+    wavelength: Optional[float] = ...,
+    wavelengths: Optional[Sequence[float]] = ...,
+    aperture: Optional[float] = ...,
+    lens: Optional[str] = ...,
+    unit: Optional[str] = ...,
+    stop: int = ...,
+    epd: Optional[float] = ...,
+    f_number: Optional[float] = ...,
+    object_distance: Optional[float] = ...,
+    fields: Optional[Sequence[float]] = ...,
+    field_heights: Optional[Sequence[float]] = ...,
+    seidel: bool = ...,
+    psf: bool = ...,
+    mtf: bool = ...,
+    mtf_frequencies: Optional[Sequence[float]] = ...,
+    spots: bool = ...,
+    rings: int = ...,
+    fans: bool = ...,
+    fan_points: int = ...,
+    image_distance: Optional[float] = ...,
+    field_curves: bool = ...,
+    field_curve_points: int = ...,
+    focal_shift: bool = ...,
+    band: Optional[Sequence[float]] = ...,
+    focal_shift_points: int = ...,
+    wavelength_weights: Optional[Sequence[float]] = ...,
+    report: Optional[Sequence[str]] = ...,
+) -> list[Analysis]: ...
 
 class Detector:
     summary: dict[str, Any]

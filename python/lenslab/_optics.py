@@ -2,16 +2,18 @@
 
 from __future__ import annotations
 
+import inspect
 import json
 import math
 import numbers
 from collections.abc import Iterable
-from typing import Any, Optional, Sequence
+from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
 
 from . import _lenslab
 from ._document import JsonDocument
+from ._render import _thread_count
 from ._scene import SceneSource, source_json
 
 
@@ -99,26 +101,24 @@ class Analysis(JsonDocument):
         return f"<lenslab.Analysis: {', '.join(self._data)}>"
 
 
-def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
-            wavelengths: Optional[Sequence[float]] = None, aperture: Optional[float] = None,
-            lens: Optional[str] = None, unit: Optional[str] = None, stop: int = 1,
-            epd: Optional[float] = None, f_number: Optional[float] = None,
-            object_distance: Optional[float] = None,
-            fields: Optional[Sequence[float]] = None,
-            field_heights: Optional[Sequence[float]] = None, seidel: bool = False,
-            psf: bool = False, mtf: bool = False,
-            mtf_frequencies: Optional[Sequence[float]] = None, spots: bool = False,
-            rings: int = 6, fans: bool = False, fan_points: int = 21,
-            image_distance: Optional[float] = None, field_curves: bool = False,
-            field_curve_points: int = 11, focal_shift: bool = False,
-            band: Optional[Sequence[float]] = None, focal_shift_points: int = 21,
-            wavelength_weights: Optional[Sequence[float]] = None,
-            report: Optional[Sequence[str]] = None) -> Analysis:
-    """The optical bench: `lenslab analyze FILE --json` with the same options (named as the
-    command line's, "-" as "_"), as a lenslab.Analysis. report: only these top-level keys of
-    the document (e.g. ["efl", "rms_spot_best"]), and only what they need is computed.
-    seidel changes nothing here (the document always has the Seidel sums). Bad options raise ValueError; a scene the bench cannot
-    measure raises lenslab.SceneError with the JSON path."""
+def _request_json(*, wavelength: Optional[float] = None,
+                  wavelengths: Optional[Sequence[float]] = None,
+                  aperture: Optional[float] = None,
+                  lens: Optional[str] = None, unit: Optional[str] = None, stop: int = 1,
+                  epd: Optional[float] = None, f_number: Optional[float] = None,
+                  object_distance: Optional[float] = None,
+                  fields: Optional[Sequence[float]] = None,
+                  field_heights: Optional[Sequence[float]] = None, seidel: bool = False,
+                  psf: bool = False, mtf: bool = False,
+                  mtf_frequencies: Optional[Sequence[float]] = None, spots: bool = False,
+                  rings: int = 6, fans: bool = False, fan_points: int = 21,
+                  image_distance: Optional[float] = None, field_curves: bool = False,
+                  field_curve_points: int = 11, focal_shift: bool = False,
+                  band: Optional[Sequence[float]] = None, focal_shift_points: int = 21,
+                  wavelength_weights: Optional[Sequence[float]] = None,
+                  report: Optional[Sequence[str]] = None) -> str:
+    """The options checked and as the JSON the compiled module takes (AnalyzeRequest's
+    fields); bad ones raise ValueError."""
     given = dict(wavelength=wavelength, wavelengths=wavelengths, aperture=aperture, epd=epd,
                  f_number=f_number, object_distance=object_distance, fields=fields,
                  field_heights=field_heights)
@@ -163,5 +163,78 @@ def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
         raise ValueError(f"report: must be a list of the document's keys, got {report!r}")
     if report:
         request["report"] = list(report)
+    return json.dumps(request)
+
+
+_OPTIONS = frozenset(inspect.signature(_request_json).parameters)
+
+
+def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
+            wavelengths: Optional[Sequence[float]] = None, aperture: Optional[float] = None,
+            lens: Optional[str] = None, unit: Optional[str] = None, stop: int = 1,
+            epd: Optional[float] = None, f_number: Optional[float] = None,
+            object_distance: Optional[float] = None,
+            fields: Optional[Sequence[float]] = None,
+            field_heights: Optional[Sequence[float]] = None, seidel: bool = False,
+            psf: bool = False, mtf: bool = False,
+            mtf_frequencies: Optional[Sequence[float]] = None, spots: bool = False,
+            rings: int = 6, fans: bool = False, fan_points: int = 21,
+            image_distance: Optional[float] = None, field_curves: bool = False,
+            field_curve_points: int = 11, focal_shift: bool = False,
+            band: Optional[Sequence[float]] = None, focal_shift_points: int = 21,
+            wavelength_weights: Optional[Sequence[float]] = None,
+            report: Optional[Sequence[str]] = None) -> Analysis:
+    """The optical bench: `lenslab analyze FILE --json` with the same options (named as the
+    command line's, "-" as "_"), as a lenslab.Analysis. report: only these top-level keys of
+    the document (e.g. ["efl", "rms_spot_best"]), and only what they need is computed.
+    seidel changes nothing here (the document always has the Seidel sums). Bad options raise
+    ValueError; a scene the bench cannot measure raises lenslab.SceneError with the JSON
+    path. lenslab.analyze_many analyzes a list of scenes across the cores."""
+    options = dict(locals())
+    del options["scene_or_file"]
+    request = _request_json(**options)
     text, path = source_json(scene_or_file)
-    return Analysis(_lenslab.analyze(text, path, json.dumps(request)))
+    return Analysis(_lenslab.analyze(text, path, request))
+
+
+def _name_the_scene(error: BaseException, index: int) -> None:
+    """Puts "scenes[INDEX]: " before the message of the error a scene of a list raised."""
+    error.index = index  # type: ignore[attr-defined]
+    if len(error.args) == 1 and isinstance(error.args[0], str):
+        error.args = (f"scenes[{index}]: {error.args[0]}",)
+    else:
+        error.add_note(f"raised by scenes[{index}]")
+
+
+def analyze_many(scenes: Iterable[SceneSource], *, threads: Optional[int] = None,
+                 progress: Optional[Callable[[float], Any]] = None,
+                 **options: Any) -> list[Analysis]:
+    """lenslab.analyze(scene, **options) for each scene of `scenes`, in their order, the
+    scenes shared out over `threads` worker threads (None: one per core) with the GIL
+    released; the same documents bit for bit, the options checked once. The first scene in
+    the list's order that fails raises what analyze would, its message beginning
+    "scenes[INDEX]: " (and `index` set); no scene after it is started once it failed, and
+    nothing is returned. progress: called with the fraction of scenes done; Ctrl-C cancels."""
+    unknown = options.keys() - _OPTIONS
+    if unknown:
+        raise TypeError(f"analyze_many() got an unexpected keyword argument "
+                        f"'{sorted(unknown)[0]}'")
+    request = _request_json(**options)
+    workers = _thread_count(threads)
+    texts, paths = [], []
+    for index, scene in enumerate(scenes):
+        try:
+            text, path = source_json(scene)
+        except (ValueError, TypeError) as e:  # unreadable file, not a scene, NaN in the dict
+            _name_the_scene(e, index)
+            raise
+        texts.append(text)
+        paths.append(path)
+    batch = _lenslab.analyze_many(texts, paths, request, workers, progress)
+    if batch.failed is not None:
+        try:
+            batch.raise_failure()
+        except Exception as e:
+            _name_the_scene(e, batch.failed)
+            raise
+    return [Analysis(run) for run in batch.runs()]

@@ -137,19 +137,20 @@ std::vector<std::string> ElementSpec::keys() const {
 }
 
 std::optional<std::string> range_problem(const ParamSpec& p, double v) {
-    const std::string got = ", got " + format_number(v);
+    // Formatted only for a message: a scene reads many numbers and almost all are in range.
+    const auto got = [v] { return ", got " + format_number(v); };
     if (p.kind == ParamKind::WholeNumber) {
         if (!(v >= p.min->value && v <= p.max->value)) {
             return "must be between " + std::to_string(int64_t(p.min->value)) + " and " +
-                   std::to_string(int64_t(p.max->value)) + got;
+                   std::to_string(int64_t(p.max->value)) + got();
         }
         return std::nullopt;
     }
     if (p.kind == ParamKind::Fraction) {
-        if (!(v >= 0 && v <= 1)) return "must be between 0 and 1" + got;
+        if (!(v >= 0 && v <= 1)) return "must be between 0 and 1" + got();
         // A fraction's floor is a second, separate rule with its own reason.
         if (p.min && !(v >= p.min->value)) {
-            return "must be at least " + format_number(p.min->value) + suffix(p) + got;
+            return "must be at least " + format_number(p.min->value) + suffix(p) + got();
         }
         return std::nullopt;
     }
@@ -160,17 +161,18 @@ std::optional<std::string> range_problem(const ParamSpec& p, double v) {
         const bool exclusive = p.min->exclusive && p.max->exclusive;
         return "must be between " + format_number(p.min->value) + " and " +
                format_number(p.max->value) + (p.unit.empty() ? "" : " " + p.unit) +
-               (exclusive ? " (exclusive)" : "") + (p.why.empty() ? "" : " (" + p.why + ")") + got;
+               (exclusive ? " (exclusive)" : "") + (p.why.empty() ? "" : " (" + p.why + ")") +
+               got();
     }
     if (p.min) {
         return std::string("must be ") + (p.min->exclusive ? "> " : ">= ") +
-               format_number(p.min->value) + suffix(p) + got;
+               format_number(p.min->value) + suffix(p) + got();
     }
     if (p.max) {
         return std::string("must be ") + (p.max->exclusive ? "< " : "<= ") +
-               format_number(p.max->value) + suffix(p) + got;
+               format_number(p.max->value) + suffix(p) + got();
     }
-    return "must be a number" + got;  // NaN, from a command line
+    return "must be a number" + got();  // NaN, from a command line
 }
 
 std::optional<std::string> choice_problem(const ParamSpec& p, const std::string& v) {
