@@ -111,8 +111,33 @@ std::vector<Ray> section_start_rays(const Scene& scene, const SectionPlane& plan
         if (!direction_in_section_plane(light.direction, plane) || std::abs(d) >= light.radius)
             continue;
         const Vec3 centre = light.origin - plane.normal() * d;
-        const double width = 2 * std::sqrt(light.radius * light.radius - d * d);
-        add_section_beam({centre, light.direction, width, fan}, plane, rays);
+        if (light.fan_angle > 0) {
+            // A fan shows as the rays of its sheet when the sheet lies in the plane.
+            if (direction_in_section_plane(light.fan_axis, plane)) {
+                add_section_cone(centre, light.direction, light.fan_angle * std::numbers::pi / 360,
+                                 fan, plane, rays);
+            }
+            continue;
+        }
+        // The disc's chord in the plane, cut to the slit's strip where there is one.
+        const Vec3 across = normalize(cross(plane.normal(), light.direction));
+        const double half = std::sqrt(light.radius * light.radius - d * d);
+        double s0 = -half, s1 = half;
+        if (light.slit_width > 0) {
+            const Vec3 slit_across = normalize(cross(light.direction, light.slit_axis));
+            const double at = dot(centre - light.origin, slit_across);
+            const double rate = dot(across, slit_across), h = 0.5 * light.slit_width;
+            if (std::abs(rate) < 1e-12) {
+                if (std::abs(at) > h) continue;
+            } else {
+                const double a = (-h - at) / rate, b = (h - at) / rate;
+                s0 = std::max(s0, std::min(a, b));
+                s1 = std::min(s1, std::max(a, b));
+            }
+            if (!(s1 > s0)) continue;
+        }
+        add_section_beam({centre + across * (0.5 * (s0 + s1)), light.direction, s1 - s0, fan},
+                         plane, rays);
     }
     for (const SphereEmitter& e : scene.emitters()) {
         const double d = plane.distance(e.sphere->centre());

@@ -27,101 +27,6 @@ private:
     double emission_solid_angle() const override { return 4.0 * kPi; }
 };
 
-// Parallel rays along `direction` from a disc: irradiance spectrum / (pi r^2) across it.
-class BeamLightSource final : public Light {
-public:
-    explicit BeamLightSource(const BeamLight& b)
-        : Light(b.spectrum), m_origin(b.origin), m_direction(b.direction), m_radius(b.radius) {}
-
-    double power() const override { return spectrum_watts(); }
-
-    PhotonStart sample_le(Rng& rng) const override {
-        const double u1 = rng.uniform(), u2 = rng.uniform();
-        return {{point_on_disc(u1, u2), m_direction}, &spectrum(), 1.0};
-    }
-
-    PhotonStart sample_le_towards(const PhotonTargets& targets, const AimSample& u) const override {
-        const double u0 = u[0], u1 = u[1], u2 = u[2];
-        const double area = kPi * m_radius * m_radius;
-        Vec3 p;
-        double pdf;
-        if (!targets.sample_plane_point(m_origin, m_direction, u0, u1, u2, area, p, pdf)) {
-            return {{point_on_disc(u1, u2), m_direction}, &spectrum(), 1.0};
-        }
-        // Outside the beam's disc the beam sends nothing there.
-        const bool inside = length_squared(p - m_origin) <= m_radius * m_radius;
-        return {{p, m_direction}, &spectrum(), inside ? 1.0 / (area * pdf) : 0.0};
-    }
-
-    bool sample_li(const Vec3& p, Rng&, LightSample& out) const override {
-        const Vec3 v = p - m_origin;
-        const double along = dot(v, m_direction);
-        if (along <= 0.0 || length_squared(v - m_direction * along) > m_radius * m_radius)
-            return false;
-        out.wi = -m_direction;
-        out.distance = along;
-        out.factor = 1.0 / (kPi * m_radius * m_radius);
-        return true;
-    }
-
-    bool is_delta() const override { return true; }
-
-    // Uniform along the chord of the ray inside the beam's cylinder, ahead of its disc.
-    bool sample_in_scattering(const Ray& ray, double t_max, double u, double& t,
-                              double& pdf) const override {
-        double t0 = 0.0, t1 = t_max;
-        // Ahead of the disc: dot(o + t d - origin, direction) > 0.
-        const double along0 = dot(ray.origin - m_origin, m_direction);
-        const double along_rate = dot(ray.direction, m_direction);
-        if (!clip_halfline(along0, along_rate, t0, t1)) return false;
-        // Inside the cylinder: |v + t w|^2 <= r^2, v and w the parts across the axis.
-        const Vec3 v = (ray.origin - m_origin) - m_direction * along0;
-        const Vec3 w = ray.direction - m_direction * along_rate;
-        const double a = length_squared(w), b = dot(v, w),
-                     c = length_squared(v) - m_radius * m_radius;
-        if (a < 1e-300) {
-            if (c > 0.0) return false;  // parallel to the axis, outside the beam
-        } else {
-            const double disc = b * b - a * c;
-            if (disc <= 0.0) return false;
-            const double root = std::sqrt(disc);
-            t0 = std::max(t0, (-b - root) / a);
-            t1 = std::min(t1, (-b + root) / a);
-        }
-        if (!(t1 > t0) || !std::isfinite(t1)) return false;
-        t = t0 + u * (t1 - t0);
-        pdf = 1.0 / (t1 - t0);
-        return true;
-    }
-
-    bool worth_aiming(const PhotonTargets& targets) const override {
-        return targets.plane_area(m_origin, m_direction) < kPi * m_radius * m_radius;
-    }
-
-private:
-    Vec3 point_on_disc(double u1, double u2) const {
-        double x, y;
-        sample_disc_concentric(u1, u2, x, y);
-        const Frame f = Frame::from_axis(m_direction);
-        return m_origin + (f.u * x + f.v * y) * m_radius;
-    }
-
-    // Narrows [t0, t1] to where along0 + t * rate > 0; false when nothing is left.
-    static bool clip_halfline(double along0, double rate, double& t0, double& t1) {
-        if (rate > 0.0) {
-            t0 = std::max(t0, -along0 / rate);
-        } else if (rate < 0.0) {
-            t1 = std::min(t1, -along0 / rate);
-        } else if (along0 <= 0.0) {
-            return false;
-        }
-        return t1 > t0;
-    }
-
-    Vec3 m_origin, m_direction;
-    double m_radius;
-};
-
 // A Lambertian emitter: radiance spectrum from every point of its surface, so it sends
 // pi L 4 pi R^2 in all.
 class SphereLightSource final : public Light {
@@ -245,7 +150,6 @@ bool sample_equiangular(const Ray& ray, double t_max, const Vec3& light, double 
 }
 
 LightPtr make_point_light(const PointLight& l) { return std::make_shared<PointLightSource>(l); }
-LightPtr make_beam_light(const BeamLight& b) { return std::make_shared<BeamLightSource>(b); }
 LightPtr make_sphere_light(std::shared_ptr<const Sphere> sphere, SpectrumPtr radiance) {
     return std::make_shared<SphereLightSource>(std::move(sphere), std::move(radiance));
 }

@@ -125,7 +125,9 @@ struct BeamLight;
 struct SpotLight;
 class Sphere;
 LightPtr make_point_light(const PointLight& l);
+// A beam, with or without a slit (beam_light_source.cpp), or a line laser's fan.
 LightPtr make_beam_light(const BeamLight& b);
+LightPtr make_fan_light(const BeamLight& b);   // fan_light_source.cpp
 LightPtr make_spot_light(const SpotLight& s);  // spot_light_source.cpp
 // Equiangular sampling of a distance along `ray` within [0, t_max) towards the point `light`
 // (Kulla and Fajardo 2012, "Importance sampling techniques for path tracing in participating

@@ -25,6 +25,33 @@ std::vector<ParamSpec> emission_params(const Rgb& colour,
     };
 }
 
+// A beam's or a laser's shapes: a slit across it, or a line laser's fan (not both; the
+// rules between fields are the reader's, scene_json.cpp).
+void add_beam_shapes(ElementSpec& s) {
+    s.params.push_back(number_param("slit_width", 0)
+                           .at_least(0)
+                           .describe("width of a slit across the beam (at most 2 radius); 0: none")
+                           .in_editor("Slit width"));
+    s.params.push_back(
+        vector_param(ParamKind::Direction, "slit_axis", nullptr)
+            .meaning_auto(
+                "`[0, 1, 0]` made square to `direction`, or `[0, 0, -1]` for a vertical beam")
+            .describe("the slit's long side, across the beam")
+            .in_editor("Slit axis"));
+    s.params.push_back(number_param("fan_angle", 0)
+                           .at_least(0)
+                           .below(180)
+                           .in_unit("degrees")
+                           .describe("full angle of a line laser's fan; 0: a plain beam")
+                           .in_editor("Fan angle"));
+    s.params.push_back(
+        vector_param(ParamKind::Direction, "fan_axis", nullptr)
+            .meaning_auto(
+                "horizontal: square to `direction` and `[0, 1, 0]` (along *x* for a vertical beam)")
+            .describe("the direction across the beam the fan spreads along")
+            .in_editor("Fan axis"));
+}
+
 ElementSpec declare_point() {
     ElementSpec s{"point light", "a point light", {}, {}};
     s.params = {
@@ -52,6 +79,7 @@ ElementSpec declare_beam() {
             .in_editor("Beam radius"),
     };
     for (ParamSpec& p : emission_params(BeamLight{}.color)) s.params.push_back(std::move(p));
+    add_beam_shapes(s);
     s.example = nlohmann::json::parse(
         R"json({"type": "beam", "origin": [0, 1, 0], "direction": [0, -1, 0], "radius": 0.3, "power": 10})json");
     return s;
@@ -85,6 +113,7 @@ ElementSpec declare_laser() {
             .as_written("spectrum")
             .describe("instead of wavelength: any spectrum, as for a point light"),
     };
+    add_beam_shapes(s);
     s.example = nlohmann::json::parse(
         R"json({"type": "laser", "position": [0, 1, 0], "direction": [1, 0, 0], "radius": 0.02, "power": 1, "wavelength": 532})json");
     return s;

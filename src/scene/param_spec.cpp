@@ -8,6 +8,7 @@
 
 #include "geometry/plane_frame.h"
 #include "scene/json_reader.h"
+#include "scene/light.h"
 
 namespace lenslab {
 
@@ -344,6 +345,22 @@ nlohmann::json rotated_element(const ElementSpec& spec, nlohmann::json element, 
             element["up"] = nlohmann::json::array({u.x, u.y, u.z});
         }
     }
+    // A beam's automatic slit and fan axes, likewise, where it has a slit or a fan.
+    const auto write_beam_axis = [&](const char* shape, const char* key,
+                                     Vec3 (*automatic)(const Vec3&)) {
+        const ParamSpec* declared = spec.find(key);
+        const auto size = element.find(shape);
+        if (!declared || element.contains(key) || size == element.end() || !size->is_number() ||
+            !(size->get<double>() > 0.0) || !element.contains("direction"))
+            return;
+        if (const std::optional<Vec3> d = spec_vector_of(element["direction"])) {
+            if (!(length(*d) > 0.0)) return;
+            const Vec3 a = automatic(normalize(*d));
+            element[key] = nlohmann::json::array({a.x, a.y, a.z});
+        }
+    };
+    write_beam_axis("slit_width", "slit_axis", default_slit_axis);
+    write_beam_axis("fan_angle", "fan_axis", default_fan_axis);
     for (const ParamSpec& p : spec.params) {
         auto it = element.find(p.key);
         const bool point = p.kind == ParamKind::Point, direction = p.kind == ParamKind::Direction;

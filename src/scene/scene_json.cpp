@@ -283,6 +283,34 @@ SceneObject read_object(const json& j, const std::string& path,
     return o;
 }
 
+// An axis across the beam: given (not parallel to the direction), or the automatic one;
+// made square to the direction.
+Vec3 read_beam_axis(SpecReader& r, const std::string& key, const Vec3& direction,
+                    const Vec3& automatic) {
+    if (!r.has(key)) return automatic;
+    const Vec3 axis = r.unit_vector(key);
+    if (length(cross(axis, direction)) < 1e-6)
+        throw SceneError(r.child_path(key), "must not be parallel to direction");
+    return normalize(axis - direction * dot(axis, direction));
+}
+
+// A beam's slit or a line laser's fan (light.h).
+void read_beam_shape(SpecReader& r, BeamLight& b) {
+    b.slit_width = r.real("slit_width");
+    b.fan_angle = r.real("fan_angle");
+    if (b.slit_width > 2.0 * b.radius) {
+        throw SceneError(r.child_path("slit_width"), "must be at most 2 radius (" +
+                                                         format_number(2.0 * b.radius) + "), got " +
+                                                         format_number(b.slit_width));
+    }
+    if (b.slit_width > 0.0 && b.fan_angle > 0.0) {
+        throw SceneError(r.child_path("slit_width"),
+                         "a slit and a fan (fan_angle) do not go together: give one");
+    }
+    b.slit_axis = read_beam_axis(r, "slit_axis", b.direction, default_slit_axis(b.direction));
+    b.fan_axis = read_beam_axis(r, "fan_axis", b.direction, default_fan_axis(b.direction));
+}
+
 void read_light(const json& j, const std::string& path, SceneLights& lights) {
     const std::string type = peek_type(j, path);
     if (type == "point") {
@@ -303,6 +331,7 @@ void read_light(const json& j, const std::string& path, SceneLights& lights) {
         b.power = r.real("power");
         b.spectrum = laser ? laser_spectrum(r, r.real("wavelength"), b.power)
                            : light_spectrum(r, b.color, b.power);
+        read_beam_shape(r, b);
         lights.beams.push_back(b);
     } else if (type == "spot") {
         SpecReader r(j, path, spot_light_spec());

@@ -360,6 +360,34 @@ TEST(SectionView, ASpotsFanStaysInItsCone) {
     EXPECT_NEAR(sum_x, 0, 1e-12);
 }
 
+// A line laser's fan lying in the plane sends its rays from the aperture within half its
+// angle of the beam; a slit beam's rays span the slit's width where the plane cuts across
+// the slit, and the whole disc where it runs along it.
+TEST(SectionView, AFanAndASlitShowTheirShapes) {
+    const Scene scene = parse_scene(R"({
+      "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},
+      "lights": [{"type": "laser", "position": [0, 0, 0], "direction": [1, 0, 0], "radius": 0.01,
+                  "power": 1, "fan_angle": 40, "fan_axis": [0, 1, 0]},
+                 {"type": "beam", "origin": [0, 2, 0], "direction": [1, 0, 0], "radius": 0.5,
+                  "power": 1, "slit_width": 0.2, "slit_axis": [0, 0, 1]},
+                 {"type": "beam", "origin": [0, -2, 0], "direction": [1, 0, 0], "radius": 0.5,
+                  "power": 1, "slit_width": 0.2}]
+    })");
+    const SectionPlane plane{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    SectionRayOptions options;
+    options.rays_per_light = 5;
+    const std::vector<Ray> starts = section_start_rays(scene, plane, options);
+    ASSERT_EQ(starts.size(), 15u);
+    for (int i = 0; i < 5; ++i) {
+        const Ray& r = starts[size_t(i)];
+        EXPECT_NEAR(length(r.origin), 0, 1e-12);
+        EXPECT_LT(std::abs(std::atan2(r.direction.y, r.direction.x)), 20 * std::numbers::pi / 180);
+    }
+    EXPECT_NEAR(starts[5].origin.y, 2 - 0.1, 1e-12);  // across the slit: its 0.2
+    EXPECT_NEAR(starts[9].origin.y, 2 + 0.1, 1e-12);
+    EXPECT_NEAR(std::abs(starts[10].origin.y - starts[14].origin.y), 1, 1e-12);  // along it
+}
+
 TEST(SectionView, DispersingGlassSplitsTheBeamIntoItsColours) {
     const Scene scene = parse_scene(R"({
       "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},

@@ -166,6 +166,43 @@ private slots:
         check_form(w, lenslab::material_spec(), {});
     }
 
+    // A beam's and a laser's forms hold the slit's and the fan's fields (light_spec.cpp).
+    void beam_and_laser_forms_show_the_slit_and_the_fan() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("lights.json");
+        QFile file(path);
+        file.open(QIODevice::WriteOnly);
+        const json scene = {{"camera", {{"position", {0, 1, 4}}, {"look_at", {0, 0, 0}}}},
+                            {"lights",
+                             {{{"type", "beam"},
+                               {"origin", {0, 0, 0}},
+                               {"direction", {1, 0, 0}},
+                               {"radius", 0.3},
+                               {"power", 1},
+                               {"slit_width", 0.1}},
+                              {{"type", "laser"},
+                               {"position", {0, 1, 0}},
+                               {"direction", {1, 0, 0}},
+                               {"radius", 0.01},
+                               {"power", 1},
+                               {"fan_angle", 30}}}}};
+        file.write(QByteArray::fromStdString(scene.dump(2)));
+        file.close();
+        MainWindow w;
+        QString error;
+        QVERIFY2(w.open_file(path, &error), qPrintable(error));
+        w.tree()->select_pointer("/lights/0");
+        check_form(w, lenslab::beam_spec(), {"color", "slit_width"});
+        auto* slit = w.panel()->findChild<NumberField*>("field:slit_width");
+        QVERIFY(slit);
+        QCOMPARE(slit->value(), 0.1);
+        w.tree()->select_pointer("/lights/1");
+        check_form(w, lenslab::laser_spec(), {"fan_angle"});
+        auto* fan = w.panel()->findChild<NumberField*>("field:fan_angle");
+        QVERIFY(fan);
+        QCOMPARE(fan->value(), 30.0);
+    }
+
     // A material's index profile: each GRIN profile, picked, writes a block the scene reader
     // takes and shows that profile's fields with its values; "uniform" removes the block.
     void grin_form_follows_the_profile() {

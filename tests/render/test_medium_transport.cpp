@@ -199,6 +199,42 @@ TEST(PathInMedium, SingleScatteringFromABeamMatchesItsClosedForm) {
     EXPECT_NEAR(mean, expected, 0.01 * expected);
 }
 
+// The same for a line laser's fan crossed at right angles through its sheet 10 units from the
+// aperture (in the sheet), where the irradiance is P / (theta rho 2r) all along the chord
+// [D - r, D + r]; and for a beam through a slit, crossed through the slit, whose chord the
+// strip cuts to [D - w/2, D + w/2], lit with P / A, A the disc's area inside the strip.
+TEST(PathInMedium, SingleScatteringFromAFanAndASlitMatchesTheirClosedForms) {
+    const double sigma = 0.05, power = 2, r = 0.2, d = 5, theta = kPiMedium / 3;
+    Scene fan = parse_scene(R"({
+      "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 0.001},
+      "render": {"width": 2, "height": 2, "spp": 64, "max_depth": 1, "integrator": "path"},
+      "atmosphere": {"scattering": 0.05},
+      "lights": [{"type": "beam", "origin": [-10, 0, 0], "direction": [1, 0, 0],
+                  "radius": 0.2, "power": 2, "fan_angle": 60, "fan_axis": [0, 1, 0]}]
+    })");
+    const double white = spectrum_to_rgb(*fan.beams[0].spectrum).g / power;
+    const double fan_chord = (std::exp(-sigma * (d - r)) - std::exp(-sigma * (d + r))) / sigma;
+    const double fan_expected = sigma / (4 * kPiMedium) * power / (theta * 10 * 2 * r) *
+                                std::exp(-10 * sigma) * fan_chord * white;
+    const double fan_mean = mean_green_of_render(fan);
+    EXPECT_NEAR(fan_mean, fan_expected, 0.01 * fan_expected);
+
+    Scene slit = parse_scene(R"({
+      "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 0.001},
+      "render": {"width": 2, "height": 2, "spp": 64, "max_depth": 1, "integrator": "path"},
+      "atmosphere": {"scattering": 0.05},
+      "lights": [{"type": "beam", "origin": [-10, 0, 0], "direction": [1, 0, 0],
+                  "radius": 0.2, "power": 2, "slit_width": 0.2}]
+    })");
+    const double h = 0.1;
+    const double area = 2 * (h * std::sqrt(r * r - h * h) + r * r * std::asin(h / r));
+    const double slit_chord = (std::exp(-sigma * (d - h)) - std::exp(-sigma * (d + h))) / sigma;
+    const double slit_expected =
+        sigma / (4 * kPiMedium) * power / area * std::exp(-10 * sigma) * slit_chord * white;
+    const double slit_mean = mean_green_of_render(slit);
+    EXPECT_NEAR(slit_mean, slit_expected, 0.01 * slit_expected);
+}
+
 // The integrators without media would render the scene as if the air were clear: they
 // refuse an atmosphere and a shape's medium, naming it.
 TEST(PathInMedium, IntegratorsWithoutMediaRefuseMedia) {

@@ -515,6 +515,15 @@ TEST(Examples, RotatingAnElementTurnsItsPointsAndDirections) {
                         {0, 0, 0}, {0, 0, 1}, quarter);
     near(rectangle["normal"], {0, 0, 1});
     near(rectangle["up"], {-1, 0, 0});
+    // A line laser's automatic fan axis (horizontal, -z for a beam along +x) is written out
+    // turned, so a turn about the beam stands the fan up; a laser without a fan gets none.
+    const json fan =
+        rotated_element(lenslab::laser_spec(),
+                        {{"position", {0, 0, 0}}, {"direction", {1, 0, 0}}, {"fan_angle", 30}},
+                        {0, 0, 0}, {1, 0, 0}, quarter);
+    near(fan["direction"], {1, 0, 0});
+    near(fan["fan_axis"], {0, 1, 0});
+    EXPECT_FALSE(fan.contains("slit_axis"));
     EXPECT_TRUE(lenslab::element_turns(lenslab::lens_spec()));
     EXPECT_FALSE(lenslab::element_turns(lenslab::sphere_spec()));
     EXPECT_FALSE(lenslab::element_turns(lenslab::implicit_spec()));
