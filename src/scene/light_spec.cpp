@@ -36,7 +36,7 @@ void add_beam_shapes(ElementSpec& s) {
         vector_param(ParamKind::Direction, "slit_axis", nullptr)
             .meaning_auto(
                 "`[0, 1, 0]` made square to `direction`, or `[0, 0, -1]` for a vertical beam")
-            .describe("the slit's long side, across the beam")
+            .describe("the slit's long side, across the beam (unused without slit_width)")
             .in_editor("Slit axis"));
     s.params.push_back(number_param("fan_angle", 0)
                            .at_least(0)
@@ -48,7 +48,8 @@ void add_beam_shapes(ElementSpec& s) {
         vector_param(ParamKind::Direction, "fan_axis", nullptr)
             .meaning_auto(
                 "horizontal: square to `direction` and `[0, 1, 0]` (along *x* for a vertical beam)")
-            .describe("the direction across the beam the fan spreads along")
+            .describe(
+                "the direction across the beam the fan spreads along (unused without fan_angle)")
             .in_editor("Fan axis"));
 }
 

@@ -159,10 +159,16 @@ std::optional<std::string> range_problem(const ParamSpec& p, double v) {
     const bool high = p.max && !(p.max->exclusive ? v < p.max->value : v <= p.max->value);
     if (!low && !high && !std::isnan(v)) return std::nullopt;
     if (p.min && p.max) {
-        const bool exclusive = p.min->exclusive && p.max->exclusive;
+        const std::string unit = p.unit.empty() ? "" : " " + p.unit;
+        const std::string why = p.why.empty() ? "" : " (" + p.why + ")";
+        if (p.min->exclusive != p.max->exclusive) {  // one end allowed, the other not
+            return std::string("must be ") + (p.min->exclusive ? "above " : "at least ") +
+                   format_number(p.min->value) +
+                   (p.max->exclusive ? " and below " : " and at most ") +
+                   format_number(p.max->value) + unit + why + got();
+        }
         return "must be between " + format_number(p.min->value) + " and " +
-               format_number(p.max->value) + (p.unit.empty() ? "" : " " + p.unit) +
-               (exclusive ? " (exclusive)" : "") + (p.why.empty() ? "" : " (" + p.why + ")") +
+               format_number(p.max->value) + unit + (p.min->exclusive ? " (exclusive)" : "") + why +
                got();
     }
     if (p.min) {

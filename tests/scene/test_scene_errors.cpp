@@ -259,7 +259,7 @@ const BadScene kBadScenes[] = {
     {"beam_with_position.json", "lights[0].position", "not a property of a beam"},
     {"beam_slit_wider_than_beam.json", "lights[0].slit_width", "must be at most 2 radius (1), got 1.5"},
     {"beam_slit_axis_along_beam.json", "lights[0].slit_axis", "must not be parallel to direction"},
-    {"laser_fan_angle_180.json", "lights[0].fan_angle", "must be between 0 and 180 degrees, got 180"},
+    {"laser_fan_angle_180.json", "lights[0].fan_angle", "must be at least 0 and below 180 degrees, got 180"},
     {"laser_fan_axis_zero.json", "lights[0].fan_axis", "must be a non-zero vector"},
     {"laser_fan_axis_along_beam.json", "lights[0].fan_axis", "must not be parallel to direction"},
     {"laser_slit_and_fan.json", "lights[0].slit_width", "a slit and a fan (fan_angle) do not go together"},
