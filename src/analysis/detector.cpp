@@ -243,4 +243,9 @@ DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& s
     return result;
 }
 
+DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& settings) {
+    RenderControl control;
+    return measure_detectors(scene, settings, control);
+}
+
 }  // namespace lenslab

@@ -73,5 +73,7 @@ std::vector<int> detector_objects(const Scene& scene);
 // `cancelled` set) through `control`.
 DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& settings,
                                   RenderControl& control);
+// The same, run to the end with no progress reported.
+DetectionResult measure_detectors(const Scene& scene, const DetectionSettings& settings);
 
 }  // namespace lenslab

@@ -24,6 +24,11 @@ struct Aabb {
     Vec3 centre() const { return (lo + hi) * 0.5; }
     Vec3 extent() const { return hi - lo; }
     bool empty() const { return lo.x > hi.x; }
+    // Inside or on the box (never, for an empty box).
+    bool contains(const Vec3& p) const {
+        return p.x >= lo.x && p.y >= lo.y && p.z >= lo.z && p.x <= hi.x && p.y <= hi.y &&
+               p.z <= hi.z;
+    }
 
     // inv_dir = 1 / ray.direction componentwise (infinities are fine). Conservative: the far
     // slab distance is enlarged by its worst rounding error, 2 gamma(3) (Ize 2013, "Robust BVH

@@ -59,9 +59,7 @@ struct PassDeposit {
     void scatter(const Vec3& p, const Vec3& direction, int depth) {
         if (depth == 0 && scene.lights()[static_cast<size_t>(light)]->is_delta()) return;
         const Aabb& box = s.volume_bounds;
-        if (!box.empty() && (p.x < box.lo.x || p.y < box.lo.y || p.z < box.lo.z || p.x > box.hi.x ||
-                             p.y > box.hi.y || p.z > box.hi.z))
-            return;
+        if (!box.empty() && !box.contains(p)) return;
         volume.push_back(record(p, direction));
     }
 

@@ -21,11 +21,7 @@ namespace {
 constexpr double kPiDetector = std::numbers::pi;
 
 DetectionResult measure(const Scene& scene, int64_t photons, int threads = 0) {
-    RenderControl control;
-    DetectionSettings s;
-    s.photons_per_light = photons;
-    s.threads = threads;
-    return measure_detectors(scene, s, control);
+    return measure_detectors(scene, {.photons_per_light = photons, .threads = threads});
 }
 
 const DetectorMeasurement& only(const DetectionResult& r) {

@@ -28,10 +28,7 @@ Scene beam_on_screen_scene() {
 }
 
 DetectionResult beam_on_screen() {
-    RenderControl control;
-    DetectionSettings s;
-    s.photons_per_light = 20000;
-    return measure_detectors(beam_on_screen_scene(), s, control);
+    return measure_detectors(beam_on_screen_scene(), {.photons_per_light = 20000});
 }
 
 TEST(DetectorFiles, StemsAreSafeAndUnique) {

@@ -17,10 +17,7 @@ namespace {
 constexpr double kPiLights = std::numbers::pi;
 
 DetectorMeasurement measure_one_lights(const std::string& text, int64_t photons) {
-    RenderControl control;
-    DetectionSettings s;
-    s.photons_per_light = photons;
-    const DetectionResult r = measure_detectors(parse_scene(text), s, control);
+    const DetectionResult r = measure_detectors(parse_scene(text), {.photons_per_light = photons});
     EXPECT_EQ(r.detectors.size(), 1u);
     return r.detectors.at(0);
 }

@@ -17,11 +17,7 @@ namespace lenslab {
 namespace {
 
 DetectionResult measure_in_fog(const Scene& scene, int64_t photons, int max_depth = 8) {
-    RenderControl control;
-    DetectionSettings s;
-    s.photons_per_light = photons;
-    s.max_depth = max_depth;
-    return measure_detectors(scene, s, control);
+    return measure_detectors(scene, {.photons_per_light = photons, .max_depth = max_depth});
 }
 
 // A 1 W beam of radius 0.1 going down from height d onto a detector disc of radius `disc`

@@ -29,10 +29,8 @@ TEST(DetectorShapeMedia, AbsorbingBoxLeavesExactlyTheBeerLambertShare) {
                                         R"(}}],
             "lights": [{"type": "beam", "origin": [0, 3, 0], "direction": [0, -1, 0],
                         "radius": 0.1, "power": 1}]})");
-        RenderControl control;
-        DetectionSettings settings;
-        settings.photons_per_light = 5000;
-        const double p = measure_detectors(scene, settings, control).detectors.at(0).total_power;
+        const double p =
+            measure_detectors(scene, {.photons_per_light = 5000}).detectors.at(0).total_power;
         EXPECT_NEAR(p, std::exp(-sigma * d), 1e-9);
     }
 }

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "accel/bvh_build.h"
+#include "gui_test_support.h"
 #include "main_window.h"
 #include "number_field.h"
 #include "property_panel.h"
@@ -28,11 +29,9 @@ using nlohmann::json;
 
 namespace {
 
-const QString kSmallScene = QStringLiteral(LENSLAB_TEST_DATA "/gui/small_scene.json");
-
-NumberField* atmosphere_field(MainWindow& w, const QString& name) {
-    return w.panel()->findChild<NumberField*>("field:" + name);
-}
+using lenslab::gui::testing::field;
+using lenslab::gui::testing::integrator_of_fresh_frame;
+using lenslab::gui::testing::kSmallScene;
 
 bool tree_shows(MainWindow& w, const QString& pointer) {
     for (QTreeWidgetItemIterator it(w.tree()); *it; ++it) {
@@ -42,24 +41,6 @@ bool tree_shows(MainWindow& w, const QString& pointer) {
 }
 
 const json& atmosphere_json(MainWindow& w) { return w.document()->json()["atmosphere"]; }
-
-// Waits for the first pass of a render started after now; its integrator's name, or "" when
-// none came. Counted through a queued connection, on this thread (frame_ready is emitted on
-// the render thread), into a shared result a late frame can still write.
-QString integrator_of_fresh_frame(MainWindow& w, int timeout_ms = 20000) {
-    const auto integrator = std::make_shared<QString>();
-    const QMetaObject::Connection watch = QObject::connect(
-        w.renderer(), &RenderController::frame_ready, &w,
-        [integrator](const QImage&, int passes, qint64, double, const QString& name) {
-            if (passes == 1 && integrator->isEmpty()) *integrator = name;
-        },
-        Qt::QueuedConnection);
-    QElapsedTimer t;
-    t.start();
-    while (integrator->isEmpty() && t.elapsed() < timeout_ms) QTest::qWait(5);
-    QObject::disconnect(watch);
-    return *integrator;
-}
 
 }  // namespace
 
@@ -89,7 +70,7 @@ private slots:
             if (p.label.empty()) continue;
             const bool triple = p.kind == ParamKind::Colour;
             const QString name = QString::fromStdString(p.key) + (triple ? ".x" : "");
-            NumberField* box = atmosphere_field(w, name);
+            NumberField* box = field(w, name);
             QVERIFY2(box, qPrintable(name));
             const json& example = lenslab::medium_spec().example;
             const json shown = example.contains(p.key) ? example[p.key] : p.fallback;
@@ -98,7 +79,7 @@ private slots:
         }
 
         // The green band's scattering: a grey number becomes a triple.
-        NumberField* green = atmosphere_field(w, "scattering.y");
+        NumberField* green = field(w, "scattering.y");
         QVERIFY(green);
         green->setText("0.2");
         emit green->editingFinished();
@@ -110,7 +91,7 @@ private slots:
         w.document()->undo_stack()->undo();
         QCOMPARE(atmosphere_json(w), lenslab::medium_spec().example);
         QVERIFY(w.document()->scene().atmosphere->is_grey());
-        QCOMPARE(atmosphere_field(w, "scattering.y")->value(), 0.05);
+        QCOMPARE(field(w, "scattering.y")->value(), 0.05);
         // Undo again: clear air, and no atmosphere in the tree.
         w.document()->undo_stack()->undo();
         QVERIFY(!w.document()->json().contains("atmosphere"));
@@ -145,7 +126,7 @@ private slots:
         MainWindow w;
         QVERIFY(w.open_file(kSmallScene));
         w.add_atmosphere();
-        NumberField* g = atmosphere_field(w, "g");
+        NumberField* g = field(w, "g");
         QVERIFY(g);
         g->setText("-0.5");
         emit g->editingFinished();

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <memory>
 
+#include "gui_test_support.h"
 #include "main_window.h"
 #include "number_field.h"
 #include "property_panel.h"
@@ -35,37 +36,10 @@ using nlohmann::json;
 
 namespace {
 
-const QString kSmallScene = QStringLiteral(LENSLAB_TEST_DATA "/gui/small_scene.json");
-
-NumberField* field(MainWindow& w, const QString& name) {
-    return w.panel()->findChild<NumberField*>("field:" + name);
-}
-
-// Sets a number field as a user would (its text, then leaving the field).
-void type_value(NumberField* box, double v) {
-    box->setText(lenslab::gui::format_shown(v));
-    emit box->editingFinished();
-}
-
-// Waits for a frame rendered from the scene as it is now (pass 1 after a restart).
-bool wait_for_fresh_frame(MainWindow& w, int timeout_ms = 20000) {
-    // frame_ready is emitted on the render thread; a QSignalSpy would record it there (a
-    // direct connection) while this thread reads its list, so the frames are counted here,
-    // on this thread, through a queued connection.
-    // The flag is shared, not a local: a frame already queued when this returns (and
-    // disconnects) is still delivered later, and must not write into a dead stack frame
-    // (UBSan caught it).
-    const auto fresh = std::make_shared<bool>(false);
-    const QMetaObject::Connection watch = QObject::connect(
-        w.renderer(), &RenderController::frame_ready, &w,
-        [fresh](const QImage&, int passes) { *fresh = *fresh || passes == 1; },
-        Qt::QueuedConnection);
-    QElapsedTimer t;
-    t.start();
-    while (!*fresh && t.elapsed() < timeout_ms) QTest::qWait(5);
-    QObject::disconnect(watch);
-    return *fresh;
-}
+using lenslab::gui::testing::field;
+using lenslab::gui::testing::kSmallScene;
+using lenslab::gui::testing::type_value;
+using lenslab::gui::testing::wait_for_fresh_frame;
 
 }  // namespace
 

@@ -18,6 +18,7 @@
 #include <cmath>
 
 #include "accel/bvh_build.h"
+#include "gui_test_support.h"
 #include "json_pointer.h"
 #include "main_window.h"
 #include "number_field.h"
@@ -36,18 +37,11 @@ namespace gui = lenslab::gui;
 
 namespace {
 
-const QString kSmallScene = QStringLiteral(LENSLAB_TEST_DATA "/gui/small_scene.json");
+using lenslab::gui::testing::field;
+using lenslab::gui::testing::kSmallScene;
+using lenslab::gui::testing::type_value;
+
 const std::string kOddName = "a~b/c";
-
-NumberField* field(MainWindow& w, const QString& name) {
-    return w.panel()->findChild<NumberField*>("field:" + name);
-}
-
-// Sets a number field as a user would (its text, then leaving the field).
-void type_value(NumberField* box, double v) {
-    box->setText(lenslab::gui::format_shown(v));
-    emit box->editingFinished();
-}
 
 // Clicks the tree item showing `text`, as a user selects it.
 bool click_item(MainWindow& w, const QString& text) {

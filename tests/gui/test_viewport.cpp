@@ -19,6 +19,7 @@
 #include <memory>
 #include <numbers>
 
+#include "gui_test_support.h"
 #include "main_window.h"
 #include "number_field.h"
 #include "property_panel.h"
@@ -35,7 +36,7 @@ using nlohmann::json;
 
 namespace {
 
-const QString kViewportScene = QStringLiteral(LENSLAB_TEST_DATA "/gui/small_scene.json");
+const QString& kViewportScene = lenslab::gui::testing::kSmallScene;
 
 // The small scene with other render settings, written to `dir`.
 QString write_small_scene(const QTemporaryDir& dir, const json& render) {
