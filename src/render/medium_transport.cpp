@@ -82,9 +82,9 @@ BandWeights shadow_transmittance(const Scene& scene, const Vec3& p, const Vec3& 
 
 void add_direct_light(const Scene& scene, const Vec3& p, int samples, Rng& rng,
                       const std::function<double(const Vec3& wi)>& angular, LightSum& e,
-                      bool delta_lights) {
+                      bool segment_lights) {
     scene.light_sampler().for_each(rng, [&](const Light& light, double weight) {
-        if (!delta_lights && light.is_delta()) return;
+        if (!segment_lights && light.samples_in_scattering()) return;
         // A point or a beam is exact in one sample; an area light takes `samples`.
         const int count = light.is_delta() ? 1 : samples;
         for (int s = 0; s < count; ++s) {
@@ -99,22 +99,27 @@ void add_direct_light(const Scene& scene, const Vec3& p, int samples, Rng& rng,
     });
 }
 
-void add_delta_in_scattering(const Scene& scene, const Medium& medium, const Ray& ray, double t_max,
-                             Rng& rng, LightSum& e) {
+void add_light_in_scattering(const Scene& scene, const Medium& medium, const Ray& ray, double t_max,
+                             int samples, Rng& rng, LightSum& e) {
     const HenyeyGreenstein phase(medium.g);
     for (const LightPtr& light : scene.lights()) {
-        if (!light->is_delta()) continue;
-        double t, pdf;
-        if (!light->sample_in_scattering(ray, t_max, rng.uniform(), t, pdf)) continue;
-        const Vec3 p = ray.at(t);
-        LightSample ls;
-        if (!light->sample_li(p, rng, ls)) continue;
-        const BandWeights from_light = shadow_transmittance(scene, p, ls.wi, ls.distance);
-        if (is_dark(from_light)) continue;
-        const BandWeights to_camera = medium.transmittance(t);
-        BandWeights bands;
-        for (int b = 0; b < 3; ++b) bands[b] = medium.scattering[b] * to_camera[b] * from_light[b];
-        e.add(light->spectrum(), ls.factor * phase.eval(dot(ls.wi, ray.direction)) / pdf, bands);
+        if (!light->samples_in_scattering()) continue;
+        const int count = light->is_delta() ? 1 : samples;
+        for (int s = 0; s < count; ++s) {
+            double t, pdf;
+            if (!light->sample_in_scattering(ray, t_max, rng.uniform(), t, pdf)) continue;
+            const Vec3 p = ray.at(t);
+            LightSample ls;
+            if (!light->sample_li(p, rng, ls)) continue;
+            const BandWeights from_light = shadow_transmittance(scene, p, ls.wi, ls.distance);
+            if (is_dark(from_light)) continue;
+            const BandWeights to_camera = medium.transmittance(t);
+            BandWeights bands;
+            for (int b = 0; b < 3; ++b)
+                bands[b] = medium.scattering[b] * to_camera[b] * from_light[b];
+            e.add(light->spectrum(),
+                  ls.factor * phase.eval(dot(ls.wi, ray.direction)) / (pdf * count), bands);
+        }
     }
 }
 

@@ -40,18 +40,19 @@ BandWeights shadow_transmittance(const Scene& scene, const Vec3& p, const Vec3& 
 // (shadow_transmittance), each sample weighted by `angular(wi)` (wi towards the light): the
 // cosine at a surface, the phase function at a point in a medium; <= 0 drops the sample.
 // Added to `e` as the spectrum of each light times its weights.
-// `delta_lights` false leaves out points, spots and beams (add_delta_in_scattering's part).
+// `segment_lights` false leaves out the lights add_light_in_scattering samples along segments.
 void add_direct_light(const Scene& scene, const Vec3& p, int samples, Rng& rng,
                       const std::function<double(const Vec3& wi)>& angular, LightSum& e,
-                      bool delta_lights = true);
+                      bool segment_lights = true);
 
-// The light of the delta lights (points, spots, beams) scattered once into a ray's segment
-// [0, t_max) in `medium`: one distance per light from Light::sample_in_scattering, weighted
+// The light of points, spots, beams and emitting spheres (Light::samples_in_scattering)
+// scattered once into a ray's segment [0, t_max) in `medium`: distances from
+// Light::sample_in_scattering (one per delta light, `samples` per sphere), weighted
 // by sigma_s, the transmittance from the ray's origin and from the light (through whatever
 // media lie between, shadow_transmittance), and the phase function. A laser a few millimetres wide
 // is all but never met by free-flight scattering points; sampled along the chord the ray cuts
 // through it, it shows at once.
-void add_delta_in_scattering(const Scene& scene, const Medium& medium, const Ray& ray, double t_max,
-                             Rng& rng, LightSum& e);
+void add_light_in_scattering(const Scene& scene, const Medium& medium, const Ray& ray, double t_max,
+                             int samples, Rng& rng, LightSum& e);
 
 }  // namespace lenslab

@@ -57,7 +57,10 @@ struct PassDeposit {
     }
 
     void scatter(const Vec3& p, const Vec3& direction, int depth) {
-        if (depth == 0 && scene.lights()[static_cast<size_t>(light)]->is_delta()) return;
+        // Straight from a light whose single scattering the camera's segments gather
+        // (add_light_in_scattering): not a photon's to bring.
+        if (depth == 0 && scene.lights()[static_cast<size_t>(light)]->samples_in_scattering())
+            return;
         const Aabb& box = s.volume_bounds;
         if (!box.empty() && !box.contains(p)) return;
         volume.push_back(record(p, direction));

@@ -79,6 +79,14 @@ public:
 
     bool is_delta() const override { return false; }
 
+    // Towards the centre: a small light seen from afar is all but a point, and a large one
+    // still sends the most where the ray passes closest.
+    bool samples_in_scattering() const override { return true; }
+    bool sample_in_scattering(const Ray& ray, double t_max, double u, double& t,
+                              double& pdf) const override {
+        return sample_equiangular(ray, t_max, m_sphere->centre(), u, t, pdf);
+    }
+
     // Judged from the centre: each point of the surface sees the targets a little
     // differently, and falls back to cosine sampling where aiming does not pay.
     bool worth_aiming(const PhotonTargets& targets) const override {

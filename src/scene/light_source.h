@@ -62,11 +62,16 @@ public:
     virtual bool sample_li(const Vec3& p, Rng& rng, LightSample& out) const = 0;
     // One sample of sample_li is exact (a point or a beam), not an estimate.
     virtual bool is_delta() const = 0;
-    // A distance along `ray` (unit direction), in [0, t_max), where light of this delta light
+    // Whether media gather this light's single scattering along whole ray segments
+    // (sample_in_scattering) rather than at scattering points: every delta light, and
+    // emitting spheres.
+    virtual bool samples_in_scattering() const { return is_delta(); }
+    // A distance along `ray` (unit direction), in [0, t_max), where light of this light
     // scattered by a medium into the ray is worth gathering, and its density per unit length
-    // (`u` uniform in [0, 1)). False when none can be (the ray misses a beam). Points and
-    // spots: equiangular sampling (Kulla and Fajardo 2012), density proportional to
-    // 1 / distance^2; beams: uniform along the chord the ray cuts through the beam.
+    // (`u` uniform in [0, 1)). False when none can be (the ray misses a beam). Points, spots
+    // and emitting spheres: equiangular sampling towards the point or the sphere's centre
+    // (Kulla and Fajardo 2012), density proportional to 1 / distance^2; beams: uniform along
+    // the chord the ray cuts through the beam.
     virtual bool sample_in_scattering(const Ray& ray, double t_max, double u, double& t,
                                       double& pdf) const {
         (void)ray, (void)t_max, (void)u, (void)t, (void)pdf;

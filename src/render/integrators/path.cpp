@@ -36,7 +36,8 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
             const double t_max = hit ? it.hit.surface.t : INFINITY;
             if (bounce < scene.render.max_depth) {
                 LightSum in_scattered(path);
-                add_delta_in_scattering(scene, *medium, ray, t_max, rng, in_scattered);
+                add_light_in_scattering(scene, *medium, ray, t_max, scene.render.light_samples, rng,
+                                        in_scattered);
                 l += path.of(in_scattered);
             }
             const FreeFlight f = sample_free_flight(*medium, t_max, rng);
@@ -46,7 +47,8 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
                 const Vec3 p = ray.at(f.t);
                 const HenyeyGreenstein phase(medium->g);
                 LightSum e(path);
-                // Points, spots and beams: add_delta_in_scattering's, on every segment.
+                // Points, spots, beams and spheres: add_light_in_scattering's, on every
+                // segment.
                 add_direct_light(
                     scene, p, scene.render.light_samples, rng,
                     [&](const Vec3& wi) { return phase.eval(dot(wi, ray.direction)); }, e, false);

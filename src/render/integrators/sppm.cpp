@@ -113,8 +113,20 @@ SppmIntegrator::SppmIntegrator(const Scene& scene)
         m_background = illuminant_from_rgb(scene.render.background);
     if (scene.has_media()) {
         m_segments.resize(m_pixels.size() * kMaxSegments);
+        // Where volume photons are kept: the objects, the camera and the lights, and a quarter
+        // of their diagonal around them. Its size, not the objects' alone, sets the volume
+        // radius: fog fills the space between the camera and a small lamp too.
+        Aabb box = b;
+        box.expand(scene.camera.position);
+        for (const PointLight& l : scene.point_lights) box.expand(l.position);
+        for (const BeamLight& l : scene.beams) box.expand(l.origin);
+        for (const SpotLight& l : scene.spots) box.expand(l.position);
+        const double diagonal = length(box.extent());
+        const double margin = 0.25 * diagonal;
+        m_volume_box = {box.lo - Vec3{margin, margin, margin},
+                        box.hi + Vec3{margin, margin, margin}};
         m_volume_radius =
-            scene.render.initial_radius > 0 ? scene.render.initial_radius : m_radius_cap;
+            scene.render.initial_radius > 0 ? scene.render.initial_radius : kSceneShare * diagonal;
         m_volume_radius_start = m_volume_radius;
     }
 }
@@ -176,7 +188,7 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, Visi
             const double t_max = hit ? it.hit.surface.t : INFINITY;
             const PathColour colour = path_colour();
             LightSum e(colour);
-            add_delta_in_scattering(scene, *medium, ray, t_max, rng, e);
+            add_light_in_scattering(scene, *medium, ray, t_max, scene.render.light_samples, rng, e);
             found += colour.of(e) * beta;
             if (segment_count < kMaxSegments)
                 segments[segment_count++] = {ray, t_max, beta, medium, vp.dispersed};
@@ -350,17 +362,7 @@ bool SppmIntegrator::add_pass(RenderControl& control) {
         r.caustic_photons > 0 ? r.caustic_photons : std::max<int64_t>(1, pass_photons() / 4);
     photon_settings.aim = r.aim_photons;
     photon_settings.wavelengths = &m_pass_wavelength;
-    if (!m_segments.empty()) {
-        // The objects, the camera and the lights, and a quarter of their diagonal around them.
-        Aabb box = scene.bounds();
-        box.expand(scene.camera.position);
-        for (const PointLight& l : scene.point_lights) box.expand(l.position);
-        for (const BeamLight& l : scene.beams) box.expand(l.origin);
-        for (const SpotLight& l : scene.spots) box.expand(l.position);
-        const double margin = 0.25 * length(box.extent());
-        photon_settings.volume_bounds =
-            Aabb{box.lo - Vec3{margin, margin, margin}, box.hi + Vec3{margin, margin, margin}};
-    }
+    photon_settings.volume_bounds = m_volume_box;  // empty (all kept) without media
     if (m_stats.passes == 0) {
         const uint64_t need = photon_pass_bytes(scene, photon_settings);
         check_memory_budget(

@@ -103,6 +103,7 @@ private:
     // volume radius of the next pass. Empty and 0 in a scene without media.
     std::vector<MediumSegment> m_segments;
     double m_volume_radius = 0, m_volume_radius_start = 0;
+    Aabb m_volume_box;  // where volume photons are kept (empty without media)
     SppmStats m_stats;
     Communicator* m_cluster = &this_process_alone();  // of the last pass, for develop()
 };
