@@ -53,6 +53,9 @@ struct RenderSettings {
     int64_t pass_photons = 0;  // photons emitted per light in each pass; 0 = auto (pixels / lights)
     double initial_radius = 0;  // 0 = auto, from the pixel footprint and the scene's size
     double alpha = 2.0 / 3.0;   // share of each pass's photons kept as the radius shrinks
+    // In fog: 0, every volume photon's disc a few pixel footprints (sharp, fastest); N, a
+    // sparse photon's disc grows until about N neighbours share it (render/volume_photon_radii.h).
+    int volume_neighbours = 0;
 };
 
 }  // namespace lenslab

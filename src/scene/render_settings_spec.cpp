@@ -133,6 +133,12 @@ ElementSpec declare_render_settings() {
             .describe("sppm: share of each pass's new photons kept as the radius shrinks")
             .in_editor("Alpha", 4)
             .under(sppm),
+        whole_param("volume_neighbours", d.volume_neighbours, 0, 256)
+            .describe("sppm in fog: 0, sharp volume photon discs; N, a sparse photon's disc "
+                      "grows until about N neighbours share it (a smooth glow, slower)")
+            .in_editor("Volume neighbours")
+            .under(sppm)
+            .on_command_line(),
     };
     return s;
 }

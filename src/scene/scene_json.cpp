@@ -101,6 +101,7 @@ void read_render(const json& j, RenderSettings& s) {
     s.aim_photons = r.flag("aim_photons");
     s.initial_radius = r.real("initial_radius");
     s.alpha = r.real("alpha");
+    s.volume_neighbours = static_cast<int>(r.whole("volume_neighbours"));
 }
 
 std::shared_ptr<const GrinProfile> read_grin(const json& j, const std::string& path) {

@@ -25,6 +25,7 @@
 #include "render/photon_emission.h"
 #include "render/photon_tracer.h"
 #include "render/sppm_photons.h"
+#include "render/volume_photon_radii.h"
 #include "scene/interaction.h"
 #include "scene/segment_medium.h"
 
@@ -509,12 +510,12 @@ void SppmIntegrator::gather_volume(const PassState& pass, const PhotonPass& phot
     if (m_segments.empty()) return;
     const double radius = m_volume_radius;
     const double footprint = kVolumeFootprints * m_pixel_angle * radius / m_volume_radius_start;
-    const Vec3 eye = m_scene.camera.position;
-    const PointBvh photon_discs(
-        photons.volume.size(), [&](size_t i) { return photons.volume[i].pos(); },
-        [&](size_t i) {
-            return std::min(radius, footprint * length(photons.volume[i].pos() - eye));
-        });
+    const auto position = [&](size_t i) { return photons.volume[i].pos(); };
+    const std::vector<double> radii = volume_photon_radii(
+        photons.volume.size(), position,
+        {radius, footprint, m_scene.camera.position, m_scene.render.volume_neighbours});
+    const PointBvh photon_discs(photons.volume.size(), position,
+                                [&](size_t i) { return radii[i]; });
     const Communicator& comm = *m_cluster;
     tbb::parallel_for(tbb::blocked_range<size_t>(0, m_pixels.size(), 256), [&](const tbb::
                                                                                    blocked_range<
