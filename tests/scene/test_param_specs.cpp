@@ -425,15 +425,25 @@ std::string run_and_capture(const std::string& command) {
 
 // The option names are a contract with scripts; the declaration generates exactly these.
 TEST(RenderOptions, AreTheDeclaredKeysWithTheirRangesInTheHelp) {
-    std::vector<std::string> contract{"--width",        "--height",
-                                      "--spp",          "--max-depth",
-                                      "--seed",         "--integrator",
-                                      "--photons",      "--caustic-photons",
-                                      "--aim-photons",  "--radius",
-                                      "--filter",       "--direct",
-                                      "--filter-k",     "--max-photons-per-estimate",
-                                      "--passes",       "--time",
-                                      "--pass-photons", "--initial-radius"};
+    std::vector<std::string> contract{"--width",
+                                      "--height",
+                                      "--spp",
+                                      "--max-depth",
+                                      "--seed",
+                                      "--integrator",
+                                      "--photons",
+                                      "--caustic-photons",
+                                      "--aim-photons",
+                                      "--radius",
+                                      "--filter",
+                                      "--direct",
+                                      "--filter-k",
+                                      "--max-photons-per-estimate",
+                                      "--passes",
+                                      "--time",
+                                      "--pass-photons",
+                                      "--initial-radius",
+                                      "--volume-neighbours"};
     std::vector<std::string> declared;
     for (const ParamSpec& p : lenslab::render_settings_spec().params) {
         if (p.cli) declared.push_back(p.option_name());
