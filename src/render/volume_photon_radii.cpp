@@ -14,8 +14,11 @@ constexpr double kFinestShare = 0.25;  // the finest cell's side, in volume radi
 constexpr double kCellToRadius = 0.6;  // a cell of side s holding k photons: radius ~0.6 s
 
 uint64_t cell_key(const Vec3& p, double side) {
+    // 21 bits a coordinate: cells 2^21 apart share a key, which only merges their counts.
+    // Clamped first: a far point over a tiny cell must not overflow the integer.
     const auto c = [side](double v) {
-        return static_cast<uint64_t>(static_cast<int64_t>(std::floor(v / side)) & 0x1FFFFF);
+        const double cell = std::clamp(std::floor(v / side), -1e18, 1e18);
+        return static_cast<uint64_t>(static_cast<int64_t>(cell) & 0x1FFFFF);
     };
     return c(p.x) | (c(p.y) << 21) | (c(p.z) << 42);
 }
