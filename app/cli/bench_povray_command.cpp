@@ -22,6 +22,7 @@
 #include "render/image_io.h"
 #include "render/integrator_names.h"
 #include "scene/limits.h"
+#include "scene/render_settings.h"
 #include "util/atomic_file.h"
 #include "util/bitmap_font.h"
 #include "util/error.h"
@@ -43,6 +44,7 @@ struct PovrayBenchArgs {
     int repeats = 5;
     int threads = 2;
     int width = 900, height = 900;
+    std::string tone_map = "clip";  // lenslab's; POV-Ray's PNG clips
 };
 
 // A failure the user can act on: one line, exit 1.
@@ -320,7 +322,9 @@ int run_bench(const PovrayBenchArgs& a) {
                   "--radius",
                   number(a.radius),
                   "--max-photons-per-estimate",
-                  std::to_string(a.gather_max)};
+                  std::to_string(a.gather_max),
+                  "--tone-map",
+                  a.tone_map};
 
     const std::string load_before = load_average();
     std::fprintf(stderr,
@@ -424,6 +428,11 @@ Action add_bench_povray_command(CLI::App& bench) {
         ->capture_default_str()
         ->check(whole_number<int>())
         ->check(CLI::Range(16, kMaxImageSide));
+    cmd->add_option("--tone-map", args->tone_map,
+                    "lenslab's tone map: clip (as POV-Ray's PNG) or log (the caustics' "
+                    "highlights on a log scale: their rings and fringe show)")
+        ->capture_default_str()
+        ->check(CLI::IsMember(kToneMapNames));
     return [args] {
         try {
             return run_bench(*args);

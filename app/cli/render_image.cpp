@@ -132,7 +132,7 @@ RenderImageOutcome render_image(const Scene& scene, const RenderImageOptions& op
     signal(SIGINT, SIG_DFL);
     g_control = nullptr;
     try {
-        write_image(result.film, output, options.exposure);
+        write_image(result.film, output, tone_map_for(scene.render, options.exposure));
     } catch (...) {
         sigprocmask(SIG_SETMASK, &previous, nullptr);
         throw;

@@ -67,7 +67,7 @@ bool export_scene_image(const Scene& scene, const QString& path, QWidget* parent
         message = QObject::tr("export cancelled: %1 not written").arg(path);
     if (message.isEmpty()) {
         try {
-            write_image(result.film, file);
+            write_image(result.film, file, tone_map_for(scene.render));
             return true;
         } catch (const std::exception& e) {
             message = QString::fromStdString(e.what());

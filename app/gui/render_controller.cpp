@@ -9,8 +9,8 @@
 
 namespace lenslab::gui {
 
-QImage to_qimage(const Film& film) {
-    const Image8 img = to_srgb8(film);
+QImage to_qimage(const Film& film, const ToneMap& tone) {
+    const Image8 img = to_srgb8(film, tone);
     QImage out(img.width, img.height, QImage::Format_RGB888);
     for (int y = 0; y < img.height; ++y) {
         std::copy_n(img.rgb.data() + size_t(y) * img.width * 3, img.width * 3, out.scanLine(y));
@@ -107,7 +107,8 @@ void RenderController::render_preview(Scene& scene) {
     if (begin_pass(control)) {
         const ForgetControl forget{this};
         ProgressiveRender preview(scene);
-        if (preview.add_pass(control)) emit preview_ready(to_qimage(preview.image()));
+        if (preview.add_pass(control))
+            emit preview_ready(to_qimage(preview.image(), tone_map_for(s)));
     }
     s.width = width;
     s.height = height;
@@ -160,8 +161,9 @@ void RenderController::run() {
                 }
                 const double seconds = clock.elapsed() / 1000.0;
                 passes = render.passes();
-                emit frame_ready(to_qimage(film), passes, qint64(render.stats(seconds).photons),
-                                 seconds, QString::fromStdString(scene.render.integrator));
+                emit frame_ready(to_qimage(film, tone_map_for(scene.render)), passes,
+                                 qint64(render.stats(seconds).photons), seconds,
+                                 QString::fromStdString(scene.render.integrator));
             }
             if (passes >= m_max_passes) end = RenderEnd::Converged;
         } catch (const std::exception& e) {

@@ -16,6 +16,7 @@
 
 #include "render/film.h"
 #include "render/render_control.h"
+#include "render/tone_map.h"
 #include "scene/scene.h"
 
 namespace lenslab::gui {
@@ -104,7 +105,7 @@ private:
     Film m_last;
 };
 
-// 8-bit sRGB image of a linear film, for display.
-QImage to_qimage(const Film& film);
+// 8-bit sRGB image of a linear film through the scene's tone map, for display.
+QImage to_qimage(const Film& film, const ToneMap& tone = {});
 
 }  // namespace lenslab::gui

@@ -49,10 +49,14 @@ def _thread_count(threads: Optional[int]) -> int:
     raise ValueError(f"threads: must be a whole number from 1 to 1024, got {threads!r}")
 
 
-def write_image(image: np.ndarray, path: PathLike, exposure: float = 0.0) -> None:
+def write_image(image: np.ndarray, path: PathLike, exposure: float = 0.0,
+                tone_map: str = "clip", highlight_stops: float = 8.0) -> None:
     """Writes an (H, W, 3) linear image with the writer `lenslab render -o` uses: .png (sRGB,
-    scaled by 2**exposure) or .exr (linear float), atomically."""
+    scaled by 2**exposure, then `tone_map`: "clip" at white, or "log", highlights on a log
+    scale up to `highlight_stops` stops above the knee, their colour kept) or .exr (linear
+    float, the exposure alone), atomically."""
     path = os.fspath(path)
     if not _lenslab.is_supported_image_path(path):
         raise ValueError(f"path '{path}': unknown image type (use a .png or .exr file name)")
-    _lenslab.write_image(np.asarray(image, dtype=np.float32), path, exposure)
+    _lenslab.write_image(np.asarray(image, dtype=np.float32), path, exposure, tone_map,
+                         highlight_stops)

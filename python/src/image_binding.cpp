@@ -5,6 +5,7 @@
 
 #include "bindings.h"
 #include "render/image_io.h"
+#include "scene/render_settings_spec.h"
 
 namespace lenslab::python {
 
@@ -14,7 +15,17 @@ namespace py = pybind11;
 
 using ImageArray = py::array_t<float, py::array::c_style | py::array::forcecast>;
 
-void write_image_file(const ImageArray& image, const std::string& path, double exposure) {
+void write_image_file(const ImageArray& image, const std::string& path, double exposure,
+                      const std::string& tone_map, double highlight_stops) {
+    RenderSettings settings;
+    settings.tone_map = tone_map;
+    settings.highlight_stops = highlight_stops;
+    // Checked against the render block's declarations, as a scene file's would be.
+    const ElementSpec& spec = render_settings_spec();
+    if (auto problem = choice_problem(spec.param("tone_map"), tone_map))
+        throw py::value_error("tone_map: " + *problem);
+    if (auto problem = range_problem(spec.param("highlight_stops"), highlight_stops))
+        throw py::value_error("highlight_stops: " + *problem);
     if (image.ndim() != 3 || image.shape(2) != 3) {
         throw py::value_error("image: must be an array of shape (height, width, 3)");
     }
@@ -25,15 +36,16 @@ void write_image_file(const ImageArray& image, const std::string& path, double e
         for (int x = 0; x < width; ++x)
             film.set(x, y, {pixels(y, x, 0), pixels(y, x, 1), pixels(y, x, 2)});
     py::gil_scoped_release unlocked;
-    write_image(film, path, exposure);
+    write_image(film, path, tone_map_for(settings, exposure));
 }
 
 }  // namespace
 
 void bind_image(py::module_& m) {
     m.def("write_image", &write_image_file, py::arg("image"), py::arg("path"),
-          py::arg("exposure") = 0.0,
-          "Writes an (H, W, 3) linear image as .png (sRGB) or .exr (linear float)");
+          py::arg("exposure") = 0.0, py::arg("tone_map") = "clip", py::arg("highlight_stops") = 8.0,
+          "Writes an (H, W, 3) linear image as .png (sRGB through the tone map) or .exr (linear "
+          "float)");
     m.def("is_supported_image_path", &is_supported_image_path, py::arg("path"));
 }
 

@@ -12,6 +12,9 @@ struct PixelRgb {
     float r = 0, g = 0, b = 0;
 };
 
+// Relative luminance of linear sRGB (Rec. 709 weights).
+inline double luminance(const PixelRgb& p) { return 0.2126 * p.r + 0.7152 * p.g + 0.0722 * p.b; }
+
 class Film {
 public:
     Film() = default;

@@ -128,15 +128,14 @@ double srgb_to_linear(double v) {
     return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
 }
 
-Image8 to_srgb8(const Film& film, double exposure_stops) {
-    const double scale = std::exp2(exposure_stops);
+Image8 to_srgb8(const Film& film, const ToneMap& tone) {
     Image8 img{film.width(), film.height(), {}};
     img.rgb.resize(size_t(img.width) * img.height * 3);
-    auto encode = [&](float v) {
-        return static_cast<unsigned char>(std::lround(255.0 * linear_to_srgb(v * scale)));
+    auto encode = [](float v) {
+        return static_cast<unsigned char>(std::lround(255.0 * linear_to_srgb(v)));
     };
     for (size_t i = 0; i < film.pixels().size(); ++i) {
-        const PixelRgb& p = film.pixels()[i];
+        const PixelRgb p = tone.apply(film.pixels()[i]);
         img.rgb[3 * i + 0] = encode(p.r);
         img.rgb[3 * i + 1] = encode(p.g);
         img.rgb[3 * i + 2] = encode(p.b);
@@ -149,7 +148,7 @@ bool is_supported_image_path(const std::string& path) {
     return ext == ".png" || ext == ".exr";
 }
 
-void write_image(const Film& film, const std::string& path, double exposure_stops) {
+void write_image(const Film& film, const std::string& path, const ToneMap& tone) {
     const std::string ext = extension_of(path);
     if (!is_supported_image_path(path)) {
         throw ImageError("cannot write '" + path + "': unknown image type '" + ext +
@@ -157,9 +156,9 @@ void write_image(const Film& film, const std::string& path, double exposure_stop
     }
     write_via_temporary(path, [&](const std::string& tmp) {
         if (ext == ".png") {
-            write_png(to_srgb8(film, exposure_stops), tmp, path);
+            write_png(to_srgb8(film, tone), tmp, path);
         } else {
-            write_exr(film, tmp, path, std::exp2(exposure_stops));
+            write_exr(film, tmp, path, std::exp2(tone.exposure_stops));
         }
     });
 }

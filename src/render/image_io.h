@@ -1,12 +1,13 @@
 #pragma once
-// Image files: PNG (8-bit sRGB, exposure applied) and OpenEXR (linear float), chosen by the
-// file name's extension.
+// Image files: PNG (8-bit sRGB, exposure and tone map applied) and OpenEXR (linear float),
+// chosen by the file name's extension.
 
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "render/film.h"
+#include "render/tone_map.h"
 #include "util/error.h"
 
 namespace lenslab {
@@ -21,10 +22,11 @@ double linear_to_srgb(double v);
 // Its inverse on [0, 1]: an sRGB-encoded value (a colour picker's) -> linear.
 double srgb_to_linear(double v);
 
-// Writes `film` to `path`: .png (sRGB, scaled by 2^exposure_stops and clipped) or .exr
-// (linear, exposure also applied). Written atomically (util/atomic_file.h): an interrupted
-// or failed write never leaves a half image, nor its temporary file. Throws ImageError.
-void write_image(const Film& film, const std::string& path, double exposure_stops = 0.0);
+// Writes `film` to `path`: .png (sRGB through `tone`: exposure, then clipped or compressed)
+// or .exr (linear, only the exposure applied). Written atomically (util/atomic_file.h): an
+// interrupted or failed write never leaves a half image, nor its temporary file. Throws
+// ImageError.
+void write_image(const Film& film, const std::string& path, const ToneMap& tone = {});
 
 // True if the extension is one write_image understands.
 bool is_supported_image_path(const std::string& path);
@@ -35,7 +37,7 @@ struct Image8 {
     std::vector<unsigned char> rgb;  // width * height * 3
 };
 Image8 read_png(const std::string& path);
-Image8 to_srgb8(const Film& film, double exposure_stops = 0.0);
+Image8 to_srgb8(const Film& film, const ToneMap& tone = {});
 
 // Writes an 8-bit image as a PNG, atomically (temporary file, then rename). Throws ImageError.
 void write_png_image(const Image8& image, const std::string& path);

@@ -16,6 +16,7 @@ inline constexpr double kMinBranchWeight = 1e-6;
 inline const std::vector<std::string> kIntegratorNames{"whitted", "photon_map", "sppm", "path"};
 inline const std::vector<std::string> kPhotonFilterNames{"cone", "gaussian", "box"};
 inline const std::vector<std::string> kDirectLightNames{"shadow_rays", "photon_map"};
+inline const std::vector<std::string> kToneMapNames{"clip", "log"};
 
 // The scene file's `render` block; the command line may override any of it.
 struct RenderSettings {
@@ -56,6 +57,10 @@ struct RenderSettings {
     // In fog: 0, every volume photon's disc a few pixel footprints (sharp, fastest); N, a
     // sparse photon's disc grows until about N neighbours share it (render/volume_photon_radii.h).
     int volume_neighbours = 0;
+
+    // How light brighter than white is shown (render/tone_map.h): clip | log.
+    std::string tone_map = "clip";
+    double highlight_stops = 8;  // log: stops above the knee that reach white
 };
 
 }  // namespace lenslab

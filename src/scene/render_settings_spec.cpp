@@ -139,6 +139,17 @@ ElementSpec declare_render_settings() {
             .in_editor("Volume neighbours")
             .under(sppm)
             .on_command_line(),
+        choice_param("tone_map", d.tone_map, kToneMapNames)
+            .describe("How light brighter than white is shown: clip, or log (highlights on a "
+                      "log scale, their colour kept)")
+            .in_editor("Tone map")
+            .on_command_line(),
+        number_param("highlight_stops", d.highlight_stops)
+            .at_least(1)
+            .at_most(24)
+            .describe("tone_map log: stops above the knee (0.5) that reach the top")
+            .in_editor("Highlight stops", 1)
+            .on_command_line(),
     };
     return s;
 }

@@ -102,6 +102,8 @@ void read_render(const json& j, RenderSettings& s) {
     s.initial_radius = r.real("initial_radius");
     s.alpha = r.real("alpha");
     s.volume_neighbours = static_cast<int>(r.whole("volume_neighbours"));
+    s.tone_map = r.text("tone_map");
+    s.highlight_stops = r.real("highlight_stops");
 }
 
 std::shared_ptr<const GrinProfile> read_grin(const json& j, const std::string& path) {

@@ -98,3 +98,23 @@ def test_write_image_png_equals_the_cli(tmp_path):
     run_cli("render", SCENE, "-o", tmp_path / "cli.png", "-q", *SMALL_CLI, "--exposure", 1)
     lenslab.write_image(lenslab.render(SCENE, **SMALL), tmp_path / "py.png", exposure=1)
     assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
+
+
+def test_write_image_tone_map_log_equals_the_cli(tmp_path):
+    run_cli("render", SCENE, "-o", tmp_path / "cli.png", "-q", *SMALL_CLI, "--exposure", 3,
+            "--tone-map", "log", "--highlight-stops", 6)
+    image = lenslab.render(SCENE, **SMALL)
+    lenslab.write_image(image, tmp_path / "log.png", exposure=3, tone_map="log",
+                        highlight_stops=6)
+    assert (tmp_path / "log.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
+    # Three stops up the default scene has highlights: the log map keeps them apart.
+    lenslab.write_image(image, tmp_path / "clip.png", exposure=3)
+    assert (tmp_path / "clip.png").read_bytes() != (tmp_path / "log.png").read_bytes()
+
+
+def test_write_image_refuses_an_unknown_tone_map(tmp_path):
+    image = np.zeros((2, 2, 3), dtype=np.float32)
+    with pytest.raises(ValueError, match="tone_map: unknown"):
+        lenslab.write_image(image, tmp_path / "x.png", tone_map="filmic")
+    with pytest.raises(ValueError, match="highlight_stops"):
+        lenslab.write_image(image, tmp_path / "x.png", tone_map="log", highlight_stops=0)

@@ -40,7 +40,7 @@ TEST(ImageIo, PngRoundTripAndExrWrite) {
     EXPECT_EQ(img.rgb[0], 255);
     EXPECT_EQ(img.rgb[(1 * 3 + 2) * 3], 188);  // round(255 * 0.7354)
     const std::string exr = (dir / "lenslab_test_io.exr").string();
-    write_image(f, exr, 1.0);
+    write_image(f, exr, ToneMap{1.0});
     EXPECT_GT(std::filesystem::file_size(exr), 0u);
     std::filesystem::remove(png);
     std::filesystem::remove(exr);

@@ -17,8 +17,6 @@ namespace {
 
 constexpr double kPiSppm = std::numbers::pi;
 
-double luminance(const PixelRgb& p) { return 0.2126 * p.r + 0.7152 * p.g + 0.0722 * p.b; }
-
 struct Box {
     int x0, y0, x1, y1;  // pixels [x0, x1) x [y0, y1)
 };

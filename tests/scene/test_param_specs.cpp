@@ -443,7 +443,9 @@ TEST(RenderOptions, AreTheDeclaredKeysWithTheirRangesInTheHelp) {
                                       "--time",
                                       "--pass-photons",
                                       "--initial-radius",
-                                      "--volume-neighbours"};
+                                      "--volume-neighbours",
+                                      "--tone-map",
+                                      "--highlight-stops"};
     std::vector<std::string> declared;
     for (const ParamSpec& p : lenslab::render_settings_spec().params) {
         if (p.cli) declared.push_back(p.option_name());

@@ -18,8 +18,6 @@ namespace lenslab {
 
 namespace {
 
-double luminance(const PixelRgb& p) { return 0.2126 * p.r + 0.7152 * p.g + 0.0722 * p.b; }
-
 double seconds_since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
