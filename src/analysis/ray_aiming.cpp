@@ -19,7 +19,6 @@ RayAimer::RayAimer(const OpticalSystem& system, const FirstOrder& first_order, d
     : system_(system),
       first_order_(first_order),
       field_(field),
-      nm_(wavelength_nm),
       ratios_(index_ratios(system, wavelength_nm)),
       scale_(std::max(system.last_vertex(), 2.0 * system.max_semi_diameter())) {
     if (!first_order.object_distance) {

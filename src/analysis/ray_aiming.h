@@ -43,8 +43,8 @@ private:
 
     const OpticalSystem& system_;
     const FirstOrder& first_order_;
-    double field_, nm_;
-    IndexRatios ratios_;  // index_ratios(system_, nm_), once for every ray
+    double field_;
+    IndexRatios ratios_;  // index_ratios at the wavelength, once for every ray
     double scale_;        // the system's size, for tolerances and difference steps
     double z_start_ = 0;  // object at infinity: where the collimated rays start
     double direction_y_ = 0, direction_z_ = 1;  // object at infinity: the field direction

@@ -87,10 +87,10 @@ TEST(LensBenchDefaults, AnalyzeOfALensFileMeasuresAsItsFileSays) {
     request.spots = true;
     const nlohmann::ordered_json j = analyze_report(achromat_from_its_file(), request);
     EXPECT_EQ(j["lens_file_bench"]["taken"],
-              nlohmann::json::array({"wavelengths", "fields", "epd", "image_distance"}));
+              nlohmann::ordered_json::array({"wavelengths", "fields", "epd", "image_distance"}));
     EXPECT_DOUBLE_EQ(j["first_order"]["entrance_pupil"]["diameter"].get<double>(), 25.4);
     EXPECT_DOUBLE_EQ(j["spots"]["image_position"].get<double>(), 97.1);
-    EXPECT_EQ(j["spots"]["wavelengths_nm"], nlohmann::json::array({486.1327, 587.5618, 656.2725}));
+    EXPECT_EQ(j["spots"]["wavelengths_nm"], nlohmann::ordered_json::array({486.1327, 587.5618, 656.2725}));
     // --lens naming another lens: the file's data are not that lens's.
     request.lens = "other";
     const nlohmann::ordered_json other = analyze_report(

@@ -199,7 +199,7 @@ TEST(SpotDiagrams, JsonListsEveryFieldAndWavelength) {
     EXPECT_EQ(j["per_wavelength"][4]["rays"], 19);
     ASSERT_EQ(j["polychromatic"].size(), 2u);
     EXPECT_EQ(j["polychromatic"][1]["rays"], 57);
-    EXPECT_EQ(j["weights"], nlohmann::json::array({1.0, 1.0, 1.0}));
+    EXPECT_EQ(j["weights"], nlohmann::ordered_json::array({1.0, 1.0, 1.0}));
     EXPECT_NEAR(j["image_position"].get<double>(), f.image_position, 1e-12);
     EXPECT_EQ(j["reference"], "centroid");
 }
