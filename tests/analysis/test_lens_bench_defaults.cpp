@@ -90,7 +90,8 @@ TEST(LensBenchDefaults, AnalyzeOfALensFileMeasuresAsItsFileSays) {
               nlohmann::ordered_json::array({"wavelengths", "fields", "epd", "image_distance"}));
     EXPECT_DOUBLE_EQ(j["first_order"]["entrance_pupil"]["diameter"].get<double>(), 25.4);
     EXPECT_DOUBLE_EQ(j["spots"]["image_position"].get<double>(), 97.1);
-    EXPECT_EQ(j["spots"]["wavelengths_nm"], nlohmann::ordered_json::array({486.1327, 587.5618, 656.2725}));
+    EXPECT_EQ(j["spots"]["wavelengths_nm"],
+              nlohmann::ordered_json::array({486.1327, 587.5618, 656.2725}));
     // --lens naming another lens: the file's data are not that lens's.
     request.lens = "other";
     const nlohmann::ordered_json other = analyze_report(

@@ -49,7 +49,8 @@ interrupt() {
 
 # Photon tracing: 8 million photons (aimed at the glass) take seconds; interrupt after one.
 interrupt photons "sleep 1" --integrator photon_map --caustic-photons 8000000 --width 64 --height 48 --spp 1 --threads 2
-# Pixels: wait for the first progress line, printed once the first tile is done.
+# Pixels: wait for the first progress line, printed once the first tile is done (few samples
+# per pixel, so it comes soon; many pixels, so the render is still far from done).
 interrupt pixels 'for i in $(seq 600); do grep -q rendering "$err" && break; sleep 0.05; done' \
-    --integrator whitted --width 1600 --height 1200 --spp 64 --threads 2
+    --integrator whitted --width 3200 --height 2400 --spp 16 --threads 2
 exit $status

@@ -221,6 +221,7 @@ json random_scene_json(uint64_t seed, const RandomSceneOptions& o) {
                     {"seed", d.integer(0, 1000)},
                     {"max_depth", d.integer(0, 12)},
                     {"photons", o.photons},
+                    {"passes", o.passes},
                     {"radius", d.uniform(0.05, 0.5)},
                     {"filter", kFilters[d.integer(0, 2)]},
                     {"light_samples", d.integer(1, 3)},

@@ -19,6 +19,7 @@ struct RandomSceneOptions {
     bool dispersive = true;
     int width = 12, height = 9, spp = 2;
     int64_t photons = 2000;
+    int passes = 64;  // sppm
 };
 
 // The scene for `seed`, as JSON (for messages) and built. Objects the reader refuses (a lens

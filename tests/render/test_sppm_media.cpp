@@ -28,7 +28,7 @@ TEST(SppmMedia, PhotonsShowAMirroredBeamAsBrightAsTheExactSumShowsTheBeam) {
     const double sigma_t = 0.05;
     const Scene scene = parse_scene(R"({
       "camera": {"position": [0, 8, 0], "look_at": [0, 0, 0], "up": [0, 0, -1], "fov": 40},
-      "render": {"width": 96, "height": 96, "integrator": "sppm", "passes": 48,
+      "render": {"width": 96, "height": 96, "integrator": "sppm", "passes": 24,
                  "pass_photons": 80000, "max_depth": 4},
       "atmosphere": {"scattering": 0.05},
       "objects": [{"type": "rectangle", "center": [1, 0, -1], "normal": [-0.70710678, 0, 0.70710678],
