@@ -40,19 +40,14 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
                                         in_scattered);
                 l += path.of(in_scattered);
             }
-            const FreeFlight f = sample_free_flight(*medium, t_max, rng);
+            const FreeFlight f = sample_free_flight(*medium, ray, t_max, rng);
             path *= f.weight;
             if (f.scattered) {
                 if (bounce >= scene.render.max_depth) break;
+                // No direct light here: every light (points, spots, beams, spheres) is
+                // gathered along the whole segment by add_light_in_scattering above.
                 const Vec3 p = ray.at(f.t);
                 const HenyeyGreenstein phase(medium->g);
-                LightSum e(path);
-                // Points, spots, beams and spheres: add_light_in_scattering's, on every
-                // segment.
-                add_direct_light(
-                    scene, p, scene.render.light_samples, rng,
-                    [&](const Vec3& wi) { return phase.eval(dot(wi, ray.direction)); }, e, false);
-                l += path.of(e);
                 ray = {p, phase.sample(ray.direction, rng.uniform(), rng.uniform())};
                 seen_from_camera = false;
                 count_emission = false;
