@@ -31,14 +31,14 @@ ElementSpec declare_medium() {
             .describe("phase function's mean cosine: > 0 forward, 0 even, < 0 back")
             .in_editor("Anisotropy g"),
         string_param("density", "")
-            .as_written("formula f(x, y, z)")
+            .as_written("formula f(x, y, z), or a grid object")
             .describe("multiplies both coefficients at each point (x, y, z in scene units); "
                       "\"\": the same everywhere")
             .in_editor("Density f(x, y, z)"),
         number_param("density_max", 0)
             .above(0)
-            .meaning_auto("auto: 1.25 times the largest f on a 33 x 33 x 33 grid over the "
-                          "medium's box")
+            .meaning_auto("auto: a grid's largest value; 1.25 times the largest f on a 33 x 33 "
+                          "x 33 grid over the medium's box")
             // Not in the editor: its automatic estimate suits a form, and 0 is no bound.
             .describe("a bound f never exceeds, for delta and ratio tracking"),
     };
@@ -55,20 +55,24 @@ const ElementSpec& medium_spec() {
 
 namespace {
 
-// The density at `path`, with its majorant over `region`: the user's, checked against the
-// grid, or the grid's maximum with a margin.
+// The density at `path` (a formula or a grid), with its majorant over `region`: the user's,
+// checked against the density's values, or estimated from them.
 std::shared_ptr<const MediumDensity> read_density(SpecReader& r, const Aabb& region,
                                                   double user_bound) {
     const std::string path = r.child_path("density");
     std::shared_ptr<MediumDensity> d;
-    try {
-        d = std::make_shared<MediumDensity>(r.text("density"), path);
-    } catch (const FormulaError& e) {
-        throw SceneError(path, e.message());
+    if (r.require("density").is_object()) {
+        d = std::make_shared<MediumDensity>(read_density_grid(r.require("density"), path), path);
+    } else {
+        try {
+            d = std::make_shared<MediumDensity>(r.text("density"), path);
+        } catch (const FormulaError& e) {
+            throw SceneError(path, e.message());
+        }
     }
     const MediumDensity::Survey s = d->survey(region);
     if (!s.problem.empty()) throw SceneError(path, s.problem);
-    double bound = s.max * MediumDensity::kSafety;
+    double bound = s.exact ? s.max : s.max * MediumDensity::kSafety;
     if (user_bound > 0) {
         bound = user_bound;
         if (s.max > bound) {
@@ -95,7 +99,8 @@ Medium read_medium(const nlohmann::json& j, const std::string& path, const Aabb&
     m.scattering = bands(r.colour("scattering"));
     m.g = r.real("g");
     const double user_bound = r.has("density_max") ? r.real("density_max") : 0;
-    if (!r.text("density").empty()) {
+    const nlohmann::json* density = r.find("density");
+    if (density && (density->is_object() || !r.text("density").empty())) {
         m.density = read_density(r, region, user_bound);
     } else if (user_bound > 0) {
         throw SceneError(r.child_path("density_max"), "bounds a density: give one too");

@@ -1,5 +1,6 @@
 #include "scene/medium_density.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -22,14 +23,22 @@ MediumDensity::MediumDensity(const std::string& formula, std::string owner)
     : m_formula(std::make_unique<Formula>(formula, kDensityVariables, "(use x, y and z)")),
       m_owner(std::move(owner)) {}
 
+MediumDensity::MediumDensity(DensityGrid grid, std::string owner)
+    : m_grid(std::make_unique<DensityGrid>(std::move(grid))), m_owner(std::move(owner)) {}
+
 void MediumDensity::bound_over(const Aabb& region, double bound) {
     m_region = region;
     m_bound = bound;
 }
 
 MediumDensity::Survey MediumDensity::survey(const Aabb& region) const {
-    Formula::Evaluator& f = m_formula->local();
     Survey out;
+    if (m_grid) {  // its values were checked as they were read
+        out.max = m_grid->max();
+        out.exact = true;
+        return out;
+    }
+    Formula::Evaluator& f = m_formula->local();
     const Vec3 e = region.extent();
     for (int i = 0; i < kCheckGrid; ++i) {
         for (int j = 0; j < kCheckGrid; ++j) {
@@ -58,7 +67,8 @@ MediumDensity::Survey MediumDensity::survey(const Aabb& region) const {
 
 double MediumDensity::Local::operator()(const Vec3& p) {
     if (!m_d.m_region.contains(p)) return 0.0;
-    const double v = m_eval({p.x, p.y, p.z, 0.0});
+    if (!m_eval) return std::min(m_d.m_grid->at(p), m_d.m_bound);
+    const double v = (*m_eval)({p.x, p.y, p.z, 0.0});
     if (std::isnan(v))
         throw UndefinedFormulaError(m_d.m_owner, *m_d.m_formula, point_text(p),
                                     {p.x, p.y, p.z, 0.0});

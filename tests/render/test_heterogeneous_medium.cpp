@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -46,9 +47,25 @@ TEST(HeterogeneousMedium, RatioTrackingKeepsBeerLambertOfALinearDensity) {
         mean += ratio_track(*m.density, 0.6, kAlongZ, d, rng) / kSamples;
         mean_bands += ratio_track(m, kAlongZ, d, rng)[1] / kSamples;
     }
+    std::printf("ratio tracking %.5f, per band %.5f, exp(-tau) %.5f\n", mean, mean_bands, expected);
     // Each estimate lies in [0, 1]: the standard error is below 0.5 / sqrt(2e5) = 0.0011.
     EXPECT_NEAR(mean, expected, 0.005);
     EXPECT_NEAR(mean_bands, expected, 0.005);
+}
+
+// The same density as samples on a grid along z (trilinear interpolation is exact for a
+// linear f): the same transmittance.
+TEST(HeterogeneousMedium, AGridOfTheLinearDensityKeepsItsBeerLambert) {
+    const Medium m = read_medium(nlohmann::json::parse(R"({"absorption": 0.6, "density":
+        {"grid": [1, 1, 5], "box": [[-1, -1, 0], [1, 1, 4]], "values": [0.5, 1.3, 2.1, 2.9, 3.7]}})"),
+                                 "medium", kLinearBox);
+    Rng rng(8, 9);
+    constexpr int kSamples = 200000;
+    double mean = 0;
+    for (int i = 0; i < kSamples; ++i) mean += ratio_track(m, kAlongZ, 2, rng)[0] / kSamples;
+    std::printf("grid: ratio tracking %.5f, exp(-tau) %.5f\n", mean,
+                std::exp(-0.6 * linear_depth(2)));
+    EXPECT_NEAR(mean, std::exp(-0.6 * linear_depth(2)), 0.005);
 }
 
 TEST(HeterogeneousMedium, DeltaTrackingCollidesWithBeerLambertsProbability) {
@@ -61,6 +78,9 @@ TEST(HeterogeneousMedium, DeltaTrackingCollidesWithBeerLambertsProbability) {
         beyond_half += t >= 1.0;
         beyond += t >= 2.0;
     }
+    std::printf("beyond 1: %.5f (%.5f), beyond 2: %.5f (%.5f)\n", double(beyond_half) / kSamples,
+                std::exp(-0.6 * linear_depth(1)), double(beyond) / kSamples,
+                std::exp(-0.6 * linear_depth(2)));
     // P(no collision before s) = exp(-sigma (a s + b s^2 / 2)); binomial standard errors
     // below 0.0012.
     EXPECT_NEAR(double(beyond_half) / kSamples, std::exp(-0.6 * linear_depth(1)), 0.005);
@@ -88,6 +108,8 @@ TEST(HeterogeneousMedium, FreeFlightKeepsBeerLambertInEveryBand) {
     for (int b = 0; b < 3; ++b) {
         SCOPED_TRACE(b);
         const double t = std::exp(-sigma_t[b] * depth);
+        std::printf("band %d: passed %.5f (%.5f), scattered %.5f (%.5f)\n", b, passed[b], t,
+                    scattered[b], sigma_s[b] / sigma_t[b] * (1 - t));
         EXPECT_NEAR(passed[b], t, 0.01 * t);
         EXPECT_NEAR(scattered[b], sigma_s[b] / sigma_t[b] * (1 - t), 0.006);
     }
@@ -108,6 +130,7 @@ TEST(HeterogeneousMedium, ShadowTransmittanceThroughADensityBox) {
     for (int i = 0; i < kSamples; ++i)
         mean += shadow_transmittance(scene, {0, 0, -1}, {0, 0, 1}, 5, rng)[0] / kSamples;
     const double expected = std::exp(-0.5 * (linear_depth(2.5) - linear_depth(0.5)));
+    std::printf("shadow transmittance %.5f, expected %.5f\n", mean, expected);
     EXPECT_NEAR(mean, expected, 0.005);
 }
 
@@ -135,6 +158,8 @@ TEST(HeterogeneousMedium, ADensityOfOneRendersAsTheHomogeneousMedium) {
         })"));
     };
     const double homogeneous = render(""), one = render(R"(, "density": "1")");
+    std::printf("homogeneous %.6g, density 1 %.6g (ratio %.4f)\n", homogeneous, one,
+                one / homogeneous);
     ASSERT_GT(homogeneous, 0);
     EXPECT_NEAR(one, homogeneous, 0.03 * homogeneous);
 }
@@ -142,12 +167,15 @@ TEST(HeterogeneousMedium, ADensityOfOneRendersAsTheHomogeneousMedium) {
 // A lamp in a fog whose density falls off away from it, seen with every order of
 // scattering: sppm (single scattering summed along camera segments with ratio tracking,
 // the rest from photons placed by delta tracking) agrees with the path tracer (the unbiased
-// reference).
+// reference). sppm's kernel estimate is biased low in this dense fog until its radii have
+// shrunk: sppm / path measured 0.951 after 48 passes of 20000 photons, 0.969 after 192, 0.988
+// after 768; 0.977 after the 256 passes of 10000 here (a homogeneous fog of density 1: 1.003
+// after 192).
 TEST(HeterogeneousMedium, SppmAgreesWithThePathTracerInAHeterogeneousFog) {
     const auto render = [](const std::string& integrator) {
         return mean_green(parse_scene(R"({
           "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0], "fov": 20},
-          "render": {"width": 8, "height": 8, "spp": 1500, "passes": 48, "pass_photons": 20000,
+          "render": {"width": 8, "height": 8, "spp": 1500, "passes": 256, "pass_photons": 10000,
                      "max_depth": 8, "integrator": ")" +
                                       integrator + R"j("},
           "objects": [
@@ -159,6 +187,7 @@ TEST(HeterogeneousMedium, SppmAgreesWithThePathTracerInAHeterogeneousFog) {
         })j"));
     };
     const double path = render("path"), sppm = render("sppm");
+    std::printf("path %.6g, sppm %.6g (ratio %.4f)\n", path, sppm, sppm / path);
     ASSERT_GT(path, 0);
     EXPECT_NEAR(sppm, path, 0.05 * path);
 }
@@ -179,6 +208,7 @@ TEST(HeterogeneousMedium, PhotonsThroughAnAbsorbingDensityKeepBeerLambertsShare)
     const double p =
         measure_detectors(scene, {.photons_per_light = 40000}).detectors.at(0).total_power;
     const double expected = std::exp(-sigma * 4);
+    std::printf("detector %.5f W, exp(-sigma 4) %.5f W\n", p, expected);
     EXPECT_NEAR(p, expected, 0.02 * expected);
 }
 
