@@ -1,6 +1,7 @@
 #include "render/integrators/path.h"
 
 #include <numbers>
+#include <stdexcept>
 
 #include "math/rng.h"
 #include "optics/phase_function.h"
@@ -16,6 +17,12 @@ PathIntegrator::PathIntegrator(const Scene& scene) : PixelIntegrator(scene) {
     if (!scene.render.ambient.is_black()) m_ambient = illuminant_from_rgb(scene.render.ambient);
     if (!scene.render.background.is_black())
         m_background = illuminant_from_rgb(scene.render.background);
+    // radiance() adds no direct light at free-flight scattering points: a light that media
+    // did not gather along whole segments would be missing from them.
+    for (const LightPtr& light : scene.lights()) {
+        if (!light->samples_in_scattering())
+            throw std::logic_error("path: a light that media do not gather along segments");
+    }
 }
 
 Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w, Rng& rng) const {
