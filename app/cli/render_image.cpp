@@ -75,6 +75,21 @@ std::optional<std::string> unbounded_passes_error(const RenderOverrides& overrid
     return "--passes 0 means no pass limit, which needs a time budget (--time)";
 }
 
+namespace {
+
+// Points where a heterogeneous medium's density left [0, bound] (medium_density.h): each
+// a small bias, and a sign that the bound was estimated too low.
+uint64_t density_points_clamped(const Scene& scene) {
+    uint64_t n = 0;
+    if (scene.atmosphere && scene.atmosphere->density)
+        n += scene.atmosphere->density->points_clamped();
+    for (const SceneObject& o : scene.objects)
+        if (o.medium && o.medium->density) n += o.medium->density->points_clamped();
+    return n;
+}
+
+}  // namespace
+
 RenderImageOutcome render_image(const Scene& scene, const RenderImageOptions& options,
                                 const std::string& output, Communicator& cluster) {
     const RenderSettings& s = scene.render;
@@ -120,6 +135,12 @@ RenderImageOutcome render_image(const Scene& scene, const RenderImageOptions& op
                      "lenslab: warning: %lld samples came out NaN or infinite and were left out of "
                      "their pixels (a bug in lenslab; please report it with the scene)\n",
                      static_cast<long long>(control.non_finite_samples()));
+    }
+    if (const uint64_t clamped = density_points_clamped(scene)) {
+        std::fprintf(stderr,
+                     "lenslab: warning: a medium's density exceeded its bound at %llu points "
+                     "met while rendering, and was clamped there (give a larger density_max)\n",
+                     static_cast<unsigned long long>(clamped));
     }
     // The file is written atomically; holding Ctrl-C (and kill's SIGTERM) back until it is
     // in place also leaves no temporary file behind. One that came meanwhile ends the

@@ -55,8 +55,10 @@ SceneUpdate SceneDocument::read_update(const nlohmann::json& j) const {
     SceneUpdate update;
     const std::set<std::string> blocks = differing_blocks(m_json, j);
     // The camera is required: removing it goes through the whole reader for its message.
+    // An atmosphere with a density is bounded over the whole scene: read with it.
     const bool alone = j.is_object() && j.contains("camera") &&
-                       std::all_of(blocks.begin(), blocks.end(), updatable_alone);
+                       std::all_of(blocks.begin(), blocks.end(), updatable_alone) &&
+                       !(j.contains("atmosphere") && atmosphere_needs_region(j.at("atmosphere")));
     if (!alone) {
         update.scene = scene_from_json(j, m_folder);
         return update;
@@ -71,8 +73,8 @@ SceneUpdate SceneDocument::read_update(const nlohmann::json& j) const {
         update.lights = j.contains("lights") ? lights_from_json(j.at("lights")) : SceneLights{};
     }
     if (blocks.count("atmosphere")) {
-        update.atmosphere.emplace(j.contains("atmosphere") ? read_atmosphere(j.at("atmosphere"))
-                                                           : std::nullopt);
+        update.atmosphere.emplace(
+            j.contains("atmosphere") ? read_atmosphere(j.at("atmosphere"), Aabb{}) : std::nullopt);
     }
     return update;
 }

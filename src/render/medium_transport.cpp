@@ -1,8 +1,10 @@
 #include "render/medium_transport.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "optics/phase_function.h"
+#include "render/density_tracking.h"
 #include "scene/segment_medium.h"
 
 namespace lenslab {
@@ -45,14 +47,58 @@ namespace {
 
 bool is_dark(const BandWeights& w) { return w == BandWeights{0, 0, 0}; }
 
+FreeFlight heterogeneous_free_flight(const Medium& medium, const Ray& ray, double t_max, Rng& rng) {
+    FreeFlight out;
+    if (medium.scattering == BandWeights{0, 0, 0}) {
+        out.weight = ratio_track(medium, ray, t_max, rng);
+        return out;
+    }
+    const MediumDensity& density = *medium.density;
+    const BandWeights mu = medium.extinction();
+    const double mu_max = std::max({mu[0], mu[1], mu[2]});
+    const double mu_mean = (mu[0] + mu[1] + mu[2]) / 3;
+    const double majorant = mu_max * density.bound();
+    if (!(majorant > 0)) return out;
+    const RaySpan span = span_inside(density.region(), ray, t_max);
+    MediumDensity::Local f = density.local();
+    for (double t = span.t0;;) {
+        t -= std::log1p(-rng.uniform()) / majorant;
+        if (!(t < span.t1)) return out;
+        const double ft = f(ray.at(t));
+        // P(real) = mean_b sigma_t,b(x) / majorant = mu_mean f / (mu_max bound).
+        const double real = mu_mean * ft / majorant;
+        if (rng.uniform() < real) {
+            out.scattered = true;
+            out.t = t;
+            // sigma_s,b(x) / (majorant P): f cancels.
+            for (int b = 0; b < 3; ++b) out.weight[b] *= medium.scattering[b] / mu_mean;
+            return out;
+        }
+        for (int b = 0; b < 3; ++b)
+            out.weight[b] *= (majorant - mu[b] * ft) / (majorant - mu_mean * ft);
+    }
+}
+
+// Along one stretch of a shadow ray or a camera segment.
+BandWeights stretch_transmittance(const Medium& medium, const Ray& ray, double length, Rng& rng) {
+    return medium.is_heterogeneous() ? ratio_track(medium, ray, length, rng)
+                                     : medium.transmittance(length);
+}
+
 }  // namespace
 
-BandWeights shadow_transmittance(const Scene& scene, const Vec3& p, const Vec3& wi,
-                                 double distance) {
+FreeFlight sample_free_flight(const Medium& medium, const Ray& ray, double t_max, Rng& rng) {
+    return medium.is_heterogeneous() ? heterogeneous_free_flight(medium, ray, t_max, rng)
+                                     : sample_free_flight(medium, t_max, rng);
+}
+
+BandWeights shadow_transmittance(const Scene& scene, const Vec3& p, const Vec3& wi, double distance,
+                                 Rng& rng) {
     const double eps = surface_epsilon(p);
     if (scene.occluded({p, wi}, eps, distance - eps)) return {0, 0, 0};
     if (scene.medium_solids().empty()) {
-        return scene.atmosphere ? scene.atmosphere->transmittance(distance) : BandWeights{1, 1, 1};
+        return scene.atmosphere ? stretch_transmittance(*scene.atmosphere, {p, wi}, distance, rng)
+                                : BandWeights{1, 1, 1};
     }
     // Nothing blocks the way: every surface left on it is a medium's boundary, crossed one
     // segment at a time.
@@ -71,7 +117,7 @@ BandWeights shadow_transmittance(const Scene& scene, const Vec3& p, const Vec3& 
         const Medium* medium =
             hit ? segment_medium(scene, ray, &it) : medium_at(scene, ray.at(0.5 * length));
         if (medium) {
-            const BandWeights m = medium->transmittance(length);
+            const BandWeights m = stretch_transmittance(*medium, ray, length, rng);
             for (int b = 0; b < 3; ++b) tr[b] *= m[b];
         }
         if (!hit) return tr;
@@ -81,10 +127,8 @@ BandWeights shadow_transmittance(const Scene& scene, const Vec3& p, const Vec3& 
 }
 
 void add_direct_light(const Scene& scene, const Vec3& p, int samples, Rng& rng,
-                      const std::function<double(const Vec3& wi)>& angular, LightSum& e,
-                      bool segment_lights) {
+                      const std::function<double(const Vec3& wi)>& angular, LightSum& e) {
     scene.light_sampler().for_each(rng, [&](const Light& light, double weight) {
-        if (!segment_lights && light.samples_in_scattering()) return;
         // A point or a beam is exact in one sample; an area light takes `samples`.
         const int count = light.is_delta() ? 1 : samples;
         for (int s = 0; s < count; ++s) {
@@ -92,7 +136,7 @@ void add_direct_light(const Scene& scene, const Vec3& p, int samples, Rng& rng,
             if (!light.sample_li(p, rng, ls)) continue;
             const double a = angular(ls.wi);
             if (a <= 0.0) continue;
-            const BandWeights tr = shadow_transmittance(scene, p, ls.wi, ls.distance);
+            const BandWeights tr = shadow_transmittance(scene, p, ls.wi, ls.distance, rng);
             if (is_dark(tr)) continue;
             e.add(light.spectrum(), ls.factor * a * weight / count, tr);
         }
@@ -111,12 +155,15 @@ void add_light_in_scattering(const Scene& scene, const Medium& medium, const Ray
             const Vec3 p = ray.at(t);
             LightSample ls;
             if (!light->sample_li(p, rng, ls)) continue;
-            const BandWeights from_light = shadow_transmittance(scene, p, ls.wi, ls.distance);
+            // sigma_s at p: a heterogeneous medium's density there (0: nothing scatters).
+            const double density = medium.is_heterogeneous() ? medium.density->local()(p) : 1.0;
+            if (density == 0) continue;
+            const BandWeights from_light = shadow_transmittance(scene, p, ls.wi, ls.distance, rng);
             if (is_dark(from_light)) continue;
-            const BandWeights to_camera = medium.transmittance(t);
+            const BandWeights to_camera = stretch_transmittance(medium, ray, t, rng);
             BandWeights bands;
             for (int b = 0; b < 3; ++b)
-                bands[b] = medium.scattering[b] * to_camera[b] * from_light[b];
+                bands[b] = medium.scattering[b] * density * to_camera[b] * from_light[b];
             e.add(light->spectrum(),
                   ls.factor * phase.eval(dot(ls.wi, ray.direction)) / (pdf * count), bands);
         }

@@ -39,6 +39,7 @@
 #include "cluster/dealt_parts.h"
 #include "math/rng.h"
 #include "optics/phase_function.h"
+#include "render/density_tracking.h"
 #include "render/photon_emission.h"
 #include "render/render_control.h"
 #include "scene/interaction.h"
@@ -192,18 +193,42 @@ private:
         if (policy.lambda_nm == 0 && !medium.is_grey()) policy.disperse(*m_rng);
         const int band = policy.lambda_nm > 0 ? band_of(policy.lambda_nm) : 0;
         const double sigma_s = medium.scattering[band], sigma_a = medium.absorption[band];
+        if (medium.is_heterogeneous())
+            return cross_heterogeneous(medium, sigma_s, sigma_a, ray, t_max, policy, depth);
         const double t = sigma_s > 0 ? -std::log1p(-m_rng->uniform()) / sigma_s : INFINITY;
         if (!(t < t_max)) {
             if (sigma_a > 0) policy.attenuate(std::exp(-sigma_a * t_max));
             return false;
         }
         if (sigma_a > 0) policy.attenuate(std::exp(-sigma_a * t));
+        scatter(medium, ray, t, policy, depth);
+        return true;
+    }
+
+    // As in a homogeneous medium, scattering and absorption apart: the photon scatters at
+    // the first real collision of sigma_s f(x) (delta tracking), and absorption on the way
+    // dims it by ratio tracking's unbiased estimate of exp(-sigma_a \int f).
+    bool cross_heterogeneous(const Medium& medium, double sigma_s, double sigma_a, Ray& ray,
+                             double t_max, Policy& policy, int depth) {
+        const double t =
+            sigma_s > 0 ? delta_track(*medium.density, sigma_s, ray, t_max, *m_rng) : INFINITY;
+        const bool scattered = t < t_max;
+        if (sigma_a > 0) {
+            policy.attenuate(
+                ratio_track(*medium.density, sigma_a, ray, scattered ? t : t_max, *m_rng));
+        }
+        if (!scattered) return false;
+        scatter(medium, ray, t, policy, depth);
+        return true;
+    }
+
+    // The photon scatters `t` along `ray`: the policy sees it, and `ray` leaves from there.
+    void scatter(const Medium& medium, Ray& ray, double t, Policy& policy, int depth) {
         const Vec3 p = ray.at(t);
         policy.scatter(p, ray.direction, depth);
         const HenyeyGreenstein phase(medium.g);
         const double u1 = m_rng->uniform(), u2 = m_rng->uniform();
         ray = {p, phase.sample(ray.direction, u1, u2)};
-        return true;
     }
 
     // Russian roulette picks one event per surface: the diffuse one with the policy's

@@ -4,6 +4,7 @@
 #include "geometry/lens/lens_solid.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
+#include "scene/box_corners_json.h"
 #include "scene/box_json.h"
 #include "scene/lens_group_json.h"
 #include "scene/mesh_json.h"
@@ -91,21 +92,7 @@ std::shared_ptr<const Shape> read_triangle(SpecReader& r) {
 
 std::shared_ptr<const Shape> read_implicit(SpecReader& r) {
     const std::string formula = r.text("formula");
-    const nlohmann::json& b = r.require("bounds");
-    const std::string bpath = r.child_path("bounds");
-    if (!b.is_array() || b.size() != 2) {
-        throw SceneError(bpath, "must be two corners [[xmin, ymin, zmin], [xmax, ymax, zmax]]");
-    }
-    Aabb box;
-    box.lo = JsonObjectReader::as_vec3(b[0], index_path(bpath, 0));
-    box.hi = JsonObjectReader::as_vec3(b[1], index_path(bpath, 1));
-    for (int a = 0; a < 3; ++a) {
-        if (!(box.hi[a] > box.lo[a])) {
-            throw SceneError(bpath, std::string("the second corner must exceed the first in ") +
-                                        "xyz"[a] + ", got " + format_number(box.lo[a]) + " and " +
-                                        format_number(box.hi[a]));
-        }
-    }
+    const Aabb box = read_box_corners(r.require("bounds"), r.child_path("bounds"));
     const int steps = static_cast<int>(r.whole("steps"));
     const Vec3 centre = r.point("center");
     std::shared_ptr<ImplicitSolid> solid;

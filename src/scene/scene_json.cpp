@@ -14,6 +14,7 @@
 
 #include "math/formula.h"
 #include "optics/grin_profile.h"
+#include "scene/atmosphere_region.h"
 #include "scene/camera_spec.h"
 #include "scene/glass_catalogues_json.h"
 #include "scene/json_reader.h"
@@ -268,7 +269,7 @@ SceneObject read_object(const json& j, const std::string& path,
             throw SceneError(r.child_path("medium"),
                              "a medium fills a solid: this " + type + " is an open surface");
         }
-        o.medium = read_medium(*m, r.child_path("medium"));
+        o.medium = read_medium(*m, r.child_path("medium"), o.shape->bounds());
     }
     o.material = o.medium && !r.has("material") ? add_surfaceless_material(all)
                                                 : read_material_ref(r, o.name, materials, all);
@@ -393,7 +394,11 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
     if (const json* jr = r.find("render")) read_render(*jr, scene.render);
     std::map<std::string, int> by_name;
     if (const json* jm = r.find("materials")) by_name = read_materials(*jm, scene.materials);
-    if (const json* ja = r.find("atmosphere")) scene.atmosphere = read_atmosphere(*ja);
+    const json* atmosphere = r.find("atmosphere");
+    // A homogeneous atmosphere is read first, as always; one with a density once the
+    // objects and lights that bound it are known.
+    if (atmosphere && !atmosphere_needs_region(*atmosphere))
+        scene.atmosphere = read_atmosphere(*atmosphere, Aabb{});
     if (const json* jo = r.find("objects")) {
         if (!jo->is_array()) throw SceneError("objects", "must be an array");
         check_count(jo->size(), kMaxObjects, "objects", "objects");
@@ -436,6 +441,8 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
         scene.beams = std::move(lights.beams);
         scene.spots = std::move(lights.spots);
     }
+    if (atmosphere && atmosphere_needs_region(*atmosphere))
+        scene.atmosphere = read_atmosphere(*atmosphere, atmosphere_region(scene));
     if (options.build_for_rendering) scene.build();
     return scene;
 }

@@ -4,6 +4,7 @@
 // BVH; and the view renders it with its usual integrator.
 
 #include <QAction>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QTreeWidgetItemIterator>
 #include <QtTest>
@@ -68,6 +69,13 @@ private slots:
         // or the declared default.
         for (const ParamSpec& p : lenslab::medium_spec().params) {
             if (p.label.empty()) continue;
+            if (p.kind == ParamKind::String) {  // the density's formula: a line of text
+                auto* text =
+                    w.panel()->findChild<QLineEdit*>("field:" + QString::fromStdString(p.key));
+                QVERIFY2(text, qPrintable(QString::fromStdString(p.key)));
+                QCOMPARE(text->text().toStdString(), p.fallback.get<std::string>());
+                continue;
+            }
             const bool triple = p.kind == ParamKind::Colour;
             const QString name = QString::fromStdString(p.key) + (triple ? ".x" : "");
             NumberField* box = field(w, name);

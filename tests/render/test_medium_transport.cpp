@@ -214,14 +214,15 @@ TEST(ShadowTransmittance, MultipliesTheMediaCrossed) {
     // The coefficients per band, as the colours became them.
     const BandWeights air = scene.atmosphere->extinction();
     const BandWeights smoke = scene.objects[0].medium->extinction();
-    const BandWeights tr = shadow_transmittance(scene, {0, 0, 0}, {1, 0, 0}, 10);
+    Rng rng(1, 1);  // homogeneous media draw nothing from it
+    const BandWeights tr = shadow_transmittance(scene, {0, 0, 0}, {1, 0, 0}, 10, rng);
     for (int b = 0; b < 3; ++b) EXPECT_NEAR(tr[b], std::exp(-smoke[b] * 2 - air[b] * 8), 1e-12);
     // From outside, through the whole box: 4 units of smoke, 6 of air.
-    const BandWeights across = shadow_transmittance(scene, {-5, -1, 0}, {1, 0, 0}, 10);
+    const BandWeights across = shadow_transmittance(scene, {-5, -1, 0}, {1, 0, 0}, 10, rng);
     for (int b = 0; b < 3; ++b) {
         EXPECT_NEAR(across[b], std::exp(-smoke[b] * 4 - air[b] * 6), 1e-12);
     }
-    const BandWeights blocked = shadow_transmittance(scene, {0, 0, 0}, {0, 1, 0}, 10);
+    const BandWeights blocked = shadow_transmittance(scene, {0, 0, 0}, {0, 1, 0}, 10, rng);
     for (int b = 0; b < 3; ++b) EXPECT_EQ(blocked[b], 0.0);
 }
 

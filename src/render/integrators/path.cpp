@@ -1,6 +1,7 @@
 #include "render/integrators/path.h"
 
 #include <numbers>
+#include <stdexcept>
 
 #include "math/rng.h"
 #include "optics/phase_function.h"
@@ -16,6 +17,12 @@ PathIntegrator::PathIntegrator(const Scene& scene) : PixelIntegrator(scene) {
     if (!scene.render.ambient.is_black()) m_ambient = illuminant_from_rgb(scene.render.ambient);
     if (!scene.render.background.is_black())
         m_background = illuminant_from_rgb(scene.render.background);
+    // radiance() adds no direct light at free-flight scattering points: a light that media
+    // did not gather along whole segments would be missing from them.
+    for (const LightPtr& light : scene.lights()) {
+        if (scene.has_media() && !light->samples_in_scattering())
+            throw std::logic_error("path: a light that media do not gather along segments");
+    }
 }
 
 Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w, Rng& rng) const {
@@ -40,19 +47,14 @@ Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
                                         in_scattered);
                 l += path.of(in_scattered);
             }
-            const FreeFlight f = sample_free_flight(*medium, t_max, rng);
+            const FreeFlight f = sample_free_flight(*medium, ray, t_max, rng);
             path *= f.weight;
             if (f.scattered) {
                 if (bounce >= scene.render.max_depth) break;
+                // No direct light here: every light (points, spots, beams, spheres) is
+                // gathered along the whole segment by add_light_in_scattering above.
                 const Vec3 p = ray.at(f.t);
                 const HenyeyGreenstein phase(medium->g);
-                LightSum e(path);
-                // Points, spots, beams and spheres: add_light_in_scattering's, on every
-                // segment.
-                add_direct_light(
-                    scene, p, scene.render.light_samples, rng,
-                    [&](const Vec3& wi) { return phase.eval(dot(wi, ray.direction)); }, e, false);
-                l += path.of(e);
                 ray = {p, phase.sample(ray.direction, rng.uniform(), rng.uniform())};
                 seen_from_camera = false;
                 count_emission = false;

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "accel/hash_grid.h"
 #include "accel/photon.h"
@@ -18,6 +19,7 @@
 #include "optics/glass.h"
 #include "optics/phase_function.h"
 #include "render/camera.h"
+#include "render/density_tracking.h"
 #include "render/direct_light.h"
 #include "render/medium_transport.h"
 #include "render/memory_budget.h"
@@ -37,6 +39,9 @@ namespace {
 // paths' (pixel index) and the photons' (2^62 + photon index). (Streams from here up once
 // rotated the visible points' wavelengths, before their colour became exact.)
 constexpr uint64_t kSppmRotationStream = uint64_t{1} << 61;
+// The volume gather's transmittance walks through heterogeneous media: from here up, one
+// stream per pixel segment, above the photons'.
+constexpr uint64_t kGatherStreams = uint64_t{3} << 62;
 // Automatic initial radius: this many pixel footprints, at most this share of the scene's
 // diagonal (the photon_map integrator's default radius).
 constexpr double kFootprints = 2.0;
@@ -195,7 +200,10 @@ void SppmIntegrator::trace_camera_path(int x, int y, const PassState& pass, Visi
                 segments[segment_count++] = {ray, t_max, beta, medium, vp.dispersed};
             vp.in_medium = true;
             const int band = vp.dispersed ? band_of(pass.lambda_nm) : 0;
-            beta *= medium->transmittance(t_max)[band];
+            beta *= medium->is_heterogeneous()
+                        ? ratio_track(*medium->density, medium->extinction()[size_t(band)], ray,
+                                      t_max, rng)
+                        : medium->transmittance(t_max)[band];
             if (!(beta > 0.0)) break;
         }
         if (!hit) {
@@ -529,13 +537,23 @@ void SppmIntegrator::gather_volume(const PassState& pass, const PhotonPass& phot
                 const HenyeyGreenstein phase(seg.medium->g);
                 const int band = seg.dispersed ? band_of(pass.lambda_nm) : 0;
                 const double sigma_t = seg.medium->extinction()[size_t(band)];
+                // A heterogeneous medium's T(t): one ratio-tracking walk along the segment,
+                // unbiased at every t (density_tracking.h), in its own random stream.
+                std::optional<TransmittanceWalk> walk;
+                if (seg.medium->is_heterogeneous()) {
+                    Rng rng(pass.seed, kGatherStreams + i * kMaxSegments + size_t(k));
+                    walk.emplace(*seg.medium, band, seg.ray, seg.t_max, rng);
+                }
+                const auto transmittance = [&](double t) {
+                    return walk ? walk->at(t) : std::exp(-sigma_t * t);
+                };
                 const PhotonColours::Receiver to{seg.dispersed, seg.beta / kPi, nullptr, {1, 1, 1}};
                 PhotonColours::Sum sum;
                 photon_discs.for_each_near(seg.ray, seg.t_max, [&](size_t p, double t, double r2) {
                     const PhotonHit& ph = photons.volume[p];
                     const Vec3 travel = decode_octahedral(ph.normal);
                     const double w =
-                        phase.eval(-dot(travel, seg.ray.direction)) * std::exp(-sigma_t * t) / r2;
+                        phase.eval(-dot(travel, seg.ray.direction)) * transmittance(t) / r2;
                     colours.add(sum, ph, to, w);
                 });
                 m_pixels[i].direct += colours.colour(sum, to);
