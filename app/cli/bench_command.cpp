@@ -93,12 +93,13 @@ int run_convergence_bench(const ConvergenceArgs& a) {
         scene, settings, [](const std::string& line) { std::cerr << line << "\n"; });
     write_text_atomically((dir / "convergence.csv").string(), convergence_csv(r));
     write_image(r.reference, (dir / "reference.png").string());
+    write_image(r.reference, (dir / "reference.exr").string());  // for --reference
     write_image(r.sppm_last, (dir / "sppm.png").string());
     const bool region_apart = r.region_reference.width() > 0;
     if (region_apart) write_image(r.region_reference, (dir / "region_reference.png").string());
     const bool plotted = plot_convergence(dir, r);
-    std::printf("wrote %s/convergence.csv, reference.png, %ssppm.png%s\n", dir.c_str(),
-                region_apart ? "region_reference.png, " : "",
+    std::printf("wrote %s/convergence.csv, reference.png, reference.exr, %ssppm.png%s\n",
+                dir.c_str(), region_apart ? "region_reference.png, " : "",
                 plotted ? ", convergence_time.png, convergence_passes.png"
                         : " (install gnuplot for the plots: convergence.gp is written)");
     return 0;
@@ -249,6 +250,10 @@ Action add_bench_command(CLI::App& app) {
         ->capture_default_str()
         ->check(whole_number<int>())
         ->check(CLI::Range(1, 1 << 24));
+    sppm->add_option("--reference", c.reference_file,
+                     "An earlier run's reference.exr, measured against instead of rendering "
+                     "one (the same scene, width and height)")
+        ->check(CLI::ExistingFile);
     sppm->add_option("--passes", c.passes, "sppm pass counts to measure at")
         ->delimiter(',')
         ->capture_default_str()

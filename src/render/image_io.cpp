@@ -3,6 +3,7 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
 #include <png.h>
@@ -161,6 +162,43 @@ void write_image(const Film& film, const std::string& path, const ToneMap& tone)
             write_exr(film, tmp, path, std::exp2(tone.exposure_stops));
         }
     });
+}
+
+Film read_exr(const std::string& path) {
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imath::Box2i window = file.header().dataWindow();
+        if (window.min.x != 0 || window.min.y != 0)
+            throw ImageError("cannot read EXR '" + path +
+                             "': its data window does not start at 0, 0");
+        const int width = window.max.x + 1, height = window.max.y + 1;
+        const size_t n = size_t(width) * size_t(height);
+        std::vector<float> channel[3] = {std::vector<float>(n), std::vector<float>(n),
+                                         std::vector<float>(n)};
+        Imf::FrameBuffer fb;
+        const char* names[3] = {"R", "G", "B"};
+        for (int c = 0; c < 3; ++c) {
+            if (!file.header().channels().findChannel(names[c]))
+                throw ImageError("cannot read EXR '" + path + "': it has no " + names[c] +
+                                 " channel");
+            fb.insert(names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(channel[c].data()),
+                                           sizeof(float), sizeof(float) * size_t(width)));
+        }
+        file.setFrameBuffer(fb);
+        file.readPixels(0, height - 1);
+        Film film(width, height);
+        for (int y = 0; y < height; ++y) {
+            for (int x = 0; x < width; ++x) {
+                const size_t i = size_t(y) * width + x;
+                film.set(x, y, {channel[0][i], channel[1][i], channel[2][i]});
+            }
+        }
+        return film;
+    } catch (const ImageError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw ImageError("cannot read EXR '" + path + "': " + e.what());
+    }
 }
 
 Image8 read_png(const std::string& path) {

@@ -37,6 +37,9 @@ struct Image8 {
     std::vector<unsigned char> rgb;  // width * height * 3
 };
 Image8 read_png(const std::string& path);
+// An OpenEXR file's R, G and B channels as a film (a render's linear radiances, as
+// write_image stores them). Throws ImageError.
+Film read_exr(const std::string& path);
 Image8 to_srgb8(const Film& film, const ToneMap& tone = {});
 
 // Writes an 8-bit image as a PNG, atomically (temporary file, then rename). Throws ImageError.

@@ -52,5 +52,24 @@ TEST(ImageIo, RefusesUnknownExtensions) {
     EXPECT_THROW(write_image(Film(1, 1), "/tmp/x.bmp"), ImageError);
 }
 
+TEST(ImageIo, ExrReadsBackWhatWasWritten) {
+    Film f(3, 2);
+    f.set(0, 0, {1.5f, 0.25f, 1e-7f});
+    f.set(2, 1, {1e6f, 0.5f, 3.0f});
+    const std::string exr =
+        (std::filesystem::temp_directory_path() / "lenslab_test_read.exr").string();
+    write_image(f, exr);
+    const Film back = read_exr(exr);
+    ASSERT_EQ(back.width(), 3);
+    ASSERT_EQ(back.height(), 2);
+    for (size_t i = 0; i < f.pixels().size(); ++i) {
+        EXPECT_EQ(back.pixels()[i].r, f.pixels()[i].r);
+        EXPECT_EQ(back.pixels()[i].g, f.pixels()[i].g);
+        EXPECT_EQ(back.pixels()[i].b, f.pixels()[i].b);
+    }
+    std::filesystem::remove(exr);
+    EXPECT_THROW(read_exr(exr), ImageError);  // gone
+}
+
 }  // namespace
 }  // namespace lenslab

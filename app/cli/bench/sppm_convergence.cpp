@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "render/image_io.h"
 #include "render/integrator.h"
 #include "render/integrator_names.h"
 #include "render/integrator_registry.h"
@@ -104,10 +105,20 @@ ConvergenceResult run_convergence(const Scene& scene, const ConvergenceSettings&
     ref.render.spp = s.reference_spp;
     ref.render.seed = base.render.seed + 1000003;
     RenderControl control;
-    RenderResult reference = render_scene(ref, control, s.threads);
-    r.reference = std::move(reference.film);
-    r.reference_seconds = reference.seconds;
-    log(format("reference: path, %d spp, %.2f s", s.reference_spp, r.reference_seconds));
+    if (!s.reference_file.empty()) {
+        r.reference = read_exr(s.reference_file);
+        if (r.reference.width() != s.width || r.reference.height() != s.height) {
+            throw ImageError(format("reference %s is %dx%d, the measurement %dx%d",
+                                    s.reference_file.c_str(), r.reference.width(),
+                                    r.reference.height(), s.width, s.height));
+        }
+        log("reference: " + s.reference_file);
+    } else {
+        RenderResult reference = render_scene(ref, control, s.threads);
+        r.reference = std::move(reference.film);
+        r.reference_seconds = reference.seconds;
+        log(format("reference: path, %d spp, %.2f s", s.reference_spp, r.reference_seconds));
+    }
     if (s.has_region() && s.region_spp > 0) {
         Scene region = ref;
         region.render.spp = s.region_spp;

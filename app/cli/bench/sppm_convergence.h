@@ -16,6 +16,9 @@ namespace lenslab {
 struct ConvergenceSettings {
     int width = 128, height = 128;
     int reference_spp = 4096;
+    // An earlier run's reference (its reference.exr) instead of a new one: a long reference
+    // is rendered once and measured against many times. Must be width x height.
+    std::string reference_file;
     std::vector<int> passes{1, 2, 4, 8, 16, 32, 64, 128, 256};  // sppm snapshots (cumulative)
     std::vector<int> path_spp{1, 4, 16, 64, 256, 1024};
     int threads = 0;  // 0: all cores

@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "bench/sppm_convergence.h"
+#include "render/image_io.h"
 #include "render/integrator_names.h"
 #include "scene/scene_json.h"
 
@@ -76,6 +78,36 @@ TEST(SppmConvergence, TheRegionHasAReferenceOfItsOwnAtItsSampleCount) {
     ASSERT_EQ(r.points.size(), 1u);
     EXPECT_DOUBLE_EQ(r.points[0].region_error,
                      region_relative_error(r.sppm_last, r.region_reference, s.region));
+}
+
+TEST(SppmConvergence, AnEarlierReferenceIsReadNotRendered) {
+    ConvergenceSettings s;
+    s.width = s.height = 8;
+    s.reference_spp = 4;
+    s.passes = {1};
+    s.path_spp = {};
+    s.threads = 1;
+    Scene scene = load_scene_file(LENSLAB_SOURCE_DIR "/scenes/caustic_room.json");
+    scene.render.pass_photons = 500;
+    const ConvergenceResult first = run_convergence(scene, s, [](const std::string&) {});
+    const std::string file =
+        (std::filesystem::temp_directory_path() / "lenslab_bench_reference.exr").string();
+    write_image(first.reference, file);
+    s.reference_file = file;
+    const ConvergenceResult again = run_convergence(scene, s, [](const std::string&) {});
+    EXPECT_EQ(again.reference_seconds, 0.0);  // not rendered
+    ASSERT_EQ(again.points.size(), 1u);
+    EXPECT_EQ(again.points[0].block_error, first.points[0].block_error);
+    // A reference of another size is refused, saying both sizes.
+    s.width = 16;
+    try {
+        run_convergence(scene, s, [](const std::string&) {});
+        ADD_FAILURE() << "a reference of the wrong size was taken";
+    } catch (const ImageError& e) {
+        EXPECT_NE(std::string(e.what()).find("is 8x8, the measurement 16x8"), std::string::npos)
+            << e.what();
+    }
+    std::filesystem::remove(file);
 }
 
 }  // namespace
