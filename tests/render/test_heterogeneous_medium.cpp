@@ -15,6 +15,7 @@
 #include <string>
 
 #include "analysis/detector.h"
+#include "mean_green.h"
 #include "render/density_tracking.h"
 #include "render/medium_transport.h"
 #include "render/render_session.h"
@@ -134,26 +135,17 @@ TEST(HeterogeneousMedium, ShadowTransmittanceThroughADensityBox) {
     EXPECT_NEAR(mean, expected, 0.005);
 }
 
-// The mean green of a render of `scene`.
-double mean_green(const Scene& scene) {
-    RenderControl control;
-    const RenderResult result = render_scene(scene, control);
-    double mean = 0;
-    for (const PixelRgb& p : result.film.pixels()) mean += p.g / result.film.pixels().size();
-    return mean;
-}
-
 // Single scattering of a point light seen through a fog box: a density of "1" is the
 // homogeneous medium, up to the noise of tracking (the homogeneous render's own noise is
 // far below 1% at this many samples).
 TEST(HeterogeneousMedium, ADensityOfOneRendersAsTheHomogeneousMedium) {
     const auto render = [](const std::string& density) {
-        return mean_green(parse_scene(R"({
+        return testing::mean_green_of_render(parse_scene(R"({
           "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0], "fov": 0.001},
           "render": {"width": 2, "height": 2, "spp": 4000, "max_depth": 1, "integrator": "path"},
           "objects": [{"type": "box", "center": [0, 0, 0], "size": [8, 8, 8],
                        "medium": {"scattering": 0.2, "absorption": 0.1)" +
-                                      density + R"(}}],
+                                                         density + R"(}}],
           "lights": [{"type": "point", "position": [0, 0, 0], "power": 50}]
         })"));
     };
@@ -173,11 +165,11 @@ TEST(HeterogeneousMedium, ADensityOfOneRendersAsTheHomogeneousMedium) {
 // after 192).
 TEST(HeterogeneousMedium, SppmAgreesWithThePathTracerInAHeterogeneousFog) {
     const auto render = [](const std::string& integrator) {
-        return mean_green(parse_scene(R"({
+        return testing::mean_green_of_render(parse_scene(R"({
           "camera": {"position": [1, 0, -5], "look_at": [1, 0, 0], "fov": 20},
           "render": {"width": 8, "height": 8, "spp": 1500, "passes": 256, "pass_photons": 10000,
-                     "max_depth": 8, "integrator": ")" +
-                                      integrator + R"j("},
+                     "max_depth": 8, "integrator": ")" + integrator +
+                                                         R"j("},
           "objects": [
             {"type": "box", "center": [0, 0, 0], "size": [6, 6, 6],
              "medium": {"scattering": 0.3, "absorption": 0.1,

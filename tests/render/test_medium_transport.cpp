@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "mean_green.h"
 #include "render/medium_transport.h"
 #include "render/render_session.h"
 #include "scene/scene_error.h"
@@ -19,15 +20,7 @@
 namespace lenslab {
 namespace {
 
-// The mean green value of the scene's rendered image: the radiance the closed forms predict,
-// over pixels that all see the same thing.
-double mean_green_of_render(const Scene& scene) {
-    RenderControl control;
-    const RenderResult result = render_scene(scene, control);
-    double mean = 0;
-    for (const PixelRgb& p : result.film.pixels()) mean += p.g / result.film.pixels().size();
-    return mean;
-}
+using testing::mean_green_of_render;
 
 constexpr double kPiMedium = std::numbers::pi;
 

@@ -23,6 +23,24 @@ Film filled(int w, int h, float v) {
 
 double luminance_of(const PixelRgb& p) { return p.r + p.g + p.b; }
 
+// A measurement of a few pixels, one pass and no path runs, on one thread.
+ConvergenceSettings tiny(int size, int reference_spp) {
+    ConvergenceSettings s;
+    s.width = s.height = size;
+    s.reference_spp = reference_spp;
+    s.passes = {1};
+    s.path_spp = {};
+    s.threads = 1;
+    return s;
+}
+
+// The caustic room with few photons a pass.
+Scene small_caustic_room() {
+    Scene scene = load_scene_file(LENSLAB_SOURCE_DIR "/scenes/caustic_room.json");
+    scene.render.pass_photons = 500;
+    return scene;
+}
+
 TEST(SppmConvergence, ErrorsAreRelativeToTheReference) {
     const Film reference = filled(16, 16, 2.0f), off = filled(16, 16, 2.5f);
     EXPECT_DOUBLE_EQ(block_relative_error(reference, reference), 0.0);
@@ -37,15 +55,10 @@ TEST(SppmConvergence, BlackReferenceBlocksAreSkipped) {
 }
 
 TEST(SppmConvergence, RunsSppmAndPathAgainstTheReference) {
-    ConvergenceSettings s;
-    s.width = s.height = 8;
-    s.reference_spp = 4;
+    ConvergenceSettings s = tiny(8, 4);
     s.passes = {2, 1};
     s.path_spp = {1};
-    s.threads = 1;
-    Scene scene = load_scene_file(LENSLAB_SOURCE_DIR "/scenes/caustic_room.json");
-    scene.render.pass_photons = 500;
-    const ConvergenceResult r = run_convergence(scene, s, [](const std::string&) {});
+    const ConvergenceResult r = run_convergence(small_caustic_room(), s, [](const std::string&) {});
     ASSERT_EQ(r.points.size(), 3u);
     EXPECT_EQ(r.points[0].integrator, integrators::kSppm);
     EXPECT_EQ(r.points[0].amount, 1);  // sorted
@@ -60,17 +73,10 @@ TEST(SppmConvergence, RunsSppmAndPathAgainstTheReference) {
 }
 
 TEST(SppmConvergence, TheRegionHasAReferenceOfItsOwnAtItsSampleCount) {
-    ConvergenceSettings s;
-    s.width = s.height = 16;
-    s.reference_spp = 1;
-    s.passes = {1};
-    s.path_spp = {};
-    s.threads = 1;
+    ConvergenceSettings s = tiny(16, 1);
     s.region[0] = 6, s.region[1] = 7, s.region[2] = 10, s.region[3] = 9;  // on the back wall
     s.region_spp = 64;
-    Scene scene = load_scene_file(LENSLAB_SOURCE_DIR "/scenes/caustic_room.json");
-    scene.render.pass_photons = 500;
-    const ConvergenceResult r = run_convergence(scene, s, [](const std::string&) {});
+    const ConvergenceResult r = run_convergence(small_caustic_room(), s, [](const std::string&) {});
     ASSERT_EQ(r.region_reference.width(), 16);
     EXPECT_GT(luminance_of(r.region_reference.at(7, 8)), 0.0);
     EXPECT_EQ(luminance_of(r.region_reference.at(2, 2)), 0.0) << "outside the region";
@@ -81,14 +87,8 @@ TEST(SppmConvergence, TheRegionHasAReferenceOfItsOwnAtItsSampleCount) {
 }
 
 TEST(SppmConvergence, AnEarlierReferenceIsReadNotRendered) {
-    ConvergenceSettings s;
-    s.width = s.height = 8;
-    s.reference_spp = 4;
-    s.passes = {1};
-    s.path_spp = {};
-    s.threads = 1;
-    Scene scene = load_scene_file(LENSLAB_SOURCE_DIR "/scenes/caustic_room.json");
-    scene.render.pass_photons = 500;
+    ConvergenceSettings s = tiny(8, 4);
+    const Scene scene = small_caustic_room();
     const ConvergenceResult first = run_convergence(scene, s, [](const std::string&) {});
     const std::string file =
         (std::filesystem::temp_directory_path() / "lenslab_bench_reference.exr").string();
