@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The whole test suite, as CI runs it (README, second command; .ci/run): first the C++
 # files' formatting (scripts/check-format.sh, seconds), then
-#   1. release build + every test, the editor's aside (release-ci preset: build/release-ci);
+#   1. release build + every test, the editor's aside (release-ci preset: build/release-ci;
+#      the library at -O3 as released, the command line's own code at -O0, as in stage 2);
 #      the Python module (python/) and its pytest tests run here only;
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: the library at
 #      -O1, tests and apps at -O0; the editor included, no benchmarks) + every test but the
