@@ -1,26 +1,10 @@
 #include "render/density_tracking.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace lenslab {
 
 namespace {
-
-// Calls `visit(t, f(t))` at each tentative collision of rate `mu_bar` along the part of
-// `ray` inside the density's region before `t_end`, until it returns false.
-template <class Visit>
-void for_each_tentative(const MediumDensity& density, double mu_bar, const Ray& ray, double t_end,
-                        Rng& rng, Visit&& visit) {
-    if (!(mu_bar > 0)) return;
-    const RaySpan span = span_inside(density.region(), ray, t_end);
-    MediumDensity::Local f = density.local();
-    for (double t = span.t0;;) {
-        t -= std::log1p(-rng.uniform()) / mu_bar;
-        if (!(t < span.t1)) return;
-        if (!visit(t, f(ray.at(t)))) return;
-    }
-}
 
 double max_of(const BandWeights& w) { return std::max({w[0], w[1], w[2]}); }
 

@@ -17,6 +17,7 @@
 // The density is 0 outside its region, so steps skip straight to the part of the ray
 // inside it, and a ray leaving the scene ends.
 
+#include <cmath>
 #include <vector>
 
 #include "geometry/ray.h"
@@ -31,6 +32,22 @@ struct RaySpan {
     double t0, t1;
 };
 RaySpan span_inside(const Aabb& box, const Ray& ray, double t_end);
+
+// Calls `visit(t, f(t))` at each tentative collision of rate `mu_bar` along the part of
+// `ray` inside the density's region before `t_end`, until it returns false: the walk every
+// tracking estimator here shares.
+template <class Visit>
+void for_each_tentative(const MediumDensity& density, double mu_bar, const Ray& ray, double t_end,
+                        Rng& rng, Visit&& visit) {
+    if (!(mu_bar > 0)) return;
+    const RaySpan span = span_inside(density.region(), ray, t_end);
+    MediumDensity::Local f = density.local();
+    for (double t = span.t0;;) {
+        t -= std::log1p(-rng.uniform()) / mu_bar;
+        if (!(t < span.t1)) return;
+        if (!visit(t, f(ray.at(t)))) return;
+    }
+}
 
 // The distance to the first real collision along `ray` in a medium of extinction
 // mu f(x), or INFINITY when there is none before `t_end`.

@@ -58,13 +58,7 @@ FreeFlight heterogeneous_free_flight(const Medium& medium, const Ray& ray, doubl
     const double mu_max = std::max({mu[0], mu[1], mu[2]});
     const double mu_mean = (mu[0] + mu[1] + mu[2]) / 3;
     const double majorant = mu_max * density.bound();
-    if (!(majorant > 0)) return out;
-    const RaySpan span = span_inside(density.region(), ray, t_max);
-    MediumDensity::Local f = density.local();
-    for (double t = span.t0;;) {
-        t -= std::log1p(-rng.uniform()) / majorant;
-        if (!(t < span.t1)) return out;
-        const double ft = f(ray.at(t));
+    for_each_tentative(density, majorant, ray, t_max, rng, [&](double t, double ft) {
         // P(real) = mean_b sigma_t,b(x) / majorant = mu_mean f / (mu_max bound).
         const double real = mu_mean * ft / majorant;
         if (rng.uniform() < real) {
@@ -72,11 +66,13 @@ FreeFlight heterogeneous_free_flight(const Medium& medium, const Ray& ray, doubl
             out.t = t;
             // sigma_s,b(x) / (majorant P): f cancels.
             for (int b = 0; b < 3; ++b) out.weight[b] *= medium.scattering[b] / mu_mean;
-            return out;
+            return false;
         }
         for (int b = 0; b < 3; ++b)
             out.weight[b] *= (majorant - mu[b] * ft) / (majorant - mu_mean * ft);
-    }
+        return true;
+    });
+    return out;
 }
 
 // Along one stretch of a shadow ray or a camera segment.

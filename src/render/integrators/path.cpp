@@ -19,9 +19,11 @@ PathIntegrator::PathIntegrator(const Scene& scene) : PixelIntegrator(scene) {
         m_background = illuminant_from_rgb(scene.render.background);
     // radiance() adds no direct light at free-flight scattering points: a light that media
     // did not gather along whole segments would be missing from them.
-    for (const LightPtr& light : scene.lights()) {
-        if (scene.has_media() && !light->samples_in_scattering())
-            throw std::logic_error("path: a light that media do not gather along segments");
+    if (scene.has_media()) {
+        for (const LightPtr& light : scene.lights()) {
+            if (!light->samples_in_scattering())
+                throw std::logic_error("path: a light that media do not gather along segments");
+        }
     }
 }
 
