@@ -51,4 +51,20 @@ struct Aabb {
     }
 };
 
+// Calls `visit(p)` at the n x n x n points spaced evenly over `box`, corners included (n >= 2),
+// until it returns false; false then, true when every point was visited. The grid on which
+// typed formulas are checked before rendering (implicit solids, medium densities).
+template <class Visit>
+bool for_each_grid_point(const Aabb& box, int n, Visit&& visit) {
+    const Vec3 e = box.extent();
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            for (int k = 0; k < n; ++k) {
+                if (!visit(box.lo + Vec3{e.x * i, e.y * j, e.z * k} / (n - 1))) return false;
+            }
+        }
+    }
+    return true;
+}
+
 }  // namespace lenslab

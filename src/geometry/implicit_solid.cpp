@@ -52,24 +52,22 @@ std::optional<std::string> ImplicitSolid::check(const std::string& text) {
 std::optional<std::string> ImplicitSolid::check_values() const {
     Formula::Evaluator& f = m_formula->local();
     bool any_inside = false;
-    const Vec3 e = m_box.extent();
-    for (int i = 0; i < kCheckGrid; ++i) {
-        for (int j = 0; j < kCheckGrid; ++j) {
-            for (int k = 0; k < kCheckGrid; ++k) {
-                const Vec3 p = m_box.lo + Vec3{e.x * i, e.y * j, e.z * k} / (kCheckGrid - 1);
-                const double v = f({p.x, p.y, p.z, 0.0});
-                if (std::isnan(v)) {
-                    std::ostringstream msg;
-                    msg.precision(10);
-                    const std::string why = m_formula->why_not_finite({p.x, p.y, p.z, 0.0});
-                    msg << "f undefined at (x, y, z) = (" << p.x << ", " << p.y << ", " << p.z
-                        << ") inside the bounds" << (why.empty() ? "" : " (" + why + ")");
-                    return msg.str();
-                }
-                any_inside = any_inside || inside(v);
-            }
+    std::optional<std::string> undefined;
+    for_each_grid_point(m_box, kCheckGrid, [&](const Vec3& p) {
+        const double v = f({p.x, p.y, p.z, 0.0});
+        if (std::isnan(v)) {
+            std::ostringstream msg;
+            msg.precision(10);
+            const std::string why = m_formula->why_not_finite({p.x, p.y, p.z, 0.0});
+            msg << "f undefined at (x, y, z) = (" << p.x << ", " << p.y << ", " << p.z
+                << ") inside the bounds" << (why.empty() ? "" : " (" + why + ")");
+            undefined = msg.str();
+            return false;
         }
-    }
+        any_inside = any_inside || inside(v);
+        return true;
+    });
+    if (undefined) return undefined;
     if (!any_inside) {
         return "f > 0 at every point sampled inside the bounds, so the solid is empty (the "
                "inside is where f <= 0)";

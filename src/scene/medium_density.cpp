@@ -39,29 +39,24 @@ MediumDensity::Survey MediumDensity::survey(const Aabb& region) const {
         return out;
     }
     Formula::Evaluator& f = m_formula->local();
-    const Vec3 e = region.extent();
-    for (int i = 0; i < kCheckGrid; ++i) {
-        for (int j = 0; j < kCheckGrid; ++j) {
-            for (int k = 0; k < kCheckGrid; ++k) {
-                const Vec3 p = region.lo + Vec3{e.x * i, e.y * j, e.z * k} / (kCheckGrid - 1);
-                const double v = f({p.x, p.y, p.z, 0.0});
-                if (std::isnan(v) || std::isinf(v)) {
-                    const std::string why = m_formula->why_not_finite({p.x, p.y, p.z, 0.0});
-                    out.problem = std::string(std::isnan(v) ? "undefined" : "infinite") + " at " +
-                                  point_text(p) + (why.empty() ? "" : " (" + why + ")");
-                    return out;
-                }
-                if (v < 0) {
-                    std::ostringstream s;
-                    s.precision(6);
-                    s << "is " << v << " at " << point_text(p) << ": a density must be >= 0";
-                    out.problem = s.str();
-                    return out;
-                }
-                out.max = std::max(out.max, v);
-            }
+    for_each_grid_point(region, kCheckGrid, [&](const Vec3& p) {
+        const double v = f({p.x, p.y, p.z, 0.0});
+        if (std::isnan(v) || std::isinf(v)) {
+            const std::string why = m_formula->why_not_finite({p.x, p.y, p.z, 0.0});
+            out.problem = std::string(std::isnan(v) ? "undefined" : "infinite") + " at " +
+                          point_text(p) + (why.empty() ? "" : " (" + why + ")");
+            return false;
         }
-    }
+        if (v < 0) {
+            std::ostringstream s;
+            s.precision(6);
+            s << "is " << v << " at " << point_text(p) << ": a density must be >= 0";
+            out.problem = s.str();
+            return false;
+        }
+        out.max = std::max(out.max, v);
+        return true;
+    });
     return out;
 }
 
