@@ -29,9 +29,10 @@ void add_analyze_options(CLI::App& cmd, AnalyzeRequest& request) {
                        "lens passes)")
             ->check(CLI::PositiveNumber);
     cmd.add_option("--stop", request.stop,
-                   "The aperture stop: a surface, counted from 1 along the light (default: 1, "
-                   "the first surface)")
-        ->check(whole_number<int>());
+                   "The aperture stop: a surface, counted from 1 along the light (default: an "
+                   "imported lens file's stop, else 1, the first surface)")
+        ->check(whole_number<int>())
+        ->check(CLI::PositiveNumber);
     CLI::Option* epd =
         cmd.add_option("--epd", request.epd,
                        "Entrance pupil diameter (default: the beam of --aperture with the stop "

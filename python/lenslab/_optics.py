@@ -104,8 +104,8 @@ class Analysis(JsonDocument):
 def _request_json(*, wavelength: Optional[float] = None,
                   wavelengths: Optional[Sequence[float]] = None,
                   aperture: Optional[float] = None,
-                  lens: Optional[str] = None, unit: Optional[str] = None, stop: int = 1,
-                  epd: Optional[float] = None, f_number: Optional[float] = None,
+                  lens: Optional[str] = None, unit: Optional[str] = None,
+                  stop: Optional[int] = None, epd: Optional[float] = None, f_number: Optional[float] = None,
                   object_distance: Optional[float] = None,
                   fields: Optional[Sequence[float]] = None,
                   field_heights: Optional[Sequence[float]] = None, seidel: bool = False,
@@ -131,7 +131,6 @@ def _request_json(*, wavelength: Optional[float] = None,
         raise ValueError("field_heights needs object_distance (heights of an object at a "
                          "finite distance)")
     request: dict[str, Any] = {
-        "stop": _whole("stop", stop),
         "seidel": bool(seidel), "psf": bool(psf), "mtf": bool(mtf), "spots": bool(spots),
         "fans": bool(fans), "field_curves": bool(field_curves),
         "focal_shift": bool(focal_shift),
@@ -151,6 +150,8 @@ def _request_json(*, wavelength: Optional[float] = None,
                                    ("wavelength_weights", wavelength_weights, False)):
         if values is not None:
             request[name] = _numbers(name, values, positive=positive)
+    if stop is not None:
+        request["stop"] = _whole("stop", stop, 1, 100000)
     if image_distance is not None:
         request["image_distance"] = _number("image_distance", image_distance)
     for name, text in (("lens", lens), ("unit", unit)):
@@ -171,8 +172,8 @@ _OPTIONS = frozenset(inspect.signature(_request_json).parameters)
 
 def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
             wavelengths: Optional[Sequence[float]] = None, aperture: Optional[float] = None,
-            lens: Optional[str] = None, unit: Optional[str] = None, stop: int = 1,
-            epd: Optional[float] = None, f_number: Optional[float] = None,
+            lens: Optional[str] = None, unit: Optional[str] = None,
+            stop: Optional[int] = None, epd: Optional[float] = None, f_number: Optional[float] = None,
             object_distance: Optional[float] = None,
             fields: Optional[Sequence[float]] = None,
             field_heights: Optional[Sequence[float]] = None, seidel: bool = False,

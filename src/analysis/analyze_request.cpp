@@ -44,16 +44,30 @@ struct FigureFile {
     const char* key;
 };
 
+// The stop's surface index (0-based): --stop, else the lens file's stop, the surface at its
+// place or a stop in air put there, else the first surface.
+int resolve_stop(OpticalSystem& system, const AnalyzeRequest& a) {
+    const int surfaces = static_cast<int>(system.surfaces.size());
+    if (a.stop != 0) {
+        if (a.stop < 1 || a.stop > surfaces) {
+            throw AnalyzeRequestError("--stop " + std::to_string(a.stop) + ": the system has " +
+                                      std::to_string(surfaces) + " surfaces, numbered 1 to " +
+                                      std::to_string(surfaces));
+        }
+        return a.stop - 1;
+    }
+    if (!a.stop_position) return 0;
+    if (const std::optional<int> at = surface_at(system, *a.stop_position)) return *at;
+    // A stop in air needs its rim unless the pupil is set otherwise.
+    const double rim = a.stop_semi_diameter > 0 ? a.stop_semi_diameter : system.max_semi_diameter();
+    return insert_air_stop(system, *a.stop_position, rim);
+}
+
 AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optional<int> lens) {
     AnalyzeResults out;
     out.system = build_optical_system(scene, lens);
+    const int stop = resolve_stop(out.system, a);
     const OpticalSystem& system = out.system;
-    const int surfaces = static_cast<int>(system.surfaces.size());
-    if (a.stop < 1 || a.stop > surfaces) {
-        throw AnalyzeRequestError("--stop " + std::to_string(a.stop) + ": the system has " +
-                                  std::to_string(surfaces) + " surfaces, numbered 1 to " +
-                                  std::to_string(surfaces));
-    }
     for (double angle : a.fields) {
         if (!(std::abs(angle) < 90.0)) {
             throw AnalyzeRequestError("--fields: " + format_number(angle) +
@@ -65,7 +79,7 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         a.wavelengths.empty() ? a.wavelength_nm : middle_wavelength(a.wavelengths);
     options.wavelengths = a.wavelengths;
     FirstOrderOptions& first = options.first_order;
-    first.stop = a.stop - 1;
+    first.stop = stop;
     first.epd = a.epd;
     first.f_number = a.f_number;
     if (a.object_distance > 0) {

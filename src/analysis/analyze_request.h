@@ -31,7 +31,13 @@ struct AnalyzeRequest {
     double aperture = 0;  // beam diameter; 0: the usable aperture
     std::string lens;
     std::string unit;  // for the ray diagram's labels; empty: "units"
-    int stop = 1;      // 1-based surface index, as lens design programs count
+    // The aperture stop: a surface counted from 1, as lens design programs count; 0: the
+    // lens file's stop (stop_position), else surface 1.
+    int stop = 0;
+    // A lens file's stop (lens_bench_defaults.h): its axial place from the first vertex and
+    // its semi-diameter (0: not given). The surface there, or a stop in air inserted there.
+    std::optional<double> stop_position;
+    double stop_semi_diameter = 0;
     double epd = 0, f_number = 0;
     double object_distance = 0;  // 0: the object at infinity
     std::vector<double> fields, field_heights;

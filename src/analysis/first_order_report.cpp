@@ -13,10 +13,16 @@ nlohmann::ordered_json finite_or_null(double v) {
     return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json();
 }
 
-nlohmann::ordered_json sums_json(const SeidelSums& s) {
-    return {{"S_I", s.spherical},      {"S_II", s.coma},      {"S_III", s.astigmatism},
-            {"S_IV", s.petzval},       {"S_V", s.distortion}, {"C_I", s.axial_colour},
-            {"C_II", s.lateral_colour}};
+// The colour sums are null when there was no pair of wavelengths to take them between.
+nlohmann::ordered_json sums_json(const SeidelSums& s, bool colour) {
+    using nlohmann::ordered_json;
+    return {{"S_I", s.spherical},
+            {"S_II", s.coma},
+            {"S_III", s.astigmatism},
+            {"S_IV", s.petzval},
+            {"S_V", s.distortion},
+            {"C_I", colour ? ordered_json(s.axial_colour) : ordered_json()},
+            {"C_II", colour ? ordered_json(s.lateral_colour) : ordered_json()}};
 }
 
 std::string number_text(double v) {
@@ -77,17 +83,19 @@ nlohmann::ordered_json first_order_json(const OpticalSystem& system, const First
 
 nlohmann::ordered_json seidel_json(const OpticalSystem& system, const Seidel& s) {
     using nlohmann::ordered_json;
+    const bool colour = s.short_nm != s.long_nm;
+    const auto colour_or_null = [&](double v) { return colour ? ordered_json(v) : ordered_json(); };
     ordered_json surfaces = ordered_json::array();
     for (size_t i = 0; i < s.surfaces.size(); ++i) {
         ordered_json j = {{"surface", i + 1}, {"label", system.surfaces[i].label}};
-        j.update(sums_json(s.surfaces[i]));
+        j.update(sums_json(s.surfaces[i], colour));
         surfaces.push_back(j);
     }
     const SeidelTransverse& t = s.transverse;
     return {
         {"wavelengths_nm", {s.short_nm, s.long_nm}},
         {"surfaces", surfaces},
-        {"total", sums_json(s.total)},
+        {"total", sums_json(s.total, colour)},
         {"transverse",
          {{"spherical", t.spherical},
           {"sagittal_coma", t.sagittal_coma},
@@ -96,9 +104,9 @@ nlohmann::ordered_json seidel_json(const OpticalSystem& system, const Seidel& s)
           {"sagittal_field", t.sagittal_field},
           {"petzval", t.petzval},
           {"distortion", t.distortion},
-          {"axial_colour", t.axial_colour},
-          {"lateral_colour", t.lateral_colour},
-          {"longitudinal_axial_colour", t.longitudinal_axial_colour}}},
+          {"axial_colour", colour_or_null(t.axial_colour)},
+          {"lateral_colour", colour_or_null(t.lateral_colour)},
+          {"longitudinal_axial_colour", colour_or_null(t.longitudinal_axial_colour)}}},
     };
 }
 

@@ -70,6 +70,15 @@ LensBenchDefaults with_lens_bench_defaults(const AnalyzeRequest& request, const 
                                   " (the bench takes an entrance pupil diameter or an F-number)");
         }
     }
+    if (b.stop_position) {
+        if (a.stop == 0) {
+            a.stop_position = b.stop_position;
+            a.stop_semi_diameter = b.stop_semi_diameter.value_or(0.0);
+            d.taken.push_back("stop");
+        } else {
+            d.not_taken.push_back("stop: --stop " + std::to_string(a.stop) + " given");
+        }
+    }
     // The image surface, for the figures measured on it (elsewhere it means nothing).
     const AnalyzeRequest tables = with_implied_tables(a);
     const bool on_image_plane = tables.spots || tables.fans || tables.field_curves;

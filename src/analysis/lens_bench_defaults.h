@@ -13,8 +13,9 @@
 namespace lenslab {
 
 struct LensBenchDefaults {
-    AnalyzeRequest request;          // with the file's values filled in
-    std::vector<std::string> taken;  // "wavelengths", "fields", "epd", "f_number", "image_distance"
+    AnalyzeRequest request;  // with the file's values filled in
+    // "wavelengths", "fields", "epd", "f_number", "stop", "image_distance"
+    std::vector<std::string> taken;
     // What the file says that the bench does not take, and why ("fields: object heights
     // need --object-distance").
     std::vector<std::string> not_taken;

@@ -77,8 +77,15 @@ LensReport analyze_lens_system(const OpticalSystem& system, const LensReportOpti
         r.short_nm = *std::min_element(r.wavelengths.begin(), r.wavelengths.end());
         r.long_nm = *std::max_element(r.wavelengths.begin(), r.wavelengths.end());
     } else {
-        check_wavelength(system, kLineF, "the F line");
-        check_wavelength(system, kLineC, "the C line");
+        // The default F/C pair is the report's addition, not the user's request: a glass
+        // without data there leaves the colour out rather than refusing the lens.
+        try {
+            check_wavelength(system, kLineF, "the F line");
+            check_wavelength(system, kLineC, "the C line");
+        } catch (const SceneError& e) {
+            r.chromatic_unavailable = e.path() + ": " + e.reason();
+            r.short_nm = r.long_nm = options.wavelength_nm;
+        }
     }
     r.paraxial = paraxial_trace(system, options.wavelength_nm);
     r.paraxial_F = paraxial_trace(system, r.short_nm);
@@ -221,11 +228,15 @@ const ReportKey kReportKeys[] = {
     {"geometric_spot_best", kNeedsBeam,
      [](const OpticalSystem&, const LensReport& r) { return Json(r.spot_best.geometric_radius); }},
     {"chromatic_shift_FC", kNeedsNoPart,
-     [](const OpticalSystem&, const LensReport& r) { return Json(r.chromatic_shift_FC); }},
+     [](const OpticalSystem&, const LensReport& r) {
+         return r.chromatic_unavailable.empty() ? Json(r.chromatic_shift_FC) : Json();
+     }},
     {"wavelengths_nm", kNeedsNoPart,
      [](const OpticalSystem&, const LensReport& r) { return Json(r.wavelengths); }},
     {"chromatic", kNeedsNoPart,
      [](const OpticalSystem&, const LensReport& r) {
+         if (!r.chromatic_unavailable.empty())
+             return Json{{"unavailable", r.chromatic_unavailable}};
          return Json{{"wavelengths_nm", {r.short_nm, r.long_nm}},
                      {"bfl_F", r.paraxial_F.bfl},
                      {"bfl_C", r.paraxial_C.bfl},
@@ -343,12 +354,16 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
     }
 
     const bool fc = r.short_nm == kLineF && r.long_nm == kLineC;
-    out << "\nChromatic (paraxial), " << (fc ? "F = " : "short ") << wavelength_text(r.short_nm)
-        << (fc ? ", C = " : ", long ") << wavelength_text(r.long_nm) << "\n";
-    row(fc ? "BFL at the F line" : "BFL at the short wavelength", r.paraxial_F.bfl);
-    row(fc ? "BFL at the C line" : "BFL at the long wavelength", r.paraxial_C.bfl);
-    row(fc ? "focal shift BFL(F) - BFL(C)" : "focal shift BFL(short) - BFL(long)",
-        r.chromatic_shift_FC);
+    if (!r.chromatic_unavailable.empty()) {
+        out << "\nChromatic (paraxial): unavailable, " << r.chromatic_unavailable << "\n";
+    } else {
+        out << "\nChromatic (paraxial), " << (fc ? "F = " : "short ") << wavelength_text(r.short_nm)
+            << (fc ? ", C = " : ", long ") << wavelength_text(r.long_nm) << "\n";
+        row(fc ? "BFL at the F line" : "BFL at the short wavelength", r.paraxial_F.bfl);
+        row(fc ? "BFL at the C line" : "BFL at the long wavelength", r.paraxial_C.bfl);
+        row(fc ? "focal shift BFL(F) - BFL(C)" : "focal shift BFL(short) - BFL(long)",
+            r.chromatic_shift_FC);
+    }
     out << "\n" << first_order_table(system, r.first_order);
     if (r.real_chief && r.first_order.field != 0.0) {
         row("real chief ray image height", r.real_chief->image_height,

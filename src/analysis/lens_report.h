@@ -48,6 +48,10 @@ struct LensReport {
     // At short_nm and long_nm (named for the default pair, the F and C lines).
     ParaxialResult paraxial_F, paraxial_C;
     double chromatic_shift_FC = 0;  // BFL(short) - BFL(long): paraxial longitudinal colour
+    // Why the chromatic block (and the Seidel colour sums) could not be evaluated, "" when
+    // it was: one wavelength asked for and a glass without data at the F or C line. Then
+    // short_nm = long_nm = the wavelength asked for.
+    std::string chromatic_unavailable;
     FirstOrder first_order;
     std::optional<RealChiefRay> real_chief;  // none when it cannot be traced
     Seidel seidel;

@@ -4,11 +4,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "geometry/lens/asphere_surface.h"
-#include "geometry/lens/conic_surface.h"
 #include "geometry/lens/flat_surface.h"
 #include "geometry/lens/lens_solid.h"
-#include "geometry/lens/spherical_surface.h"
 #include "scene/interaction.h"
 #include "scene/scattering.h"
 #include "scene/scene_error.h"
@@ -112,7 +109,9 @@ void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
         s.semi_diameter = a;
         s.span = intersect_span(*shape, a);
         s.aim_span = measure_aim_span(*shape, a);
-        s.curvature = p.orientation * paraxial_curvature(*shape, a);
+        const VertexSag vertex = shape->vertex_sag(a);
+        s.curvature = p.orientation * vertex.curvature;
+        s.a4 = p.orientation * vertex.a4;
         s.label = path + "." + face;
         return s;
     };
@@ -167,21 +166,6 @@ void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
 }
 
 }  // namespace
-
-double paraxial_curvature(const LensSurface& s, double semi_diameter) {
-    if (dynamic_cast<const FlatSurface*>(&s)) return 0.0;
-    if (const auto* sphere = dynamic_cast<const SphericalSurface*>(&s))
-        return 1.0 / sphere->radius();
-    if (const auto* conic = dynamic_cast<const ConicSurface*>(&s)) return 1.0 / conic->radius();
-    if (const auto* asphere = dynamic_cast<const AsphereSurface*>(&s))
-        return 1.0 / asphere->radius();
-    // sag(r) = c r^2 / 2 + O(r^4), so 2 sag(h) / h^2 = c + O(h^2); combining h and 2h cancels
-    // the h^2 term (Richardson). sag(0) = 0 is required of formulas, so no cancellation.
-    const double h = 0.01 * semi_diameter;
-    const double c1 = 2.0 * s.sag(h) / (h * h);
-    const double c2 = 2.0 * s.sag(2.0 * h) / (4.0 * h * h);
-    return (4.0 * c1 - c2) / 3.0;
-}
 
 double OpticalSystem::n_before(size_t i, double nm) const {
     return index_at(surfaces[i].element_before, {0, 0, surfaces[i].z}, nm);
@@ -297,6 +281,39 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
         add_surfaces(p, static_cast<int>(system.elements.size()) - 1, system);
     }
     return system;
+}
+
+std::optional<int> surface_at(const OpticalSystem& system, double z) {
+    const double length = std::max(system.last_vertex(), system.max_semi_diameter());
+    for (size_t i = 0; i < system.surfaces.size(); ++i) {
+        if (std::abs(system.surfaces[i].z - z) <= 1e-9 * length) return static_cast<int>(i);
+    }
+    return std::nullopt;
+}
+
+int insert_air_stop(OpticalSystem& system, double z, double semi_diameter) {
+    for (const SystemElement& e : system.elements) {
+        if (z > system.surfaces[e.first_surface].z && z < system.surfaces[e.last_surface].z) {
+            throw SceneError(e.path, "the aperture stop at " + format(z) +
+                                         " from the first vertex lies inside this lens");
+        }
+    }
+    SystemSurface stop;
+    stop.shape = std::make_shared<FlatSurface>();
+    stop.z = z;
+    stop.semi_diameter = semi_diameter;
+    stop.span = intersect_span(*stop.shape, semi_diameter);
+    stop.aim_span = intersect_span(*stop.shape, 2.0 * semi_diameter);
+    stop.label = "stop";
+    const auto at = std::find_if(system.surfaces.begin(), system.surfaces.end(),
+                                 [&](const SystemSurface& s) { return s.z > z; });
+    const int index = static_cast<int>(at - system.surfaces.begin());
+    system.surfaces.insert(at, stop);
+    for (SystemElement& e : system.elements) {
+        if (e.first_surface >= index) ++e.first_surface;
+        if (e.last_surface >= index) ++e.last_surface;
+    }
+    return index;
 }
 
 void check_wavelength(const OpticalSystem& system, double nm, const std::string& what) {

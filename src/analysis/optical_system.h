@@ -35,6 +35,7 @@ struct SystemSurface {
     // still be aimed at and that lens then reported as vignetting the ray.
     SurfaceSpan aim_span;
     double curvature = 0.0;   // paraxial vertex curvature in system z (> 0: centre at +z)
+    double a4 = 0.0;          // the sag's r^4 coefficient in system z (geometry VertexSag)
     int element_before = -1;  // index into OpticalSystem::elements; -1: the outside (air)
     int element_after = -1;
     std::string label;  // "objects[0].front", "objects[0].back = objects[1].front"
@@ -94,10 +95,14 @@ struct OpticalSystem {
 // a face that is not a surface of revolution, a gradient index not symmetric about the axis.
 OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens = {});
 
-// Curvature at the vertex of a surface of revolution: 1/R for spheres, conics and aspheres,
-// 0 for a plane, and for a typed sag formula the second derivative at r = 0 by central
-// differences over 1% of the semi-diameter (with Richardson extrapolation).
-double paraxial_curvature(const LensSurface& surface, double semi_diameter);
+// The surface whose vertex lies at axial position z (within 1e-9 of the system's length),
+// if any.
+std::optional<int> surface_at(const OpticalSystem& system, double z);
+
+// Puts an aperture stop in air at axial position z: a flat surface of rim `semi_diameter`
+// with air on both sides (labelled "stop"), which bends no ray and stops those outside its
+// rim. Returns its index. Throws SceneError when z lies inside a lens.
+int insert_air_stop(OpticalSystem& system, double z, double semi_diameter);
 
 // Refuses a wavelength outside a glass's published validity range; `what` names the
 // figure it is for ("--wavelength"). Throws SceneError naming the lens.

@@ -1,26 +1,6 @@
 #include "analysis/seidel.h"
 
-#include "geometry/lens/asphere_surface.h"
-#include "geometry/lens/conic_surface.h"
-
 namespace lenslab {
-
-namespace {
-
-// The fourth-order sag coefficient beyond the sphere's c³ r⁴ / 8, in system z.
-double aspheric_a4(const SystemSurface& s) {
-    const double c = s.curvature;
-    if (const auto* conic = dynamic_cast<const ConicSurface*>(s.shape.get())) {
-        return conic->k() * c * c * c / 8.0;
-    }
-    if (const auto* asphere = dynamic_cast<const AsphereSurface*>(s.shape.get())) {
-        const double a4 = asphere->coefficients().empty() ? 0.0 : asphere->coefficients()[0];
-        return asphere->k() * c * c * c / 8.0 + s.orientation * a4;
-    }
-    return 0.0;
-}
-
-}  // namespace
 
 SeidelSums& SeidelSums::operator+=(const SeidelSums& o) {
     spherical += o.spherical;
@@ -63,9 +43,10 @@ Seidel seidel_sums(const OpticalSystem& system, const FirstOrder& fo, double sho
         t.axial_colour = a * y * d_dn_n;
         t.lateral_colour = ab * y * d_dn_n;
 
-        // The asphere's terms, written as products so a surface the marginal ray meets on
+        // The fourth-order sag beyond the sphere's c^3 / 8 (any surface's, read through its
+        // vertex Taylor series), written as products so a surface the marginal ray meets on
         // the axis needs no division by y.
-        const double e = 8.0 * aspheric_a4(s) * (m.n_after - m.n);
+        const double e = 8.0 * (s.a4 - c * c * c / 8.0) * (m.n_after - m.n);
         t.spherical += e * y * y * y * y;
         t.coma += e * y * y * y * yb;
         t.astigmatism += e * y * y * yb * yb;

@@ -54,7 +54,7 @@ LensBench read_lens_bench(const nlohmann::json& bench) {
     }
     b.aperture = r.number("aperture", 0.0);
     b.stop_position = bench_number(r, "stop_position");
-    (void)bench_number(r, "stop_semi_diameter");
+    b.stop_semi_diameter = bench_number(r, "stop_semi_diameter");
     b.image_distance = bench_number(r, "image_distance");
     return b;
 }

@@ -20,7 +20,8 @@ struct LensBench {
     // "entrance_pupil_diameter" (mm), "f_number", "image_na", "object_na", "float_by_stop_size"
     std::string aperture_type;
     double aperture = 0;
-    std::optional<double> stop_position;   // from the first vertex
+    std::optional<double> stop_position;  // from the first vertex
+    std::optional<double> stop_semi_diameter;
     std::optional<double> image_distance;  // last vertex to the image surface
     // The lens_file object (its index in the scene file's "objects") whose file this came
     // from; -1: the scene's own "bench" block, written by `lenslab import`.

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "analysis/lens_bench_defaults.h"
 #include "lens_scene_builder.h"
 #include "scene/scene_error.h"
@@ -86,8 +88,9 @@ TEST(LensBenchDefaults, AnalyzeOfALensFileMeasuresAsItsFileSays) {
     AnalyzeRequest request;
     request.spots = true;
     const nlohmann::ordered_json j = analyze_report(achromat_from_its_file(), request);
-    EXPECT_EQ(j["lens_file_bench"]["taken"],
-              nlohmann::ordered_json::array({"wavelengths", "fields", "epd", "image_distance"}));
+    EXPECT_EQ(
+        j["lens_file_bench"]["taken"],
+        nlohmann::ordered_json::array({"wavelengths", "fields", "epd", "stop", "image_distance"}));
     EXPECT_DOUBLE_EQ(j["first_order"]["entrance_pupil"]["diameter"].get<double>(), 25.4);
     EXPECT_DOUBLE_EQ(j["spots"]["image_position"].get<double>(), 97.1);
     EXPECT_EQ(j["spots"]["wavelengths_nm"],
@@ -101,6 +104,57 @@ TEST(LensBenchDefaults, AnalyzeOfALensFileMeasuresAsItsFileSays) {
             "material": {"transparency": 1, "ior": 1.5}})"),
         request);
     EXPECT_FALSE(other.contains("lens_file_bench"));
+}
+
+Scene singlet_from_its_file(const std::string& file) {
+    return parse_scene(R"({"objects": [{"name": "singlet", "type": "lens_file", "file": ")" +
+                           std::string(LENSLAB_SOURCE_DIR) + "/tests/analysis/data/" + file +
+                           R"(", "vertex": [0, 0, 0], "axis": [0, 0, 1]})" + "]}",
+                       "test", "", {.require_camera = false});
+}
+
+// The entrance pupil of a stop at the back vertex of a singlet (front radius R, thickness t,
+// index n, air in front) is that vertex's paraxial image through the front face:
+// n / t - 1 / e = (n - 1) / R, so e = 1 / (n / t - (n - 1) / R) from the front vertex.
+TEST(LensBenchDefaults, TheFilesStopIsUsedWithoutStop) {
+    const nlohmann::ordered_json j =
+        analyze_report(singlet_from_its_file("singlet_stop_back.zmx"), {});
+    EXPECT_EQ(j["first_order"]["stop"]["surface"], 2);
+    const double n = 1.5, t = 6.0, r = 50.0;
+    EXPECT_NEAR(j["first_order"]["entrance_pupil"]["position"].get<double>(),
+                1.0 / (n / t - (n - 1.0) / r), 1e-12);
+    const auto& taken = j["lens_file_bench"]["taken"];
+    EXPECT_NE(std::find(taken.begin(), taken.end(), "stop"), taken.end());
+    // --stop wins, and says the file's stop was not taken.
+    AnalyzeRequest first;
+    first.stop = 1;
+    const nlohmann::ordered_json asked =
+        analyze_report(singlet_from_its_file("singlet_stop_back.zmx"), first);
+    EXPECT_EQ(asked["first_order"]["stop"]["surface"], 1);
+    EXPECT_EQ(asked["first_order"]["entrance_pupil"]["position"].get<double>(), 0.0);
+    EXPECT_EQ(asked["lens_file_bench"]["not_taken"][0], "stop: --stop 1 given");
+}
+
+// A stop in air 5 mm before a landscape singlet (a surface of its own in the file, which the
+// lens group cannot hold): the bench puts a stop there. With nothing before it, the entrance
+// pupil is the stop itself; a stop moved away from the lens changes the coma.
+TEST(LensBenchDefaults, AStopInAirBeforeTheLensIsPutInPlace) {
+    const nlohmann::ordered_json j =
+        analyze_report(singlet_from_its_file("singlet_stop_in_front.zmx"), {});
+    EXPECT_EQ(j["first_order"]["stop"]["surface"], 1);
+    EXPECT_EQ(j["first_order"]["stop"]["label"], "stop");
+    EXPECT_NEAR(j["first_order"]["entrance_pupil"]["position"].get<double>(), -5.0, 1e-12);
+    EXPECT_NEAR(j["first_order"]["entrance_pupil"]["diameter"].get<double>(), 8.0, 1e-12);
+    EXPECT_EQ(j["surfaces"].size(), 3u);
+    // The stop surface adds no Seidel term (flat, air on both sides).
+    EXPECT_EQ(j["seidel"]["surfaces"][0]["S_I"].get<double>(), 0.0);
+    AnalyzeRequest at_the_lens;
+    at_the_lens.stop = 2;
+    const nlohmann::ordered_json moved =
+        analyze_report(singlet_from_its_file("singlet_stop_back.zmx"), at_the_lens);
+    EXPECT_GT(std::abs(j["seidel"]["total"]["S_II"].get<double>() -
+                       moved["seidel"]["total"]["S_II"].get<double>()),
+              1e-4);
 }
 
 TEST(LensBenchDefaults, ABadBenchBlockIsRefusedWithItsPath) {

@@ -98,5 +98,30 @@ TEST(LensReport, WavelengthsSetThePrimaryAndTheColourPair) {
     EXPECT_NE(table.find("short 480.00 nm, long 643.85 nm"), std::string::npos) << table;
 }
 
+// SCHOTT's B270 is tabulated from 435.83 to 656.27 nm, just short of the C line (656.2725
+// nm): a lens of it asked about at one wavelength is measured, its chromatic block and
+// Seidel colour sums reported unavailable (null) with the reason, not the lens refused.
+TEST(LensReport, AColourPairOutsideAGlassRangeIsUnavailable) {
+    const LensSpec b270{"window lens", 0, 5, 25, sphere(40), sphere(0), test::glass("B270")};
+    const OpticalSystem system = build_optical_system(lens_scene({b270}));
+    const LensReport r = analyze_lens_system(system, {});
+    EXPECT_NE(r.chromatic_unavailable.find("the C line 656.273 nm is outside the validity range"),
+              std::string::npos)
+        << r.chromatic_unavailable;
+    const auto j = report_json(system, r);
+    EXPECT_TRUE(j["chromatic_shift_FC"].is_null());
+    EXPECT_EQ(j["chromatic"]["unavailable"], r.chromatic_unavailable);
+    EXPECT_TRUE(j["seidel"]["total"]["C_I"].is_null());
+    EXPECT_GT(j["efl"].get<double>(), 0.0);
+    EXPECT_NE(report_table(system, r).find("Chromatic (paraxial): unavailable"), std::string::npos);
+    // Two wavelengths inside the range give the block as usual.
+    LensReportOptions pair;
+    pair.wavelengths = {486.1327, 587.5618};
+    pair.wavelength_nm = 587.5618;
+    const LensReport within = analyze_lens_system(system, pair);
+    EXPECT_TRUE(within.chromatic_unavailable.empty());
+    EXPECT_NE(within.chromatic_shift_FC, 0.0);
+}
+
 }  // namespace
 }  // namespace lenslab

@@ -8,8 +8,6 @@
 
 #include "analysis/optical_system.h"
 #include "analysis/paraxial.h"
-#include "geometry/lens/sag_formula_surface.h"
-#include "geometry/lens/spherical_surface.h"
 #include "lens_scene_builder.h"
 
 namespace lenslab {
@@ -148,16 +146,6 @@ TEST(OpticalSystem, AChosenLensTakesOnlyTheLensesOnItsAxis) {
     expect_refused(lens_scene({kCrown}, {R"({"type": "sphere", "center": [0, 0, 50], "radius": 1,
                                            "material": {"color": 0.5}})"}),
                    "objects[1]", "is not a lens", 1);
-}
-
-TEST(OpticalSystem, ParaxialCurvatureOfATypedSagFormula) {
-    // The sphere of radius 50 typed as a formula: its vertex curvature is 1/50.
-    const SagFormulaSurface typed("50 - sqrt(2500 - r^2)", 12.5);
-    EXPECT_NEAR(paraxial_curvature(typed, 12.5), 1.0 / 50.0, 1e-9 / 50.0);
-    // A quartic adds nothing at the vertex.
-    const SagFormulaSurface quartic("r^2 / 80 + 1e-5 * r^4", 12.5);
-    EXPECT_NEAR(paraxial_curvature(quartic, 12.5), 1.0 / 40.0, 1e-9 / 40.0);
-    EXPECT_DOUBLE_EQ(paraxial_curvature(SphericalSurface(-25.0), 10.0), -1.0 / 25.0);
 }
 
 TEST(OpticalSystem, WavelengthsOutsideAGlassRangeAreRefused) {

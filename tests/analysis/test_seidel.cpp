@@ -7,7 +7,11 @@
 // - distortion of a symmetric system at unit magnification with the stop at its centre:
 //   zero, paraxially and for the real chief ray;
 // - a plano-hyperbolic lens (flat face first, conic k = -n² behind): the conic's term
-//   cancels the sphere's spherical aberration, as its perfect axial focus requires.
+//   cancels the sphere's spherical aberration, as its perfect axial focus requires;
+// - a surface typed as a sag formula gives the sums of the closed form it equals: the
+//   paraboloid r^2/80 those of the conic of vertex radius 40 with k = -1, a formula with an
+//   r^4 term those of the even asphere with the same A4 (the bench reads every surface
+//   through its vertex Taylor series, geometry/lens/lens_surface.h).
 
 #include <gtest/gtest.h>
 
@@ -202,6 +206,46 @@ TEST(SeidelConic, PlanoHyperbolicLensHasNoSphericalAberration) {
     const double s1_oval =
         seidel_sums(oval, seidel_first_order(oval, o), kLineF, kLineC).total.spherical;
     EXPECT_NEAR(s1_oval, 0.0, 1e-12 * std::abs(s1_sphere));
+}
+
+// A plano-convex singlet whose curved face is `front`, stop at it, field 10 degrees: its
+// Seidel sums.
+Seidel singlet_sums(const std::string& front) {
+    const OpticalSystem system = build_optical_system(
+        lens_scene({{"singlet", 0.0, 6.0, 20.0, front, sphere(0), glass("N-BK7")}}));
+    FirstOrderOptions o;
+    o.epd = 16.0;
+    o.fields = {10.0};
+    return seidel_sums(system, seidel_first_order(system, o), kLineF, kLineC);
+}
+
+void expect_equal_sums(const Seidel& a, const Seidel& b, double tol) {
+    EXPECT_NEAR(a.total.spherical, b.total.spherical, tol);
+    EXPECT_NEAR(a.total.coma, b.total.coma, tol);
+    EXPECT_NEAR(a.total.astigmatism, b.total.astigmatism, tol);
+    EXPECT_NEAR(a.total.petzval, b.total.petzval, tol);
+    EXPECT_NEAR(a.total.distortion, b.total.distortion, tol);
+    EXPECT_NEAR(a.total.axial_colour, b.total.axial_colour, tol);
+    EXPECT_NEAR(a.total.lateral_colour, b.total.lateral_colour, tol);
+}
+
+TEST(SeidelSagFormula, ParaboloidFormulaEqualsTheConic) {
+    const Seidel formula = singlet_sums(R"({"shape": "sag", "formula": "r^2/80"})");
+    const Seidel conic = singlet_sums(R"({"shape": "conic", "radius": 40, "k": -1})");
+    expect_equal_sums(formula, conic, 1e-9);
+    // The paraboloid's fourth-order term is not the sphere's: its S_I differs from the
+    // sphere's by the conic term (so a formula read as its sphere would fail above).
+    const Seidel sphere_sums = singlet_sums(sphere(40));
+    EXPECT_GT(std::abs(sphere_sums.total.spherical - conic.total.spherical), 1e-3);
+}
+
+TEST(SeidelSagFormula, QuarticTermEqualsTheEvenAsphere) {
+    const Seidel formula =
+        singlet_sums(R"({"shape": "sag", "formula": "r^2/(50*(1+sqrt(1-r^2/2500))) + 2e-6*r^4"})");
+    const Seidel asphere =
+        singlet_sums(R"({"shape": "asphere", "radius": 50, "k": 0, "coefficients": [2e-6]})");
+    expect_equal_sums(formula, asphere, 1e-9);
+    EXPECT_GT(std::abs(formula.total.spherical - singlet_sums(sphere(50)).total.spherical), 1e-3);
 }
 
 }  // namespace

@@ -31,6 +31,11 @@ public:
     double slope(double r) const;
     double polynomial_slope(double r) const;
 
+    VertexSag vertex_sag(double) const override {
+        const double c = 1.0 / m_radius;
+        const double a4 = m_coefficients.empty() ? 0.0 : m_coefficients[0];
+        return {c, (1.0 + m_k) * c * c * c / 8.0 + a4};
+    }
     double radius() const { return m_radius; }
     double k() const { return m_k; }
     const std::vector<double>& coefficients() const { return m_coefficients; }

@@ -23,6 +23,9 @@ public:
     std::string describe() const override;
     std::string why_undefined(double x, double y) const override;
 
+    VertexSag vertex_sag(double) const override {
+        return {m_curvature, (1.0 + m_k) * m_curvature * m_curvature * m_curvature / 8.0};
+    }
     double radius() const { return m_radius; }
     double k() const { return m_k; }
 

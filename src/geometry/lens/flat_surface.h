@@ -13,6 +13,7 @@ public:
                    double& t) const override;
     bool intersect_reads_bounds() const override { return false; }
     Vec3 normal(const Vec3&) const override { return {0, 0, 1}; }
+    VertexSag vertex_sag(double) const override { return {}; }
     std::string describe() const override { return "flat"; }
 };
 

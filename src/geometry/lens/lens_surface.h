@@ -16,12 +16,30 @@ namespace lenslab {
 // lens is built (`measure_span`). Numerical surfaces use it to bracket their roots: a ray
 // can only meet the face inside the cylinder r <= semi_diameter and the slab
 // z_min <= z <= z_max, and the face cannot rise faster than max_slope.
+// The sag near the vertex as its Taylor series in r, to fourth order:
+//   z(r) = curvature r^2 / 2 + a4 r^4 + O(r^6).
+// a4 is the whole fourth-order coefficient: a sphere's curvature^3 / 8 is in it, so a
+// conic's is (1 + k) c^3 / 8 and an even asphere's adds its A4. The optical bench's
+// paraxial and third-order (Seidel) figures depend on a surface only through these two.
+struct VertexSag {
+    double curvature = 0;
+    double a4 = 0;
+};
+
 struct SurfaceSpan {
     double semi_diameter = 0;
     double z_min = -std::numeric_limits<double>::infinity();
     double z_max = std::numeric_limits<double>::infinity();
     double max_slope = std::numeric_limits<double>::infinity();  // bound on |grad z|
 };
+
+class LensSurface;
+// The vertex's Taylor coefficients of any surface of revolution, from its sag along +x: an
+// interpolating polynomial in r^2 through eight points within a quarter of the
+// semi-diameter (sag(0) = 0 required), whose first two coefficients are curvature / 2 and
+// a4. For a sag that is itself a polynomial in r^2 of degree eight or less this is exact
+// to rounding; for an analytic one the error falls geometrically with the degree.
+VertexSag fit_vertex_sag(const LensSurface& surface, double semi_diameter);
 
 class LensSurface {
 public:
@@ -34,6 +52,12 @@ public:
     virtual double sag_xy(double x, double y) const { return sag(std::hypot(x, y)); }
     // True when the sag depends on r alone; a lens then samples it along one radius only.
     virtual bool is_rotationally_symmetric() const { return true; }
+    // The vertex's Taylor coefficients. The default reads them off the sag numerically
+    // (fit_vertex_sag); the closed forms give them exactly. `semi_diameter` is the extent
+    // the surface is used over, the scale of the numerical fit.
+    virtual VertexSag vertex_sag(double semi_diameter) const {
+        return fit_vertex_sag(*this, semi_diameter);
+    }
     // Largest radial distance where the surface exists (a sphere of radius R: |R|).
     virtual double max_semi_diameter() const = 0;
     // Nearest crossing of `ray` (in the surface's local frame) with t in (t_min, t_max) and

@@ -19,6 +19,9 @@ public:
     Vec3 normal(const Vec3& p) const override;
     std::string describe() const override;
 
+    VertexSag vertex_sag(double) const override {
+        return {m_curvature, m_curvature * m_curvature * m_curvature / 8.0};
+    }
     double radius() const { return m_radius; }
 
 private:
