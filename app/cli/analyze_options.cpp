@@ -33,6 +33,13 @@ void add_analyze_options(CLI::App& cmd, AnalyzeRequest& request) {
                    "imported lens file's stop, else 1, the first surface)")
         ->check(whole_number<int>())
         ->check(CLI::PositiveNumber);
+    cmd.add_option_function<std::string>(
+           "--ray-aiming",
+           [&request](const std::string& name) { request.ray_aiming = ray_aiming_named(name); },
+           "How real rays are aimed at a pupil point: real (through the real stop) or paraxial "
+           "(at the paraxial entrance pupil, Zemax's default) (default: an imported lens file's, "
+           "else real)")
+        ->check(CLI::IsMember({"real", "paraxial"}));
     CLI::Option* epd =
         cmd.add_option("--epd", request.epd,
                        "Entrance pupil diameter (default: the beam of --aperture with the stop "

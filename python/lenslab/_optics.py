@@ -105,7 +105,8 @@ def _request_json(*, wavelength: Optional[float] = None,
                   wavelengths: Optional[Sequence[float]] = None,
                   aperture: Optional[float] = None,
                   lens: Optional[str] = None, unit: Optional[str] = None,
-                  stop: Optional[int] = None, epd: Optional[float] = None, f_number: Optional[float] = None,
+                  stop: Optional[int] = None, ray_aiming: Optional[str] = None,
+                  epd: Optional[float] = None, f_number: Optional[float] = None,
                   object_distance: Optional[float] = None,
                   fields: Optional[Sequence[float]] = None,
                   field_heights: Optional[Sequence[float]] = None, seidel: bool = False,
@@ -152,6 +153,10 @@ def _request_json(*, wavelength: Optional[float] = None,
             request[name] = _numbers(name, values, positive=positive)
     if stop is not None:
         request["stop"] = _whole("stop", stop, 1, 100000)
+    if ray_aiming is not None:
+        if ray_aiming not in ("real", "paraxial"):
+            raise ValueError(f"ray_aiming: must be 'real' or 'paraxial', got {ray_aiming!r}")
+        request["ray_aiming"] = ray_aiming
     if image_distance is not None:
         request["image_distance"] = _number("image_distance", image_distance)
     for name, text in (("lens", lens), ("unit", unit)):
@@ -173,7 +178,8 @@ _OPTIONS = frozenset(inspect.signature(_request_json).parameters)
 def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
             wavelengths: Optional[Sequence[float]] = None, aperture: Optional[float] = None,
             lens: Optional[str] = None, unit: Optional[str] = None,
-            stop: Optional[int] = None, epd: Optional[float] = None, f_number: Optional[float] = None,
+            stop: Optional[int] = None, ray_aiming: Optional[str] = None,
+            epd: Optional[float] = None, f_number: Optional[float] = None,
             object_distance: Optional[float] = None,
             fields: Optional[Sequence[float]] = None,
             field_heights: Optional[Sequence[float]] = None, seidel: bool = False,

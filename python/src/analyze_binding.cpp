@@ -60,6 +60,8 @@ AnalyzeRequest request_from(const json& j) {
     take(j, "lens", a.lens);
     take(j, "unit", a.unit);
     take(j, "stop", a.stop);
+    if (j.contains("ray_aiming"))
+        a.ray_aiming = ray_aiming_named(j["ray_aiming"].get<std::string>());
     take(j, "epd", a.epd);
     take(j, "f_number", a.f_number);
     take(j, "object_distance", a.object_distance);

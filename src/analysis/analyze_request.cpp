@@ -80,6 +80,7 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
     options.wavelengths = a.wavelengths;
     FirstOrderOptions& first = options.first_order;
     first.stop = stop;
+    first.ray_aiming = a.ray_aiming.value_or(RayAiming::Real);
     first.epd = a.epd;
     first.f_number = a.f_number;
     if (a.object_distance > 0) {

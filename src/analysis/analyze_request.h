@@ -38,6 +38,8 @@ struct AnalyzeRequest {
     // its semi-diameter (0: not given). The surface there, or a stop in air inserted there.
     std::optional<double> stop_position;
     double stop_semi_diameter = 0;
+    // --ray-aiming; none: the lens file's, else Real.
+    std::optional<RayAiming> ray_aiming;
     double epd = 0, f_number = 0;
     double object_distance = 0;  // 0: the object at infinity
     std::vector<double> fields, field_heights;

@@ -49,6 +49,7 @@ FirstOrder first_order(const OpticalSystem& system, const ParaxialResult& paraxi
     FirstOrder f;
     f.wavelength_nm = nm;
     f.stop = o.stop;
+    f.ray_aiming = o.ray_aiming;
     f.efl = paraxial.efl;
     f.bfl = paraxial.bfl;
 
@@ -112,6 +113,17 @@ FirstOrder first_order(const OpticalSystem& system, const ParaxialResult& paraxi
     f.lagrange_invariant = n0 * (f.chief.u0 * f.marginal.y0 - f.marginal.u0 * f.chief.y0);
     if (o.object_distance) f.magnification = n0 * f.marginal.u0 / (m.n_after * m.u_after);
     return f;
+}
+
+const char* ray_aiming_name(RayAiming aiming) {
+    return aiming == RayAiming::Paraxial ? "paraxial" : "real";
+}
+
+std::optional<RayAiming> ray_aiming_named(const std::string& name) {
+    for (RayAiming a : {RayAiming::Real, RayAiming::Paraxial}) {
+        if (name == ray_aiming_name(a)) return a;
+    }
+    return std::nullopt;
 }
 
 }  // namespace lenslab

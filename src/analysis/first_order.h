@@ -17,12 +17,22 @@
 // angle the chief ray climbs (ū > 0), so H > 0 for a positive lens at infinity.
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "analysis/paraxial.h"
 #include "analysis/paraxial_ray.h"
 
 namespace lenslab {
+
+// How real rays from a field point are aimed at a point (px, py) of the pupil
+// (analysis/ray_aiming.h): through the real aperture stop, found by iteration, or straight at
+// the paraxial entrance pupil (Zemax's default, "ray aiming off"), the stop then met wherever
+// the pupil's aberrations take the ray.
+enum class RayAiming { Real, Paraxial };
+const char* ray_aiming_name(RayAiming aiming);  // "real", "paraxial"
+// The aiming a name names; none for another name.
+std::optional<RayAiming> ray_aiming_named(const std::string& name);
 
 struct FirstOrderOptions {
     double wavelength_nm = kLineD;
@@ -34,6 +44,7 @@ struct FirstOrderOptions {
     std::optional<double> object_distance;
     // Field points: angles in degrees for an object at infinity, object heights otherwise.
     std::vector<double> fields{0.0};
+    RayAiming ray_aiming = RayAiming::Real;
 };
 
 struct Pupil {
@@ -51,11 +62,12 @@ struct FirstOrder {
     double na = 0;                // image-space numerical aperture n' |u'| (paraxial)
     Pupil entrance_pupil, exit_pupil;
     double lagrange_invariant = 0;
-    std::optional<double> magnification;    // finite object only: n u / (n' u')
-    double image_position = 0;              // paraxial image, from the last vertex
-    double image_height = 0;                // the chief ray's height there
-    std::optional<double> object_distance;  // as in FirstOrderOptions
-    double field = 0;                       // the field point the chief ray comes from
+    std::optional<double> magnification;     // finite object only: n u / (n' u')
+    double image_position = 0;               // paraxial image, from the last vertex
+    double image_height = 0;                 // the chief ray's height there
+    std::optional<double> object_distance;   // as in FirstOrderOptions
+    double field = 0;                        // the field point the chief ray comes from
+    RayAiming ray_aiming = RayAiming::Real;  // as in FirstOrderOptions
     ParaxialRay marginal, chief;
 };
 

@@ -70,6 +70,7 @@ nlohmann::ordered_json first_order_json(const OpticalSystem& system, const First
           {"label", system.surfaces[f.stop].label},
           {"semi_diameter", f.stop_semi_diameter}}},
         {"field", f.field},
+        {"ray_aiming", ray_aiming_name(f.ray_aiming)},
         {"image",
          {{"position", finite_or_null(f.image_position)},
           {"height", finite_or_null(f.image_height)}}},
@@ -118,7 +119,10 @@ std::string first_order_table(const OpticalSystem& system, const FirstOrder& f) 
         out << line << (note.empty() ? "" : "  " + note) << "\n";
     };
     out << "First order (paraxial), stop at surface " << f.stop + 1 << " ("
-        << system.surfaces[f.stop].label << ")\n";
+        << system.surfaces[f.stop].label << "); real rays aimed "
+        << (f.ray_aiming == RayAiming::Paraxial ? "at the paraxial entrance pupil"
+                                                : "through the stop")
+        << "\n";
     row("entrance pupil position", f.entrance_pupil.position, "from the first vertex");
     row("entrance pupil diameter", f.entrance_pupil.diameter);
     row("exit pupil position", f.exit_pupil.position, "from the last vertex");

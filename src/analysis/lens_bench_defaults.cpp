@@ -79,6 +79,10 @@ LensBenchDefaults with_lens_bench_defaults(const AnalyzeRequest& request, const 
             d.not_taken.push_back("stop: --stop " + std::to_string(a.stop) + " given");
         }
     }
+    if (!b.ray_aiming.empty() && !a.ray_aiming) {
+        a.ray_aiming = ray_aiming_named(b.ray_aiming);
+        d.taken.push_back("ray_aiming");
+    }
     // The image surface, for the figures measured on it (elsewhere it means nothing).
     const AnalyzeRequest tables = with_implied_tables(a);
     const bool on_image_plane = tables.spots || tables.fans || tables.field_curves;

@@ -14,7 +14,7 @@ namespace lenslab {
 
 struct LensBenchDefaults {
     AnalyzeRequest request;  // with the file's values filled in
-    // "wavelengths", "fields", "epd", "f_number", "stop", "image_distance"
+    // "wavelengths", "fields", "epd", "f_number", "stop", "ray_aiming", "image_distance"
     std::vector<std::string> taken;
     // What the file says that the bench does not take, and why ("fields: object heights
     // need --object-distance").

@@ -66,6 +66,7 @@ std::optional<Ray> RayAimer::aim(double px, double py) const {
         b = py * r_ep + direction_y_ / direction_z_ * (z_start_ - z_ep);
         step = kAimStep * scale_;
     }
+    if (f.ray_aiming == RayAiming::Paraxial) return candidate(a, b);
     const double tolerance = kAimTolerance * scale_;
     for (int i = 0; i < kAimIterations; ++i) {
         const auto p = at_stop(a, b);

@@ -29,6 +29,8 @@ public:
     // The ray from the field point that crosses the stop at (px, py), with the surfaces
     // taken past their rims (Rims::Ignore). None when no such ray exists (it is totally
     // reflected before the stop, or the surface shapes end) or the aim does not converge.
+    // With first_order.ray_aiming Paraxial, the ray through (px, py) of the paraxial
+    // entrance pupil instead, without iteration.
     std::optional<Ray> aim(double px, double py) const;
 
     // That ray traced through every surface with their rims: its fate says whether a lens

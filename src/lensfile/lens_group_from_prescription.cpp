@@ -307,6 +307,7 @@ private:
             out["aperture"] =
                 m_p.aperture_type == "entrance_pupil_diameter" ? m_p.aperture * m_mm : m_p.aperture;
         }
+        if (!m_p.ray_aiming.empty()) out["ray_aiming"] = m_p.ray_aiming;
         for (size_t j = 1; j + 1 < m_s.size(); ++j) {
             if (!m_s[j].stop) continue;
             out["stop_position"] = z[j] - z[first];

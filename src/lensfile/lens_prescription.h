@@ -21,9 +21,13 @@ struct LensFileSurface {
     // Even asphere terms: r^2, r^4, r^6, ... (index 0 is the r^2 term).
     std::vector<double> even_terms;
     std::string glass;  // the medium after the surface; empty: air
-    // A model glass given by its index and Abbe number (Zemax ___BLANK), when glass is empty.
+    // A model glass given by its index and Abbe number (Zemax ___BLANK, a CODE V glass code
+    // such as 517642 or 517000.520000), when glass is empty.
     double model_nd = 0.0, model_vd = 0.0;
     double semi_diameter = 0.0;  // 0: not given
+    // The radius of a central obscuration on the surface (CODE V CIR OBS, Zemax OBSC): light
+    // that meets the surface nearer the axis is blocked. 0: none. Read, not yet used.
+    double obscuration_semi_diameter = 0.0;
     bool stop = false;
 };
 
@@ -43,6 +47,9 @@ struct LensFilePrescription {
     std::vector<double> vignetting_upper, vignetting_lower;
     // "entrance_pupil_diameter", "f_number" (image space), "object_na"; empty: none given.
     std::string aperture_type;
+    // How the file's program aims real rays (Zemax RAIM): "paraxial" (at the paraxial
+    // entrance pupil), "real" (through the stop), "" (not said).
+    std::string ray_aiming;
     double aperture = 0.0;
     // Object, optical surfaces, image, in order.
     std::vector<LensFileSurface> surfaces;

@@ -1,9 +1,16 @@
 #include "lensfile/seq_reader.h"
 
 #include <cmath>
+#include <cstdio>
+#include <map>
+#include <optional>
 #include <set>
+#include <utility>
 
+#include "lensfile/lens_file_glass.h"
 #include "lensfile/lens_file_tokens.h"
+#include "lensfile/seq_lines.h"
+#include "lensfile/seq_radius_mode.h"
 
 namespace lenslab {
 
@@ -19,24 +26,30 @@ const std::set<std::string>& seq_session_commands() {
     return commands;
 }
 
-// Lines split into commands at ';' (outside quotes), comments ('!' to the end) removed.
-std::vector<std::string> seq_commands(const std::string& line) {
-    std::vector<std::string> out(1);
-    char quote = 0;
-    for (const char c : line) {
-        if (quote) {
-            if (c == quote) quote = 0;
-        } else if (c == '\'' || c == '"') {
-            quote = c;
-        } else if (c == '!') {
-            break;
-        } else if (c == ';') {
-            out.emplace_back();
-            continue;
-        }
-        out.back() += c;
+std::string seq_number_text(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", v);
+    return text;
+}
+
+// CODE V's surface qualifiers: SO (the object), SI (the image), Sk (surface k).
+bool seq_surface_qualifier(const std::string& word, size_t surfaces, size_t& index) {
+    if (word == "SO") {
+        index = 0;
+        return true;
     }
-    return out;
+    if (word == "SI") {
+        index = surfaces - 1;
+        return true;
+    }
+    if (word.size() < 2 || word[0] != 'S') return false;
+    size_t k = 0;
+    for (size_t i = 1; i < word.size(); ++i) {
+        if (word[i] < '0' || word[i] > '9' || k > 100000) return false;
+        k = 10 * k + static_cast<size_t>(word[i] - '0');
+    }
+    index = k;
+    return true;
 }
 
 class SeqReader {
@@ -48,9 +61,9 @@ public:
     }
 
     LensFilePrescription read() {
-        for (size_t i = 0; i < m_lines.size(); ++i) {
-            m_line = static_cast<int>(i) + 1;
-            for (const std::string& command : seq_commands(m_lines[i])) {
+        for (const SeqLine& line : seq_logical_lines(m_lines)) {
+            m_line = line.line;
+            for (const std::string& command : seq_commands(line.text)) {
                 m_words = lens_file_words(command);
                 if (m_words.empty()) continue;
                 m_words[0] = lens_file_upper(m_words[0]);
@@ -65,6 +78,8 @@ public:
                    std::to_string(m_lens.wavelengths_nm.size()));
         }
         m_lens.primary_wavelength = m_lens.wavelengths_nm.empty() ? 0 : m_primary - 1;
+        take_edge_apertures();
+        settle_radius_mode();
         return std::move(m_lens);
     }
 
@@ -72,10 +87,22 @@ private:
     [[noreturn]] void refuse(const std::string& reason) const {
         throw LensFileError(m_file, m_line, reason);
     }
+    void warn(const std::string& message) { m_lens.warnings.push_back({m_line, message}); }
 
     double number(size_t i, const std::string& what) const {
         if (i >= m_words.size()) refuse(m_words[0] + ": " + what + " missing");
         return lens_file_number(m_words[i], m_file, m_line, m_words[0] + " " + what);
+    }
+
+    // Distances of 1e10 and more stand for infinity (CODE V's own convention), as do INF and
+    // INFINITY (written by other programs).
+    double thickness(size_t i) const {
+        const std::string word = i < m_words.size() ? lens_file_upper(m_words[i]) : "";
+        if (word == "INF" || word == "INFINITY" || word == "+INF" || word == "+INFINITY") {
+            return INFINITY;
+        }
+        const double t = number(i, "thickness");
+        return std::abs(t) >= 1e10 ? INFINITY : t;
     }
 
     LensFileSurface& surface() {
@@ -102,18 +129,33 @@ private:
         const std::string upper = lens_file_upper(name);
         if (upper == "REFL") refuse("a mirror (REFL): a lens_group holds refracting elements only");
         s.glass_line = m_line;
+        s.model_nd = s.model_vd = 0.0;
         s.glass = upper == "AIR" ? "" : name;
+        if (!lens_file_glass_code_like(name)) return;
+        // A glass code: CODE V's model glass by n_d and V_d.
+        const std::optional<LensFileGlassCode> code = lens_file_glass_code(name);
+        if (!code) {
+            refuse("glass '" + name +
+                   "': a number, but not a glass code (NNNVVV as 517642: n_d 1.517, V_d 64.2; "
+                   "or NNNNNN.VVVV as 517000.520000: n_d 1.517, V_d 52)");
+        }
+        s.glass.clear();
+        s.model_nd = code->n_d;
+        s.model_vd = code->V_d;
+        warn("glass '" + name + "' read as a model glass of n_d " + seq_number_text(code->n_d) +
+             " and V_d " + seq_number_text(code->V_d) + " (a CODE V glass code)" +
+             (code->V_d > 0.0 ? "" : ", without dispersion"));
     }
 
     void add_surface() {
         LensFileSurface s;
         s.line = m_line;
-        if (m_words.size() > 1) set_radius(s, number(1, "radius"));
-        if (m_words.size() > 2) {
-            const double t = number(2, "thickness");
-            // Object distances of 1e10 and more stand for infinity (CODE V's own convention).
-            s.thickness = std::abs(t) >= 1e10 ? INFINITY : t;
+        if (m_words.size() > 1) {
+            // Before any RDM, a radius or a curvature: settled at the end (settle_radius_mode).
+            if (!m_mode_given) m_unsure[m_lens.surfaces.size()] = number(1, "radius");
+            set_radius(s, number(1, "radius"));
         }
+        if (m_words.size() > 2) s.thickness = thickness(2);
         if (m_words.size() > 3) set_glass(s, m_words[3]);
         if (m_words.size() > 4) refuse(m_words[0] + ": more than radius, thickness and glass");
         m_lens.surfaces.push_back(s);
@@ -139,10 +181,17 @@ private:
             return add_surface();
         }
         if (c == "RDM") {
-            m_curvature_mode = m_words.size() > 1 && lens_file_upper(m_words[1]) == "N";
+            // RDM, RDM Y, RDM YES: radii; RDM N, RDM NO: curvatures.
+            const std::string mode = m_words.size() > 1 ? lens_file_upper(m_words[1]) : "Y";
+            if (mode != "Y" && mode != "YES" && mode != "N" && mode != "NO") {
+                refuse("RDM '" + m_words[1] + "': Y (radii) or N (curvatures)");
+            }
+            m_curvature_mode = mode[0] == 'N';
+            m_mode_given = true;
             return;
         }
         if (c == "RDY" || c == "CUY") {
+            m_unsure.erase(m_lens.surfaces.size() - 1);
             const bool cm = m_curvature_mode;
             m_curvature_mode = c == "CUY";
             set_radius(surface(), number(1, c == "CUY" ? "curvature" : "radius"));
@@ -150,7 +199,7 @@ private:
             return;
         }
         if (c == "THI") {
-            surface().thickness = number(1, "thickness");
+            surface().thickness = thickness(1);
             return;
         }
         if (c == "GLA") {
@@ -173,10 +222,7 @@ private:
             }
             return;
         }
-        if (c == "CIR") {
-            surface().semi_diameter = number(1, "semi-aperture");
-            return;
-        }
+        if (c == "CIR") return aperture();
         if (c == "DIM") {
             const std::string u = m_words.size() > 1 ? lens_file_upper(m_words[1]) : "";
             if (u == "M")
@@ -248,12 +294,90 @@ private:
                                                "' not understood; the command is left out")});
     }
 
+    // CIR [CLR | EDG | OBS | HOL] [Sk | SO | SI] [Zk] [L'label'] value: a clear aperture (the
+    // semi-diameter), an edge aperture (where the lens is cut, drawn; the semi-diameter where
+    // no clear aperture is given), a central obscuration (recorded), a hole (left out).
+    void aperture() {
+        surface();
+        std::string kind = "CLR";
+        size_t j = m_lens.surfaces.size() - 1;
+        std::optional<double> value;
+        for (size_t i = 1; i < m_words.size(); ++i) {
+            const std::string w = lens_file_upper(m_words[i]);
+            if (w == "CLR" || w == "EDG" || w == "OBS" || w == "HOL") {
+                kind = w;
+            } else if (seq_surface_qualifier(w, m_lens.surfaces.size(), j)) {
+                if (j >= m_lens.surfaces.size()) refuse("CIR " + m_words[i] + ": no such surface");
+            } else if (w.size() > 1 && w[0] == 'Z' &&
+                       w.find_first_not_of("0123456789", 1) == std::string::npos) {
+                if (w != "Z1") {
+                    return warn("CIR " + m_words[i] +
+                                ": an aperture of another zoom position than the first; left out");
+                }
+            } else if (w.size() > 1 && w[0] == 'L' && (w[1] == '\'' || w[1] == '"')) {
+                // the aperture's label
+            } else if (value) {
+                refuse("CIR: '" + m_words[i] + "' after the semi-aperture");
+            } else {
+                value = number(i, "semi-aperture");
+            }
+        }
+        if (!value) refuse("CIR: semi-aperture missing");
+        LensFileSurface& s = m_lens.surfaces[j];
+        const std::string where = " on surface " + std::to_string(j);
+        if (kind == "CLR") {
+            s.semi_diameter = *value;
+        } else if (kind == "EDG") {
+            m_edges[j] = {*value, m_line};
+        } else if (kind == "OBS") {
+            s.obscuration_semi_diameter = *value;
+            warn("CIR OBS: a central obscuration of radius " + seq_number_text(*value) + where +
+                 "; recorded, but not yet used (no ray is blocked by it)");
+        } else {
+            warn("CIR HOL: a hole of radius " + seq_number_text(*value) + where +
+                 " (a mirror's); left out");
+        }
+    }
+
+    // Edge apertures stand in for the clear apertures the file does not give.
+    void take_edge_apertures() {
+        for (const auto& [j, edge] : m_edges) {
+            LensFileSurface& s = m_lens.surfaces[j];
+            if (s.semi_diameter != 0.0) continue;
+            s.semi_diameter = edge.first;
+            m_lens.warnings.push_back(
+                {edge.second, "CIR EDG: surface " + std::to_string(j) +
+                                  " has no clear aperture (CIR); its edge aperture " +
+                                  seq_number_text(edge.first) + " is taken as its semi-diameter"});
+        }
+    }
+
+    // A file without RDM: its numbers after S are radii, as lenslab and most files written by
+    // hand take them, unless they make sense only as curvatures (CODE V's RDM N).
+    void settle_radius_mode() {
+        if (m_unsure.empty()) return;
+        const std::string as_radii = seq_implausible_radii(m_lens, m_unsure, false);
+        if (as_radii.empty() || !seq_implausible_radii(m_lens, m_unsure, true).empty()) return;
+        int line = 0;
+        for (const auto& [j, v] : m_unsure) {
+            m_lens.surfaces[j].radius = v == 0.0 ? 0.0 : 1.0 / v;
+            if (!line && v != 0.0) line = m_lens.surfaces[j].line;
+        }
+        m_lens.warnings.push_back(
+            {line,
+             "no RDM: the numbers after S are read as curvatures, as after RDM N (as radii, " +
+                 as_radii + "); write RDM N or RDM Y to say which"});
+    }
+
     const std::vector<std::string>& m_lines;
     std::string m_file;
     LensFilePrescription m_lens;
     int m_line = 0;
     std::vector<std::string> m_words;
     bool m_curvature_mode = false;
+    bool m_mode_given = false;          // an RDM was read
+    std::map<size_t, double> m_unsure;  // surface: its number after S, before any RDM
+    std::map<size_t, std::pair<double, int>> m_edges;  // surface: CIR EDG value, line
     int m_primary = 1;
 };
 

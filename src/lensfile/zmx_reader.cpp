@@ -14,11 +14,10 @@ namespace {
 // lens itself: understood, and passed over without a warning.
 const std::set<std::string>& zmx_display_keywords() {
     static const std::set<std::string> keywords = {
-        "VERS", "PFIL", "LANG", "ENVD", "GFAC", "RAIM", "PUSH", "SDMA", "OMMA",
-        "ROPD", "PICB", "FWGN", "FWGT", "WWGT", "VDXN", "VDYN", "VCXN", "VCYN",
-        "VANN", "POLS", "GLRS", "GSTD", "NSCD", "COFN", "HIDE", "SLAB", "POPS",
-        "FIMP", "BLNK", "TOL",  "MNUM", "MOFF", "NOTE", "COMM", "COAT", "TOLE",
-        "PZUP", "PPAR", "PSCA", "MAZH", "CONF", "TCMM", "DMFS", "SCOL", "SWID"};
+        "VERS", "PFIL", "LANG", "ENVD", "GFAC", "PUSH", "SDMA", "OMMA", "ROPD", "PICB", "FWGN",
+        "FWGT", "WWGT", "VDXN", "VDYN", "VCXN", "VCYN", "VANN", "POLS", "GLRS", "GSTD", "NSCD",
+        "COFN", "HIDE", "SLAB", "POPS", "FIMP", "BLNK", "TOL",  "MNUM", "MOFF", "NOTE", "COMM",
+        "COAT", "TOLE", "PZUP", "PPAR", "PSCA", "MAZH", "CONF", "TCMM", "DMFS", "SCOL", "SWID"};
     return keywords;
 }
 
@@ -110,6 +109,7 @@ private:
                 surface().semi_diameter = number(1, "semi-diameter");
             return;
         }
+        if (k == "OBSC") return obscuration();
         if (k == "STOP") {
             surface().stop = true;
             return;
@@ -145,6 +145,14 @@ private:
                                    : k == "FNUM" ? "f_number"
                                                  : "object_na";
             m_lens.aperture = number(1, "value");
+            return;
+        }
+        if (k == "RAIM") {
+            // RAIM <?> <mode> ...: mode 0 is Zemax's ray aiming off, rays aimed at the paraxial
+            // entrance pupil; 1 (paraxial) and 2 (real) aim them through the stop.
+            if (m_words.size() > 2) {
+                m_lens.ray_aiming = number(2, "ray aiming") == 0 ? "paraxial" : "real";
+            }
             return;
         }
         if (k == "FLOA") {
@@ -232,6 +240,22 @@ private:
             warn("PARM " + std::to_string(i) + " = " + m_words[2] + " means nothing for a " +
                  m_type + " surface; left out");
         }
+    }
+
+    // OBSC r R ...: a circular obscuration from radius r to R (Zemax's "circular obscuration"
+    // aperture). A central one (r = 0) is recorded; R = 0 obscures nothing.
+    void obscuration() {
+        LensFileSurface& s = surface();
+        const double inner = number(1, "minimum radius"), outer = number(2, "maximum radius");
+        if (outer == 0.0) return;
+        const std::string where = " on surface " + std::to_string(m_lens.surfaces.size() - 1);
+        if (inner != 0.0) {
+            return warn("OBSC: an annular obscuration (radius " + m_words[1] + " to " + m_words[2] +
+                        ")" + where + "; left out");
+        }
+        s.obscuration_semi_diameter = outer;
+        warn("OBSC: a central obscuration of radius " + m_words[2] + where +
+             "; recorded, but not yet used (no ray is blocked by it)");
     }
 
     void glass() {

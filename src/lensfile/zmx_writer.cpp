@@ -220,6 +220,9 @@ private:
             if (type == "object_na") line(out, "OBNA " + value);
         }
         if (type == "float_by_stop_size") line(out, "FLOA");
+        if (m_bench.contains("ray_aiming")) {
+            line(out, std::string("RAIM 0 ") + (m_bench["ray_aiming"] == "paraxial" ? "0" : "2"));
+        }
         const json waves = m_bench.value("wavelengths", json::array());
         const json fx = m_bench.value("fields_x", json::array());
         const json fy = m_bench.value("fields_y", json::array());

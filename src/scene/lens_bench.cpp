@@ -27,11 +27,11 @@ std::optional<double> bench_number(JsonObjectReader& r, const std::string& key) 
 }  // namespace
 
 LensBench read_lens_bench(const nlohmann::json& bench) {
-    JsonObjectReader r(
-        bench, "bench",
-        {"unit", "wavelengths", "primary_wavelength", "field_type", "fields_x", "fields_y",
-         "aperture_type", "aperture", "stop_position", "stop_semi_diameter", "image_distance"},
-        "a lens file's bench");
+    JsonObjectReader r(bench, "bench",
+                       {"unit", "wavelengths", "primary_wavelength", "field_type", "fields_x",
+                        "fields_y", "aperture_type", "aperture", "stop_position",
+                        "stop_semi_diameter", "image_distance", "ray_aiming"},
+                       "a lens file's bench");
     (void)r.choice("unit", "mm", {"mm"});
     LensBench b;
     b.wavelengths = bench_numbers(r, "wavelengths");
@@ -56,6 +56,7 @@ LensBench read_lens_bench(const nlohmann::json& bench) {
     b.stop_position = bench_number(r, "stop_position");
     b.stop_semi_diameter = bench_number(r, "stop_semi_diameter");
     b.image_distance = bench_number(r, "image_distance");
+    if (r.has("ray_aiming")) b.ray_aiming = r.choice("ray_aiming", "", {"paraxial", "real"});
     return b;
 }
 

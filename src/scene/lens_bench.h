@@ -22,6 +22,7 @@ struct LensBench {
     double aperture = 0;
     std::optional<double> stop_position;  // from the first vertex
     std::optional<double> stop_semi_diameter;
+    std::string ray_aiming;                // "paraxial" or "real" (the file's RAIM); "": not said
     std::optional<double> image_distance;  // last vertex to the image surface
     // The lens_file object (its index in the scene file's "objects") whose file this came
     // from; -1: the scene's own "bench" block, written by `lenslab import`.

@@ -75,6 +75,25 @@ TEST(LensBenchDefaults, TheImageSurfaceIsForFiguresMeasuredOnIt) {
     EXPECT_EQ(with_lens_bench_defaults(spots, b).request.image_distance, 97.1);
 }
 
+TEST(LensBenchDefaults, TheFilesRayAimingUnlessAsked) {
+    LensBench b;
+    b.ray_aiming = "paraxial";
+    const LensBenchDefaults d = with_lens_bench_defaults({}, b);
+    EXPECT_EQ(d.request.ray_aiming, RayAiming::Paraxial);
+    EXPECT_EQ(d.taken, std::vector<std::string>{"ray_aiming"});
+    AnalyzeRequest real;
+    real.ray_aiming = RayAiming::Real;
+    EXPECT_EQ(with_lens_bench_defaults(real, b).request.ray_aiming, RayAiming::Real);
+    const nlohmann::ordered_json j = analyze_report(
+        parse_scene(R"({"bench": {"ray_aiming": "paraxial"}, "objects": [{"type": "lens",
+            "center": [0, 0, 2], "axis": [0, 0, 1], "thickness": 4, "diameter": 20,
+            "front": {"shape": "sphere", "radius": 50}, "back": {"shape": "flat"},
+            "material": {"transparency": 1, "ior": 1.5}}]})",
+                    "test", "", {.require_camera = false}),
+        {});
+    EXPECT_EQ(j["first_order"]["ray_aiming"], "paraxial");
+}
+
 Scene achromat_from_its_file(const std::string& extra = "") {
     return parse_scene(
         R"({"objects": [{"name": "achromat", "type": "lens_file", "file": ")" LENSLAB_SOURCE_DIR
@@ -88,9 +107,9 @@ TEST(LensBenchDefaults, AnalyzeOfALensFileMeasuresAsItsFileSays) {
     AnalyzeRequest request;
     request.spots = true;
     const nlohmann::ordered_json j = analyze_report(achromat_from_its_file(), request);
-    EXPECT_EQ(
-        j["lens_file_bench"]["taken"],
-        nlohmann::ordered_json::array({"wavelengths", "fields", "epd", "stop", "image_distance"}));
+    EXPECT_EQ(j["lens_file_bench"]["taken"],
+              nlohmann::ordered_json::array(
+                  {"wavelengths", "fields", "epd", "stop", "ray_aiming", "image_distance"}));
     EXPECT_DOUBLE_EQ(j["first_order"]["entrance_pupil"]["diameter"].get<double>(), 25.4);
     EXPECT_DOUBLE_EQ(j["spots"]["image_position"].get<double>(), 97.1);
     EXPECT_EQ(j["spots"]["wavelengths_nm"],

@@ -611,7 +611,7 @@ lenslab_cli_test(NAME import.bad.unknown_surface_type
            -DOUTPUT=${LENSLAB_CLI_OUT}/bad_surface.json -DOUTPUT_CREATED=OFF)
 lenslab_cli_test(NAME analyze.lens_file
     ARGS analyze ${lensfile_data}/triplet_scene.json
-    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=3 lenses, 6 surfaces on one axis")
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=3 lenses, 7 surfaces on one axis")
 set(export_out ${LENSLAB_CLI_OUT}/triplet.zmx)
 lenslab_cli_test(NAME export.zmx
     ARGS export ${lensfile_data}/cooke_triplet.json --object triplet -o ${export_out}

@@ -27,6 +27,17 @@ def test_options_equal_the_cli():
     assert report == expected
 
 
+def test_ray_aiming_equals_the_cli():
+    expected = cli_json("analyze", SCENE, "--json", "--fields", "0,3", "--spots",
+                        "--ray-aiming", "paraxial")
+    report = lenslab.analyze(SCENE, fields=[0, 3], spots=True, ray_aiming="paraxial")
+    assert report == expected
+    assert report["first_order"]["ray_aiming"] == "paraxial"
+    assert report["spots"] != lenslab.analyze(SCENE, fields=[0, 3], spots=True)["spots"]
+    with pytest.raises(ValueError, match=r"^ray_aiming: must be 'real' or 'paraxial'"):
+        lenslab.analyze(SCENE, ray_aiming="off")
+
+
 def test_bad_stop_raises():
     with pytest.raises(ValueError, match=r"^stop 9: the system has 3 surfaces, numbered 1 to 3$"):
         lenslab.analyze(SCENE, stop=9)
@@ -185,7 +196,8 @@ def test_a_lens_file_is_measured_as_its_file_says():
     imported = "scenes/imported_achromat.json"
     report = lenslab.analyze(imported)
     assert report == cli_json("analyze", imported, "--json")
-    assert report["lens_file_bench"]["taken"] == ["wavelengths", "fields", "epd"]
+    assert report["lens_file_bench"]["taken"] == ["wavelengths", "fields", "epd", "stop",
+                                                  "ray_aiming"]
     assert report["first_order"]["entrance_pupil"]["diameter"] == 25.4
     # A wavelength asked for wins over the file's.
     assert "wavelengths" not in lenslab.analyze(imported, wavelength=550)["lens_file_bench"]["taken"]
