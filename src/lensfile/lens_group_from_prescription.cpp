@@ -151,20 +151,21 @@ private:
     }
 
     // CODE V files often give no semi-apertures (CODE V finds them from the pupil, the fields
-    // and the vignetting factors). Where none is given and the entrance pupil is, each surface
-    // gets the largest height of the paraxial rim rays of every field (chief ray plus or minus
-    // the marginal ray, cut by VUY and VLY), the usual first estimate of a clear aperture.
+    // and the vignetting factors). Where none is given and the entrance pupil is (as a
+    // diameter, or as an F-number: EFL / N), each surface gets the largest height of the
+    // paraxial rim rays of every field (chief ray plus or minus the marginal ray, cut by VUY
+    // and VLY), the usual first estimate of a clear aperture.
     void estimate_semi_diameters(std::vector<LensFileWarning>& warnings) {
         const size_t image = m_s.size() - 1;
         bool missing = false;
         for (size_t j = 1; j < image; ++j) missing = missing || m_s[j].semi_diameter == 0.0;
-        if (!missing || m_p.aperture_type != "entrance_pupil_diameter" || !(m_p.aperture > 0)) {
-            return;
-        }
-        // Two rays from surface 1: A at the pupil's rim parallel to the axis, B through the
-        // vertex at unit slope; the chief ray is the mix of them that crosses the stop's centre.
+        const bool epd = m_p.aperture_type == "entrance_pupil_diameter";
+        if (!missing || !(epd || m_p.aperture_type == "f_number") || !(m_p.aperture > 0)) return;
+        // Two rays from surface 1: A at unit height parallel to the axis (scaled to the
+        // pupil's rim below), B through the vertex at unit slope; the chief ray is the mix of
+        // them that crosses the stop's centre.
         std::vector<double> ya(m_s.size()), yb(m_s.size());
-        double a_y = 0.5 * m_p.aperture, a_u = 0.0, b_y = 0.0, b_u = 1.0, n = 1.0;
+        double a_y = 1.0, a_u = 0.0, b_y = 0.0, b_u = 1.0, n = 1.0;
         size_t stop = 1;
         for (size_t j = 1; j < image; ++j) {
             if (m_s[j].stop) stop = j;
@@ -177,6 +178,10 @@ private:
             a_y += a_u * m_s[j].thickness;
             b_y += b_u * m_s[j].thickness;
         }
+        // The entrance pupil's radius: as given, or EFL / (2 N), EFL = -1 / u' of ray A.
+        const double pupil_radius = epd ? 0.5 * m_p.aperture : -0.5 / (a_u * m_p.aperture);
+        if (!std::isfinite(pupil_radius) || pupil_radius == 0.0) return;  // afocal
+        for (double& y : ya) y *= std::abs(pupil_radius);
         // Each y field's beam: its chief ray, and its rim rays cut by the vignetting factors.
         std::vector<double> angles = {0.0};
         if (m_p.field_type == "angle") angles = m_p.fields_y.empty() ? angles : m_p.fields_y;
@@ -196,11 +201,13 @@ private:
             }
             m_s_estimate[j] = sd;
         }
-        warnings.push_back({0,
-                            "no semi-apertures given: each surface's is the largest height of "
-                            "the paraxial rim rays (entrance pupil " +
-                                number_text(m_p.aperture) + ", fields up to " +
-                                number_text(largest) + " degrees, vignetting as given)"});
+        warnings.push_back({0, std::string(m_s_estimate.size() + 1 == image
+                                               ? "no semi-apertures given"
+                                               : "some surfaces have no semi-aperture") +
+                                   ": each surface without one gets the largest height of the "
+                                   "paraxial rim rays (entrance pupil " +
+                                   number_text(2.0 * std::abs(pupil_radius)) + ", fields up to " +
+                                   number_text(largest) + " degrees, vignetting as given)"});
     }
 
     double semi_diameter(size_t j) const {

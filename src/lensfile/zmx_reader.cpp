@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "lensfile/lens_file_tokens.h"
@@ -107,6 +108,21 @@ private:
             // The mechanical semi-diameter: the element's edge where no DIAM is given.
             if (surface().semi_diameter == 0.0)
                 surface().semi_diameter = number(1, "semi-diameter");
+            return;
+        }
+        if (k == "FLAP") {
+            // A floating aperture: the semi-diameter Zemax keeps for the surface, written
+            // beside its DIAM; taken where no DIAM is given.
+            if (surface().semi_diameter == 0.0)
+                surface().semi_diameter = number(2, "floating aperture");
+            return;
+        }
+        if (k == "CLAP") {
+            // A circular aperture: a hard stop for rays at that radius. The element's rim is
+            // there when it is smaller than the surface's DIAM (finish()).
+            const double r = number(2, "circular aperture");
+            (void)surface();  // refuses a CLAP before the first SURF
+            m_clear_apertures[m_lens.surfaces.size() - 1] = r;
             return;
         }
         if (k == "OBSC") return obscuration();
@@ -286,6 +302,10 @@ private:
 
     void finish() {
         m_line = 0;
+        for (const auto& [i, r] : m_clear_apertures) {
+            double& sd = m_lens.surfaces[i].semi_diameter;
+            sd = sd > 0.0 ? std::min(sd, r) : r;
+        }
         if (m_lens.surfaces.empty()) refuse("no surface (SURF): not a Zemax lens file");
         // Zemax writes all 24 wavelength slots; FTYP says how many are used.
         auto& w = m_lens.wavelengths_nm;
@@ -312,6 +332,7 @@ private:
     int m_line = 0;
     std::vector<std::string> m_words;
     std::string m_type = "STANDARD";
+    std::map<size_t, double> m_clear_apertures;  // CLAP radii by surface
     int m_primary = 1;
     int m_field_count = 0;
     int m_wave_count = 0;

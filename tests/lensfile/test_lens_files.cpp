@@ -291,6 +291,37 @@ TEST(LensFiles, MissingSemiAperturesComeFromTheParaxialMarginalRay) {
     EXPECT_DOUBLE_EQ(lens.group["elements"][0]["diameter"].get<double>(), 29.2);
     ASSERT_EQ(lens.warnings.size(), 1u);
     EXPECT_EQ(lens.warnings[0].message.rfind("no semi-apertures given", 0), 0u);
+    // The same pupil given as an F-number, N = EFL / 29.2 with the thick lens's EFL
+    // 1/f = (n - 1)(1/R1 - 1/R2 + (n - 1) t / (n R1 R2)) at n_d: the same semi-apertures.
+    const double n = 1.61272, r1 = 37.40, r2 = -341.48, t = 5.90;
+    const double efl = 1.0 / ((n - 1.0) * (1.0 / r1 - 1.0 / r2 + (n - 1.0) * t / (n * r1 * r2)));
+    char fno[64];
+    std::snprintf(fno, sizeof fno, "FNO %.12f\n", efl / 29.2);
+    const ImportedLens by_fno = lens_from_text(
+        std::string(fno) + "WL 587.5618\nS 37.40 5.90 SK4_SCHOTT\nS -341.48 12.93\n  STO\nSI 0 0\n",
+        "seq");
+    EXPECT_NEAR(by_fno.bench["stop_semi_diameter"].get<double>(), 13.724943, 2e-5);
+    EXPECT_NE(by_fno.warnings[0].message.find("(entrance pupil 29."), std::string::npos)
+        << by_fno.warnings[0].message;
+}
+
+// Zemax's CLAP (a circular aperture, a hard stop for rays) narrows a surface's rim below its
+// DIAM; FLAP (the floating aperture written beside DIAM) is its semi-diameter where no DIAM is.
+TEST(LensFiles, ZemaxClearAndFloatingApertures) {
+    const std::string singlet =
+        "SURF 0\n  DISZ INFINITY\nSURF 1\n  CURV 0.02\n  GLAS N-BK7\n  DISZ 5\n  %s\nSURF 2\n"
+        "  CURV -0.02\n  DISZ 40\n  DIAM 10\nSURF 3\n";
+    const auto with = [&](const char* aperture) {
+        char text[512];
+        std::snprintf(text, sizeof text, singlet.c_str(), aperture);
+        return lens_from_text(text, "zmx");
+    };
+    // The element's diameter is twice the larger of its faces' semi-diameters.
+    EXPECT_EQ(with("FLAP 0 12 0").group["elements"][0]["diameter"], 24.0);
+    EXPECT_EQ(with("DIAM 8\n  FLAP 0 12 0").group["elements"][0]["diameter"], 20.0);
+    EXPECT_EQ(with("DIAM 12\n  CLAP 0 11 0").group["elements"][0]["diameter"], 22.0);
+    EXPECT_EQ(with("CLAP 0 11 0\n  DIAM 12").group["elements"][0]["diameter"], 22.0);
+    EXPECT_TRUE(with("FLAP 0 12 0").warnings.empty());
 }
 
 }  // namespace

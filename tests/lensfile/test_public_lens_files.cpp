@@ -38,6 +38,7 @@ const PublicLens kPublicLenses[] = {
     {"cv_edmund_65564.seq", "vendor micro achromat (Edmund 65-564)", 1.4989},
     {"cv_dblgauss.seq", "double Gauss F/2 (CODE V)", 100.0037, 100.0038, 0.00005,
      "CODE V's own listing of the file (rayoptics' ag_dblgauss.lis)"},
+    {"cv_singlet.seq", "singlet at finite conjugates, F-number and no CIR", 13.0481},
     {"cv_landscape.seq", "landscape lens, no RDM (curvatures)", 10.0340},
     {"cv_test_cont.seq", "CODE V syntax test, & continuations", 156.8835},
     {"cv_unfolded_ape.seq", "unfolded relay with apertures", 4423.1704},
