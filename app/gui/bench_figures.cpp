@@ -18,6 +18,7 @@ BenchFigures compute_bench_figures(const OpticalSystem& system, const BenchSetti
     options.spot_rings = settings.rings;
     options.first_order.stop = settings.stop - 1;
     options.first_order.epd = settings.epd;
+    options.first_order.ray_aiming = settings.ray_aiming;
     options.first_order.fields =
         settings.fields.empty() ? std::vector<double>{0.0} : settings.fields;
     const LensReport report = analyze_lens_system(system, options);

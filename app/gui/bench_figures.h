@@ -9,6 +9,7 @@
 
 #include "analysis/diffraction_figures.h"
 #include "analysis/field_curves.h"
+#include "analysis/first_order.h"
 #include "analysis/ray_diagram.h"
 #include "analysis/ray_fans.h"
 #include "analysis/spot_diagrams.h"
@@ -16,11 +17,12 @@
 namespace lenslab::gui {
 
 struct BenchSettings {
-    std::vector<double> fields{0.0};  // degrees, the object at infinity
-    std::vector<double> wavelengths;  // nm; empty: F, d, C (the middle one is the primary)
-    double epd = 0;                   // entrance pupil diameter; 0: the library's default
-    int stop = 1;                     // surface, counted from 1 as the CLI's --stop
-    int rings = 4;                    // the spot diagrams' hexapolar rings
+    std::vector<double> fields{0.0};         // degrees, the object at infinity
+    std::vector<double> wavelengths;         // nm; empty: F, d, C (the middle one is the primary)
+    double epd = 0;                          // entrance pupil diameter; 0: the library's default
+    int stop = 1;                            // surface, counted from 1 as the CLI's --stop
+    RayAiming ray_aiming = RayAiming::Real;  // as the CLI's --ray-aiming
+    int rings = 4;                           // the spot diagrams' hexapolar rings
     int fan_points = 15;
     int field_curve_points = 7;
     int pupil_samples = 64;  // across the pupil for the MTF

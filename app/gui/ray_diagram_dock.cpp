@@ -1,5 +1,6 @@
 #include "ray_diagram_dock.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLineEdit>
@@ -84,6 +85,7 @@ RayDiagramDock::RayDiagramDock(SceneDocument* document, QWidget* parent)
       m_wavelengths(new QLineEdit(default_wavelengths_text(), this)),
       m_epd(new QDoubleSpinBox(this)),
       m_stop(new QSpinBox(this)),
+      m_ray_aiming(new QComboBox(this)),
       m_spot_numbers(new QLabel(this)),
       m_spot_view(new BenchFigureView(this)),
       m_fan_view(new BenchFigureView(this)),
@@ -145,8 +147,16 @@ QWidget* RayDiagramDock::make_controls() {
     row->addWidget(m_wavelengths, 3);
     row->addWidget(new QLabel(tr("EPD"), controls));
     row->addWidget(m_epd, 1);
+    m_ray_aiming->setObjectName("bench_ray_aiming");
+    for (RayAiming aiming : {RayAiming::Real, RayAiming::Paraxial})
+        m_ray_aiming->addItem(ray_aiming_name(aiming), static_cast<int>(aiming));
+    m_ray_aiming->setToolTip(
+        tr("How real rays are aimed at a pupil point: real, through the real stop; paraxial, "
+           "at the paraxial entrance pupil (Zemax's default)"));
     row->addWidget(new QLabel(tr("Stop"), controls));
     row->addWidget(m_stop);
+    row->addWidget(new QLabel(tr("Aim"), controls));
+    row->addWidget(m_ray_aiming);
     const auto settings_changed = [this] {
         m_bench_stale = true;
         schedule_bench();
@@ -155,6 +165,7 @@ QWidget* RayDiagramDock::make_controls() {
     connect(m_wavelengths, &QLineEdit::editingFinished, this, settings_changed);
     connect(m_epd, &QDoubleSpinBox::valueChanged, this, settings_changed);
     connect(m_stop, &QSpinBox::valueChanged, this, settings_changed);
+    connect(m_ray_aiming, &QComboBox::currentIndexChanged, this, settings_changed);
     return controls;
 }
 
@@ -200,6 +211,7 @@ bool RayDiagramDock::read_settings(QString& error) {
     m_settings.wavelengths = *wavelengths;
     m_settings.epd = m_epd->value();
     m_settings.stop = m_stop->value();
+    m_settings.ray_aiming = static_cast<RayAiming>(m_ray_aiming->currentData().toInt());
     return true;
 }
 

@@ -16,6 +16,7 @@
 
 class QDoubleSpinBox;
 class QLineEdit;
+class QComboBox;
 class QSpinBox;
 class QTabWidget;
 class QTimer;
@@ -91,6 +92,7 @@ private:
     QLineEdit* m_wavelengths;
     QDoubleSpinBox* m_epd;
     QSpinBox* m_stop;
+    QComboBox* m_ray_aiming;
     QLabel* m_spot_numbers;
     BenchFigureView* m_spot_view;
     BenchFigureView* m_fan_view;

@@ -2,6 +2,7 @@
 // diagrams (the numbers of `lenslab analyze --spots` for the same settings), and the other
 // tabs draw their figures.
 
+#include <QComboBox>
 #include <QLineEdit>
 #include <QTabWidget>
 #include <QtTest>
@@ -118,6 +119,28 @@ private slots:
         dock->update_bench();
         QVERIFY(!dock->bench().spots.has_value());
         QVERIFY2(dock->spot_numbers().contains("Fields"), qPrintable(dock->spot_numbers()));
+    }
+
+    // The Aim box: rays aimed at the paraxial entrance pupil, as --ray-aiming paraxial, move
+    // the off-axis spot of the achromat against rays aimed through the real stop.
+    void ray_aiming_is_chosen_in_the_dock() {
+        MainWindow w;
+        QVERIFY(w.open_file(LENSLAB_SOURCE_DIR "/scenes/achromat_doublet.json"));
+        w.tree()->select_pointer("/objects/1");
+        auto* dock = w.ray_diagram();
+        dock->tabs()->setCurrentIndex(1);
+        dock->fields_edit()->setText("10");
+        dock->update_bench();
+        QVERIFY(dock->bench().spots.has_value());
+        QCOMPARE(dock->settings().ray_aiming, lenslab::RayAiming::Real);
+        const double real = dock->bench().spots->fields[0].polychromatic.rms_radius;
+        auto* aim = dock->findChild<QComboBox*>("bench_ray_aiming");
+        QVERIFY(aim);
+        aim->setCurrentIndex(aim->findText("paraxial"));
+        dock->update_bench();
+        QCOMPARE(dock->settings().ray_aiming, lenslab::RayAiming::Paraxial);
+        QVERIFY(dock->bench().spots.has_value());
+        QVERIFY(dock->bench().spots->fields[0].polychromatic.rms_radius != real);
     }
 };
 
