@@ -29,7 +29,9 @@ std::string extension_of(const std::string& path) {
     return ext;
 }
 
-// `img` as a PNG file `file`; `path` is the name messages give.
+// `img` as a PNG file `file`; `path` is the name messages give. Encoded in memory and written
+// by write_whole_file, whose every write is checked: libpng's own file writer reports a full
+// disk only as "Write Error", without its cause.
 void write_png(const Image8& img, const std::string& file, const std::string& path) {
     png_image image{};
     image.version = PNG_IMAGE_VERSION;
@@ -39,8 +41,20 @@ void write_png(const Image8& img, const std::string& file, const std::string& pa
     // libpng's default compression took 0.1 s for a 900x900 render, longer than rendering
     // it without photons; the fast setting writes a file about a fifth larger in a fraction.
     image.flags = PNG_IMAGE_FLAG_FAST;
-    if (!png_image_write_to_file(&image, file.c_str(), 0, img.rgb.data(), 0, nullptr)) {
-        throw ImageError("cannot write PNG '" + path + "': " + image.message);
+    png_alloc_size_t size = 0;
+    std::vector<unsigned char> png;
+    // The first call measures, the second encodes.
+    bool encoded = png_image_write_to_memory(&image, nullptr, &size, 0, img.rgb.data(), 0, nullptr);
+    if (encoded) {
+        png.resize(size);
+        encoded =
+            png_image_write_to_memory(&image, png.data(), &size, 0, img.rgb.data(), 0, nullptr);
+    }
+    if (!encoded) throw ImageError("cannot write PNG '" + path + "': " + image.message);
+    try {
+        write_whole_file(file, {reinterpret_cast<const char*>(png.data()), size}, path);
+    } catch (const FileWriteError& e) {
+        throw ImageError(e.what());
     }
 }
 

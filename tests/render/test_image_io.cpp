@@ -1,10 +1,15 @@
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <limits>
 
 #include "render/image_io.h"
+#include "util/output_path.h"
 
 namespace lenslab {
 namespace {
@@ -44,6 +49,38 @@ TEST(ImageIo, PngRoundTripAndExrWrite) {
     EXPECT_GT(std::filesystem::file_size(exr), 0u);
     std::filesystem::remove(png);
     std::filesystem::remove(exr);
+}
+
+// A write that the file system refuses part way (as a full disk does) names its cause, not
+// libpng's bare "Write Error". The refusal is made by a file-size limit (RLIMIT_FSIZE: writes
+// past it fail with EFBIG, its signal ignored), lowered for this write and restored, so the
+// test needs no full disk.
+TEST(ImageIo, APngWriteRefusedPartWayNamesItsCause) {
+    const std::string file = (std::filesystem::temp_directory_path() /
+                              ("lenslab_fsize_" + std::to_string(::getpid()) + ".png"))
+                                 .string();
+    Film film(64, 64);  // noise: the PNG cannot shrink below the limit
+    for (int y = 0; y < 64; ++y) {
+        for (int x = 0; x < 64; ++x)
+            film.set(x, y, {((x * 7919 + y * 104729) % 255) / 255.0, (x ^ y) / 64.0, 0.5});
+    }
+    rlimit saved{};
+    ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+    const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit small = saved;
+    small.rlim_cur = 512;
+    ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+    std::string message = "no error";
+    try {
+        write_image(film, file);
+    } catch (const ImageError& e) {
+        message = e.what();
+    }
+    setrlimit(RLIMIT_FSIZE, &saved);
+    std::signal(SIGXFSZ, old_handler);
+    EXPECT_EQ(message, "cannot write '" + file + "': " + error_reason(EFBIG));
+    // Nothing is left under the name.
+    EXPECT_FALSE(std::filesystem::exists(file));
 }
 
 TEST(ImageIo, RefusesUnknownExtensions) {
