@@ -1,7 +1,9 @@
 #include "geometry/mesh_topology.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <unordered_map>
 
@@ -38,6 +40,31 @@ struct EdgeUse {
     int32_t second = -1;
 };
 
+// The first two triangles with the same corners (after welding), as "faces A and B ...";
+// triangles with a repeated corner (no area) are left aside.
+std::string find_duplicate(const std::vector<MeshTriangle>& triangles,
+                           const std::vector<int32_t>& canonical,
+                           const std::function<std::string(int32_t)>& face_name, int index_base) {
+    std::vector<std::pair<std::array<int32_t, 3>, int32_t>> keys;
+    keys.reserve(triangles.size());
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        std::array<int32_t, 3> k{canonical[triangles[t][0]], canonical[triangles[t][1]],
+                                 canonical[triangles[t][2]]};
+        std::sort(k.begin(), k.end());
+        if (k[0] != k[1] && k[1] != k[2]) keys.push_back({k, static_cast<int32_t>(t)});
+    }
+    std::sort(keys.begin(), keys.end());
+    for (size_t i = 1; i < keys.size(); ++i) {
+        if (keys[i].first != keys[i - 1].first) continue;
+        const std::array<int32_t, 3>& v = keys[i].first;
+        const auto number = [&](int32_t x) { return std::to_string(int64_t{x} + index_base); };
+        return "faces " + face_name(keys[i - 1].second) + " and " + face_name(keys[i].second) +
+               " are the same triangle (vertices " + number(v[0]) + ", " + number(v[1]) + ", " +
+               number(v[2]) + ")";
+    }
+    return "";
+}
+
 uint64_t edge_key(int32_t a, int32_t b) {
     const auto lo = static_cast<uint32_t>(std::min(a, b)),
                hi = static_cast<uint32_t>(std::max(a, b));
@@ -60,6 +87,11 @@ MeshTopology check_mesh_topology(const std::vector<Vec3>& vertices,
         return result;
     }
     const std::vector<int32_t> canonical = weld_identical(vertices);
+    result.duplicate = find_duplicate(triangles, canonical, face_name, index_base);
+    if (!result.duplicate.empty()) {
+        result.problem = result.duplicate;
+        return result;
+    }
     std::unordered_map<uint64_t, EdgeUse> edges;
     edges.reserve(triangles.size() * 2);
     auto for_each_edge = [&](auto&& fn) {

@@ -19,6 +19,11 @@ struct MeshTopology {
     // Volume enclosed as the triangles are oriented: negative when they face inward.
     // Meaningful only when closed.
     double signed_volume = 0.0;
+    // Two faces that are the same triangle (the same three corner positions, in any order),
+    // named with the caller's numbers ("faces 1 and 2 are the same triangle (vertices 1, 2,
+    // 3)"); empty when there are none. A ray cannot tell such faces apart, and no bounding
+    // volume hierarchy can separate them: a mesh of many makes every ray test all of them.
+    std::string duplicate;
 };
 
 // `face_of[i]` is the face (polygon) triangle i came from; messages number faces and

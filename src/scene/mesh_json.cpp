@@ -205,6 +205,11 @@ std::shared_ptr<const Shape> build_mesh(JsonObjectReader& r, Polygons p) {
     if (!(area > 0.0)) throw SceneError(r.child_path(p.key), "every face has zero area");
     const MeshTopology topology =
         check_mesh_topology(v, p.geometry.triangles, p.face_of, p.index_base);
+    if (!topology.duplicate.empty()) {
+        throw SceneError(r.child_path(p.key), topology.duplicate +
+                                                  ": a mesh holds each triangle once (coincident "
+                                                  "faces cannot be told apart)");
+    }
     // Given inside-out: the divergence theorem counts the volume negative. Turn every face
     // round so the normals point out of the solid, which refraction relies on.
     if (topology.closed && topology.signed_volume < 0) flip_triangles(p.geometry.triangles);
