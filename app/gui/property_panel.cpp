@@ -31,6 +31,7 @@
 #include "scene/material_edits.h"
 #include "scene/material_spec.h"
 #include "scene/medium.h"
+#include "scene/mirror_json.h"
 #include "scene/object_spec.h"
 #include "scene/object_types.h"
 #include "scene/planar_json.h"
@@ -740,6 +741,12 @@ void PropertyPanel::build_object() {
         build_lens();
     } else if (type == "implicit") {
         build_implicit();
+    } else if (type == "mirror") {
+        const ElementSpec& declared = mirror_spec();
+        build_declared(declared, {"name", "photon_target", "x_axis"});
+        build_surface(tr("Surface"), "surface");
+        add_vec3(QString::fromStdString(declared.param("x_axis").label), "x_axis",
+                 json::array({1, 0, 0}));
     } else if (type == "lens_group") {
         build_lens_group();  // each element has its own material
         return;

@@ -202,7 +202,11 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
         if (dynamic_cast<const LensSolid*>(scene.objects[i].shape.get())) {
             lenses.push_back(i);
         } else {
-            system.ignored.push_back(describe_object(scene, i) + ": not a lens");
+            system.ignored.push_back(
+                describe_object(scene, i) +
+                (scene.objects[i].type == ObjectType::Mirror
+                     ? ": a mirror (the bench does not yet measure systems with mirrors)"
+                     : ": not a lens"));
         }
     }
     if (lenses.empty()) {

@@ -6,6 +6,7 @@
 
 #include "geometry/disc.h"
 #include "geometry/lens/lens_solid.h"
+#include "geometry/lens/mirror_surface.h"
 #include "geometry/rectangle.h"
 #include "geometry/triangle.h"
 #include "geometry/triangle_mesh.h"
@@ -33,6 +34,27 @@ void section_cut_polygon(const Vec3* corners, int count, const SectionPlane& pla
 }
 
 // The chord a disc cuts from the plane.
+// A mirror's surface cut by the plane, as the cuts of a fine polar grid of flat quads over
+// its annulus (48 rings by 96 sectors: a chord error under 1e-3 of the radius for the
+// curvatures mirrors have).
+void section_cut_mirror(const MirrorSurface& m, const SectionPlane& plane,
+                        std::vector<SectionCurve>& out) {
+    constexpr int kRings = 48, kSectors = 96;
+    const double inner = 0.5 * m.prescription().hole_diameter;
+    const double outer = 0.5 * m.prescription().diameter;
+    const auto at = [&](int i, int j) {
+        const double r = inner + (outer - inner) * i / kRings;
+        const double phi = 2.0 * M_PI * j / kSectors;
+        return m.point_at(r * std::cos(phi), r * std::sin(phi));
+    };
+    for (int i = 0; i < kRings; ++i) {
+        for (int j = 0; j < kSectors; ++j) {
+            const Vec3 quad[4] = {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+            section_cut_polygon(quad, 4, plane, out);
+        }
+    }
+}
+
 void section_cut_disc(const Disc& disc, const SectionPlane& plane, std::vector<SectionCurve>& out) {
     const Vec3 n = plane.normal();
     const Vec3 along = cross(disc.normal(), n);  // the chord's direction
@@ -221,6 +243,8 @@ std::vector<SectionCurve> section_outline(const Shape& shape, const SectionPlane
         section_cut_polygon(corners, 4, plane, out);
     } else if (const auto* disc = dynamic_cast<const Disc*>(&shape)) {
         section_cut_disc(*disc, plane, out);
+    } else if (const auto* mirror = dynamic_cast<const MirrorSurface*>(&shape)) {
+        section_cut_mirror(*mirror, plane, out);
     } else if (const auto* mesh = dynamic_cast<const TriangleMesh*>(&shape)) {
         for (size_t i = 0; i < mesh->triangle_count(); ++i)
             section_cut_polygon(mesh->triangle(i).data(), 3, plane, out);

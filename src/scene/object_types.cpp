@@ -8,6 +8,7 @@
 #include "scene/box_json.h"
 #include "scene/lens_group_json.h"
 #include "scene/mesh_json.h"
+#include "scene/mirror_json.h"
 #include "scene/object_spec.h"
 #include "scene/planar_json.h"
 #include "scene/spec_reader.h"
@@ -130,6 +131,7 @@ std::vector<ObjectTypeEntry> make_table() {
         {"prism",      ObjectType::Mesh,      &prism_spec,      &declared<read_prism>,        false, false, false},  // closed by construction
         {"implicit",   ObjectType::Implicit,  &implicit_spec,   &declared<read_implicit>,     false, false, false},
         {"box",        ObjectType::Mesh,      &box_spec,        &declared<read_box>,          false, false, false},  // closed by construction
+        {"mirror",     ObjectType::Mirror,    &mirror_spec,     &declared<read_mirror>,       false, false, false},
     };
     // clang-format on
 }

@@ -29,7 +29,8 @@ enum class ObjectType {
     Mesh,
     Implicit,
     Disc,
-    Rectangle
+    Rectangle,
+    Mirror
 };  // Mesh: a mesh or a prism
 
 struct SceneObject {

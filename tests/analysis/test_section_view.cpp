@@ -138,6 +138,32 @@ TEST(SectionView, FloorTrianglesCutAsSegments) {
     EXPECT_GT(segments, 8);
 }
 
+// A mirror cut through its axis is its profile: scenes/paraboloid_mirror.json's paraboloid
+// (vertex (-0.8, 0.2, 0), radius 2, k = -1, facing +y) is y = 0.2 + (x + 0.8)^2 / 4 across its
+// diameter 1.2, to the chords of its grid.
+TEST(SectionView, AMirrorCutThroughItsAxisIsItsProfile) {
+    const Scene scene =
+        load_scene_file(std::string(LENSLAB_SOURCE_DIR) + "/scenes/paraboloid_mirror.json");
+    const SectionPlane plane{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    const SectionView view = make_section_view(scene, plane, {});
+    double lowest = INFINITY, highest = -INFINITY;
+    int points = 0;
+    for (const SectionObject& o : view.objects) {
+        if (scene.objects[o.object].name != "paraboloid") continue;
+        for (const SectionCurve& c : o.curves) {
+            for (const DiagramPoint& p : c.points) {
+                EXPECT_NEAR(p.y, 0.2 + (p.z + 0.8) * (p.z + 0.8) / 4.0, 1e-4);
+                lowest = std::min(lowest, p.z);
+                highest = std::max(highest, p.z);
+                ++points;
+            }
+        }
+    }
+    EXPECT_GT(points, 90);
+    EXPECT_NEAR(lowest, -1.4, 1e-6);
+    EXPECT_NEAR(highest, -0.2, 1e-6);
+}
+
 // The view's rays are the trees `lenslab trace` prints, for the same start rays: each
 // start ray's first polyline runs along its strongest branches, hit for hit.
 TEST(SectionView, RaysAgreeWithTheRayTreeOfLenslabTrace) {

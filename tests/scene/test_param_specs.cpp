@@ -398,7 +398,8 @@ TEST(ObjectTypes, EachIsDeclaredAndItsDocsTableHasItsKeys) {
                                                      {"mesh", "### Mesh"},
                                                      {"prism", "### Prism"},
                                                      {"implicit", "### Implicit solid"},
-                                                     {"box", "### Box"}};
+                                                     {"box", "### Box"},
+                                                     {"mirror", "### Mirror"}};
     const auto objects = docs_table("## Objects");
     for (const lenslab::ObjectTypeEntry& e : lenslab::object_types()) {
         ASSERT_NE(e.spec, nullptr) << e.name << " is not declared";
