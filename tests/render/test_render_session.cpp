@@ -160,7 +160,8 @@ TEST(RenderSession, DefaultSceneIsTheReportsExperiment) {
                 break;
             case ObjectType::Disc:
             case ObjectType::Rectangle:
-                ADD_FAILURE() << "the report had no discs or rectangles";
+            case ObjectType::Mirror:
+                ADD_FAILURE() << "the report had no discs, rectangles or mirrors";
                 break;
         }
     }

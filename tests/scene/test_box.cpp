@@ -113,10 +113,10 @@ TEST(Box, RefusesABadFrameDetectorAndEmission) {
 TEST(Box, UnknownTypeSuggestsBox) {
     json o = slab(1);
     o["type"] = "bx";
-    EXPECT_EQ(
-        error_of(o),
-        "objects[0].type: unknown object type 'bx' (known: sphere, triangle, disc, "
-        "rectangle, lens, lens_group, mesh, prism, implicit, box, lens_file; did you mean 'box'?)");
+    EXPECT_EQ(error_of(o),
+              "objects[0].type: unknown object type 'bx' (known: sphere, triangle, disc, "
+              "rectangle, lens, lens_group, mesh, prism, implicit, box, mirror, lens_file; did you "
+              "mean 'box'?)");
 }
 
 // A plane-parallel plate of thickness t and index n (in air) leaves a ray parallel to itself,

@@ -97,7 +97,7 @@ const BadScene kBadScenes[] = {
     {"unknown_key_typo.json", "objects[0].radiu", "unknown key (did you mean 'radius'?)"},
     {"wrong_type_string.json", "objects[0].radius", "must be a number, got a string"},
     {"unknown_object_type.json", "objects[0].type",
-     "unknown object type 'cube' (known: sphere, triangle, disc, rectangle, lens, lens_group, mesh, prism, implicit, box, lens_file)"},
+     "unknown object type 'cube' (known: sphere, triangle, disc, rectangle, lens, lens_group, mesh, prism, implicit, box, mirror, lens_file)"},
     {"sphere_with_lens_key.json", "objects[0].axis", "not a property of a sphere"},
     // Triangles.
     {"triangle_collinear.json", "objects[0].vertices",
