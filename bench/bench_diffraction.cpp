@@ -9,8 +9,8 @@
 #include <cmath>
 
 #include "analysis/diffraction.h"
-#include "analysis/optical_system.h"
 #include "analysis/pupil_from_rays.h"
+#include "analysis/system/optical_system.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {

@@ -1,8 +1,9 @@
-// `lenslab analyze SCENE`: the optical bench. Focal lengths, principal planes, spherical and
-// chromatic aberration and spot sizes of the lenses on one axis, as a table or JSON, and a
-// ray diagram as SVG. The measuring is the library's (analysis/analyze_request.h); this
-// command reads the options and prints.
+// `lenslab analyze SCENE` (or a lens file, .zmx, .zar or .seq): the optical bench. Focal
+// lengths, principal planes, spherical and chromatic aberration and spot sizes of the lenses
+// on one axis, as a table or JSON, and a ray diagram as SVG. The measuring is the library's
+// (analysis/analyze_request.h); this command reads the options and prints.
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -13,6 +14,7 @@
 #include "analysis/spot_report.h"
 #include "analyze_options.h"
 #include "commands.h"
+#include "lensfile/lens_file.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
 #include "util/output_path.h"
@@ -39,8 +41,17 @@ int run(const AnalyzeArgs& args) {
         if (!file->empty()) check_output_file(*file);
     }
     if (const auto error = figure_option_error(a)) return analyze_usage_error(*error);
+    const SceneReadOptions read{.require_camera = false, .build_for_rendering = false};
+    // A lens file stands for a scene holding it alone, along +z, with its own bench data.
     const Scene scene =
-        load_scene_file(args.scene, {.require_camera = false, .build_for_rendering = false});
+        is_lens_file_path(args.scene)
+            ? scene_from_json({{"objects",
+                                {{{"type", "lens_file"},
+                                  {"file", std::filesystem::absolute(args.scene).string()},
+                                  {"vertex", {0, 0, 0}},
+                                  {"axis", {0, 0, 1}}}}}},
+                              "", read)
+            : load_scene_file(args.scene, read);
     AnalyzeResults results;
     try {
         results = analyze_scene(scene, a, args.scene);
@@ -89,7 +100,10 @@ Action add_analyze_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "analyze",
         "Optical bench: focal lengths, aberrations and a ray diagram of the lenses on one axis");
-    cmd->add_option("scene", args->scene, "Scene file (JSON); a camera is not needed")->required();
+    cmd->add_option("scene", args->scene,
+                    "Scene file (JSON; a camera is not needed), or a lens file (.zmx, .zar, "
+                    ".seq) alone")
+        ->required();
     add_analyze_options(*cmd, args->request);
     return [args] { return run(*args); };
 }

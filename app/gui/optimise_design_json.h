@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/optical_system.h"
+#include "analysis/system/optical_system.h"
 
 namespace lenslab::gui {
 

@@ -804,8 +804,17 @@ void PropertyPanel::build_lens_group() {
     const ElementSpec& element = lens_group_element_spec();
     const json* elements = value_at("elements");
     if (!elements || !elements->is_array()) return;
+    const ElementSpec& mirror = lens_group_mirror_spec();
     for (size_t i = 0; i < elements->size(); ++i) {
         const std::string e = "elements/" + std::to_string(i) + "/";
+        if (value_at(e + "mirror")) {
+            add_heading(tr("Element %1: mirror").arg(i + 1));
+            build_surface(tr("Mirror surface"), e + "mirror");
+            add_param(mirror.param("hole_diameter"), e);
+            if (i + 1 < elements->size()) add_param(mirror.param("gap"), e);
+            build_material_ref(tr("Coating"), e + "material");
+            continue;
+        }
         add_heading(tr("Element %1").arg(i + 1));
         build_surface(tr("Front surface"), e + "front");
         add_param(element.param("thickness"), e);

@@ -53,6 +53,11 @@ class Scene(MutableMapping):
     @classmethod
     def _read(cls, path: PathLike) -> Scene:
         path = os.fspath(path)
+        if os.path.splitext(path)[1].lower() in (".zmx", ".zar", ".seq"):
+            # A lens file stands for a scene holding it alone, as `lenslab analyze FILE` reads it.
+            return cls._unchecked({"objects": [{"type": "lens_file",
+                                                "file": os.path.abspath(path),
+                                                "vertex": [0, 0, 0], "axis": [0, 0, 1]}]}, path)
         _lenslab.check_scene_file(path)  # unreadable, too large, not JSON: as the CLI says it
         with open(path, encoding="utf-8") as f:
             return cls._unchecked(json.load(f), path)

@@ -14,7 +14,7 @@ namespace {
 
 bool passes(const OpticalSystem& system, double nm, double height, double z_start) {
     const RealRay r = trace_real_ray(system, {{0, height, z_start}, {0, 0, 1}}, nm);
-    return r.fate == RayFate::Passed && r.direction.z > 0;
+    return r.fate == RayFate::Passed && r.direction.z * system.image_travel() > 0;
 }
 
 // The hexapolar grid of `rings`, worked out once for each ring count a process asks for: it
@@ -53,9 +53,18 @@ void trace_in_step(const OpticalSystem& system, const IndexRatios& ratios, StepR
                 continue;
             }
             r->p = r->p + r->d * t;
+            if (s.hole_semi_diameter > 0 &&
+                r->p.x * r->p.x + r->p.y * r->p.y < s.hole_semi_diameter * s.hole_semi_diameter) {
+                r->on = false;
+                continue;
+            }
             const Vec3 nl = s.shape->normal(local.at(t));
             Vec3 n{nl.x, nl.y, o * nl.z};
             if (dot(n, r->d) > 0) n = -n;  // facing the arriving ray
+            if (s.mirror) {
+                r->d = reflect(r->d, n);
+                continue;
+            }
             const auto refracted = refract(r->d, n, ratios.ratios[i]);
             if (!refracted) {
                 r->on = false;
@@ -71,7 +80,7 @@ void trace_in_step(const OpticalSystem& system, const IndexRatios& ratios, StepR
 double beam_start_z(const OpticalSystem& system) {
     double z = 0.0;
     for (const SystemSurface& s : system.surfaces) z = std::min(z, s.z_at(s.semi_diameter));
-    return z - 0.05 * std::max(system.last_vertex(), 2.0 * system.max_semi_diameter());
+    return z - 0.05 * system.scale();
 }
 
 double usable_aperture_radius(const OpticalSystem& system, double nm) {
@@ -110,7 +119,7 @@ std::vector<ExitRay> trace_collimated_beam(const OpticalSystem& system, double n
     out.reserve(pupil.size());
     int missing = 0;
     const auto keep = [&](const Vec3& point, const Vec3& direction, bool passed) {
-        if (passed && direction.z > 0) {
+        if (passed && direction.z * system.image_travel() > 0) {
             out.push_back({point, direction});
         } else {
             ++missing;
@@ -148,7 +157,7 @@ std::vector<LsaPoint> longitudinal_spherical_aberration(const OpticalSystem& sys
     for (int i = 1; i <= samples; ++i) {
         const double h = aperture * i / samples;
         const RealRay r = trace_real_ray(system, {{0, h, z0}, {0, 0, 1}}, paraxial.wavelength_nm);
-        if (r.fate != RayFate::Passed || !(r.direction.z > 0)) continue;
+        if (r.fate != RayFate::Passed || !(r.direction.z * system.image_travel() > 0)) continue;
         const Vec3& p = r.exit_point();
         const Vec3& d = r.direction;
         if (!(std::abs(d.y) > 1e-15)) continue;  // leaves parallel: crosses at infinity

@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "analysis/optical_system.h"
 #include "analysis/paraxial.h"
+#include "analysis/system/optical_system.h"
 
 namespace lenslab {
 

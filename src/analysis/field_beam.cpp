@@ -4,8 +4,10 @@
 
 namespace lenslab {
 
-std::optional<ExitRay> passed_exit_ray(const std::optional<RealRay>& ray) {
-    if (!ray || ray->fate != RayFate::Passed || !(ray->direction.z > 0)) return std::nullopt;
+std::optional<ExitRay> passed_exit_ray(const OpticalSystem& system,
+                                       const std::optional<RealRay>& ray) {
+    if (!ray || ray->fate != RayFate::Passed || !(ray->direction.z * system.image_travel() > 0))
+        return std::nullopt;
     return ExitRay{ray->exit_point(), ray->direction};
 }
 
@@ -17,7 +19,7 @@ FieldBeam trace_field_beam(const OpticalSystem& system, const FirstOrder& first_
     const RayAimer aimer(system, first_order, field, nm);
     bool centre = true;  // the hexapolar grid starts at the stop's centre
     for (const PupilPoint& q : hexapolar_pupil(rings)) {
-        if (const auto ray = passed_exit_ray(aimer.trace(q.x, q.y))) {
+        if (const auto ray = passed_exit_ray(system, aimer.trace(q.x, q.y))) {
             beam.rays.push_back(*ray);
             if (centre) beam.chief = beam.rays.back();
         } else {

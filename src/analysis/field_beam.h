@@ -20,7 +20,8 @@ struct FieldBeam {
 };
 
 // The ray as it leaves the last surface, when it passed every surface going forward.
-std::optional<ExitRay> passed_exit_ray(const std::optional<RealRay>& ray);
+std::optional<ExitRay> passed_exit_ray(const OpticalSystem& system,
+                                       const std::optional<RealRay>& ray);
 
 FieldBeam trace_field_beam(const OpticalSystem& system, const FirstOrder& first_order, double field,
                            double wavelength_nm, int rings);

@@ -53,7 +53,7 @@ FieldCurves field_curves(const OpticalSystem& system, const FirstOrder& first_or
             p.field = n == 1 ? options.max_field : options.max_field * i / (n - 1);
             const RayAimer aimer(system, first_order, p.field, nm);
             const auto ray = [&](double px, double py) {
-                return passed_exit_ray(aimer.trace(px, py));
+                return passed_exit_ray(system, aimer.trace(px, py));
             };
             p.tangential = crossing(ray(0, d), ray(0, -d), r.image_z, true);
             p.sagittal = crossing(ray(d, 0), ray(-d, 0), r.image_z, false);

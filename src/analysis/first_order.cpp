@@ -13,9 +13,7 @@ namespace {
 // A pupil this far away (relative to the system's size) counts as at infinity.
 constexpr double kTelecentricRatio = 1e12;
 
-double system_scale(const OpticalSystem& system) {
-    return std::max(system.last_vertex(), 2.0 * system.max_semi_diameter());
-}
+double system_scale(const OpticalSystem& system) { return system.scale(); }
 
 // The axial point where a ray of this height and slope crosses the axis, relative to the
 // plane where it has that height; infinity when it runs parallel to the axis.
@@ -107,7 +105,7 @@ FirstOrder first_order(const OpticalSystem& system, const ParaxialResult& paraxi
                                             system, system.last_vertex() + f.exit_pupil.position))
                                 : INFINITY;
     f.f_number = std::abs(paraxial.efl) / f.entrance_pupil.diameter;
-    f.na = m.n_after * std::abs(m.u_after);
+    f.na = std::abs(m.n_after * m.u_after);
     f.working_f_number = 1.0 / (2.0 * f.na);
     const double n0 = system.n_before(0, nm);
     f.lagrange_invariant = n0 * (f.chief.u0 * f.marginal.y0 - f.marginal.u0 * f.chief.y0);

@@ -154,6 +154,10 @@ Json surfaces_json(const OpticalSystem& system, const LensReport& r) {
                             {"semi_diameter", s.semi_diameter},
                             {"medium_after", medium_name(system, s.element_after)},
                             {"n_after", system.n_after(i, r.wavelength_nm)}});
+        if (s.mirror) {
+            surfaces.back()["mirror"] = true;
+            surfaces.back()["hole_semi_diameter"] = s.hole_semi_diameter;
+        }
     }
     return surfaces;
 }
@@ -297,7 +301,11 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
     const double last = system.last_vertex();
     out << system.elements.size() << (system.elements.size() == 1 ? " lens, " : " lenses, ")
         << system.surfaces.size() << " surfaces on one axis; lengths in the scene's unit "
-        << "(mm for lens prescriptions), light travelling along +z from the first vertex\n\n";
+        << "(mm for lens prescriptions), light travelling along +z from the first vertex"
+        << (system.folded() ? " and turning back at each mirror (indices signed by the way "
+                              "light travels)"
+                            : "")
+        << "\n\n";
     char line[256];
     std::snprintf(line, sizeof line, "  %-36s %-8s %10s %11s %10s  %s\n", "surface", "shape", "z",
                   "R (vertex)", "semi-diam", "medium after");
@@ -307,7 +315,7 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
                       shape_kind(s).c_str(), length(s.z).c_str(),
                       s.curvature == 0 ? "flat" : length(1.0 / s.curvature).c_str(),
                       length(s.semi_diameter).c_str(),
-                      medium_name(system, s.element_after).c_str());
+                      s.mirror ? "(mirror)" : medium_name(system, s.element_after).c_str());
         out << line;
     }
     for (const std::string& ignored : system.ignored) out << "  ignored: " << ignored << "\n";

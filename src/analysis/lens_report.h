@@ -7,10 +7,10 @@
 
 #include "analysis/aberrations.h"
 #include "analysis/first_order.h"
-#include "analysis/optical_system.h"
 #include "analysis/paraxial.h"
 #include "analysis/real_chief_ray.h"
 #include "analysis/seidel.h"
+#include "analysis/system/optical_system.h"
 
 namespace lenslab {
 

@@ -31,7 +31,7 @@ ParaxialResult paraxial_trace(const OpticalSystem& system, double nm) {
     r.wavelength_nm = nm;
     r.a = a, r.b = b, r.c = c, r.d = d;
     r.power = -c;
-    const double scale = std::max(system.last_vertex(), 2.0 * system.max_semi_diameter());
+    const double scale = system.scale();
     // A focal length a million times the system's size is, for a bench, no focus at all.
     if (!(std::abs(r.power) * scale > 1e-6)) {
         throw SceneError("objects",

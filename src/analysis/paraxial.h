@@ -5,7 +5,7 @@
 // Modern Optical Engineering, 4th ed., sections 2.5-2.6 and 3.3; Hecht, Optics, 5th ed.,
 // section 6.2).
 
-#include "analysis/optical_system.h"
+#include "analysis/system/optical_system.h"
 
 namespace lenslab {
 

@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "analysis/optical_system.h"
+#include "analysis/system/optical_system.h"
 
 namespace lenslab {
 

@@ -17,7 +17,7 @@ namespace {
 double path_through(const OpticalSystem& system, const RealRay& ray, double nm) {
     double path = 0;
     for (size_t k = 0; k + 1 < ray.points.size(); ++k)
-        path += system.n_before(k, nm) * length(ray.points[k + 1] - ray.points[k]);
+        path += std::abs(system.n_before(k, nm)) * length(ray.points[k + 1] - ray.points[k]);
     return path;
 }
 
@@ -41,13 +41,14 @@ RayWavefront::RayWavefront(const OpticalSystem& system, const RayPupilOptions& o
     f_number_ = std::abs(paraxial.efl) / (2 * aperture_radius_);
     wavelength_ = nm / options.nm_per_length_unit;
     pupil_z_ = options.pupil_z.value_or(system.last_vertex());
-    image_index_ = system.n_after(system.surfaces.size() - 1, nm);
+    image_index_ = std::abs(system.n_after(system.surfaces.size() - 1, nm));
+    const double travel = system.image_travel();
 
     const double z0 = beam_start_z(system);
     const IndexRatios ratios = index_ratios(system, nm);
     const auto trace = [&](double x, double y, size_t cell, TracedRay* out) {
         const RealRay r = trace_real_ray(system, {{x, y, z0}, {0, 0, 1}}, ratios);
-        if (r.fate != RayFate::Passed || !(r.direction.z > 0)) return false;
+        if (r.fate != RayFate::Passed || !(r.direction.z * travel > 0)) return false;
         *out = {cell, r.exit_point(), r.direction, path_through(system, r, nm)};
         return true;
     };
@@ -63,10 +64,11 @@ RayWavefront::RayWavefront(const OpticalSystem& system, const RayPupilOptions& o
             rays_.push_back(ray);
             // Where the ray crosses the axis (its meridional plane holds the axis).
             const double h = std::hypot(ray.point.x, ray.point.y);
+            // Its slope towards the axis per unit of travel along it.
             const double slope = -(ray.point.x * ray.direction.x + ray.point.y * ray.direction.y) /
-                                 (h * ray.direction.z);
+                                 (h * ray.direction.z * travel);
             if (h > 0 && slope > 0) {
-                const double z_cross = ray.point.z + h / slope;
+                const double z_cross = ray.point.z + travel * h / slope;
                 focus_span_ = std::max(focus_span_, std::abs(z_cross - paraxial_focus_z_));
             }
         }

@@ -16,8 +16,8 @@
 #include <optional>
 #include <vector>
 
-#include "analysis/optical_system.h"
 #include "analysis/pupil_function.h"
+#include "analysis/system/optical_system.h"
 #include "math/vec3.h"
 
 namespace lenslab {

@@ -20,7 +20,7 @@ RayAimer::RayAimer(const OpticalSystem& system, const FirstOrder& first_order, d
       first_order_(first_order),
       field_(field),
       ratios_(index_ratios(system, wavelength_nm)),
-      scale_(std::max(system.last_vertex(), 2.0 * system.max_semi_diameter())) {
+      scale_(system.scale()) {
     if (!first_order.object_distance) {
         const double angle = field * M_PI / 180.0;
         z_start_ = beam_start_z(system);

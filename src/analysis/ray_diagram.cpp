@@ -65,6 +65,24 @@ Vec3 clipped_end(const SystemSurface& s, const RealRay& r) {
     return p + d * std::max(0.0, t);
 }
 
+// A mirror's profile in the meridional plane, a line on each side of any central hole.
+std::vector<DiagramPath> mirror_outline(const SystemSurface& s) {
+    std::vector<DiagramPath> out;
+    const int n = 48;
+    for (double side : {-1.0, 1.0}) {
+        DiagramPath p;
+        for (int k = 0; k <= n; ++k) {
+            const double r =
+                s.hole_semi_diameter + (s.semi_diameter - s.hole_semi_diameter) * k / n;
+            p.points.push_back({s.z_at(r), side * r});
+        }
+        p.stroke = kInk;
+        p.width = 2.5;
+        out.push_back(p);
+    }
+    return out;
+}
+
 // A ray stopped where it left a gradient-index lens through its rim: its path ends there.
 bool left_through_grin_rim(const OpticalSystem& system, const RealRay& r) {
     return r.surface > 0 && grin_gap(system, r.surface - 1);
@@ -78,19 +96,21 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     const ParaxialResult& p = report.paraxial;
     const double a_max = system.max_semi_diameter();
     const double last = system.last_vertex();
+    double z_far = last;  // the vertex furthest along the axis (a folded system's primary)
+    for (const SystemSurface& s : system.surfaces) z_far = std::max(z_far, s.z);
     const double z_start = beam_start_z(system);
 
     // In view: the lenses, both focal points and the principal planes, with some room past
     // the rear focus for the rays to cross over. Far-off points (a weak lens) are clipped to
     // a few system lengths so the lenses stay visible.
-    const double size = std::max(last, 2.0 * a_max);
+    const double size = system.scale();
     const double reach = 40.0 * size;
     const double z_lo = std::max(std::min({z_start, p.z_front_focus, p.z_front_principal,
                                            p.z_rear_principal, p.z_rear_focus}),
                                  -reach);
     const double z_hi = std::min(
-        std::max({last, p.z_rear_focus, p.z_front_focus, p.z_front_principal, p.z_rear_principal}),
-        last + reach);
+        std::max({z_far, p.z_rear_focus, p.z_front_focus, p.z_front_principal, p.z_rear_principal}),
+        z_far + reach);
     const double span = z_hi - z_lo;
     d.z_min = z_lo - 0.04 * span;
     d.z_max = z_hi + 0.12 * span;
@@ -111,6 +131,11 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
         // alternate the names between two rows.
         t.dy = i % 2 == 0 ? 16 : 30;
         d.labels.push_back(t);
+    }
+
+    for (const SystemSurface& s : system.surfaces) {
+        if (!s.mirror) continue;
+        for (DiagramPath& outline : mirror_outline(s)) d.paths.push_back(outline);
     }
 
     DiagramPath axis;
@@ -136,11 +161,13 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
             ray.width = 1.1;
             ray.points.push_back({d.z_min, y0});
             for (size_t i = 1; i < path.size(); ++i) ray.points.push_back({path[i].z, path[i].y});
-            if (r.fate == RayFate::Passed && r.direction.z > 0) {
-                const Vec3 end = at_plane(r.exit_point(), r.direction, d.z_max);
+            if (r.fate == RayFate::Passed && r.direction.z * system.image_travel() > 0) {
+                // Folded, the rays end at the image, the far end showing the mirrors.
+                const double z_end = system.folded() ? p.z_rear_focus : d.z_max;
+                const Vec3 end = at_plane(r.exit_point(), r.direction, z_end);
                 ray.points.push_back({end.z, end.y});
                 // A diverging system's focus is virtual: the rays seem to come from it.
-                if (nm == kLineD && p.z_rear_focus < last) {
+                if (nm == kLineD && !system.folded() && p.z_rear_focus < last) {
                     DiagramPath back;
                     back.stroke = colour;
                     back.width = 0.8;

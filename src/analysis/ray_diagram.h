@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "analysis/lens_report.h"
-#include "analysis/optical_system.h"
+#include "analysis/system/optical_system.h"
 
 namespace lenslab {
 

@@ -10,8 +10,9 @@ namespace lenslab {
 namespace {
 
 // Where the ray through stop point (px, py) crosses the plane z, if it passes every surface.
-std::optional<Vec3> fan_hit(const RayAimer& aimer, double px, double py, double z) {
-    const auto ray = passed_exit_ray(aimer.trace(px, py));
+std::optional<Vec3> fan_hit(const OpticalSystem& system, const RayAimer& aimer, double px,
+                            double py, double z) {
+    const auto ray = passed_exit_ray(system, aimer.trace(px, py));
     if (!ray) return std::nullopt;
     return at_plane(ray->point, ray->direction, z);
 }
@@ -31,15 +32,15 @@ RayFans ray_fans(const OpticalSystem& system, const FirstOrder& first_order,
     for (double field : options.fields) {
         FieldFans f;
         f.field = field;
-        f.reference =
-            fan_hit(RayAimer(system, first_order, field, r.primary_nm), 0.0, 0.0, r.image_z);
+        f.reference = fan_hit(system, RayAimer(system, first_order, field, r.primary_nm), 0.0, 0.0,
+                              r.image_z);
         for (double nm : wavelengths) {
             const RayAimer aimer(system, first_order, field, nm);
             RayFan fan;
             fan.wavelength_nm = nm;
             for (double p : r.pupil) {
-                const auto t = fan_hit(aimer, 0.0, p, r.image_z);
-                const auto s = fan_hit(aimer, p, 0.0, r.image_z);
+                const auto t = fan_hit(system, aimer, 0.0, p, r.image_z);
+                const auto s = fan_hit(system, aimer, p, 0.0, r.image_z);
                 fan.tangential.push_back(t && f.reference ? t->y - f.reference->y : NAN);
                 fan.sagittal.push_back(s && f.reference ? s->x - f.reference->x : NAN);
             }

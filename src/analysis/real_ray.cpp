@@ -11,6 +11,7 @@ IndexRatios index_ratios(const OpticalSystem& system, double nm) {
     IndexRatios out{nm, std::vector<double>(system.surfaces.size())};
     for (size_t i = 0; i < out.ratios.size(); ++i) {
         const bool graded = grin_gap(system, i) || (i > 0 && grin_gap(system, i - 1));
+        // A mirror's entry is unused (it reflects); the signs of travel cancel in the rest.
         out.ratios[i] = graded ? NAN : system.n_before(i, nm) / system.n_after(i, nm);
     }
     return out;
@@ -57,9 +58,20 @@ void trace_real_ray_into(RealRay& out, const OpticalSystem& system, const Ray& r
         p = p + d * t;
         out.points.push_back(p);
         if (path && !on_surface) path->push_back(p);
+        if (rims == Rims::Clip && s.hole_semi_diameter > 0 &&
+            p.x * p.x + p.y * p.y < s.hole_semi_diameter * s.hole_semi_diameter) {
+            out.fate = RayFate::Missed;  // through a mirror's central hole
+            out.surface = static_cast<int>(i);
+            out.direction = d;
+            return;
+        }
         const Vec3 nl = s.shape->normal(local.at(t));
         Vec3 n{nl.x, nl.y, o * nl.z};
         if (dot(n, d) > 0) n = -n;  // facing the arriving ray
+        if (s.mirror) {
+            d = reflect(d, n);
+            continue;
+        }
         // Next to a gradient index, the indices where the ray meets the surface.
         double ratio = indices.ratios[i];
         if (std::isnan(ratio))

@@ -1,17 +1,19 @@
 #pragma once
 // Exact (real-ray) sequential trace through a coaxial system: the ray meets each surface in
-// turn, at its true shape (LensSurface::intersect), and refracts there by Snell's law.
+// turn, at its true shape (LensSurface::intersect), and refracts there by Snell's law or
+// reflects at a mirror.
 
 #include <vector>
 
-#include "analysis/optical_system.h"
+#include "analysis/system/optical_system.h"
 #include "geometry/ray.h"
 
 namespace lenslab {
 
 enum class RayFate {
     Passed,     // left the last surface
-    Missed,     // passed outside a surface's semi-diameter (clipped by the lens edge)
+    Missed,     // passed outside a surface's semi-diameter (clipped by the lens edge) or
+                // through a mirror's central hole
     Reflected,  // total internal reflection at a surface
 };
 
@@ -19,7 +21,7 @@ struct RealRay {
     RayFate fate = RayFate::Passed;
     int surface = -1;          // where a ray that did not pass was stopped
     std::vector<Vec3> points;  // start, then the point on each surface met (system coords)
-    Vec3 direction;            // unit direction after the last surface it refracted at
+    Vec3 direction;            // unit direction after the last surface it crossed
     const Vec3& exit_point() const { return points.back(); }
 };
 
@@ -29,6 +31,7 @@ enum class Rims {
 };
 
 // Traces `ray` (system coordinates, unit direction with d.z > 0) at a wavelength (in air).
+// Behind a mirror the ray travels towards -z; RealRay::direction then has d.z < 0.
 // `path`, when given, receives the ray as a polyline to draw: the points of `points`, with
 // the integrator's points between two surfaces where a gradient index curves the ray.
 RealRay trace_real_ray(const OpticalSystem& system, const Ray& ray, double wavelength_nm,

@@ -58,9 +58,14 @@ std::pair<std::string, std::string> zmx_in_archive(const std::string& path) {
 
 }  // namespace
 
+bool is_lens_file_path(const std::string& path) {
+    const std::string extension = lens_file_upper(std::filesystem::path(path).extension().string());
+    return extension == ".ZMX" || extension == ".SEQ" || extension == ".ZAR";
+}
+
 ImportedLens import_lens_file(const std::string& path, const std::string& name) {
     const std::string extension = lens_file_upper(std::filesystem::path(path).extension().string());
-    if (extension != ".ZMX" && extension != ".SEQ" && extension != ".ZAR") {
+    if (!is_lens_file_path(path)) {
         throw LensFileError(path, 0,
                             "not a lens file lenslab reads: it takes Zemax .zmx and .zar and "
                             "CODE V .seq files (by their extension)");

@@ -10,6 +10,9 @@
 
 namespace lenslab {
 
+// Whether `path` names a lens file by its extension (.zmx, .zar, .seq, any case).
+bool is_lens_file_path(const std::string& path);
+
 // Reads the lens file at `path` (.zmx or .seq, any case) into a lens_group named `name`, and
 // checks it builds (a surface crossing its neighbour is refused with the element's line).
 // Throws LensFileError.

@@ -35,8 +35,15 @@ public:
         std::vector<double> z(m_s.size(), 0.0);
         for (size_t i = 2; i + 1 < m_s.size(); ++i) z[i] = z[i - 1] + m_s[i - 1].thickness * m_mm;
         const size_t image = m_s.size() - 1;
-        size_t first = 0, last_back = 0;
+        size_t first = 0;
+        double travel = 1.0;  // -1: behind an odd number of mirrors
         for (size_t i = 1; i < image; ++i) {
+            if (m_s[i].mirror) {
+                if (!first) first = i;
+                elements.push_back(mirror_element(i, travel, group_diameter, out));
+                travel = -travel;
+                continue;
+            }
             if (!prescription_has_glass(m_s[i])) continue;
             if (!first) first = i;
             const LensFileSurface& front = m_s[i];
@@ -47,9 +54,17 @@ public:
                            " runs to the image surface: the file is cut short, or the lens has "
                            "no last surface");
             }
-            if (!(front.thickness > 0.0)) {
-                refuse(front.line, prescription_surface_label(i) + ": a glass thickness of " +
-                                       number_text(front.thickness) + " (must be > 0)");
+            if (back.mirror) {
+                refuse(back.glass_line ? back.glass_line : back.line,
+                       prescription_surface_label(i + 1) +
+                           ": a mirror on a glass face (a Mangin mirror, light reflected inside "
+                           "the glass) is not yet supported");
+            }
+            if (!(travel * front.thickness > 0.0)) {
+                refuse(front.line,
+                       prescription_surface_label(i) + ": a glass thickness of " +
+                           number_text(front.thickness) +
+                           (travel > 0 ? " (must be > 0)" : " (after a mirror, must be < 0)"));
             }
             const double sd = std::max(semi_diameter(i), semi_diameter(i + 1)) * m_mm;
             if (!(sd > 0.0)) {
@@ -61,38 +76,21 @@ public:
             check_span(i + 1, sd);
             ordered_json e;
             e["front"] = surface_json(i);
-            e["thickness"] = front.thickness * m_mm;
+            e["thickness"] = travel * front.thickness * m_mm;
             e["diameter"] = 2.0 * sd;
             group_diameter = std::max(group_diameter, 2.0 * sd);
             e["material"] = material_json(front, out.warnings);
             if (!prescription_has_glass(back)) {
                 e["back"] = surface_json(i + 1);
-                // The air to the next glass, through any surfaces in air between.
-                size_t next = i + 1;
-                double gap = 0.0;
-                while (next < image && !prescription_has_glass(m_s[next])) {
-                    gap += m_s[next].thickness * m_mm;
-                    if (next > i + 1) in_air(next, out.warnings);
-                    ++next;
-                }
-                if (next < image) {
-                    if (!(gap > 0.0)) {
-                        refuse(m_s[i + 1].line, "an air space of " + number_text(gap) + " after " +
-                                                    prescription_surface_label(i + 1) +
-                                                    " (must be > 0)");
-                    }
-                    e["gap"] = gap;
-                } else {
-                    last_back = i + 1;
-                    out.bench["image_distance"] = gap;
-                }
+                air_after(i + 1, i + 1, travel, e, out);
             }
             elements.push_back(e);
             out.element_lines.push_back(front.line);
         }
-        if (!first) refuse(0, "no glass between the object and the image: no lens to import");
+        if (!first) {
+            refuse(0, "no glass or mirror between the object and the image: no lens to import");
+        }
         for (size_t j = 1; j < first; ++j) in_air(j, out.warnings);
-        (void)last_back;
 
         out.group["name"] = name;
         out.group["type"] = "lens_group";
@@ -171,7 +169,7 @@ private:
             if (m_s[j].stop) stop = j;
             ya[j] = a_y, yb[j] = b_y;
             const double c = m_s[j].radius == 0.0 ? 0.0 : 1.0 / m_s[j].radius;
-            const double n2 = index_after(j);
+            const double n2 = m_s[j].mirror ? -n : (n < 0 ? -1.0 : 1.0) * index_after(j);
             a_u = (n * a_u - a_y * c * (n2 - n)) / n2;
             b_u = (n * b_u - b_y * c * (n2 - n)) / n2;
             n = n2;
@@ -213,6 +211,68 @@ private:
     double semi_diameter(size_t j) const {
         const auto it = m_s_estimate.find(j);
         return it != m_s_estimate.end() ? it->second : m_s[j].semi_diameter;
+    }
+
+    // The air after surface `from` (whose thickness starts it) to the next glass or mirror,
+    // through any surfaces in air between: the element's `gap`, counted the way light travels;
+    // or, when the image comes first, the bench's image distance (signed along the axis).
+    void air_after(size_t owner, size_t from, double travel, ordered_json& e,
+                   ImportedLens& out) const {
+        const size_t image = m_s.size() - 1;
+        size_t next = from;
+        double gap = 0.0;
+        while (next < image &&
+               (next == from || (!prescription_has_glass(m_s[next]) && !m_s[next].mirror))) {
+            gap += travel * m_s[next].thickness * m_mm;
+            if (next > owner) in_air(next, out.warnings);
+            ++next;
+        }
+        if (next < image) {
+            if (!(gap > 0.0)) {
+                refuse(m_s[from].line,
+                       "an air space of " + number_text(travel * gap) + " after " +
+                           prescription_surface_label(from) +
+                           (travel > 0 ? " (must be > 0)"
+                                       : " (light travels back after a mirror: must be < 0)"));
+            }
+            e["gap"] = gap;
+        } else {
+            out.bench["image_distance"] = travel * gap;
+        }
+    }
+
+    ordered_json mirror_element(size_t i, double travel, double& group_diameter,
+                                ImportedLens& out) const {
+        const LensFileSurface& s = m_s[i];
+        if (prescription_has_glass(m_s[i - 1])) {
+            refuse(s.glass_line ? s.glass_line : s.line,
+                   prescription_surface_label(i) +
+                       ": a mirror on a glass face (a Mangin mirror, light reflected inside the "
+                       "glass) is not yet supported");
+        }
+        const double sd = semi_diameter(i) * m_mm;
+        if (!(sd > 0.0)) {
+            refuse(s.line, "the mirror " + prescription_surface_label(i) +
+                               " has no semi-diameter (Zemax DIAM, CODE V CIR)");
+        }
+        check_span(i, sd);
+        ordered_json e;
+        e["mirror"] = surface_json(i);
+        e["diameter"] = 2.0 * sd;
+        // In a sequential trace a central obscuration on a mirror stops the same rays as a hole.
+        const double hole = std::max(s.hole_semi_diameter, s.obscuration_semi_diameter);
+        if (hole > 0.0) {
+            if (!(hole * m_mm < sd)) {
+                refuse(s.line, prescription_surface_label(i) + ": a central hole of radius " +
+                                   number_text(hole) + " as large as the mirror");
+            }
+            e["hole_diameter"] = 2.0 * hole * m_mm;
+        }
+        e["material"] = {{"color", 0}, {"specular", 1}};
+        group_diameter = std::max(group_diameter, 2.0 * sd);
+        air_after(i, i, -travel, e, out);
+        out.element_lines.push_back(s.line);
+        return e;
     }
 
     // A surface with air on both sides bends no light: left out, said when it is not flat.

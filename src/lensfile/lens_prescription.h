@@ -29,6 +29,10 @@ struct LensFileSurface {
     // that meets the surface nearer the axis is blocked. 0: none. Read, not yet used.
     double obscuration_semi_diameter = 0.0;
     bool stop = false;
+    // A mirror (Zemax GLAS MIRROR, CODE V REFL): light turns back along the axis, the
+    // thicknesses after it negative as the file writes them; the medium stays the one before.
+    bool mirror = false;
+    double hole_semi_diameter = 0.0;  // a central hole in a mirror (CODE V CIR HOL)
 };
 
 struct LensFilePrescription {

@@ -127,7 +127,11 @@ private:
 
     void set_glass(LensFileSurface& s, const std::string& name) {
         const std::string upper = lens_file_upper(name);
-        if (upper == "REFL") refuse("a mirror (REFL): a lens_group holds refracting elements only");
+        if (upper == "REFL") {
+            s.mirror = true;
+            s.glass_line = m_line;
+            return;
+        }
         s.glass_line = m_line;
         s.model_nd = s.model_vd = 0.0;
         s.glass = upper == "AIR" ? "" : name;
@@ -206,7 +210,10 @@ private:
             if (m_words.size() < 2) refuse("GLA without a glass name");
             return set_glass(surface(), m_words[1]);
         }
-        if (c == "REFL") refuse("a mirror (REFL): a lens_group holds refracting elements only");
+        if (c == "REFL") {
+            surface().mirror = true;
+            return;
+        }
         if (c == "STO") {
             surface().stop = true;
             return;
@@ -332,10 +339,12 @@ private:
         } else if (kind == "OBS") {
             s.obscuration_semi_diameter = *value;
             warn("CIR OBS: a central obscuration of radius " + seq_number_text(*value) + where +
-                 "; recorded, but not yet used (no ray is blocked by it)");
+                 "; on a mirror, its central hole; elsewhere recorded, but not yet used (no ray "
+                 "is blocked by it)");
         } else {
+            s.hole_semi_diameter = *value;
             warn("CIR HOL: a hole of radius " + seq_number_text(*value) + where +
-                 " (a mirror's); left out");
+                 ": a mirror's central hole (left out on a surface that is not a mirror)");
         }
     }
 

@@ -271,7 +271,8 @@ private:
         }
         s.obscuration_semi_diameter = outer;
         warn("OBSC: a central obscuration of radius " + m_words[2] + where +
-             "; recorded, but not yet used (no ray is blocked by it)");
+             "; on a mirror, its central hole; elsewhere recorded, but not yet used (no ray "
+             "is blocked by it)");
     }
 
     void glass() {
@@ -279,7 +280,9 @@ private:
         if (m_words.size() < 2) refuse("GLAS without a glass name");
         const std::string name = m_words[1];
         if (lens_file_upper(name) == "MIRROR") {
-            refuse("a mirror (GLAS MIRROR): a lens_group holds refracting elements only");
+            s.mirror = true;
+            s.glass_line = m_line;
+            return;
         }
         s.glass_line = m_line;
         if (name == "___BLANK") {

@@ -40,12 +40,14 @@ struct ZmxSurface {
     std::string glass;
     double semi_diameter = 0;
     bool stop = false;
+    double hole = 0;  // a mirror's central hole, written as a central obscuration
 };
 
 struct ZmxElement {
     std::string path;
     json front, back;  // back null: cemented to the next
-    double thickness = 0, gap = 0, diameter = 0;
+    json mirror;       // a mirror element's surface (front and back null)
+    double thickness = 0, gap = 0, diameter = 0, hole_diameter = 0;
     json material;
 };
 
@@ -65,16 +67,25 @@ public:
         line(out, "  CURV 0");
         line(out, "  DISZ INFINITY");
         std::vector<ZmxSurface> surfaces;
+        double travel = 1;  // thicknesses behind an odd number of mirrors are negative
         for (size_t i = 0; i < m_elements.size(); ++i) {
             const ZmxElement& e = m_elements[i];
+            if (!e.mirror.is_null()) {
+                travel = -travel;
+                const double after = i + 1 < m_elements.size() ? travel * e.gap : image_distance();
+                surfaces.push_back({e.mirror, e.path + ".mirror", after, "MIRROR", 0.5 * e.diameter,
+                                    false, 0.5 * e.hole_diameter});
+                continue;
+            }
             double sd = 0.5 * e.diameter;
             // A cemented face belongs to both elements: the smaller rim keeps each element's own.
             if (i > 0 && m_elements[i - 1].back.is_null()) {
                 sd = 0.5 * std::min(e.diameter, m_elements[i - 1].diameter);
             }
-            surfaces.push_back({e.front, e.path + ".front", e.thickness, glass(e), sd, false});
+            surfaces.push_back(
+                {e.front, e.path + ".front", travel * e.thickness, glass(e), sd, false});
             if (!e.back.is_null()) {
-                const double after = i + 1 < m_elements.size() ? e.gap : image_distance();
+                const double after = i + 1 < m_elements.size() ? travel * e.gap : image_distance();
                 surfaces.push_back({e.back, e.path + ".back", after, "", 0.5 * e.diameter, false});
             }
         }
@@ -130,6 +141,14 @@ private:
             const json& j = list[i];
             ZmxElement e;
             e.path = path + ".elements[" + std::to_string(i) + "]";
+            e.gap = j.value("gap", 0.0);
+            e.diameter = j.value("diameter", diameter);
+            if (j.contains("mirror")) {
+                e.mirror = j.at("mirror");
+                e.hole_diameter = j.value("hole_diameter", 0.0);
+                m_elements.push_back(e);
+                continue;
+            }
             e.front = j.at("front");
             e.back = j.contains("back") ? j.at("back") : json();
             e.thickness = j.at("thickness").get<double>();
@@ -208,6 +227,7 @@ private:
         line(out, "  DISZ " + shortest_number_text(z.after));
         if (!z.glass.empty()) line(out, "  GLAS " + z.glass);
         line(out, "  DIAM " + shortest_number_text(z.semi_diameter));
+        if (z.hole > 0) line(out, "  OBSC 0 " + shortest_number_text(z.hole) + " 0");
     }
 
     void system_data(std::string& out) {

@@ -1,6 +1,6 @@
 #include "optimize/glass_choice.h"
 
-#include "analysis/optical_system.h"
+#include "analysis/system/optical_system.h"
 #include "optimize/design_variable.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"

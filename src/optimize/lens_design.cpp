@@ -5,7 +5,7 @@
 #include <functional>
 #include <sstream>
 
-#include "analysis/optical_system.h"
+#include "analysis/system/optical_system.h"
 #include "optics/glass.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"

@@ -7,6 +7,7 @@
 
 #include "geometry/lens/lens_clearance.h"
 #include "geometry/lens/lens_solid.h"
+#include "geometry/lens/mirror_surface.h"
 #include "scene/json_reader.h"
 #include "scene/limits.h"
 #include "scene/object_spec.h"
@@ -24,7 +25,9 @@ struct GroupElement {
     std::string path, name;
     double thickness = 0, gap = 0, diameter = 0;
     const json* front = nullptr;
-    const json* back = nullptr;  // nullptr: cemented to the next element's front
+    const json* back = nullptr;    // nullptr: cemented to the next element's front
+    const json* mirror = nullptr;  // a mirror element's surface (no front, back, thickness)
+    double hole_diameter = 0;
     int material = 0;
 };
 
@@ -89,13 +92,75 @@ ElementSpec declare_element() {
     return s;
 }
 
+ElementSpec declare_mirror_element() {
+    ElementSpec s{"lens_group mirror", "a lens group mirror", {}, {}};
+    s.params.push_back(nested_param(ParamKind::String, "name")
+                           .meaning_auto("`\"NAME element i\"`")
+                           .describe("shown by lenslab trace"));
+    s.params.push_back(nested_param(ParamKind::Object, "mirror")
+                           .needed()
+                           .as_written("[surface](#surfaces)")
+                           .describe("its surface, signed along the group's `axis` as every face"));
+    s.params.push_back(number_param("gap", 0)
+                           .at_least(0)
+                           .because("the distance light travels to the next element")
+                           .describe("distance to the next element's vertex, the way the "
+                                     "reflected light travels")
+                           .in_editor("Gap after"));
+    s.params.push_back(nested_param(ParamKind::Number, "diameter")
+                           .above(0)
+                           .meaning_auto("the group's")
+                           .describe("its outer diameter"));
+    s.params.push_back(number_param("hole_diameter", 0)
+                           .at_least(0)
+                           .because("a central hole, as a Cassegrain primary's")
+                           .describe("diameter of a central hole (0: none)")
+                           .in_editor("Hole diameter"));
+    s.params.push_back(nested_param(ParamKind::Object, "material")
+                           .needed()
+                           .as_written("string or object")
+                           .describe("its coating (`\"specular\": 1`: a perfect mirror)"));
+    return s;
+}
+
+// An element is a mirror when it says so, or when it has neither a lens's front nor its
+// thickness (then its missing `mirror` is what is reported).
+bool is_mirror_element(const json& e) {
+    return e.is_object() &&
+           (e.contains("mirror") || (!e.contains("front") && !e.contains("thickness")));
+}
+
+// A mirror element as a mirror object: its vertex on the axis, its surface signed along the
+// group's axis (the mirror's own axis then points along it, whichever side the light comes
+// from: the mirror reflects on both).
+std::shared_ptr<const Shape> group_mirror(const GroupElement& e, const Vec3& at, const Vec3& axis,
+                                          const Vec3& x_axis) {
+    MirrorPrescription p;
+    p.vertex = at;
+    p.axis = axis;
+    p.x_axis = x_axis;
+    p.diameter = e.diameter;
+    p.hole_diameter = e.hole_diameter;
+    const double a = 0.5 * e.diameter;
+    p.surface = read_lens_surface(*e.mirror, e.path + ".mirror", a);
+    if (a > p.surface->max_semi_diameter()) {
+        throw SceneError(e.path + ".mirror", p.surface->describe() + " cannot span the diameter " +
+                                                 format_number(e.diameter) + " (its largest is " +
+                                                 format_number(2 * p.surface->max_semi_diameter()) +
+                                                 ")");
+    }
+    return std::make_shared<MirrorSurface>(std::move(p));
+}
+
 // Refuses element `e` and the next one when they overlap anywhere over their common aperture
 // (checked alone, each is whole; apart on the axis, they may still cross towards the rim).
 // A cemented pair shares one surface and is not checked.
 void check_air_space(const GroupElement& e, const LensPrescription& p, const GroupElement& next,
-                     const LensPrescription& next_p) {
+                     const LensPrescription& next_p, double travel) {
     const double a = 0.5 * std::min(e.diameter, next.diameter);
-    const Clearance c = smallest_clearance(*p.back, *next_p.front, e.gap, a);
+    // Against the axis (after a mirror) the faces that meet are the solids' other two.
+    const Clearance c = travel > 0 ? smallest_clearance(*p.back, *next_p.front, e.gap, a)
+                                   : smallest_clearance(*next_p.back, *p.front, e.gap, a);
     if (!(c.gap < -1e-12 * std::max(1.0, e.gap))) return;
     const bool symmetric =
         p.back->is_rotationally_symmetric() && next_p.front->is_rotationally_symmetric();
@@ -122,6 +187,11 @@ const ElementSpec& lens_group_element_spec() {
     return spec;
 }
 
+const ElementSpec& lens_group_mirror_spec() {
+    static const ElementSpec spec = declare_mirror_element();
+    return spec;
+}
+
 std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
                                          const MaterialResolver& material) {
     SpecReader r(j, path, lens_group_spec());
@@ -131,6 +201,9 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
     const Vec3 axis = r.unit_vector("axis");
     const double group_diameter = r.real("diameter");
     const Vec3 x_axis = r.has("x_axis") ? r.unit_vector("x_axis") : Vec3{};
+    if (r.has("x_axis") && length(cross(x_axis, axis)) < 1e-9) {
+        throw SceneError(r.child_path("x_axis"), "must not be parallel to the axis");
+    }
 
     const json& list = r.require("elements");
     const std::string list_path = r.child_path("elements");
@@ -142,61 +215,99 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
     for (size_t i = 0; i < list.size(); ++i) {
         GroupElement& e = specs[i];
         e.path = list_path + "[" + std::to_string(i) + "]";
-        SpecReader er(list[i], e.path, lens_group_element_spec());
+        const bool is_mirror = is_mirror_element(list[i]);
+        SpecReader er(list[i], e.path,
+                      is_mirror ? lens_group_mirror_spec() : lens_group_element_spec());
         e.name = er.string("name", name + " element " + std::to_string(i + 1));
-        e.thickness = er.real("thickness");
         e.gap = er.real("gap");
         e.diameter = er.has("diameter") ? er.real("diameter") : group_diameter;
+        const bool last = i + 1 == list.size();
+        if (is_mirror) {
+            e.mirror = &er.require("mirror");
+            e.hole_diameter = er.real("hole_diameter");
+            if (!(e.hole_diameter < e.diameter)) {
+                throw SceneError(er.child_path("hole_diameter"),
+                                 "must be less than the mirror's diameter (" +
+                                     format_number(e.diameter) + "), got " +
+                                     format_number(e.hole_diameter));
+            }
+            if (!last && !(e.gap > 0)) {
+                throw SceneError(er.child_path("gap"),
+                                 "a mirror needs a gap to the next element (light cannot pass "
+                                 "from a mirror straight into a glass)");
+            }
+            e.material = material(er, e.name);
+            continue;
+        }
+        e.thickness = er.real("thickness");
         e.front = &er.require("front");
         e.back = er.find("back");
-        const bool last = i + 1 == list.size();
-        if (!e.back && (last || e.gap > 0)) {
+        const bool mirror_next = !last && is_mirror_element(list[i + 1]);
+        if (!e.back && (last || e.gap > 0 || mirror_next)) {
             throw SceneError(e.path,
                              last ? "the last element needs a back surface"
                                   : "an element followed by an air gap needs a back surface");
         }
         if (e.back && !last && e.gap == 0) {
             throw SceneError(er.child_path("back"),
-                             "an element with no gap after it is cemented: its back is the next "
-                             "element's front (give a gap, or leave out back)");
+                             mirror_next ? "an element before a mirror needs a gap to it (a "
+                                           "mirror on a glass face is not yet supported)"
+                                         : "an element with no gap after it is cemented: its "
+                                           "back is the next element's front (give a gap, or "
+                                           "leave out back)");
         }
         e.material = material(er, e.name);
     }
 
     std::vector<SceneObject> objects;
     std::optional<LensPrescription> previous;  // the element before, while not cemented to it
-    double z = 0;  // axial position of the current element's front vertex
+    double z = 0;                              // axial position of the vertex light meets next
+    double travel = 1;  // +1: light travels along `axis`; -1: against it, after a mirror
     for (size_t i = 0; i < specs.size(); ++i) {
         const GroupElement& e = specs[i];
-        const json& back = e.back ? *e.back : *specs[i + 1].front;
-        const std::string back_path = e.back ? e.path + ".back" : specs[i + 1].path + ".front";
-        LensPrescription p;
-        p.centre = vertex + axis * (z + 0.5 * e.thickness);
-        p.axis = axis;
-        p.thickness = e.thickness;
-        p.diameter = e.diameter;
-        p.front = read_lens_surface(*e.front, e.path + ".front", 0.5 * e.diameter);
-        p.back = read_lens_surface(back, back_path, 0.5 * e.diameter);
-        p.x_axis = x_axis;
-        if (auto problem = LensSolid::check_prescription(p)) {
-            const std::string field = problem->field == "back"     ? back_path
-                                      : problem->field == "front"  ? e.path + ".front"
-                                      : problem->field == "x_axis" ? r.child_path("x_axis")
-                                                                   : e.path + "." + problem->field;
-            throw SceneError(field, problem->reason);
-        }
-        if (previous) check_air_space(specs[i - 1], *previous, e, p);
-        previous.reset();
-        if (e.back) previous = p;
         SceneObject o;
         o.name = e.name;
         o.group = name;
-        o.type = ObjectType::Lens;
-        o.shape = std::make_shared<LensSolid>(std::move(p));
         o.material = e.material;
         o.photon_target = photon_target;
+        if (e.mirror) {
+            o.type = ObjectType::Mirror;
+            o.shape = group_mirror(e, vertex + axis * z, axis, x_axis);
+            objects.push_back(std::move(o));
+            previous.reset();
+            travel = -travel;
+            z += travel * e.gap;
+            continue;
+        }
+        const json& back = e.back ? *e.back : *specs[i + 1].front;
+        const std::string back_path = e.back ? e.path + ".back" : specs[i + 1].path + ".front";
+        LensPrescription p;
+        p.centre = vertex + axis * (z + travel * 0.5 * e.thickness);
+        p.axis = axis;
+        p.thickness = e.thickness;
+        p.diameter = e.diameter;
+        // Faces are signed along `axis` whichever way light crosses them; against it, the face
+        // met first is the solid's back.
+        const auto front = read_lens_surface(*e.front, e.path + ".front", 0.5 * e.diameter);
+        const auto rear = read_lens_surface(back, back_path, 0.5 * e.diameter);
+        p.front = travel > 0 ? front : rear;
+        p.back = travel > 0 ? rear : front;
+        p.x_axis = x_axis;
+        if (auto problem = LensSolid::check_prescription(p)) {
+            const bool first_face = (problem->field == "front") == (travel > 0);
+            const std::string field = problem->field == "x_axis" ? r.child_path("x_axis")
+                                      : problem->field == "front" || problem->field == "back"
+                                          ? (first_face ? e.path + ".front" : back_path)
+                                          : e.path + "." + problem->field;
+            throw SceneError(field, problem->reason);
+        }
+        if (previous) check_air_space(specs[i - 1], *previous, e, p, travel);
+        previous.reset();
+        if (e.back) previous = p;
+        o.type = ObjectType::Lens;
+        o.shape = std::make_shared<LensSolid>(std::move(p));
         objects.push_back(std::move(o));
-        z += e.thickness + e.gap;
+        z += travel * (e.thickness + e.gap);
     }
     return objects;
 }

@@ -8,8 +8,8 @@
 // The diameters are the page's semi-diameters, rounded up; paraxial figures ignore them.
 
 #include "analysis/first_order.h"
-#include "analysis/optical_system.h"
 #include "analysis/seidel.h"
+#include "analysis/system/optical_system.h"
 #include "lens_scene_builder.h"
 
 namespace lenslab::test {

@@ -320,6 +320,27 @@ private slots:
         check_form(w, lenslab::sphere_surface_spec(), {}, "elements/0/front/");
     }
 
+    void lens_group_mirror_form_follows_the_declaration() {
+        QTemporaryDir dir;
+        MainWindow w;
+        open_objects(w, dir,
+                     {{{"type", "lens_group"},
+                       {"vertex", {0, 0, 0}},
+                       {"axis", {0, 0, 1}},
+                       {"diameter", 1},
+                       {"elements",
+                        {{{"mirror", {{"shape", "conic"}, {"radius", -4}, {"k", -1}}},
+                          {"gap", 1},
+                          {"material", "grey"}},
+                         {{"front", {{"shape", "sphere"}, {"radius", -2}}},
+                          {"back", {{"shape", "flat"}}},
+                          {"thickness", 0.3},
+                          {"material", "grey"}}}}}});
+        check_form(w, lenslab::lens_group_mirror_spec(), {}, "elements/0/");
+        check_form(w, lenslab::conic_surface_spec(), {}, "elements/0/mirror/");
+        check_form(w, lenslab::lens_group_element_spec(), {"gap"}, "elements/1/");
+    }
+
     void mesh_and_prism_forms_follow_their_declarations() {
         QTemporaryDir dir;
         {

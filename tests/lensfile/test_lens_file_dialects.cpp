@@ -168,8 +168,8 @@ TEST(LensFileDialects, CodeVEdgeAperturesObscurationsAndHoles) {
     ASSERT_EQ(p.warnings.size(), 3u);
     EXPECT_EQ(p.warnings[0].line, 6);
     EXPECT_EQ(p.warnings[0].message,
-              "CIR OBS: a central obscuration of radius 3 on surface 3; recorded, but not yet "
-              "used (no ray is blocked by it)");
+              "CIR OBS: a central obscuration of radius 3 on surface 3; on a mirror, its central "
+              "hole; elsewhere recorded, but not yet used (no ray is blocked by it)");
     EXPECT_EQ(p.warnings[1].line, 9);
     EXPECT_EQ(p.warnings[1].message.rfind("CIR HOL: a hole of radius 1 on surface 4", 0), 0u);
     EXPECT_EQ(p.warnings[2].line, 2);

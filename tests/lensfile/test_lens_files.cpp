@@ -17,8 +17,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "analysis/optical_system.h"
 #include "analysis/paraxial.h"
+#include "analysis/system/optical_system.h"
 #include "lensfile/lens_file.h"
 #include "lensfile/lens_file_text.h"
 #include "lensfile/lens_group_from_prescription.h"
@@ -252,7 +252,8 @@ TEST(LensFiles, BadFilesAreRefusedWithOneMessageNamingTheLine) {
               "test.zmx:7: surface 1: radius 11 mm is undefined beyond 11 mm from the axis, "
               "inside its element's semi-diameter 12.7 mm");
     EXPECT_EQ(error_of(replaced(achromat_text(), "GLAS SF5", "GLAS MIRROR")),
-              "test.zmx:14: a mirror (GLAS MIRROR): a lens_group holds refracting elements only");
+              "test.zmx:14: surface 2: a mirror on a glass face (a Mangin mirror, light reflected "
+              "inside the glass) is not yet supported");
     EXPECT_EQ(
         error_of(replaced(achromat_text(), "SURF 3\n", "SURF 3\n  TYPE COORDBRK\n  PARM 3 5\n")),
         "test.zmx:18: coordinate break with a tilt about x: a lens_group holds elements on "

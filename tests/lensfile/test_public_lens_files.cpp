@@ -5,8 +5,9 @@
 // files were gathered, printed to four decimals), and, where the file or its publisher states
 // one, against that figure at the file's own primary wavelength to the digits stated.
 //
-// Files of the collection that are not listed here do not import yet (mirrors, tilts and
-// decentres, surface types lenslab lacks); MANIFEST.tsv and docs/scene-format.md say which.
+// Files of the collection that are not listed here do not import yet (tilts and decentres,
+// mirrors on glass, surface types lenslab lacks); MANIFEST.tsv and docs/scene-format.md say
+// which.
 
 #include <gtest/gtest.h>
 
@@ -57,6 +58,17 @@ const PublicLens kPublicLenses[] = {
     {"zx_edmund_49270.zmx", "vendor micro achromat (Edmund 49-270)", 4.5012, 4.5, 0.005,
      "its NOTE, 3 x 4.5 (diameter x EFL)"},
     {"zx_sk_singlet.zmx", "singlet, UTF-16", 400.0000},
+    // Mirrors (GLAS MIRROR, REFL): folded back along the axis.
+    {"cv_paraboloid.seq", "paraboloid mirror f/1", 100.0000, 100.0, 1e-9,
+     "its title, f/1.0 at EPD 100 (and R/2)"},
+    {"cv_paraboloid_f8.seq", "paraboloid mirror f/8, F-number aperture", 200.0000, 200.0, 1e-9,
+     "its title, 200mm paraboloid"},
+    {"cv_ol_mirror.seq", "spherical mirror, stop on it", 100.0000},
+    {"cv_rc_f16.seq", "Ritchey-Chretien, two hyperboloids", 31702.2156},
+    {"cv_schmidt.seq", "flat-field Schmidt camera, aspheric plate", 99.9997},
+    {"cv_schmidt_sph.seq", "Schmidt camera, plate terms commented out", 99.9997},
+    {"cv_questar35.seq", "Maksutov-Cassegrain (Questar 3.5), inches, holes", 1282.6203},
+    {"zx_hoo_ex03.zmx", "reflective objective (Handbook of Optics II, 18, ex. 3)", 80.0934},
 };
 
 double public_lens_efl(const std::string& file, double wavelength_nm) {

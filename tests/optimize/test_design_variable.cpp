@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/optical_system.h"
+#include "analysis/system/optical_system.h"
 #include "optimize/design_evaluation.h"
 #include "optimize_test_design.h"
 #include "scene/scene_json.h"

@@ -19,6 +19,18 @@ def test_report_equals_the_cli():
     assert set(first["entrance_pupil"]) >= {"position", "diameter"}
 
 
+def test_a_lens_file_with_mirrors_is_analysed_as_the_cli_does():
+    telescope = "scenes/ritchey_chretien.zmx"
+    expected = cli_json("analyze", telescope, "--json", "--spots")
+    report = lenslab.analyze(telescope, spots=True)
+    assert report == expected
+    # F = 2000 from the textbook formulas the file's mirrors were typed from.
+    assert report["efl"] == pytest.approx(2000, rel=1e-9)
+    assert report["bfl"] == pytest.approx(700, rel=1e-9)
+    assert report["surfaces"][0]["mirror"] is True
+    assert report["surfaces"][0]["n_after"] == -1
+
+
 def test_options_equal_the_cli():
     expected = cli_json("analyze", SCENE, "--json", "--wavelength", "550", "--stop", "2",
                         "--f-number", "8", "--fields", "0,2.5")

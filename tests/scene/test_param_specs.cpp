@@ -185,6 +185,10 @@ std::vector<Case> cases() {
                                  {"back", {{"shape", "sphere"}, {"radius", -2}}},
                                  {"thickness", 0.5},
                                  {"material", glass_free}}}}}};
+    json with_mirror_group = with_group;
+    with_mirror_group["objects"][0]["elements"] = {
+        {{"mirror", {{"shape", "conic"}, {"radius", -4}, {"k", -1}}},
+         {"material", {{"color", 0}, {"specular", 1}}}}};
     json with_detector = with_disc;
     with_detector["objects"][0]["detector"] = json::object();
     const std::vector<std::string> common = lenslab::object_common_spec().keys();
@@ -282,6 +286,12 @@ std::vector<Case> cases() {
         {lenslab::lens_group_element_spec,
          "Each element:",
          with_group,
+         "/objects/0/elements/0",
+         "objects[0].elements[0]",
+         {}},
+        {lenslab::lens_group_mirror_spec,
+         "Each mirror element:",
+         with_mirror_group,
          "/objects/0/elements/0",
          "objects[0].elements[0]",
          {}},

@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "analysis/optical_system.h"
+#include "../lens_scene_builder.h"
 #include "analysis/paraxial.h"
-#include "lens_scene_builder.h"
+#include "analysis/system/optical_system.h"
 
 namespace lenslab {
 namespace {

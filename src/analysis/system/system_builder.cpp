@@ -1,11 +1,10 @@
-#include "analysis/optical_system.h"
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "geometry/lens/flat_surface.h"
+#include "analysis/system/optical_system.h"
 #include "geometry/lens/lens_solid.h"
+#include "geometry/lens/mirror_surface.h"
 #include "scene/interaction.h"
 #include "scene/scattering.h"
 #include "scene/scene_error.h"
@@ -53,8 +52,9 @@ std::string format(double v) {
 struct Placed {
     int object;
     const LensSolid* lens;
-    double orientation;  // +1: lens axis along the system axis
-    double z_first, z_last;
+    double orientation;      // +1: lens axis along the system axis
+    double z_first, z_last;  // the faces light meets first and last
+    double travel = 1.0;     // the direction light crosses it (-1: after a mirror)
 };
 
 // A lens of gradient index: the bench's paraxial and real traces need it symmetric about the
@@ -97,7 +97,7 @@ SurfaceSpan measure_aim_span(const LensSurface& shape, double semi_diameter) {
 // The two surfaces of a lens in the order light meets them, as system surfaces.
 void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
     const LensPrescription& pr = p.lens->prescription();
-    const bool forward = p.orientation > 0;
+    const bool forward = p.orientation * p.travel > 0;  // the front face is met first
     const std::string path = system.elements[element].path;
     const double a = 0.5 * pr.diameter;
     const auto make = [&](const std::shared_ptr<const LensSurface>& shape, double z,
@@ -106,6 +106,7 @@ void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
         s.shape = shape;
         s.orientation = p.orientation;
         s.z = z;
+        s.travel = p.travel;
         s.semi_diameter = a;
         s.span = intersect_span(*shape, a);
         s.aim_span = measure_aim_span(*shape, a);
@@ -123,14 +124,15 @@ void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
 
     // A cemented interface: the previous lens's exit surface has this lens's entry shape at
     // the same place. Then the two become one glass-to-glass surface.
-    if (!system.surfaces.empty()) {
+    if (!system.surfaces.empty() && !system.surfaces.back().mirror) {
         SystemSurface& prev = system.surfaces.back();
         const double common = std::min(prev.semi_diameter, in.semi_diameter);
-        const double scale = std::max({p.z_last, 2.0 * system.max_semi_diameter(), 2.0 * a});
+        const double scale =
+            std::max({std::abs(p.z_last), 2.0 * system.max_semi_diameter(), 2.0 * a});
         double worst = INFINITY, largest = 0.0, worst_r = 0.0;
         for (int k = 0; k <= 64; ++k) {
             const double r = common * k / 64.0;
-            const double gap = in.z_at(r) - prev.z_at(r);
+            const double gap = p.travel * (in.z_at(r) - prev.z_at(r));
             if (gap < worst) {
                 worst = gap;
                 worst_r = r;
@@ -165,37 +167,158 @@ void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
     e.last_surface = e.first_surface + 1;
 }
 
+// Where an object lies relative to the axis through `point` along `axis`: refused with
+// `why` when tilted or off it.
+void check_on_axis(const Scene& scene, int i, const Vec3& object_axis, const Vec3& centre,
+                   const Vec3& axis, const Vec3& point, double size) {
+    const double sine = length(cross(axis, object_axis));
+    const Vec3 offset = centre - point;
+    const double off_axis = length(offset - axis * dot(offset, axis));
+    if (sine <= kAxisAngleTolerance && off_axis <= kAxisOffsetTolerance * size) return;
+    throw SceneError(
+        object_path(scene, i),
+        sine > kAxisAngleTolerance
+            ? "its axis is tilted by " + format(std::asin(std::min(1.0, sine)) * 180 / M_PI) +
+                  " degrees from the folded system's axis"
+            : "its centre lies " + format(off_axis) + " from the folded system's axis");
+}
+
+SystemElement make_element(const Scene& scene, int object) {
+    const auto* solid = dynamic_cast<const LensSolid*>(scene.objects[object].shape.get());
+    SystemElement e;
+    e.object = object;
+    e.path = object_path(scene, object);
+    e.name = scene.objects[object].name;
+    const Material& m = scene.material_of(object);
+    e.glass = m.glass.empty() ? m.index->describe() : m.glass;
+    e.index = m.index;
+    e.semi_diameter = 0.5 * solid->prescription().diameter;
+    return e;
+}
+
+void check_lens_faces(const Scene& scene, int i, const LensPrescription& p) {
+    for (const auto& face : {p.front, p.back}) {
+        if (!face->is_rotationally_symmetric()) {
+            throw SceneError(object_path(scene, i) + (face == p.front ? ".front" : ".back"),
+                             "a sag formula in x and y is not a surface of revolution; "
+                             "the lens bench measures rotationally symmetric systems");
+        }
+    }
+    if (!(scene.material_of(i).transparency > 0.0)) {
+        throw SceneError(object_path(scene, i) + ".material",
+                         "transparency is 0: light does not pass this lens");
+    }
+}
+
+// The lens group holding a mirror that the system is built from: the one `lens` belongs to,
+// else the first; none when no group holds a mirror (or `lens` is in none that does).
+std::optional<int> folded_group(const Scene& scene, std::optional<int> lens) {
+    std::optional<int> first;
+    for (const SceneObject& o : scene.objects) {
+        if (o.type != ObjectType::Mirror || o.source < 0) continue;
+        if (lens && scene.objects[*lens].source == o.source) return o.source;
+        if (!first) first = o.source;
+    }
+    if (lens) return std::nullopt;
+    return first;
+}
+
+// A folded system: the group's elements in its order, the direction of travel turning at
+// each mirror.
+OpticalSystem build_folded_system(const Scene& scene, int group) {
+    OpticalSystem system;
+    std::vector<int> sequence;
+    for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
+        if (scene.objects[i].source == group) {
+            sequence.push_back(i);
+        } else {
+            system.ignored.push_back(describe_object(scene, i) +
+                                     ": not in the folded system of objects[" +
+                                     std::to_string(group) + "]");
+        }
+    }
+    // Every element of a group shares the group's axis; the first one met starts the system.
+    const SceneObject& first = scene.objects[sequence.front()];
+    Vec3 axis, start;
+    double size = 0.0;
+    for (int i : sequence) {
+        if (const auto* m = dynamic_cast<const MirrorSurface*>(scene.objects[i].shape.get())) {
+            size = std::max(size, m->prescription().diameter);
+        } else if (const auto* l = dynamic_cast<const LensSolid*>(scene.objects[i].shape.get())) {
+            size = std::max(size, l->prescription().diameter);
+        }
+    }
+    if (const auto* m = dynamic_cast<const MirrorSurface*>(first.shape.get())) {
+        axis = m->prescription().axis;
+        start = m->prescription().vertex;
+    } else {
+        const LensPrescription& p = dynamic_cast<const LensSolid&>(*first.shape).prescription();
+        axis = p.axis;
+        start = p.centre - p.axis * (0.5 * p.thickness);
+    }
+    system.origin = start;
+    system.frame = Frame::from_axis(axis);
+    double travel = 1.0;
+    for (int i : sequence) {
+        const SceneObject& o = scene.objects[i];
+        if (const auto* m = dynamic_cast<const MirrorSurface*>(o.shape.get())) {
+            const MirrorPrescription& p = m->prescription();
+            check_on_axis(scene, i, p.axis, p.vertex, axis, start, size);
+            if (!p.surface->is_rotationally_symmetric()) {
+                throw SceneError(object_path(scene, i) + ".mirror",
+                                 "a sag formula in x and y is not a surface of revolution; "
+                                 "the lens bench measures rotationally symmetric systems");
+            }
+            SystemSurface s;
+            s.shape = p.surface;
+            s.orientation = dot(p.axis, axis) > 0 ? 1.0 : -1.0;
+            s.z = dot(p.vertex - start, axis);
+            s.travel = travel;
+            s.mirror = true;
+            s.semi_diameter = 0.5 * p.diameter;
+            s.hole_semi_diameter = 0.5 * p.hole_diameter;
+            s.span = intersect_span(*p.surface, s.semi_diameter);
+            s.aim_span = measure_aim_span(*p.surface, s.semi_diameter);
+            const VertexSag vertex = p.surface->vertex_sag(s.semi_diameter);
+            s.curvature = s.orientation * vertex.curvature;
+            s.a4 = s.orientation * vertex.a4;
+            s.label = object_path(scene, i) + " (mirror)";
+            system.surfaces.push_back(s);
+            travel = -travel;
+            continue;
+        }
+        const auto* solid = dynamic_cast<const LensSolid*>(o.shape.get());
+        if (!solid) continue;  // a group holds lenses and mirrors only
+        const LensPrescription& p = solid->prescription();
+        check_on_axis(scene, i, p.axis, p.centre, axis, start, size);
+        check_lens_faces(scene, i, p);
+        if (scene.material_of(i).grin) {
+            throw SceneError(object_path(scene, i) + ".material",
+                             "a gradient index in a system with mirrors is not measured by the "
+                             "bench");
+        }
+        const double orientation = dot(p.axis, axis) > 0 ? 1.0 : -1.0;
+        const double zc = dot(p.centre - start, axis);
+        const double z_front = zc - orientation * 0.5 * p.thickness;
+        const double z_back = zc + orientation * 0.5 * p.thickness;
+        const bool forward = orientation * travel > 0;
+        Placed placed{
+            i, solid, orientation, forward ? z_front : z_back, forward ? z_back : z_front, travel};
+        system.elements.push_back(make_element(scene, i));
+        add_surfaces(placed, static_cast<int>(system.elements.size()) - 1, system);
+    }
+    return system;
+}
+
 }  // namespace
 
-double OpticalSystem::n_before(size_t i, double nm) const {
-    return index_at(surfaces[i].element_before, {0, 0, surfaces[i].z}, nm);
-}
-
-double OpticalSystem::n_after(size_t i, double nm) const {
-    return index_at(surfaces[i].element_after, {0, 0, surfaces[i].z}, nm);
-}
-
-double OpticalSystem::index_at(int element, const Vec3& p, double nm) const {
-    if (element < 0) return kOutsideIor;
-    const SystemElement& e = elements[element];
-    if (!e.grin) return e.index->n(nm);
-    // As the renderer scales a profile: n(p, lambda) = n(p) n(lambda) / n_d (scene/material.h).
-    const double scale = e.index->n(nm) / e.index->n(kLineD);
-    return scale * e.grin->index(to_world(p) - e.grin_centre);
-}
-
-bool OpticalSystem::has_grin() const {
-    return std::any_of(elements.begin(), elements.end(),
-                       [](const SystemElement& e) { return e.grin != nullptr; });
-}
-
-double OpticalSystem::max_semi_diameter() const {
-    double a = 0.0;
-    for (const SystemElement& e : elements) a = std::max(a, e.semi_diameter);
-    return a;
-}
-
 OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) {
+    if (lens && (*lens < 0 || *lens >= static_cast<int>(scene.objects.size()))) {
+        throw SceneError("objects", "is not a lens");
+    }
+    if (const std::optional<int> group = folded_group(scene, lens)) {
+        return build_folded_system(scene, *group);
+    }
     std::vector<int> lenses;
     OpticalSystem system;
     for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
@@ -248,17 +371,7 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
             why << " (all lenses must share one axis; pick one system with --lens NAME)";
             throw SceneError(object_path(scene, i), why.str());
         }
-        for (const auto& face : {p.front, p.back}) {
-            if (!face->is_rotationally_symmetric()) {
-                throw SceneError(object_path(scene, i) + (face == p.front ? ".front" : ".back"),
-                                 "a sag formula in x and y is not a surface of revolution; "
-                                 "the lens bench measures rotationally symmetric systems");
-            }
-        }
-        if (!(scene.material_of(i).transparency > 0.0)) {
-            throw SceneError(object_path(scene, i) + ".material",
-                             "transparency is 0: light does not pass this lens");
-        }
+        check_lens_faces(scene, i, p);
         const double orientation = dot(p.axis, axis) > 0 ? 1.0 : -1.0;
         const double zc = dot(offset, axis);
         placed.push_back({i, solid, orientation, zc - 0.5 * p.thickness, zc + 0.5 * p.thickness});
@@ -272,63 +385,12 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
     for (Placed& p : placed) {
         p.z_first -= z0;
         p.z_last -= z0;
-        SystemElement e;
-        e.object = p.object;
-        e.path = object_path(scene, p.object);
-        e.name = scene.objects[p.object].name;
-        const Material& m = scene.material_of(p.object);
-        e.glass = m.glass.empty() ? m.index->describe() : m.glass;
-        e.index = m.index;
-        if (m.grin) attach_grin(scene, p.object, axis, centre, e);
-        e.semi_diameter = 0.5 * p.lens->prescription().diameter;
+        SystemElement e = make_element(scene, p.object);
+        if (scene.material_of(p.object).grin) attach_grin(scene, p.object, axis, centre, e);
         system.elements.push_back(e);
         add_surfaces(p, static_cast<int>(system.elements.size()) - 1, system);
     }
     return system;
-}
-
-std::optional<int> surface_at(const OpticalSystem& system, double z) {
-    const double length = std::max(system.last_vertex(), system.max_semi_diameter());
-    for (size_t i = 0; i < system.surfaces.size(); ++i) {
-        if (std::abs(system.surfaces[i].z - z) <= 1e-9 * length) return static_cast<int>(i);
-    }
-    return std::nullopt;
-}
-
-int insert_air_stop(OpticalSystem& system, double z, double semi_diameter) {
-    for (const SystemElement& e : system.elements) {
-        if (z > system.surfaces[e.first_surface].z && z < system.surfaces[e.last_surface].z) {
-            throw SceneError(e.path, "the aperture stop at " + format(z) +
-                                         " from the first vertex lies inside this lens");
-        }
-    }
-    SystemSurface stop;
-    stop.shape = std::make_shared<FlatSurface>();
-    stop.z = z;
-    stop.semi_diameter = semi_diameter;
-    stop.span = intersect_span(*stop.shape, semi_diameter);
-    stop.aim_span = intersect_span(*stop.shape, 2.0 * semi_diameter);
-    stop.label = "stop";
-    const auto at = std::find_if(system.surfaces.begin(), system.surfaces.end(),
-                                 [&](const SystemSurface& s) { return s.z > z; });
-    const int index = static_cast<int>(at - system.surfaces.begin());
-    system.surfaces.insert(at, stop);
-    for (SystemElement& e : system.elements) {
-        if (e.first_surface >= index) ++e.first_surface;
-        if (e.last_surface >= index) ++e.last_surface;
-    }
-    return index;
-}
-
-void check_wavelength(const OpticalSystem& system, double nm, const std::string& what) {
-    for (const SystemElement& e : system.elements) {
-        if (nm < e.index->min_nm || nm > e.index->max_nm) {
-            throw SceneError(e.path + ".material",
-                             what + " " + format(nm) + " nm is outside the validity range " +
-                                 format(e.index->min_nm) + "-" + format(e.index->max_nm) +
-                                 " nm of " + e.glass);
-        }
-    }
 }
 
 }  // namespace lenslab

@@ -2,12 +2,20 @@
 // A coaxial lens system read off a scene: the lens objects that share one optical axis,
 // ordered along it, as the sequence of refracting surfaces a beam meets, with the medium on
 // each side. Two lenses whose facing surfaces coincide (same shape at the same place: a
-// cemented doublet) meet at one glass-to-glass interface. Everything the optical bench
-// measures (paraxial.h, real_ray.h, aberrations.h) works on this model.
+// cemented doublet) meet at one glass-to-glass interface. A lens group holding mirrors is a
+// folded system: its elements in the group's order, the light turning back along the axis
+// at each mirror. Everything the optical bench measures (paraxial.h, real_ray.h,
+// aberrations.h) works on this model.
 //
-// System coordinates: z along the axis in the direction light travels, 0 at the first
+// System coordinates: z along the axis in the direction light enters, 0 at the first
 // vertex; (x, y) across it in the frame `frame` (y is the meridional direction of the
 // diagrams). Lengths are in the scene's unit (millimetres for lens prescriptions).
+//
+// Behind an odd number of mirrors light travels towards -z. The paraxial traces then use
+// the signed index convention of Zemax and CODE V (Welford, Aberrations of Optical Systems,
+// section 2.3): n_before / n_after carry the sign of the direction of travel, so a mirror is
+// a surface with n' = -n, distances stay in system z and slopes are dy/dz; the formulas for
+// refracting systems then hold unchanged.
 
 #include <memory>
 #include <optional>
@@ -23,12 +31,16 @@
 
 namespace lenslab {
 
-// One refracting interface of the system.
+// One refracting interface or mirror of the system.
 struct SystemSurface {
     std::shared_ptr<const LensSurface> shape;
     double orientation = 1.0;  // +1: the shape's local +z is the system's +z; -1: reversed
     double z = 0.0;            // axial position of the vertex
+    double travel = 1.0;       // +1: light arrives travelling towards +z; -1: towards -z
+    bool mirror = false;       // reflects (the medium is the same on both sides)
     double semi_diameter = 0.0;
+    double hole_semi_diameter = 0.0;  // a mirror's central hole: light nearer the axis passes
+                                      // it by and is lost to the sequence
     SurfaceSpan span;  // intersect_span over `semi_diameter` (bounds for the numerical surfaces)
     // Measured over twice the semi-diameter (within the shape's own limit): ray aiming traces
     // past the rims, as Zemax's does, so a stop point outside a lens's clear aperture can
@@ -41,6 +53,8 @@ struct SystemSurface {
     std::string label;  // "objects[0].front", "objects[0].back = objects[1].front"
 
     bool cemented() const { return element_before >= 0 && element_after >= 0; }
+    // The direction of travel behind the surface.
+    double travel_after() const { return mirror ? -travel : travel; }
     // Axial position of the surface at distance r from the axis.
     double z_at(double r) const { return z + orientation * shape->sag(r); }
 };
@@ -72,14 +86,20 @@ struct OpticalSystem {
     std::vector<std::string> ignored;
 
     double last_vertex() const { return surfaces.back().z; }
+    // The direction of travel in image space (+1: towards +z).
+    double image_travel() const { return surfaces.back().travel_after(); }
+    bool folded() const;  // holds a mirror
+    // The system's size: its length along the axis or its largest diameter.
+    double scale() const;
     // Refractive index of the medium in front of / behind surface i at a wavelength (in air),
-    // at the surface's vertex (where a gradient index is, on the axis).
+    // at the surface's vertex (where a gradient index is, on the axis), signed by the
+    // direction of travel there (negative behind an odd number of mirrors).
     double n_before(size_t i, double nm) const;
     double n_after(size_t i, double nm) const;
-    // Index of element `element` (-1: the outside) at point p (system coordinates).
+    // Index of element `element` (-1: the outside) at point p (system coordinates), unsigned.
     double index_at(int element, const Vec3& p, double nm) const;
     bool has_grin() const;
-    // Largest semi-diameter of any element: the scale of the system across the axis.
+    // Largest semi-diameter of any element or mirror: the scale of the system across the axis.
     double max_semi_diameter() const;
 
     Vec3 to_world(const Vec3& p) const { return origin + frame.to_world(p); }
@@ -90,18 +110,22 @@ struct OpticalSystem {
 // Builds the system from every lens in `scene`; they must share one axis. When `lens` (an
 // index into scene.objects) is given, from that lens and the lenses on its axis, leaving
 // the others out. The axis points the way the chosen (or first) lens's `axis` does: light
-// enters through its front face. Throws SceneError whose path names the offending object
-// ("objects[3]"): no lens, lenses off the common axis, overlapping lenses, an opaque lens,
-// a face that is not a surface of revolution, a gradient index not symmetric about the axis.
+// enters through its front face. A lens group holding a mirror is built alone, in its own
+// order (the one `lens` belongs to, else the first such group), the other objects listed
+// as ignored. Throws SceneError whose path names the offending object ("objects[3]"): no
+// lens, lenses off the common axis, overlapping lenses, an opaque lens, a face that is not
+// a surface of revolution, a gradient index not symmetric about the axis or in a folded
+// system. (system_builder.cpp)
 OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens = {});
 
 // The surface whose vertex lies at axial position z (within 1e-9 of the system's length),
-// if any.
+// if any; in a folded system, the first such.
 std::optional<int> surface_at(const OpticalSystem& system, double z);
 
 // Puts an aperture stop in air at axial position z: a flat surface of rim `semi_diameter`
 // with air on both sides (labelled "stop"), which bends no ray and stops those outside its
-// rim. Returns its index. Throws SceneError when z lies inside a lens.
+// rim. Returns its index. Throws SceneError when z lies inside a lens, or when the system is
+// folded (z alone does not say on which pass).
 int insert_air_stop(OpticalSystem& system, double z, double semi_diameter);
 
 // Refuses a wavelength outside a glass's published validity range; `what` names the

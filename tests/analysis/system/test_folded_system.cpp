@@ -1,0 +1,216 @@
+// Folded systems on the bench: lens groups with mirrors, the light turning back along the
+// axis at each. Every expected value comes from a closed form: the mirror's focal length R/2,
+// the exact axial crossing of a ray reflected by a sphere, the spherical aberration of a
+// conic mirror in proportion to (1 + k), the Cassegrain and Ritchey-Chretien formulas, the
+// Schmidt corrector's fourth-order profile.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "analysis/aberrations.h"
+#include "analysis/first_order.h"
+#include "analysis/paraxial.h"
+#include "analysis/real_ray.h"
+#include "analysis/seidel.h"
+#include "analysis/system/optical_system.h"
+#include "scene/scene_json.h"
+
+namespace lenslab {
+namespace {
+
+std::string number(double v) {
+    std::ostringstream s;
+    s.precision(17);
+    s << v;
+    return s.str();
+}
+
+std::string conic(double radius, double k) {
+    return R"({"shape": "conic", "radius": )" + number(radius) + R"(, "k": )" + number(k) + "}";
+}
+
+std::string mirror(const std::string& surface, double diameter, double gap, double hole = 0) {
+    return R"({"mirror": )" + surface + R"(, "diameter": )" + number(diameter) + R"(, "gap": )" +
+           number(gap) + R"(, "hole_diameter": )" + number(hole) +
+           R"(, "material": {"color": 0, "specular": 1}})";
+}
+
+Scene group_scene(const std::string& elements, double diameter) {
+    return parse_scene(R"({"objects": [{"type": "lens_group", "name": "telescope",
+        "vertex": [0, 0, 0], "axis": [0, 0, 1], "diameter": )" +
+                           number(diameter) + R"(, "elements": [)" + elements + "]}]}",
+                       "test", "", {.require_camera = false});
+}
+
+FirstOrder first_order_at(const OpticalSystem& system, int stop, double epd,
+                          std::vector<double> fields = {0}) {
+    FirstOrderOptions o;
+    o.wavelength_nm = kLineD;
+    o.stop = stop;
+    o.epd = epd;
+    o.fields = std::move(fields);
+    return first_order(system, paraxial_trace(system, kLineD), o);
+}
+
+// A concave sphere of radius R facing the light focuses at R/2 in front of it.
+TEST(FoldedSystem, AConcaveMirrorFocusesAtHalfItsRadiusInFrontOfIt) {
+    const Scene scene = group_scene(mirror(conic(-200, 0), 40, 100), 40);
+    const OpticalSystem system = build_optical_system(scene);
+    ASSERT_EQ(system.surfaces.size(), 1u);
+    EXPECT_TRUE(system.surfaces[0].mirror);
+    EXPECT_EQ(system.image_travel(), -1.0);
+    EXPECT_EQ(system.n_after(0, kLineD), -1.0);
+    const ParaxialResult p = paraxial_trace(system, kLineD);
+    EXPECT_NEAR(p.efl, 100.0, 1e-12);
+    EXPECT_NEAR(p.bfl, -100.0, 1e-12);  // signed along the axis, as Zemax writes it
+    EXPECT_NEAR(p.z_rear_focus, -100.0, 1e-12);
+}
+
+// A ray parallel to the axis at height h meets a sphere of radius R where sin(theta) = h/R
+// and, reflected, crosses the axis R / (2 cos(theta)) from the centre of curvature.
+TEST(FoldedSystem, ARayReflectedByASphereCrossesTheAxisWhereGeometrySays) {
+    const double R = 200.0;
+    const Scene scene = group_scene(mirror(conic(-R, 0), 120, 100), 120);
+    const OpticalSystem system = build_optical_system(scene);
+    for (double h : {5.0, 30.0, 55.0}) {
+        const RealRay r = trace_real_ray(system, {{0, h, -50}, {0, 0, 1}}, kLineD);
+        ASSERT_EQ(r.fate, RayFate::Passed);
+        ASSERT_LT(r.direction.z, 0.0);
+        const double z_cross = r.exit_point().z - r.exit_point().y * r.direction.z / r.direction.y;
+        const double theta = std::asin(h / R);
+        EXPECT_NEAR(z_cross, -R + R / (2.0 * std::cos(theta)), 1e-10) << "h " << h;
+    }
+}
+
+// The third-order spherical aberration of a conic mirror with the stop on it is that of the
+// sphere times (1 + k) (Schroeder, Astronomical Optics, 2nd ed., section 5.3): none for the
+// paraboloid, whose real rays all meet at its focus.
+TEST(FoldedSystem, AConicMirrorsSphericalAberrationScalesWithOnePlusK) {
+    const double R = -400.0;
+    const auto s1 = [&](double k) {
+        const Scene scene = group_scene(mirror(conic(R, k), 100, 150), 100);
+        const OpticalSystem system = build_optical_system(scene);
+        return seidel_sums(system, first_order_at(system, 0, 100), kLineF, kLineC).total.spherical;
+    };
+    const double sphere = s1(0.0);
+    EXPECT_NE(sphere, 0.0);
+    // For the sphere, S_I = -2 y^4 c^3 with y the marginal height 50 and c = 1/R.
+    EXPECT_NEAR(sphere, -2.0 * std::pow(50.0, 4) / std::pow(R, 3), 1e-12);
+    for (double k : {-1.0, -0.5, -2.3, 0.7}) {
+        EXPECT_NEAR(s1(k), sphere * (1.0 + k), 1e-12 * std::abs(sphere)) << "k " << k;
+    }
+
+    const Scene paraboloid = group_scene(mirror(conic(R, -1), 100, 150), 100);
+    const OpticalSystem system = build_optical_system(paraboloid);
+    int lost = 0;
+    const auto rays = trace_collimated_beam(system, kLineD, 50.0, 8, &lost);
+    EXPECT_EQ(lost, 0);
+    const SpotDiagram spot = spot_at(rays, R / 2);
+    EXPECT_LT(spot.geometric_radius, 1e-11);
+}
+
+// A two-mirror telescope of focal length F, mirrors D apart and the focus B behind the
+// secondary: R1 = -2 D F / (F - B), R2 = -2 D B / (F - B - D), M = (F - B) / D. Conics: the
+// classical Cassegrain's paraboloid primary, or the Ritchey-Chretien's two hyperboloids
+// K1 = -1 - 2 B / (D M^3), K2 = -1 - 2 (M (2 M - 1) + B / D) / (M - 1)^3, free of
+// third-order spherical aberration and coma (Schroeder, Astronomical Optics, 2nd ed.,
+// section 6.2; the same formulas in Wilson, Reflecting Telescope Optics I, section 3.2).
+struct TwoMirror {
+    double F = 2000, D = 500, B = 700, aperture = 250;
+    double M() const { return (F - B) / D; }
+    double R1() const { return -2 * D * F / (F - B); }
+    double R2() const { return -2 * D * B / (F - B - D); }
+    double K1_rc() const { return -1 - 2 * B / (D * std::pow(M(), 3)); }
+    double K2_rc() const { return -1 - 2 * (M() * (2 * M() - 1) + B / D) / std::pow(M() - 1, 3); }
+    Scene scene(double k1, double k2) const {
+        return group_scene(
+            mirror(conic(R1(), k1), aperture, D, 60) + "," + mirror(conic(R2(), k2), 70, B),
+            aperture);
+    }
+};
+
+TEST(FoldedSystem, TheCassegrainsFocalLengthIsTheFormulas) {
+    const TwoMirror t;
+    const OpticalSystem system = build_optical_system(t.scene(-1, 0));
+    ASSERT_EQ(system.surfaces.size(), 2u);
+    EXPECT_EQ(system.image_travel(), 1.0);  // twice reflected: along the axis again
+    const ParaxialResult p = paraxial_trace(system, kLineD);
+    EXPECT_NEAR(p.efl, t.F, 1e-6);
+    // The focus B behind the secondary: B - D behind the primary's vertex.
+    EXPECT_NEAR(p.z_rear_focus, t.B - t.D, 1e-6);
+    const FirstOrder f = first_order_at(system, 0, t.aperture);
+    EXPECT_NEAR(f.f_number, t.F / t.aperture, 1e-6);
+}
+
+TEST(FoldedSystem, TheRitcheyChretienIsFreeOfSphericalAberrationAndComa) {
+    const TwoMirror t;
+    const OpticalSystem rc = build_optical_system(t.scene(t.K1_rc(), t.K2_rc()));
+    const SeidelSums s =
+        seidel_sums(rc, first_order_at(rc, 0, t.aperture, {0.2}), kLineF, kLineC).total;
+    const OpticalSystem cassegrain =
+        build_optical_system(t.scene(-1, -std::pow((t.M() + 1) / (t.M() - 1), 2)));
+    const SeidelSums c =
+        seidel_sums(cassegrain, first_order_at(cassegrain, 0, t.aperture, {0.2}), kLineF, kLineC)
+            .total;
+    // The classical Cassegrain (its secondary the hyperboloid that images the primary's focus
+    // perfectly) has no spherical aberration but the coma of the paraboloid.
+    EXPECT_NEAR(c.spherical, 0.0, 1e-12);
+    EXPECT_GT(std::abs(c.coma), 1e-6);
+    EXPECT_NEAR(s.spherical, 0.0, 1e-9 * std::abs(c.coma));
+    EXPECT_NEAR(s.coma, 0.0, 1e-9 * std::abs(c.coma));
+}
+
+// A Schmidt camera: a sphere of radius R with a thin plate at its centre of curvature, the
+// plate's fourth-order profile A4 r^4 cancelling the sphere's spherical aberration,
+// |A4| = |c|^3 / (4 (n - 1)) (Schroeder, Astronomical Optics, 2nd ed., section 7.2: the plate
+// z = r^4 / (4 (n - 1) R^3)); with the stop and the aspheric face at the centre of curvature,
+// the sphere has no coma or astigmatism either. The aspheric face is the plate's back (glass
+// to air, so its sign is the front's turned) typed as a sag formula; flat on the axis, the
+// plate leaves the focal length R / 2.
+TEST(FoldedSystem, TheSchmidtCamerasPlateCancelsTheSpheresAberrations) {
+    const double R = -200.0, n = 1.5;
+    const double c = 1.0 / R;
+    const double A4 = -c * c * c / (4.0 * (n - 1.0));
+    const auto scene = [&](bool plate) {
+        const std::string back = plate
+                                     ? R"({"shape": "sag", "formula": ")" + number(A4) + R"(*r^4"})"
+                                     : R"({"shape": "flat"})";
+        return group_scene(R"({"front": {"shape": "flat"}, "back": )" + back + R"(,
+            "thickness": 5, "gap": 200, "diameter": 60,
+            "material": {"transparency": 1, "ior": 1.5}},)" +
+                               mirror(conic(R, 0), 100, 100),
+                           60);
+    };
+    const OpticalSystem schmidt = build_optical_system(scene(true));
+    ASSERT_EQ(schmidt.surfaces.size(), 3u);
+    EXPECT_NEAR(schmidt.surfaces[1].a4, A4, 1e-9 * std::abs(A4));
+    const ParaxialResult p = paraxial_trace(schmidt, kLineD);
+    EXPECT_NEAR(p.efl, -R / 2, 1e-9);
+    EXPECT_NEAR(p.z_rear_focus, 205.0 + R / 2, 1e-9);
+    const FirstOrder f = first_order_at(schmidt, 1, 50, {3.0});
+    EXPECT_NEAR(f.f_number, 2.0, 1e-9);
+    const SeidelSums s = seidel_sums(schmidt, f, kLineF, kLineC).total;
+    const OpticalSystem bare = build_optical_system(scene(false));
+    const SeidelSums b =
+        seidel_sums(bare, first_order_at(bare, 1, 50, {3.0}), kLineF, kLineC).total;
+    EXPECT_GT(std::abs(b.spherical), 1e-4);
+    EXPECT_NEAR(s.spherical, 0.0, 1e-9 * std::abs(b.spherical));
+    EXPECT_NEAR(s.coma, 0.0, 1e-9 * std::abs(b.spherical));
+    EXPECT_NEAR(s.astigmatism, 0.0, 1e-9 * std::abs(b.spherical));
+    EXPECT_NE(s.petzval, 0.0);  // the Schmidt's curved field
+
+    // Real rays: what the plate leaves at F/2 is fifth-order, a small part of the sphere's blur.
+    const auto rms = [&](const OpticalSystem& system) {
+        int lost = 0;
+        const auto rays = trace_collimated_beam(system, kLineD, 25.0, 8, &lost);
+        EXPECT_EQ(lost, 0);
+        return spot_at(rays, best_focus_z(rays, p.z_rear_focus)).rms_radius;
+    };
+    const double with_plate = rms(schmidt), without = rms(bare);
+    EXPECT_LT(with_plate, 0.1 * without) << with_plate << " against " << without;
+}
+
+}  // namespace
+}  // namespace lenslab

@@ -1,0 +1,117 @@
+// Mirrors in lens files (Zemax GLAS MIRROR, CODE V REFL): read into lens groups whose mirror
+// elements turn the light back, the files' negative thicknesses becoming distances along the
+// light's way, and written back to .zmx unchanged. The telescope is a Ritchey-Chretien typed
+// from the textbook formulas (Schroeder, Astronomical Optics, 2nd ed., section 6.2): F 2000,
+// mirrors D = 500 apart, focus B = 700 behind the secondary.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "analysis/analyze_request.h"
+#include "lensfile/lens_file.h"
+#include "lensfile/lens_file_text.h"
+#include "lensfile/lens_group_from_prescription.h"
+#include "lensfile/seq_reader.h"
+#include "lensfile/zmx_writer.h"
+#include "scene/scene_json.h"
+
+namespace lenslab {
+namespace {
+
+using json = nlohmann::json;
+
+std::string data(const std::string& name) {
+    return std::string(LENSLAB_SOURCE_DIR) + "/scenes/" + name;
+}
+
+double analysed_efl(const std::string& path) {
+    const Scene scene = parse_scene(R"({"objects": [{"type": "lens_file", "file": ")" + path +
+                                        R"(", "vertex": [0, 0, 0], "axis": [0, 0, 1]}]})",
+                                    "test", "", {.require_camera = false});
+    AnalyzeRequest request;
+    request.report_keys = {"efl"};
+    return analyze_report(scene, request)["efl"].get<double>();
+}
+
+TEST(LensFileMirrors, AZemaxTelescopesMirrorsBecomeMirrorElements) {
+    const ImportedLens lens = import_lens_file(data("ritchey_chretien.zmx"), "rc");
+    const json group = json(lens.group);
+    ASSERT_EQ(group["elements"].size(), 2u);
+    const json& primary = group["elements"][0];
+    const json& secondary = group["elements"][1];
+    EXPECT_EQ(primary["mirror"]["shape"], "conic");
+    EXPECT_DOUBLE_EQ(primary["mirror"]["radius"].get<double>(), 1.0 / -0.00065);
+    EXPECT_DOUBLE_EQ(primary["gap"].get<double>(), 500.0);  // DISZ -500: back along the axis
+    EXPECT_DOUBLE_EQ(primary["diameter"].get<double>(), 250.0);
+    EXPECT_DOUBLE_EQ(primary["hole_diameter"].get<double>(), 60.0);  // OBSC 0 30 on a mirror
+    EXPECT_DOUBLE_EQ(secondary["mirror"]["k"].get<double>(), -7.015625);
+    EXPECT_FALSE(secondary.contains("gap"));
+    EXPECT_DOUBLE_EQ(lens.bench["image_distance"].get<double>(), 700.0);
+    EXPECT_DOUBLE_EQ(lens.bench["stop_position"].get<double>(), 0.0);
+    EXPECT_NEAR(analysed_efl(data("ritchey_chretien.zmx")), 2000.0, 1e-6);
+}
+
+TEST(LensFileMirrors, ATelescopeRoundTripsThroughZemaxUnchanged) {
+    const ImportedLens first = import_lens_file(data("ritchey_chretien.zmx"), "rc");
+    const json scene = json(imported_scene_json(first, "ritchey_chretien.zmx"));
+    const std::string zmx =
+        zmx_from_lens_object(scene["objects"][0], "objects[0]", json::object(), scene["bench"]);
+    EXPECT_NE(zmx.find("GLAS MIRROR"), std::string::npos);
+    EXPECT_NE(zmx.find("DISZ -500"), std::string::npos);
+    const auto out = std::filesystem::temp_directory_path() /
+                     ("lenslab_mirror_round_trip_" + std::to_string(::getpid()) + ".zmx");
+    std::ofstream(out) << zmx;
+    const ImportedLens second = import_lens_file(out.string(), "rc");
+    std::filesystem::remove(out);
+    EXPECT_EQ(first.group, second.group) << zmx;
+    EXPECT_EQ(first.bench, second.bench) << zmx;
+}
+
+ImportedLens seq_lens(const std::string& text) {
+    const std::vector<std::string> lines = decode_lens_file_lines(text, "test.seq");
+    return lens_group_from_prescription(read_seq(lines, "test.seq"), "test");
+}
+
+std::string seq_error(const std::string& text) {
+    try {
+        (void)seq_lens(text);
+    } catch (const LensFileError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// A lens behind a concave mirror, met on the way back: its thickness and the gaps negative in
+// the file, its faces signed along the axis.
+TEST(LensFileMirrors, ALensAfterAMirrorIsCrossedOnTheWayBack) {
+    const ImportedLens lens = seq_lens(
+        "EPD 20\nS -200 -60 REFL\n  CIR 15\nS -40 -4 N-BK7_SCHOTT\n  CIR 8\nS 40 -30\n  CIR 8\n"
+        "SI 0 0\n");
+    const json group = json(lens.group);
+    ASSERT_EQ(group["elements"].size(), 2u);
+    EXPECT_DOUBLE_EQ(group["elements"][0]["gap"].get<double>(), 60.0);
+    EXPECT_DOUBLE_EQ(group["elements"][1]["thickness"].get<double>(), 4.0);
+    EXPECT_DOUBLE_EQ(group["elements"][1]["front"]["radius"].get<double>(), -40.0);
+    EXPECT_DOUBLE_EQ(lens.bench["image_distance"].get<double>(), -30.0);
+}
+
+TEST(LensFileMirrors, WhatALensGroupCannotHoldIsRefusedWithItsLine) {
+    // A Mangin mirror: the mirror on the back of the glass.
+    EXPECT_EQ(seq_error("EPD 20\nS -300 5 N-BK7_SCHOTT\n  CIR 15\nS -400 -5 REFL\n  CIR 15\n"
+                        "S -300 -100\n  CIR 15\nSI 0 0\n")
+                  .rfind("test.seq:4: surface 2: a mirror on a glass face (a Mangin mirror", 0),
+              0u);
+    // A positive thickness after one mirror puts the next surface behind the light.
+    EXPECT_EQ(seq_error("EPD 20\nS -200 60 REFL\n  CIR 15\nS -40 -4 N-BK7_SCHOTT\n  CIR 8\n"
+                        "S 40 -30\n  CIR 8\nSI 0 0\n")
+                  .rfind("test.seq:2: an air space of 60 after surface 1 (light travels back "
+                         "after a mirror: must be < 0)",
+                         0),
+              0u);
+}
+
+}  // namespace
+}  // namespace lenslab
