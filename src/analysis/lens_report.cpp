@@ -299,8 +299,11 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
     std::ostringstream out;
     const ParaxialResult& p = r.paraxial;
     const double last = system.last_vertex();
-    out << system.elements.size() << (system.elements.size() == 1 ? " lens, " : " lenses, ")
-        << system.surfaces.size() << " surfaces on one axis; lengths in the scene's unit "
+    const auto mirrors = std::count_if(system.surfaces.begin(), system.surfaces.end(),
+                                       [](const SystemSurface& s) { return s.mirror; });
+    out << system.elements.size() << (system.elements.size() == 1 ? " lens, " : " lenses, ");
+    if (mirrors > 0) out << mirrors << (mirrors == 1 ? " mirror, " : " mirrors, ");
+    out << system.surfaces.size() << " surfaces on one axis; lengths in the scene's unit "
         << "(mm for lens prescriptions), light travelling along +z from the first vertex"
         << (system.folded() ? " and turning back at each mirror (indices signed by the way "
                               "light travels)"
