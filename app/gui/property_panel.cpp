@@ -811,6 +811,8 @@ void PropertyPanel::build_lens_group() {
             add_heading(tr("Element %1: mirror").arg(i + 1));
             build_surface(tr("Mirror surface"), e + "mirror");
             add_param(mirror.param("hole_diameter"), e);
+            add_param(mirror.param("tilt_x"), e);
+            add_param(mirror.param("tilt_y"), e);
             if (i + 1 < elements->size()) add_param(mirror.param("gap"), e);
             build_material_ref(tr("Coating"), e + "material");
             continue;

@@ -28,6 +28,7 @@ struct GroupElement {
     const json* back = nullptr;    // nullptr: cemented to the next element's front
     const json* mirror = nullptr;  // a mirror element's surface (no front, back, thickness)
     double hole_diameter = 0;
+    double tilt_x = 0, tilt_y = 0;  // degrees
     int material = 0;
 };
 
@@ -116,6 +117,18 @@ ElementSpec declare_mirror_element() {
                            .because("a central hole, as a Cassegrain primary's")
                            .describe("diameter of a central hole (0: none)")
                            .in_editor("Hole diameter"));
+    s.params.push_back(number_param("tilt_x", 0)
+                           .above(-90)
+                           .below(90)
+                           .describe("degrees its normal is turned about the local x axis, "
+                                     "+z towards -y: a fold; the axis follows the reflection")
+                           .in_editor("Tilt about x (degrees)"));
+    s.params.push_back(number_param("tilt_y", 0)
+                           .above(-90)
+                           .below(90)
+                           .describe("degrees its normal is turned about the local y axis, "
+                                     "+z towards +x (not with `tilt_x`)")
+                           .in_editor("Tilt about y (degrees)"));
     s.params.push_back(nested_param(ParamKind::Object, "material")
                            .needed()
                            .as_written("string or object")
@@ -130,15 +143,33 @@ bool is_mirror_element(const json& e) {
            (e.contains("mirror") || (!e.contains("front") && !e.contains("thickness")));
 }
 
+// Turns v about the unit axis k by `angle` radians, right-handed (Rodrigues' formula).
+Vec3 turned(const Vec3& v, const Vec3& k, double angle) {
+    return v * std::cos(angle) + cross(k, v) * std::sin(angle) +
+           k * (dot(k, v) * (1.0 - std::cos(angle)));
+}
+
+// Where the elements stand: the vertex light meets next, the axis frame (faces are signed
+// along w) and the way light travels along w.
+struct Placement {
+    Vec3 at;
+    Frame frame;
+    double travel = 1;
+    bool turned = false;  // a tilted mirror has turned the frame: x axes are given explicitly
+};
+
 // A mirror element as a mirror object: its vertex on the axis, its surface signed along the
-// group's axis (the mirror's own axis then points along it, whichever side the light comes
-// from: the mirror reflects on both).
-std::shared_ptr<const Shape> group_mirror(const GroupElement& e, const Vec3& at, const Vec3& axis,
+// axis frame (the mirror's own axis then points along it, or turned by its tilt, whichever
+// side the light comes from: the mirror reflects on both).
+std::shared_ptr<const Shape> group_mirror(const GroupElement& e, const Placement& at,
                                           const Vec3& x_axis) {
+    const Frame& f = at.frame;
+    const Vec3 hinge = e.tilt_x != 0 ? f.u : f.v;
+    const double tilt = (e.tilt_x != 0 ? e.tilt_x : e.tilt_y) * M_PI / 180.0;
     MirrorPrescription p;
-    p.vertex = at;
-    p.axis = axis;
-    p.x_axis = x_axis;
+    p.vertex = at.at;
+    p.axis = turned(f.w, hinge, tilt);
+    p.x_axis = at.turned || tilt != 0 ? turned(f.u, hinge, tilt) : x_axis;
     p.diameter = e.diameter;
     p.hole_diameter = e.hole_diameter;
     const double a = 0.5 * e.diameter;
@@ -150,6 +181,21 @@ std::shared_ptr<const Shape> group_mirror(const GroupElement& e, const Vec3& at,
                                                  ")");
     }
     return std::make_shared<MirrorSurface>(std::move(p));
+}
+
+// After a mirror: the light turns back along the axis, and a tilted mirror turns the axis
+// frame by twice its tilt (the reflected axis is then -w, as Zemax's coordinate break, mirror,
+// coordinate break and CODE V's BEN leave it).
+void reflect_placement(const GroupElement& e, Placement& at) {
+    if (e.tilt_x != 0 || e.tilt_y != 0) {
+        const Vec3 hinge = e.tilt_x != 0 ? at.frame.u : at.frame.v;
+        const double twice = 2.0 * (e.tilt_x != 0 ? e.tilt_x : e.tilt_y) * M_PI / 180.0;
+        at.frame = {turned(at.frame.u, hinge, twice), turned(at.frame.v, hinge, twice),
+                    turned(at.frame.w, hinge, twice)};
+        at.turned = true;
+    }
+    at.travel = -at.travel;
+    at.at = at.at + at.frame.w * (at.travel * e.gap);
 }
 
 // Refuses element `e` and the next one when they overlap anywhere over their common aperture
@@ -225,6 +271,18 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
         if (is_mirror) {
             e.mirror = &er.require("mirror");
             e.hole_diameter = er.real("hole_diameter");
+            e.tilt_x = er.real("tilt_x");
+            e.tilt_y = er.real("tilt_y");
+            if (i == 0 && (e.tilt_x != 0 || e.tilt_y != 0)) {
+                throw SceneError(er.child_path(e.tilt_x != 0 ? "tilt_x" : "tilt_y"),
+                                 "the first element cannot be tilted: the group's axis is the "
+                                 "light's way in (begin with the element before the fold)");
+            }
+            if (e.tilt_x != 0 && e.tilt_y != 0) {
+                throw SceneError(er.child_path("tilt_y"),
+                                 "a mirror folds the axis about one of its axes: give tilt_x or "
+                                 "tilt_y, not both");
+            }
             if (!(e.hole_diameter < e.diameter)) {
                 throw SceneError(er.child_path("hole_diameter"),
                                  "must be less than the mirror's diameter (" +
@@ -261,8 +319,12 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
 
     std::vector<SceneObject> objects;
     std::optional<LensPrescription> previous;  // the element before, while not cemented to it
-    double z = 0;                              // axial position of the vertex light meets next
-    double travel = 1;  // +1: light travels along `axis`; -1: against it, after a mirror
+    Placement at;
+    at.at = vertex;
+    const Vec3 x_perp = x_axis - axis * dot(x_axis, axis);
+    at.frame = length(x_perp) > 1e-12
+                   ? Frame{normalize(x_perp), cross(axis, normalize(x_perp)), axis}
+                   : Frame::from_axis(axis);
     for (size_t i = 0; i < specs.size(); ++i) {
         const GroupElement& e = specs[i];
         SceneObject o;
@@ -272,27 +334,27 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
         o.photon_target = photon_target;
         if (e.mirror) {
             o.type = ObjectType::Mirror;
-            o.shape = group_mirror(e, vertex + axis * z, axis, x_axis);
+            o.shape = group_mirror(e, at, x_axis);
             objects.push_back(std::move(o));
             previous.reset();
-            travel = -travel;
-            z += travel * e.gap;
+            reflect_placement(e, at);
             continue;
         }
+        const double travel = at.travel;
         const json& back = e.back ? *e.back : *specs[i + 1].front;
         const std::string back_path = e.back ? e.path + ".back" : specs[i + 1].path + ".front";
         LensPrescription p;
-        p.centre = vertex + axis * (z + travel * 0.5 * e.thickness);
-        p.axis = axis;
+        p.centre = at.at + at.frame.w * (travel * 0.5 * e.thickness);
+        p.axis = at.frame.w;
         p.thickness = e.thickness;
         p.diameter = e.diameter;
-        // Faces are signed along `axis` whichever way light crosses them; against it, the face
-        // met first is the solid's back.
+        // Faces are signed along the axis whichever way light crosses them; against it, the
+        // face met first is the solid's back.
         const auto front = read_lens_surface(*e.front, e.path + ".front", 0.5 * e.diameter);
         const auto rear = read_lens_surface(back, back_path, 0.5 * e.diameter);
         p.front = travel > 0 ? front : rear;
         p.back = travel > 0 ? rear : front;
-        p.x_axis = x_axis;
+        p.x_axis = at.turned ? at.frame.u : x_axis;
         if (auto problem = LensSolid::check_prescription(p)) {
             const bool first_face = (problem->field == "front") == (travel > 0);
             const std::string field = problem->field == "x_axis" ? r.child_path("x_axis")
@@ -307,7 +369,7 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
         o.type = ObjectType::Lens;
         o.shape = std::make_shared<LensSolid>(std::move(p));
         objects.push_back(std::move(o));
-        z += travel * (e.thickness + e.gap);
+        at.at = at.at + at.frame.w * (travel * (e.thickness + e.gap));
     }
     return objects;
 }

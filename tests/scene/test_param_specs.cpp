@@ -186,9 +186,11 @@ std::vector<Case> cases() {
                                  {"thickness", 0.5},
                                  {"material", glass_free}}}}}};
     json with_mirror_group = with_group;
-    with_mirror_group["objects"][0]["elements"] = {
+    // A lens, then the mirror (a first element cannot be tilted).
+    with_mirror_group["objects"][0]["elements"][0]["gap"] = 1;
+    with_mirror_group["objects"][0]["elements"].push_back(
         {{"mirror", {{"shape", "conic"}, {"radius", -4}, {"k", -1}}},
-         {"material", {{"color", 0}, {"specular", 1}}}}};
+         {"material", {{"color", 0}, {"specular", 1}}}});
     json with_detector = with_disc;
     with_detector["objects"][0]["detector"] = json::object();
     const std::vector<std::string> common = lenslab::object_common_spec().keys();
@@ -292,8 +294,8 @@ std::vector<Case> cases() {
         {lenslab::lens_group_mirror_spec,
          "Each mirror element:",
          with_mirror_group,
-         "/objects/0/elements/0",
-         "objects[0].elements[0]",
+         "/objects/0/elements/1",
+         "objects[0].elements[1]",
          {}},
         {lenslab::detector_spec,
          "`\"detector\": true` takes every default; an object sets any of:",

@@ -10,11 +10,14 @@
 #include <sstream>
 
 #include "analysis/aberrations.h"
+#include "analysis/field_beam.h"
 #include "analysis/first_order.h"
 #include "analysis/paraxial.h"
 #include "analysis/real_ray.h"
 #include "analysis/seidel.h"
 #include "analysis/system/optical_system.h"
+#include "geometry/lens/lens_solid.h"
+#include "optics/refraction.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {
@@ -210,6 +213,136 @@ TEST(FoldedSystem, TheSchmidtCamerasPlateCancelsTheSpheresAberrations) {
     };
     const double with_plate = rms(schmidt), without = rms(bare);
     EXPECT_LT(with_plate, 0.1 * without) << with_plate << " against " << without;
+}
+
+// An independent trace through the scene as it stands in space (Scene::intersect, the law
+// of reflection at mirrors, Snell's law in and out of the constant-index lenses): where the
+// ray goes when nothing is straightened or sequenced.
+struct WorldRay {
+    Vec3 point, direction;
+    int hits = 0;
+};
+
+WorldRay trace_in_space(const Scene& scene, Vec3 p, Vec3 d) {
+    WorldRay out;
+    SceneHit hit;
+    int inside = -1;  // the lens the ray is in
+    while (scene.intersect({p, d}, 1e-9, INFINITY, hit)) {
+        ++out.hits;
+        p = hit.surface.point;
+        const Vec3& n = hit.surface.normal;
+        if (scene.objects[hit.object].type == ObjectType::Mirror) {
+            d = reflect(d, n);
+            continue;
+        }
+        const double glass = scene.material_of(hit.object).index->n(kLineD);
+        const bool entering = inside < 0;
+        const auto bent = refract(d, entering ? n : -n, entering ? 1.0 / glass : glass);
+        if (!bent) break;
+        d = *bent;
+        inside = entering ? hit.object : -1;
+    }
+    out.point = p;
+    out.direction = d;
+    return out;
+}
+
+std::string lens(double r1, double r2, double thickness, double gap) {
+    return R"({"front": )" + conic(r1, 0) + R"(, "back": )" + conic(r2, 0) + R"(, "thickness": )" +
+           number(thickness) + R"(, "gap": )" + number(gap) +
+           R"(, "diameter": 20, "material": {"transparency": 1, "ior": 1.5}})";
+}
+
+std::string fold(double gap, double tilt_x) {
+    return R"({"mirror": {"shape": "flat"}, "tilt_x": )" + number(tilt_x) + R"(, "gap": )" +
+           number(gap) + R"(, "diameter": 40, "material": {"color": 0, "specular": 1}})";
+}
+
+// A flat mirror at 45 degrees between two lenses turns the axis by 90 degrees; the bench
+// measures the folded system as the straight one, and the rays through the scene as it
+// stands in space agree. Behind the mirror light travels against the turned axis, so the
+// second lens's radii change sign, as in a Zemax file.
+TEST(FoldedSystem, AFoldMirrorBetweenTwoLensesGivesTheStraightSystemsSpots) {
+    const Scene straight = group_scene(lens(50, -50, 5, 50) + "," + lens(80, -80, 4, 40), 20);
+    const Scene folded =
+        group_scene(lens(50, -50, 5, 20) + "," + fold(30, 45) + "," + lens(-80, 80, 4, 40), 20);
+    // In space the second lens stands 30 along +y from the mirror, its axis along y.
+    const auto& second = dynamic_cast<const LensSolid&>(*folded.objects[2].shape).prescription();
+    EXPECT_NEAR(second.centre.y, 32.0, 1e-12);
+    EXPECT_NEAR(second.centre.z, 25.0, 1e-12);
+    EXPECT_NEAR(std::abs(second.axis.y), 1.0, 1e-15);
+
+    const OpticalSystem a = build_optical_system(straight);
+    const OpticalSystem b = build_optical_system(folded);
+    ASSERT_EQ(b.surfaces.size(), 5u);
+    const ParaxialResult pa = paraxial_trace(a, kLineD), pb = paraxial_trace(b, kLineD);
+    EXPECT_NEAR(pb.efl, pa.efl, 1e-9 * pa.efl);
+    EXPECT_NEAR(pb.bfl, -pa.bfl, 1e-9 * pa.efl);  // signed along the straightened axis
+    for (double field : {0.0, 1.5}) {
+        const FirstOrder fa = first_order_at(a, 0, 12, {field});
+        const FirstOrder fb = first_order_at(b, 0, 12, {field});
+        const double za = a.last_vertex() + fa.image_position;
+        const double zb = b.last_vertex() + fb.image_position;
+        const SpotDiagram sa = spot_at(trace_field_beam(a, fa, field, kLineD, 6).rays, za);
+        const SpotDiagram sb = spot_at(trace_field_beam(b, fb, field, kLineD, 6).rays, zb);
+        SCOPED_TRACE(field);
+        ASSERT_EQ(sa.points.size(), sb.points.size());
+        EXPECT_NEAR(sb.rms_radius, sa.rms_radius, 1e-9 * sa.rms_radius + 1e-12);
+        EXPECT_NEAR(sb.centroid_y, sa.centroid_y, 1e-9);
+        for (size_t k = 0; k < sa.points.size(); ++k) {
+            EXPECT_NEAR(sb.points[k].x, sa.points[k].x, 1e-9);
+            EXPECT_NEAR(sb.points[k].y, sa.points[k].y, 1e-9);
+        }
+    }
+
+    // Through the scene in space: a ray 4 above the axis leaves the second lens heading up
+    // (+y) and crosses the turned axis (x = 0, z = 25) as far past the lens, and as steeply,
+    // as the bench's ray crosses the straight axis.
+    const RealRay r = trace_real_ray(b, {{0, 4, -10}, {0, 0, 1}}, kLineD);
+    ASSERT_EQ(r.fate, RayFate::Passed);
+    const double bench_cross = r.exit_point().z - r.exit_point().y * r.direction.z / r.direction.y;
+    const WorldRay w = trace_in_space(folded, {0, 4, -10}, {0, 0, 1});
+    EXPECT_EQ(w.hits, 5);
+    ASSERT_GT(w.direction.y, 0.0);
+    const double t = (25.0 - w.point.z) / w.direction.z;
+    const double world_cross = w.point.y + t * w.direction.y;
+    // The straightened last vertex lies at z = b.last_vertex(); in space at y = 34 (mirror at
+    // z 25, 30 along +y to the lens, 4 thick).
+    EXPECT_NEAR(world_cross - 34.0, -(bench_cross - b.last_vertex()), 1e-9);
+    EXPECT_NEAR(std::abs(w.direction.z / w.direction.y), std::abs(r.direction.y / r.direction.z),
+                1e-12);
+}
+
+// A Newtonian telescope: a paraboloid of focal length 1000 (F/5) and a flat diagonal at 45
+// degrees 850 in front of it, the focus turned 150 out to the side. The paraboloid's focus is
+// perfect on the axis: the spot far inside the Airy radius 1.22 lambda N (diffraction-
+// limited), and every ray meets at the one point in space the geometry puts the focus at.
+TEST(FoldedSystem, ANewtoniansFocusIsDiffractionLimitedOnTheAxisAndOutToTheSide) {
+    const Scene newtonian =
+        group_scene(mirror(conic(-2000, -1), 200, 850) + "," +
+                        R"({"mirror": {"shape": "flat"}, "tilt_x": -45, "gap": 150,
+                            "diameter": 60, "material": {"color": 0, "specular": 1}})",
+                    200);
+    const OpticalSystem system = build_optical_system(newtonian);
+    const ParaxialResult p = paraxial_trace(system, kLineD);
+    EXPECT_NEAR(p.efl, 1000.0, 1e-6);
+    // Straightened: the diagonal at z = -850 sends the light back along +z, 150 to the focus.
+    EXPECT_NEAR(p.z_rear_focus, -700.0, 1e-9);
+    const FirstOrder f = first_order_at(system, 0, 200);
+    EXPECT_NEAR(f.f_number, 5.0, 1e-6);
+    const SpotDiagram spot = spot_at(trace_field_beam(system, f, 0.0, kLineD, 8).rays, -700.0);
+    const double airy = 1.22 * kLineD * 1e-6 * 5.0;
+    EXPECT_LT(spot.geometric_radius, 1e-6 * airy);
+
+    // In space the focus is at (0, 150, -850): the diagonal sends the light up (+y).
+    for (double h : {20.0, 60.0, 99.0}) {
+        const WorldRay w = trace_in_space(newtonian, {0, h, -100}, {0, 0, 1});
+        ASSERT_EQ(w.hits, 2);
+        const double t = (150.0 - w.point.y) / w.direction.y;
+        const Vec3 at = w.point + w.direction * t;
+        EXPECT_NEAR(at.x, 0.0, 1e-9) << h;
+        EXPECT_NEAR(at.z, -850.0, 1e-9) << h;
+    }
 }
 
 }  // namespace
