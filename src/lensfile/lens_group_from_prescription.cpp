@@ -27,6 +27,7 @@ public:
 
     ImportedLens build(const std::string& name) {
         check_ends();
+        take_folds();
         ImportedLens out;
         estimate_semi_diameters(out.warnings);
         ordered_json elements = ordered_json::array();
@@ -268,11 +269,56 @@ private:
             }
             e["hole_diameter"] = 2.0 * hole * m_mm;
         }
+        if (s.tilt_x != 0.0 || s.tilt_y != 0.0) {
+            if (s.tilt_x != 0.0) e["tilt_x"] = s.tilt_x;
+            if (s.tilt_y != 0.0) e["tilt_y"] = s.tilt_y;
+        }
         e["material"] = {{"color", 0}, {"specular", 1}};
         group_diameter = std::max(group_diameter, 2.0 * sd);
         air_after(i, i, -travel, e, out);
         out.element_lines.push_back(s.line);
         return e;
+    }
+
+    // Zemax writes a fold mirror as a coordinate break tilting the frame about x or y, the
+    // mirror, and a coordinate break of the same tilt (the frame then turned by twice the
+    // tilt; Zemax's fold mirror tool writes it so): the mirror's tilt_x or tilt_y, the space
+    // after the second break the mirror's. Any other decentre or tilt is refused.
+    void take_folds() {
+        const size_t image = m_s.size() - 1;
+        for (size_t i = 1; i < image; ++i) {
+            const LensFileSurface& b = m_s[i];
+            if (!b.coordinate_break || !turns(b)) continue;
+            const double* t = b.break_parameters;
+            const bool fold = i + 2 < image && m_s[i + 1].mirror && m_s[i + 2].coordinate_break &&
+                              t[0] == 0 && t[1] == 0 && t[4] == 0 && (t[2] == 0) != (t[3] == 0) &&
+                              b.thickness == 0 && m_s[i + 1].thickness == 0 &&
+                              std::equal(t, t + 5, m_s[i + 2].break_parameters);
+            if (!fold) {
+                static const char* const kWhat[] = {"a decentre in x", "a decentre in y",
+                                                    "a tilt about x", "a tilt about y",
+                                                    "a tilt about z"};
+                const int k =
+                    static_cast<int>(std::find_if(t, t + 5, [](double v) { return v != 0; }) - t);
+                refuse(b.break_line ? b.break_line : b.line,
+                       std::string("coordinate break with ") + kWhat[k] +
+                           ": a lens group holds elements on one axis, folded only by a mirror "
+                           "between two coordinate breaks of the same tilt about x or y");
+            }
+            LensFileSurface& mirror = m_s[i + 1];
+            mirror.tilt_x = t[2];
+            mirror.tilt_y = t[3];
+            mirror.thickness = m_s[i + 2].thickness;
+            m_s[i + 2].thickness = 0.0;
+            std::fill(m_s[i].break_parameters, m_s[i].break_parameters + 6, 0.0);
+            std::fill(m_s[i + 2].break_parameters, m_s[i + 2].break_parameters + 6, 0.0);
+            i += 2;
+        }
+    }
+
+    static bool turns(const LensFileSurface& s) {
+        return std::any_of(s.break_parameters, s.break_parameters + 5,
+                           [](double v) { return v != 0.0; });
     }
 
     // A surface with air on both sides bends no light: left out, said when it is not flat.
@@ -385,8 +431,9 @@ private:
     }
 
     const LensFilePrescription& m_p;
-    const std::vector<LensFileSurface>& m_s;
+    std::vector<LensFileSurface> m_s;  // the file's, its folds taken into the mirrors
     double m_mm;
+    size_t m_first_optical = 0;             // the first glass or mirror surface
     std::map<size_t, double> m_s_estimate;  // estimated semi-diameters, in the file's unit
 };
 

@@ -33,6 +33,14 @@ struct LensFileSurface {
     // thicknesses after it negative as the file writes them; the medium stays the one before.
     bool mirror = false;
     double hole_semi_diameter = 0.0;  // a central hole in a mirror (CODE V CIR HOL)
+    // A mirror's tilt about the local x or y axis (degrees, right-handed): a fold, the axis
+    // frame turning by twice the tilt behind it.
+    double tilt_x = 0.0, tilt_y = 0.0;
+    // A Zemax coordinate break (TYPE COORDBRK): PARM 1-6, decentre x and y, tilts about x, y
+    // and z (degrees), the order flag. Only the fold around a mirror is represented.
+    bool coordinate_break = false;
+    double break_parameters[6] = {0, 0, 0, 0, 0, 0};
+    int break_line = 0;
 };
 
 struct LensFilePrescription {

@@ -230,6 +230,7 @@ private:
                    "' cannot be represented (lenslab reads STANDARD, EVENASPH and COORDBRK)");
         }
         m_type = t;
+        surface().coordinate_break = t == "COORDBRK";
     }
 
     void parameter() {
@@ -242,14 +243,9 @@ private:
             return;
         }
         if (m_type == "COORDBRK" && i >= 1 && i <= 6) {
-            if (v != 0.0 && i <= 5) {
-                static const char* const kWhat[] = {"a decentre in x", "a decentre in y",
-                                                    "a tilt about x", "a tilt about y",
-                                                    "a tilt about z"};
-                refuse(std::string("coordinate break with ") + kWhat[i - 1] +
-                       ": a lens_group holds elements on one straight axis and cannot represent "
-                       "it");
-            }
+            // Kept for the lens group builder, which takes the fold around a mirror.
+            s.break_parameters[i - 1] = v;
+            if (v != 0.0 && !s.break_line) s.break_line = m_line;
             return;
         }
         if (v != 0.0) {

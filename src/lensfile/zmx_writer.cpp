@@ -41,6 +41,9 @@ struct ZmxSurface {
     double semi_diameter = 0;
     bool stop = false;
     double hole = 0;  // a mirror's central hole, written as a central obscuration
+    // A coordinate break's tilts about x and y (a fold around a mirror), when `fold` is set.
+    bool fold = false;
+    double tilt_x = 0, tilt_y = 0;
 };
 
 struct ZmxElement {
@@ -48,6 +51,7 @@ struct ZmxElement {
     json front, back;  // back null: cemented to the next
     json mirror;       // a mirror element's surface (front and back null)
     double thickness = 0, gap = 0, diameter = 0, hole_diameter = 0;
+    double tilt_x = 0, tilt_y = 0;  // a fold mirror's
     json material;
 };
 
@@ -73,8 +77,16 @@ public:
             if (!e.mirror.is_null()) {
                 travel = -travel;
                 const double after = i + 1 < m_elements.size() ? travel * e.gap : image_distance();
-                surfaces.push_back({e.mirror, e.path + ".mirror", after, "MIRROR", 0.5 * e.diameter,
-                                    false, 0.5 * e.hole_diameter});
+                const bool tilted = e.tilt_x != 0 || e.tilt_y != 0;
+                // A fold: coordinate break, mirror, coordinate break of the same tilt.
+                ZmxSurface fold{json(), e.path, 0, "", 0, false, 0, true, e.tilt_x, e.tilt_y};
+                if (tilted) surfaces.push_back(fold);
+                surfaces.push_back({e.mirror, e.path + ".mirror", tilted ? 0 : after, "MIRROR",
+                                    0.5 * e.diameter, false, 0.5 * e.hole_diameter});
+                if (tilted) {
+                    fold.after = after;
+                    surfaces.push_back(fold);
+                }
                 continue;
             }
             double sd = 0.5 * e.diameter;
@@ -146,6 +158,8 @@ private:
             if (j.contains("mirror")) {
                 e.mirror = j.at("mirror");
                 e.hole_diameter = j.value("hole_diameter", 0.0);
+                e.tilt_x = j.value("tilt_x", 0.0);
+                e.tilt_y = j.value("tilt_y", 0.0);
                 m_elements.push_back(e);
                 continue;
             }
@@ -198,11 +212,18 @@ private:
     }
 
     void surface(std::string& out, int n, const ZmxSurface& z) {
+        line(out, "SURF " + std::to_string(n));
+        if (z.stop) line(out, "  STOP");
+        if (z.fold) {
+            line(out, "  TYPE COORDBRK");
+            line(out, "  PARM 3 " + shortest_number_text(z.tilt_x));
+            line(out, "  PARM 4 " + shortest_number_text(z.tilt_y));
+            line(out, "  DISZ " + shortest_number_text(z.after));
+            return;
+        }
         const json& s = z.shape;
         const std::string& path = z.path;
         const std::string shape = s.value("shape", std::string());
-        line(out, "SURF " + std::to_string(n));
-        if (z.stop) line(out, "  STOP");
         line(out, std::string("  TYPE ") + (shape == "asphere" ? "EVENASPH" : "STANDARD"));
         if (shape == "flat") {
             line(out, "  CURV 0");

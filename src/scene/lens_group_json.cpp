@@ -273,11 +273,6 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
             e.hole_diameter = er.real("hole_diameter");
             e.tilt_x = er.real("tilt_x");
             e.tilt_y = er.real("tilt_y");
-            if (i == 0 && (e.tilt_x != 0 || e.tilt_y != 0)) {
-                throw SceneError(er.child_path(e.tilt_x != 0 ? "tilt_x" : "tilt_y"),
-                                 "the first element cannot be tilted: the group's axis is the "
-                                 "light's way in (begin with the element before the fold)");
-            }
             if (e.tilt_x != 0 && e.tilt_y != 0) {
                 throw SceneError(er.child_path("tilt_y"),
                                  "a mirror folds the axis about one of its axes: give tilt_x or "
@@ -330,6 +325,7 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
         SceneObject o;
         o.name = e.name;
         o.group = name;
+        o.group_axis = axis;
         o.material = e.material;
         o.photon_target = photon_target;
         if (e.mirror) {

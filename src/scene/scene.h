@@ -41,6 +41,7 @@ struct SceneObject {
     int source = -1;    // index of the scene file's `objects` entry it came from (a lens group
                         // makes several objects)
     std::string group;  // the lens group's name, for its elements
+    Vec3 group_axis;    // the axis light enters the lens group along (zero: not in a group)
     // Set when the object is a detector (triangles, discs and rectangles only).
     std::optional<DetectorSettings> detector;
     // Whether photons are aimed at it (photon_targets.h); unset: when its material is

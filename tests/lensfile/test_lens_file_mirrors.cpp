@@ -113,5 +113,49 @@ TEST(LensFileMirrors, WhatALensGroupCannotHoldIsRefusedWithItsLine) {
               0u);
 }
 
+// Zemax writes a fold mirror as a coordinate break, the mirror and a coordinate break of the
+// same tilt (a periscope from the open rayoptics-like test files: two flat mirrors at 45 and
+// -45 degrees about x): read as tilted mirror elements, written back the same way.
+TEST(LensFileMirrors, ZemaxFoldMirrorsRoundTripAsTiltedMirrors) {
+    const std::string file =
+        std::string(LENSLAB_SOURCE_DIR) + "/tests/lensfile/data/public/zx_ol_fold_simple.zmx";
+    const ImportedLens first = import_lens_file(file, "periscope");
+    const json group = json(first.group);
+    ASSERT_EQ(group["elements"].size(), 2u);
+    EXPECT_EQ(group["elements"][0]["tilt_x"], 45.0);
+    EXPECT_EQ(group["elements"][0]["gap"], 50.0);
+    EXPECT_EQ(group["elements"][1]["tilt_x"], -45.0);
+    const json scene = json(imported_scene_json(first, file));
+    const std::string zmx =
+        zmx_from_lens_object(scene["objects"][0], "objects[0]", json::object(), scene["bench"]);
+    EXPECT_NE(zmx.find("TYPE COORDBRK\n  PARM 3 45\n  PARM 4 0\n  DISZ 0"), std::string::npos)
+        << zmx;
+    const auto out = std::filesystem::temp_directory_path() /
+                     ("lenslab_fold_round_trip_" + std::to_string(::getpid()) + ".zmx");
+    std::ofstream(out) << zmx;
+    const ImportedLens second = import_lens_file(out.string(), "periscope");
+    std::filesystem::remove(out);
+    EXPECT_EQ(first.group, second.group) << zmx;
+    EXPECT_EQ(first.bench, second.bench) << zmx;
+}
+
+// Other coordinate breaks are refused with their line.
+TEST(LensFileMirrors, ACoordinateBreakThatIsNotAFoldIsRefused) {
+    EXPECT_THROW(
+        {
+            try {
+                (void)import_lens_file(std::string(LENSLAB_SOURCE_DIR) +
+                                           "/tests/lensfile/data/public/zx_sk_cooke_tilt.zmx",
+                                       "tilted");
+            } catch (const LensFileError& e) {
+                EXPECT_NE(std::string(e.what()).find(":121: coordinate break with a decentre in x"),
+                          std::string::npos)
+                    << e.what();
+                throw;
+            }
+        },
+        LensFileError);
+}
+
 }  // namespace
 }  // namespace lenslab

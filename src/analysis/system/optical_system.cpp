@@ -78,34 +78,52 @@ std::optional<int> surface_at(const OpticalSystem& system, double z) {
 }
 
 int insert_air_stop(OpticalSystem& system, double z, double semi_diameter) {
-    if (system.folded()) {
-        throw SceneError("--stop",
-                         "an aperture stop in air cannot be placed by its axial "
-                         "position in a system with mirrors (the light passes that "
-                         "position more than once); put the stop on a surface");
-    }
     for (const SystemElement& e : system.elements) {
-        if (z > system.surfaces[e.first_surface].z && z < system.surfaces[e.last_surface].z) {
+        const double a = system.surfaces[e.first_surface].z;
+        const double b = system.surfaces[e.last_surface].z;
+        if (z > std::min(a, b) && z < std::max(a, b)) {
             throw SceneError(e.path, "the aperture stop at " + stop_number(z) +
                                          " from the first vertex lies inside this lens");
         }
     }
+    // The first place along the light's way where it crosses the plane z in air: in front of
+    // the first surface, or in a space between two (a folded system crosses a plane more than
+    // once; the first crossing is taken).
+    size_t index = system.surfaces.size();
+    double travel = 1.0;
+    if (z <= system.surfaces.front().z) {
+        index = 0;
+    } else {
+        for (size_t k = 0; k < system.surfaces.size(); ++k) {
+            const SystemSurface& s = system.surfaces[k];
+            travel = s.travel_after();
+            const bool last = k + 1 == system.surfaces.size();
+            const double next = last ? travel * INFINITY : system.surfaces[k + 1].z;
+            if (s.element_after < 0 && (z - s.z) * travel >= 0 && (next - z) * travel > 0) {
+                index = k + 1;
+                break;
+            }
+        }
+    }
+    if (index == system.surfaces.size() && index > 0 &&
+        !((z - system.surfaces.back().z) * system.image_travel() >= 0)) {
+        throw SceneError("--stop", "the light never crosses the aperture stop's plane at " +
+                                       stop_number(z) + " in air");
+    }
     SystemSurface stop;
     stop.shape = std::make_shared<FlatSurface>();
     stop.z = z;
+    stop.travel = index == 0 ? 1.0 : system.surfaces[index - 1].travel_after();
     stop.semi_diameter = semi_diameter;
     stop.span = intersect_span(*stop.shape, semi_diameter);
     stop.aim_span = intersect_span(*stop.shape, 2.0 * semi_diameter);
     stop.label = "stop";
-    const auto at = std::find_if(system.surfaces.begin(), system.surfaces.end(),
-                                 [&](const SystemSurface& s) { return s.z > z; });
-    const int index = static_cast<int>(at - system.surfaces.begin());
-    system.surfaces.insert(at, stop);
+    system.surfaces.insert(system.surfaces.begin() + static_cast<long>(index), stop);
     for (SystemElement& e : system.elements) {
-        if (e.first_surface >= index) ++e.first_surface;
-        if (e.last_surface >= index) ++e.last_surface;
+        if (e.first_surface >= static_cast<int>(index)) ++e.first_surface;
+        if (e.last_surface >= static_cast<int>(index)) ++e.last_surface;
     }
-    return index;
+    return static_cast<int>(index);
 }
 
 void check_wavelength(const OpticalSystem& system, double nm, const std::string& what) {

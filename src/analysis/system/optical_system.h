@@ -124,8 +124,9 @@ std::optional<int> surface_at(const OpticalSystem& system, double z);
 
 // Puts an aperture stop in air at axial position z: a flat surface of rim `semi_diameter`
 // with air on both sides (labelled "stop"), which bends no ray and stops those outside its
-// rim. Returns its index. Throws SceneError when z lies inside a lens, or when the system is
-// folded (z alone does not say on which pass).
+// rim, where the light first crosses that plane in air (a folded system crosses a plane more
+// than once). Returns its index. Throws SceneError when z lies inside a lens or the light
+// never crosses it.
 int insert_air_stop(OpticalSystem& system, double z, double semi_diameter);
 
 // Refuses a wavelength outside a glass's published validity range; `what` names the

@@ -294,7 +294,8 @@ OpticalSystem build_folded_system(const Scene& scene, int group) {
         }
     }
     if (const auto* m = dynamic_cast<const MirrorSurface*>(first.shape.get())) {
-        axis = m->prescription().axis;
+        // A first mirror may be a fold, tilted from the axis the light comes in along.
+        axis = length(first.group_axis) > 0 ? first.group_axis : m->prescription().axis;
         start = m->prescription().vertex;
     } else {
         const LensPrescription& p = dynamic_cast<const LensSolid&>(*first.shape).prescription();
