@@ -92,6 +92,16 @@ std::string lens_text_from_utf16(const std::string& bytes, size_t start, bool bi
     return out;
 }
 
+// Whether the bytes can be ISO-8859-1 text: no control byte but tab, line and page breaks.
+bool lens_text_latin1_like(const std::string& bytes) {
+    for (const char ch : bytes) {
+        const auto b = static_cast<unsigned char>(ch);
+        if ((b < 0x20 && b != '\t' && b != '\n' && b != '\r' && b != '\f') || b == 0x7F)
+            return false;
+    }
+    return true;
+}
+
 // Checks UTF-8 (RFC 3629: no overlong forms, no surrogates, nothing above U+10FFFF).
 void lens_text_check_utf8(const std::string& text, size_t start, const std::string& file) {
     int line = 1;
@@ -176,7 +186,16 @@ std::vector<std::string> decode_lens_file_lines(const std::string& bytes, const 
         return lens_text_split(lens_text_from_utf16(bytes, 0, true, file), file);
     }
     const size_t start = at(0) == 0xEF && at(1) == 0xBB && at(2) == 0xBF ? 3 : 0;
-    lens_text_check_utf8(bytes, start, file);
+    try {
+        lens_text_check_utf8(bytes, start, file);
+    } catch (const LensFileError&) {
+        // Older files and some vendors' downloads are ISO-8859-1 (a title's "Ø" as 0xD8): text
+        // with no control bytes is read so; anything else is no text.
+        if (start != 0 || !lens_text_latin1_like(bytes)) throw;
+        std::string out;
+        for (const char c : bytes) lens_text_append_utf8(out, static_cast<unsigned char>(c));
+        return lens_text_split(out, file);
+    }
     return lens_text_split(bytes.substr(start), file);
 }
 

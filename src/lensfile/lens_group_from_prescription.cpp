@@ -360,11 +360,18 @@ private:
                                ": aspheric terms beyond r^16 cannot be represented");
         }
         if (s.radius == 0.0) {
-            if (!terms.empty()) {
-                refuse(s.line, prescription_surface_label(i) +
-                                   ": aspheric terms on a flat base cannot be represented");
+            if (terms.empty()) return {{"shape", "flat"}};
+            // A flat base with aspheric terms (a Schmidt plate's): lenslab's asphere needs a
+            // vertex radius, a sag formula in r does not.
+            std::string formula;
+            for (size_t m = 1; m < terms.size(); ++m) {
+                if (terms[m] == 0.0) continue;
+                char term[64];
+                std::snprintf(term, sizeof term, "%s(%.17g)*r^%zu", formula.empty() ? "" : " + ",
+                              terms[m] * std::pow(m_mm, 1.0 - 2.0 * (m + 1)), 2 * (m + 1));
+                formula += term;
             }
-            return {{"shape", "flat"}};
+            return {{"shape", "sag"}, {"formula", formula}};
         }
         const double radius = s.radius * m_mm;
         if (terms.empty()) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <optional>
 #include <set>
@@ -135,6 +136,21 @@ private:
         s.glass_line = m_line;
         s.model_nd = s.model_vd = 0.0;
         s.glass = upper == "AIR" ? "" : name;
+        if (const auto colon = name.find(':'); colon != std::string::npos) {
+            // n_d:V_d, as the open tools write a model glass (1.5168:64.17).
+            char* end = nullptr;
+            const double nd = std::strtod(name.c_str(), &end);
+            const bool nd_ok = end == name.c_str() + colon;
+            const double vd = std::strtod(name.c_str() + colon + 1, &end);
+            if (nd_ok && *end == '\0' && nd >= 1.0 && nd < 3.0 && vd > 0.0) {
+                s.glass.clear();
+                s.model_nd = nd;
+                s.model_vd = vd;
+                warn("glass '" + name + "' read as a model glass of n_d " + seq_number_text(nd) +
+                     " and V_d " + seq_number_text(vd));
+                return;
+            }
+        }
         if (!lens_file_glass_code_like(name)) return;
         // A glass code: CODE V's model glass by n_d and V_d.
         const std::optional<LensFileGlassCode> code = lens_file_glass_code(name);

@@ -252,5 +252,26 @@ TEST(LensFileDialects, ZemaxRayAimingIsKeptForTheBench) {
               "real");
 }
 
+// The open tools write a model glass as n_d:V_d; older files are ISO-8859-1; a flat base with
+// aspheric terms (a Schmidt plate) becomes a sag formula in r.
+TEST(LensFileDialects, ModelGlassesLatin1TextAndFlatBaseAspheres) {
+    const LensFilePrescription p = dialect_prescription(dialect_seq_singlet("1.5168:64.17"), "seq");
+    EXPECT_EQ(p.surfaces[1].glass, "");
+    EXPECT_EQ(p.surfaces[1].model_nd, 1.5168);
+    EXPECT_EQ(p.surfaces[1].model_vd, 64.17);
+    std::string latin1 = dialect_zmx_singlet("N-BK7");
+    latin1.insert(0, "NAME lens \xD8 25 mm\n");
+    EXPECT_EQ(dialect_prescription(latin1, "zmx").surfaces.size(), 4u);
+    const std::vector<std::string> lines = decode_lens_file_lines(latin1, "t.zmx");
+    EXPECT_EQ(lines[0], "NAME lens \u00D8 25 mm");
+    const ImportedLens plate = dialect_lens(
+        "EPD 10\nS 0 5 N-BK7_SCHOTT\n  CIR 10\n  ASP\n  K 0; A 2.5e-5; B -1e-8\nS 0 40\n"
+        "  CIR 10\nSI 0 0\n",
+        "seq");
+    const nlohmann::json front = nlohmann::json(plate.group)["elements"][0]["front"];
+    EXPECT_EQ(front["shape"], "sag");
+    EXPECT_EQ(front["formula"], "(2.5000000000000001e-05)*r^4 + (-1e-08)*r^6");
+}
+
 }  // namespace
 }  // namespace lenslab

@@ -69,6 +69,12 @@ const PublicLens kPublicLenses[] = {
     {"cv_schmidt_sph.seq", "Schmidt camera, plate terms commented out", 99.9997},
     {"cv_questar35.seq", "Maksutov-Cassegrain (Questar 3.5), inches, holes", 1282.6203},
     {"zx_hoo_ex03.zmx", "reflective objective (Handbook of Optics II, 18, ex. 3)", 80.0934},
+    {"zx_hoo_ex27.zmx", "catadioptric objective (HoO II, 18, ex. 27), flat-base aspheres", 24.6116},
+    // Model glasses written n_d:V_d, a file in ISO-8859-1.
+    {"cv_ol_asphere.seq", "asphere, model glass 1.5168:64.17", 60.3286},
+    {"cv_ol_fno.seq", "F-number aperture, model glass 1.5168:64.17", 98.4260},
+    {"zx_thor_al1815c.zmx", "vendor asphere (Thorlabs AL1815-C), ISO-8859-1", 14.7842, 15.0, 0.005,
+     "its NAME, f=15 mm (at its 780 nm)"},
 };
 
 double public_lens_efl(const std::string& file, double wavelength_nm) {
