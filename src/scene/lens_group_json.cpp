@@ -10,6 +10,7 @@
 #include "geometry/lens/mirror_surface.h"
 #include "scene/json_reader.h"
 #include "scene/limits.h"
+#include "scene/mirror_json.h"
 #include "scene/object_spec.h"
 #include "scene/spec_reader.h"
 #include "scene/surface_json.h"
@@ -172,14 +173,8 @@ std::shared_ptr<const Shape> group_mirror(const GroupElement& e, const Placement
     p.x_axis = at.turned || tilt != 0 ? turned(f.u, hinge, tilt) : x_axis;
     p.diameter = e.diameter;
     p.hole_diameter = e.hole_diameter;
-    const double a = 0.5 * e.diameter;
-    p.surface = read_lens_surface(*e.mirror, e.path + ".mirror", a);
-    if (a > p.surface->max_semi_diameter()) {
-        throw SceneError(e.path + ".mirror", p.surface->describe() + " cannot span the diameter " +
-                                                 format_number(e.diameter) + " (its largest is " +
-                                                 format_number(2 * p.surface->max_semi_diameter()) +
-                                                 ")");
-    }
+    p.surface = read_lens_surface(*e.mirror, e.path + ".mirror", 0.5 * e.diameter);
+    check_mirror_surface(*p.surface, e.diameter, e.path + ".mirror");
     return std::make_shared<MirrorSurface>(std::move(p));
 }
 

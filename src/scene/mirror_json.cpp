@@ -48,6 +48,23 @@ const ElementSpec& mirror_spec() {
     return spec;
 }
 
+void check_mirror_surface(const LensSurface& surface, double diameter, const std::string& path) {
+    const double a = 0.5 * diameter;
+    if (a > surface.max_semi_diameter()) {
+        throw SceneError(path, surface.describe() + " cannot span the diameter " +
+                                   format_number(diameter) + " (its largest is " +
+                                   format_number(2 * surface.max_semi_diameter()) + ")");
+    }
+    // A typed formula may be undefined somewhere on the disc: refused, not rendered with holes.
+    for (const DiscPoint& q : disc_sample_points(a, surface.is_rotationally_symmetric())) {
+        if (std::isfinite(surface.sag_xy(q.x, q.y))) continue;
+        const std::string why = surface.why_undefined(q.x, q.y);
+        throw SceneError(path, "sag undefined at (x, y) = (" + format_number(q.x) + ", " +
+                                   format_number(q.y) + ") inside the diameter" +
+                                   (why.empty() ? "" : " (" + why + ")"));
+    }
+}
+
 std::shared_ptr<const Shape> read_mirror(SpecReader& r) {
     MirrorPrescription p;
     p.vertex = r.point("vertex");
@@ -65,23 +82,8 @@ std::shared_ptr<const Shape> read_mirror(SpecReader& r) {
             throw SceneError(r.child_path("x_axis"), "must not be parallel to the axis");
         }
     }
-    const double a = 0.5 * p.diameter;
-    p.surface = read_lens_surface(r.require("surface"), r.child_path("surface"), a);
-    if (a > p.surface->max_semi_diameter()) {
-        throw SceneError(r.child_path("surface"),
-                         p.surface->describe() + " cannot span the diameter " +
-                             format_number(p.diameter) + " (its largest is " +
-                             format_number(2 * p.surface->max_semi_diameter()) + ")");
-    }
-    // A typed formula may be undefined somewhere on the disc: refused, not rendered with holes.
-    for (const DiscPoint& q : disc_sample_points(a, p.surface->is_rotationally_symmetric())) {
-        if (std::isfinite(p.surface->sag_xy(q.x, q.y))) continue;
-        const std::string why = p.surface->why_undefined(q.x, q.y);
-        throw SceneError(r.child_path("surface"), "sag undefined at (x, y) = (" +
-                                                      format_number(q.x) + ", " +
-                                                      format_number(q.y) + ") inside the diameter" +
-                                                      (why.empty() ? "" : " (" + why + ")"));
-    }
+    p.surface = read_lens_surface(r.require("surface"), r.child_path("surface"), 0.5 * p.diameter);
+    check_mirror_surface(*p.surface, p.diameter, r.child_path("surface"));
     return std::make_shared<MirrorSurface>(std::move(p));
 }
 
