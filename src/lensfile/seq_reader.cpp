@@ -80,6 +80,7 @@ public:
         }
         m_lens.primary_wavelength = m_lens.wavelengths_nm.empty() ? 0 : m_primary - 1;
         take_edge_apertures();
+        take_bends();
         settle_radius_mode();
         return std::move(m_lens);
     }
@@ -294,7 +295,19 @@ private:
             if (m_words.size() > 1) m_lens.title = m_words[1];
             return;
         }
-        if (c == "XDE" || c == "YDE" || c == "ZDE" || c == "ADE" || c == "BDE" || c == "CDE") {
+        if (c == "ADE" || c == "BDE") {
+            // A mirror's tilt, kept for BEN (a fold); settled in take_bends.
+            (void)surface();  // refuses a tilt before the first surface
+            const double v = number(1, "value");
+            if (v != 0.0) m_tilts.insert({m_lens.surfaces.size() - 1, Tilt{c, v, m_line}});
+            return;
+        }
+        if (c == "BEN") {
+            (void)surface();
+            m_bends.insert(m_lens.surfaces.size() - 1);
+            return;
+        }
+        if (c == "XDE" || c == "YDE" || c == "ZDE" || c == "CDE") {
             if (number(1, "value") != 0.0) {
                 refuse(c +
                        ": a decentre or tilt; a lens_group holds elements on one straight "
@@ -302,7 +315,7 @@ private:
             }
             return;
         }
-        if (c == "DEC" || c == "DAR" || c == "BEN" || c == "REV" || c == "RET") {
+        if (c == "DEC" || c == "DAR" || c == "REV" || c == "RET") {
             refuse(c +
                    ": a decentre or tilt; a lens_group holds elements on one straight axis "
                    "and cannot represent it");
@@ -364,6 +377,26 @@ private:
         }
     }
 
+    // A mirror tilted by ADE (about x) or BDE (about y) with BEN, the axis following the
+    // reflection, is a fold: the mirror's tilt_x or tilt_y (CODE V's positive alpha turns y
+    // towards z, so z towards -y, as lenslab's tilt_x). Any other tilt is refused at its line.
+    void take_bends() {
+        for (const auto& [j, tilt] : m_tilts) {
+            LensFileSurface& s = m_lens.surfaces[j];
+            if (!s.mirror || !m_bends.count(j)) {
+                throw LensFileError(m_file, tilt.line,
+                                    tilt.command +
+                                        ": a tilt; a lens group holds elements on one axis, "
+                                        "folded only by a tilted mirror with BEN");
+            }
+            (tilt.command == "ADE" ? s.tilt_x : s.tilt_y) = tilt.value;
+            if (s.tilt_x != 0.0 && s.tilt_y != 0.0) {
+                throw LensFileError(m_file, tilt.line,
+                                    "ADE and BDE on one mirror: lenslab folds about one axis");
+            }
+        }
+    }
+
     // Edge apertures stand in for the clear apertures the file does not give.
     void take_edge_apertures() {
         for (const auto& [j, edge] : m_edges) {
@@ -403,6 +436,13 @@ private:
     bool m_mode_given = false;          // an RDM was read
     std::map<size_t, double> m_unsure;  // surface: its number after S, before any RDM
     std::map<size_t, std::pair<double, int>> m_edges;  // surface: CIR EDG value, line
+    struct Tilt {
+        std::string command;  // ADE or BDE
+        double value = 0;
+        int line = 0;
+    };
+    std::multimap<size_t, Tilt> m_tilts;  // surface: its tilts
+    std::set<size_t> m_bends;             // surfaces with BEN
     int m_primary = 1;
 };
 

@@ -137,6 +137,22 @@ TEST(LensFileMirrors, ZemaxFoldMirrorsRoundTripAsTiltedMirrors) {
         << zmx;
 }
 
+// CODE V writes a fold as a mirror tilted by ADE (or BDE) with BEN; a tilt without BEN, or on
+// a lens, is refused at its line.
+TEST(LensFileMirrors, CodeVBendsAreFoldMirrors) {
+    const ImportedLens lens = import_lens_file(
+        std::string(LENSLAB_SOURCE_DIR) + "/tests/lensfile/data/public/cv_folded_lenses.seq",
+        "relay");
+    const json group = json(lens.group);
+    ASSERT_EQ(group["elements"].size(), 7u);
+    EXPECT_EQ(group["elements"][0]["tilt_x"], 60.0);
+    EXPECT_EQ(group["elements"][3]["tilt_x"], -60.0);
+    EXPECT_EQ(group["elements"][6]["tilt_x"], -45.0);
+    EXPECT_EQ(seq_error("EPD 2\nS 0 10\nS 0 -5 REFL\n  CIR 3\n  ADE 30\nSI 0 0\n"),
+              "test.seq:5: ADE: a tilt; a lens group holds elements on one axis, folded only by "
+              "a tilted mirror with BEN");
+}
+
 // Other coordinate breaks are refused with their line.
 TEST(LensFileMirrors, ACoordinateBreakThatIsNotAFoldIsRefused) {
     EXPECT_THROW(

@@ -73,6 +73,10 @@ const PublicLens kPublicLenses[] = {
     // Model glasses written n_d:V_d, a file in ISO-8859-1.
     {"cv_ol_asphere.seq", "asphere, model glass 1.5168:64.17", 60.3286},
     {"cv_ol_fno.seq", "F-number aperture, model glass 1.5168:64.17", 98.4260},
+    // Flat mirrors folding the axis (CODE V ADE with BEN): the relay of cv_unfolded_ape.seq
+    // folded three times (its glass split .3/.2 where that one's is .25/.25 between plane
+    // faces: the same paraxial system), so the unfolded file's traced EFL.
+    {"cv_folded_lenses.seq", "relay folded by three tilted mirrors (CODE V BEN)", 4423.1704},
     {"zx_thor_al1815c.zmx", "vendor asphere (Thorlabs AL1815-C), ISO-8859-1", 14.7842, 15.0, 0.005,
      "its NAME, f=15 mm (at its 780 nm)"},
 };
