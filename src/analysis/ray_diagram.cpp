@@ -105,12 +105,18 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     // a few system lengths so the lenses stay visible.
     const double size = system.scale();
     const double reach = 40.0 * size;
-    const double z_lo = std::max(std::min({z_start, p.z_front_focus, p.z_front_principal,
-                                           p.z_rear_principal, p.z_rear_focus}),
-                                 -reach);
-    const double z_hi = std::min(
+    double z_lo = std::max(std::min({z_start, p.z_front_focus, p.z_front_principal,
+                                     p.z_rear_principal, p.z_rear_focus}),
+                           -reach);
+    double z_hi = std::min(
         std::max({z_far, p.z_rear_focus, p.z_front_focus, p.z_front_principal, p.z_rear_principal}),
         z_far + reach);
+    if (system.folded()) {
+        // A telescope's principal planes and front focus lie far outside it: the view holds
+        // the mirrors, the lenses and the image (the points outside it are left out).
+        z_lo = std::min(z_start, p.z_rear_focus);
+        z_hi = std::max(z_far, p.z_rear_focus);
+    }
     const double span = z_hi - z_lo;
     d.z_min = z_lo - 0.04 * span;
     d.z_max = z_hi + 0.12 * span;
