@@ -11,6 +11,7 @@
 #include "analysis/curve_report.h"
 #include "analysis/diffraction_report.h"
 #include "analysis/fan_report.h"
+#include "analysis/field_map_report.h"
 #include "analysis/spot_report.h"
 #include "analyze_options.h"
 #include "commands.h"
@@ -74,6 +75,7 @@ int run(const AnalyzeArgs& args) {
         std::cout << "Not taken from the lens file: " << why << "\n";
     if (results.diffraction) std::cout << diffraction_table(*results.diffraction, a.psf, a.mtf);
     if (results.spots) std::cout << spots_table(system, *results.spots);
+    if (results.field_map) std::cout << field_map_table(system, *results.field_map);
     if (results.fans) std::cout << fans_table(system, *results.fans);
     if (results.curves) std::cout << field_curves_table(system, *results.curves);
     if (results.shift) std::cout << focal_shift_table(*results.shift);

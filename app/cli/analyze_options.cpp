@@ -88,6 +88,10 @@ void add_analyze_options(CLI::App& cmd, AnalyzeRequest& request) {
                    "Hexapolar rings of the spot diagrams' beams, Zemax's \"ray density\": 1 + "
                    "3 N (N + 1) rays (default 6: 127)")
         ->check(CLI::Range(1, 200));
+    cmd.add_option("--field-map", request.field_map,
+                   "RMS spot radius over an N x N grid of field points in x and y, out to the "
+                   "largest of --fields (odd N puts one on the axis)")
+        ->check(CLI::Range(1, 101));
     cmd.add_flag(
         "--fans", request.fans,
         "Transverse ray fans per field and wavelength, tangential (e_y against py) and sagittal "

@@ -115,6 +115,7 @@ def analyze(
     band: Optional[Sequence[float]] = ...,
     focal_shift_points: int = ...,
     wavelength_weights: Optional[Sequence[float]] = ...,
+    field_map: int = ...,
     report: Optional[Sequence[str]] = ...,
 ) -> Analysis: ...
 def analyze_many(
@@ -149,6 +150,7 @@ def analyze_many(
     band: Optional[Sequence[float]] = ...,
     focal_shift_points: int = ...,
     wavelength_weights: Optional[Sequence[float]] = ...,
+    field_map: int = ...,
     report: Optional[Sequence[str]] = ...,
 ) -> list[Analysis]: ...
 

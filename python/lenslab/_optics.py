@@ -117,6 +117,7 @@ def _request_json(*, wavelength: Optional[float] = None,
                   field_curve_points: int = 11, focal_shift: bool = False,
                   band: Optional[Sequence[float]] = None, focal_shift_points: int = 21,
                   wavelength_weights: Optional[Sequence[float]] = None,
+                  field_map: int = 0,
                   report: Optional[Sequence[str]] = None) -> str:
     """The options checked and as the JSON the compiled module takes (AnalyzeRequest's
     fields); bad ones raise ValueError."""
@@ -139,6 +140,7 @@ def _request_json(*, wavelength: Optional[float] = None,
         "fan_points": _whole("fan_points", fan_points, 2, 10001),
         "field_curve_points": _whole("field_curve_points", field_curve_points, 2, 1001),
         "focal_shift_points": _whole("focal_shift_points", focal_shift_points, 2, 10001),
+        "field_map": _whole("field_map", field_map, 0, 101),
     }
     for name, value in (("wavelength_nm", wavelength), ("aperture", aperture), ("epd", epd),
                         ("f_number", f_number), ("object_distance", object_distance)):
@@ -190,6 +192,7 @@ def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
             field_curve_points: int = 11, focal_shift: bool = False,
             band: Optional[Sequence[float]] = None, focal_shift_points: int = 21,
             wavelength_weights: Optional[Sequence[float]] = None,
+            field_map: int = 0,
             report: Optional[Sequence[str]] = None) -> Analysis:
     """The optical bench: `lenslab analyze FILE --json` with the same options (named as the
     command line's, "-" as "_"), as a lenslab.Analysis. report: only these top-level keys of

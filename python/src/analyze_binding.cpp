@@ -73,6 +73,7 @@ AnalyzeRequest request_from(const json& j) {
     take(j, "mtf_frequencies", a.mtf_frequencies);
     take(j, "spots", a.spots);
     take(j, "rings", a.rings);
+    take(j, "field_map", a.field_map);
     if (j.contains("image_distance") && !j["image_distance"].is_null())
         a.image_distance = j["image_distance"].get<double>();
     take(j, "wavelength_weights", a.wavelength_weights);

@@ -8,6 +8,7 @@
 #include "analysis/curve_report.h"
 #include "analysis/diffraction_report.h"
 #include "analysis/fan_report.h"
+#include "analysis/field_map_report.h"
 #include "analysis/lens_bench_defaults.h"
 #include "analysis/lens_lookup.h"
 #include "analysis/ray_diagram_image.h"
@@ -137,6 +138,21 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         if (a.image_distance) curve.image_z = system.last_vertex() + *a.image_distance;
         out.curves = field_curves(system, report.first_order, curve);
     }
+    if (a.field_map > 0) {
+        FieldMapOptions map;
+        for (double field : first.fields) map.max_field = std::max(map.max_field, std::abs(field));
+        if (!(map.max_field > 0)) {
+            throw AnalyzeRequestError(
+                "--field-map: the fields reach no further than the axis; give --fields (or "
+                "--field-heights) out to the edge of the field to map");
+        }
+        map.points = a.field_map;
+        map.wavelength_nm = report.first_order.wavelength_nm;
+        map.rings = a.rings;
+        map.image_z = system.last_vertex() +
+                      (a.image_distance ? *a.image_distance : report.first_order.image_position);
+        out.field_map = field_map(system, report.first_order, map);
+    }
     if (a.focal_shift) {
         FirstOrderOptions reference = first;
         reference.wavelength_nm = options.wavelength_nm;
@@ -176,8 +192,8 @@ AnalyzeRequest with_implied_tables(AnalyzeRequest a) {
 
 std::optional<std::string> figure_option_error(const AnalyzeRequest& a) {
     const std::vector<double>& weights = a.wavelength_weights;
-    if (a.image_distance && !a.spots && !a.fans && !a.field_curves) {
-        return "--image-distance: it places the image plane of --spots, --fans "
+    if (a.image_distance && !a.spots && !a.fans && !a.field_curves && a.field_map == 0) {
+        return "--image-distance: it places the image plane of --spots, --fans, --field-map "
                "and --field-curves, none of which was asked for";
     }
     if (!a.mtf_frequencies.empty() && !a.mtf) {
@@ -270,6 +286,9 @@ void for_each_bench_key(const AnalyzeResults& results, const AnalyzeRequest& req
         put("field_curves", [&] { return field_curves_json(results.system, *results.curves); });
     }
     if (results.shift) put("focal_shift", [&] { return focal_shift_json(*results.shift); });
+    if (results.field_map) {
+        put("field_map", [&] { return field_map_json(results.system, *results.field_map); });
+    }
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "analysis/diffraction_figures.h"
 #include "analysis/field_curves.h"
+#include "analysis/field_map.h"
 #include "analysis/focal_shift.h"
 #include "analysis/lens_report.h"
 #include "analysis/ray_fans.h"
@@ -57,6 +58,8 @@ struct AnalyzeRequest {
     bool field_curves = false;
     int field_curve_points = 11;
     bool focal_shift = false;
+    // Field points along each side of the field map (RMS spot over x-y fields); 0: none.
+    int field_map = 0;
     std::vector<double> band;  // the focal shift's; empty: the wavelengths' range, or F to C
     int focal_shift_points = 21;
     // The document's top-level keys wanted (empty: all): the lens report computes only what
@@ -89,6 +92,7 @@ struct AnalyzeResults {
     std::optional<DiffractionFigures> diffraction;
     std::optional<FieldCurves> curves;
     std::optional<FocalShift> shift;
+    std::optional<FieldMap> field_map;
 };
 
 // Measures the scene's lenses as `request` asks (with_implied_tables applied) and writes the

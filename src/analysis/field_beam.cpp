@@ -12,11 +12,11 @@ std::optional<ExitRay> passed_exit_ray(const OpticalSystem& system,
 }
 
 FieldBeam trace_field_beam(const OpticalSystem& system, const FirstOrder& first_order, double field,
-                           double nm, int rings) {
+                           double nm, int rings, double field_x) {
     FieldBeam beam;
     beam.field = field;
     beam.wavelength_nm = nm;
-    const RayAimer aimer(system, first_order, field, nm);
+    const RayAimer aimer(system, first_order, field, nm, field_x);
     bool centre = true;  // the hexapolar grid starts at the stop's centre
     for (const PupilPoint& q : hexapolar_pupil(rings)) {
         if (const auto ray = passed_exit_ray(system, aimer.trace(q.x, q.y))) {

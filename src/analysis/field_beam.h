@@ -23,7 +23,8 @@ struct FieldBeam {
 std::optional<ExitRay> passed_exit_ray(const OpticalSystem& system,
                                        const std::optional<RealRay>& ray);
 
+// `field` in y, `field_x` in x (ray_aiming.h).
 FieldBeam trace_field_beam(const OpticalSystem& system, const FirstOrder& first_order, double field,
-                           double wavelength_nm, int rings);
+                           double wavelength_nm, int rings, double field_x = 0.0);
 
 }  // namespace lenslab

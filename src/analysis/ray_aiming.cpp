@@ -15,25 +15,35 @@ constexpr double kAimStep = 1e-7;        // finite-difference step (relative)
 }  // namespace
 
 RayAimer::RayAimer(const OpticalSystem& system, const FirstOrder& first_order, double field,
-                   double wavelength_nm)
+                   double wavelength_nm, double field_x)
     : system_(system),
       first_order_(first_order),
       field_(field),
+      field_x_(field_x),
       ratios_(index_ratios(system, wavelength_nm)),
       scale_(system.scale()) {
     if (!first_order.object_distance) {
-        const double angle = field * M_PI / 180.0;
         z_start_ = beam_start_z(system);
-        direction_y_ = std::sin(angle);
-        direction_z_ = std::cos(angle);
+        if (field_x == 0.0) {  // in the meridional plane, as it always was: bit for bit
+            const double angle = field * M_PI / 180.0;
+            direction_y_ = std::sin(angle);
+            direction_z_ = std::cos(angle);
+        } else {
+            const Vec3 d = normalize(
+                Vec3{std::tan(field_x * M_PI / 180.0), std::tan(field * M_PI / 180.0), 1.0});
+            direction_x_ = d.x;
+            direction_y_ = d.y;
+            direction_z_ = d.z;
+        }
     }
 }
 
 Ray RayAimer::candidate(double a, double b) const {
     if (first_order_.object_distance) {
-        return Ray{Vec3{0.0, field_, -*first_order_.object_distance}, normalize(Vec3{a, b, 1.0})};
+        return Ray{Vec3{field_x_, field_, -*first_order_.object_distance},
+                   normalize(Vec3{a, b, 1.0})};
     }
-    return Ray{Vec3{a, b, z_start_}, Vec3{0.0, direction_y_, direction_z_}};
+    return Ray{Vec3{a, b, z_start_}, Vec3{direction_x_, direction_y_, direction_z_}};
 }
 
 std::optional<Vec3> RayAimer::at_stop(double a, double b) const {
@@ -58,11 +68,11 @@ std::optional<Ray> RayAimer::aim(double px, double py) const {
     double a, b, step;
     if (f.object_distance) {
         const double reach = z_ep + *f.object_distance;
-        a = px * r_ep / reach;
+        a = (px * r_ep - field_x_) / reach;
         b = (py * r_ep - field_) / reach;
         step = kAimStep;
     } else {
-        a = px * r_ep;
+        a = px * r_ep + direction_x_ / direction_z_ * (z_start_ - z_ep);
         b = py * r_ep + direction_y_ / direction_z_ * (z_start_ - z_ep);
         step = kAimStep * scale_;
     }

@@ -22,9 +22,10 @@ namespace lenslab {
 class RayAimer {
 public:
     // `field`: an angle in degrees (object at infinity) or an object height (finite object,
-    // as in first_order.object_distance).
+    // as in first_order.object_distance), in y; `field_x` the same in x (a field point off the
+    // meridional plane: the direction (tan x, tan y, 1) for angles).
     RayAimer(const OpticalSystem& system, const FirstOrder& first_order, double field,
-             double wavelength_nm);
+             double wavelength_nm, double field_x = 0.0);
 
     // The ray from the field point that crosses the stop at (px, py), with the surfaces
     // taken past their rims (Rims::Ignore). None when no such ray exists (it is totally
@@ -45,11 +46,12 @@ private:
 
     const OpticalSystem& system_;
     const FirstOrder& first_order_;
-    double field_;
+    double field_, field_x_;
     IndexRatios ratios_;  // index_ratios at the wavelength, once for every ray
     double scale_;        // the system's size, for tolerances and difference steps
     double z_start_ = 0;  // object at infinity: where the collimated rays start
-    double direction_y_ = 0, direction_z_ = 1;  // object at infinity: the field direction
+    // Object at infinity: the field direction.
+    double direction_x_ = 0, direction_y_ = 0, direction_z_ = 1;
 };
 
 }  // namespace lenslab

@@ -85,6 +85,8 @@ OPTION_SETS = [
           focal_shift=True, band=[450, 700], focal_shift_points=5, stop=2, epd=12)),
     (["--psf", "--mtf", "--mtf-frequencies", "10,20,40", "--wavelength", "550"],
      dict(psf=True, mtf=True, mtf_frequencies=[10, 20, 40], wavelength=550)),
+    (["--fields", "0,2", "--field-map", "3", "--rings", "2"],
+     dict(fields=[0, 2], field_map=3, rings=2)),
     (["--aperture", "10", "--unit", "mm", "--spots", "--rings", "2", "--image-distance", "95",
       "--wavelengths", "486.1327,587.5618,656.2725", "--wavelength-weights", "1,2,1",
       "--seidel", "--lens", "crown"],
@@ -172,8 +174,8 @@ def test_a_figure_not_asked_for_raises():
     (dict(fields=[0, 1], object_distance=100), r"^fields excludes object_distance"),
     (dict(field_heights=[0, 1]), r"^field_heights needs object_distance"),
     (dict(fields="0,1"), r"^fields: must be a sequence of numbers"),
-    (dict(image_distance=90), r"^image_distance: it places the image plane of spots, fans and "
-                              r"field_curves, none of which was asked for$"),
+    (dict(image_distance=90), r"^image_distance: it places the image plane of spots, fans, "
+                              r"field_map and field_curves, none of which was asked for$"),
     (dict(mtf_frequencies=[10]), r"^mtf_frequencies requires mtf \(or mtf_svg\)$"),
     (dict(focal_shift=True, band=[700, 450]), r"^band: two wavelengths in nm, the shorter "),
     (dict(wavelength_weights=[1, 2]), r"^wavelength_weights: 2 weights for 1 wavelengths"),
