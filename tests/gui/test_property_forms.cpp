@@ -336,7 +336,12 @@ private slots:
                           {"back", {{"shape", "flat"}}},
                           {"thickness", 0.3},
                           {"material", "grey"}}}}}});
-        check_form(w, lenslab::lens_group_mirror_spec(), {}, "elements/0/");
+        // A mirror before another element needs a gap: the form shows the file's, not the
+        // default.
+        check_form(w, lenslab::lens_group_mirror_spec(), {"gap"}, "elements/0/");
+        auto* gap = w.panel()->findChild<NumberField*>("field:elements/0/gap");
+        QVERIFY(gap);
+        QCOMPARE(gap->value(), 1.0);
         check_form(w, lenslab::conic_surface_spec(), {}, "elements/0/mirror/");
         check_form(w, lenslab::lens_group_element_spec(), {"gap"}, "elements/1/");
     }
