@@ -53,8 +53,7 @@ void trace_in_step(const OpticalSystem& system, const IndexRatios& ratios, StepR
                 continue;
             }
             r->p = r->p + r->d * t;
-            if (s.hole_semi_diameter > 0 &&
-                r->p.x * r->p.x + r->p.y * r->p.y < s.hole_semi_diameter * s.hole_semi_diameter) {
+            if (s.in_hole(r->p)) {
                 r->on = false;
                 continue;
             }

@@ -58,8 +58,7 @@ void trace_real_ray_into(RealRay& out, const OpticalSystem& system, const Ray& r
         p = p + d * t;
         out.points.push_back(p);
         if (path && !on_surface) path->push_back(p);
-        if (rims == Rims::Clip && s.hole_semi_diameter > 0 &&
-            p.x * p.x + p.y * p.y < s.hole_semi_diameter * s.hole_semi_diameter) {
+        if (rims == Rims::Clip && s.in_hole(p)) {
             out.fate = RayFate::Missed;  // through a mirror's central hole
             out.surface = static_cast<int>(i);
             out.direction = d;

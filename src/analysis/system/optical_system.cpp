@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "geometry/lens/flat_surface.h"
@@ -87,43 +88,38 @@ int insert_air_stop(OpticalSystem& system, double z, double semi_diameter) {
         }
     }
     // The first place along the light's way where it crosses the plane z in air: in front of
-    // the first surface, or in a space between two (a folded system crosses a plane more than
-    // once; the first crossing is taken).
-    size_t index = system.surfaces.size();
-    double travel = 1.0;
-    if (z <= system.surfaces.front().z) {
-        index = 0;
-    } else {
-        for (size_t k = 0; k < system.surfaces.size(); ++k) {
-            const SystemSurface& s = system.surfaces[k];
-            travel = s.travel_after();
-            const bool last = k + 1 == system.surfaces.size();
-            const double next = last ? travel * INFINITY : system.surfaces[k + 1].z;
-            if (s.element_after < 0 && (z - s.z) * travel >= 0 && (next - z) * travel > 0) {
-                index = k + 1;
-                break;
-            }
+    // the first surface, or in a space between two or after the last (a folded system crosses
+    // a plane more than once; the first crossing is taken).
+    std::optional<size_t> index;
+    if (z <= system.surfaces.front().z) index = 0;
+    for (size_t k = 0; !index && k < system.surfaces.size(); ++k) {
+        const SystemSurface& s = system.surfaces[k];
+        const double travel = s.travel_after();
+        const double next =
+            k + 1 == system.surfaces.size() ? travel * INFINITY : system.surfaces[k + 1].z;
+        if (s.element_after < 0 && (z - s.z) * travel >= 0 && (next - z) * travel > 0) {
+            index = k + 1;
         }
     }
-    if (index == system.surfaces.size() && index > 0 &&
-        !((z - system.surfaces.back().z) * system.image_travel() >= 0)) {
+    if (!index) {
         throw SceneError("--stop", "the light never crosses the aperture stop's plane at " +
                                        stop_number(z) + " in air");
     }
     SystemSurface stop;
     stop.shape = std::make_shared<FlatSurface>();
     stop.z = z;
-    stop.travel = index == 0 ? 1.0 : system.surfaces[index - 1].travel_after();
+    stop.travel = *index == 0 ? 1.0 : system.surfaces[*index - 1].travel_after();
     stop.semi_diameter = semi_diameter;
     stop.span = intersect_span(*stop.shape, semi_diameter);
     stop.aim_span = intersect_span(*stop.shape, 2.0 * semi_diameter);
     stop.label = "stop";
-    system.surfaces.insert(system.surfaces.begin() + static_cast<long>(index), stop);
+    const int at = static_cast<int>(*index);
+    system.surfaces.insert(system.surfaces.begin() + at, stop);
     for (SystemElement& e : system.elements) {
-        if (e.first_surface >= static_cast<int>(index)) ++e.first_surface;
-        if (e.last_surface >= static_cast<int>(index)) ++e.last_surface;
+        if (e.first_surface >= at) ++e.first_surface;
+        if (e.last_surface >= at) ++e.last_surface;
     }
-    return static_cast<int>(index);
+    return at;
 }
 
 void check_wavelength(const OpticalSystem& system, double nm, const std::string& what) {

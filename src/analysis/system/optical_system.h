@@ -55,6 +55,10 @@ struct SystemSurface {
     bool cemented() const { return element_before >= 0 && element_after >= 0; }
     // The direction of travel behind the surface.
     double travel_after() const { return mirror ? -travel : travel; }
+    // Whether a point of the surface (system coordinates) lies in a mirror's central hole.
+    bool in_hole(const Vec3& p) const {
+        return p.x * p.x + p.y * p.y < hole_semi_diameter * hole_semi_diameter;
+    }
     // Axial position of the surface at distance r from the axis.
     double z_at(double r) const { return z + orientation * shape->sag(r); }
 };
