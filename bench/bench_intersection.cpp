@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "accel/bvh.h"
+#include "geometry/bvh.h"
 #include "geometry/implicit_solid.h"
 #include "geometry/lens/asphere_surface.h"
 #include "geometry/lens/conic_surface.h"

@@ -11,7 +11,7 @@
 #include "bench/sppm_convergence.h"
 #include "child_process.h"
 #include "commands.h"
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "render/integrator_names.h"
 #include "scene/limits.h"
 #include "scene/scene_json.h"

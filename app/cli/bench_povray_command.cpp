@@ -19,12 +19,12 @@
 
 #include "child_process.h"
 #include "commands.h"
-#include "render/image_io.h"
+#include "image/bitmap_font.h"
+#include "image/image_io.h"
 #include "render/integrator_names.h"
 #include "scene/limits.h"
 #include "scene/render_settings.h"
 #include "util/atomic_file.h"
-#include "util/bitmap_font.h"
 #include "util/error.h"
 
 namespace lenslab::cli {

@@ -7,10 +7,10 @@
 #include "commands.h"
 #include "lensfile/lens_file.h"
 #include "lensfile/zmx_writer.h"
-#include "scene/scene_error.h"
 #include "scene/scene_json.h"
 #include "util/atomic_file.h"
 #include "util/output_path.h"
+#include "util/scene_error.h"
 
 namespace lenslab::cli {
 

@@ -8,14 +8,14 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "image/glass_map.h"
+#include "image/image_io.h"
 #include "optics/absorption.h"
 #include "optics/glass.h"
 #include "optics/glass_catalogue_file.h"
 #include "optics/glass_library.h"
-#include "optics/glass_map.h"
 #include "optics/glass_search.h"
 #include "optics/user_glass_catalogues.h"
-#include "render/image_io.h"
 #include "util/atomic_file.h"
 
 namespace lenslab::cli {

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "commands.h"
-#include "lensfile/lens_file.h"
+#include "scene/lens_file_import.h"
 #include "util/atomic_file.h"
 #include "util/output_path.h"
 

@@ -8,8 +8,8 @@
 
 #include "commands.h"
 #include "optimize/optimize_report.h"
-#include "scene/scene_error.h"
 #include "util/atomic_file.h"
+#include "util/scene_error.h"
 
 namespace lenslab::cli {
 

@@ -5,7 +5,7 @@
 
 #include "cluster/cluster_session.h"
 #include "commands.h"
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "render_image.h"
 #include "util/output_path.h"
 

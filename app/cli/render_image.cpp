@@ -9,9 +9,10 @@
 #include <iostream>
 
 #include "commands.h"
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "render/render_session.h"
 #include "scene/render_settings.h"
+#include "scene/render_tone_map.h"
 
 namespace lenslab::cli {
 

@@ -7,8 +7,9 @@
 #include <atomic>
 #include <memory>
 
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "render/render_session.h"
+#include "scene/render_tone_map.h"
 #include "util/output_path.h"
 
 namespace lenslab::gui {

@@ -28,16 +28,16 @@
 #include <vector>
 
 #include "detector_dock.h"
+#include "image/image_io.h"
 #include "image_export.h"
 #include "json_pointer.h"
-#include "lensfile/lens_file.h"
 #include "optimise_dialog.h"
 #include "placement.h"
 #include "property_panel.h"
 #include "ray_diagram_dock.h"
 #include "render/camera.h"
-#include "render/image_io.h"
 #include "render_controller.h"
+#include "scene/lens_file_import.h"
 #include "scene/light_spec.h"
 #include "scene/medium.h"
 #include "scene/object_types.h"

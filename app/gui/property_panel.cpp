@@ -17,12 +17,12 @@
 
 #include "geometry/implicit_solid.h"
 #include "geometry/lens/sag_formula_surface.h"
+#include "image/image_io.h"
 #include "json_pointer.h"
 #include "number_field.h"
 #include "optics/glass_library.h"
 #include "optics/spectrum.h"
 #include "optics/user_glass_catalogues.h"
-#include "render/image_io.h"
 #include "scene/camera_spec.h"
 #include "scene/json_reader.h"
 #include "scene/lens_group_json.h"

@@ -17,8 +17,8 @@
 #include "diagram_painter.h"
 #include "json_pointer.h"
 #include "optics/glass.h"
-#include "scene/scene_error.h"
 #include "scene_document.h"
+#include "util/scene_error.h"
 
 namespace lenslab::gui {
 

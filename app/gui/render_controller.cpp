@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "render/integrator_names.h"
 #include "render/progressive_render.h"
+#include "scene/render_tone_map.h"
 
 namespace lenslab::gui {
 

@@ -14,9 +14,9 @@
 #include <QWaitCondition>
 #include <optional>
 
-#include "render/film.h"
+#include "image/film.h"
+#include "image/tone_map.h"
 #include "render/render_control.h"
-#include "render/tone_map.h"
 #include "scene/scene.h"
 
 namespace lenslab::gui {

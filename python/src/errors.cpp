@@ -4,8 +4,8 @@
 // (an unwritable file, too little memory) as lenslab.Error, a RuntimeError.
 
 #include "bindings.h"
-#include "scene/scene_error.h"
 #include "util/error.h"
+#include "util/scene_error.h"
 
 namespace lenslab::python {
 

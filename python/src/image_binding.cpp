@@ -4,8 +4,9 @@
 #include <pybind11/numpy.h>
 
 #include "bindings.h"
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "scene/render_settings_spec.h"
+#include "scene/render_tone_map.h"
 
 namespace lenslab::python {
 

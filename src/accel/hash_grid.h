@@ -14,7 +14,7 @@
 #include <functional>
 #include <vector>
 
-#include "geometry/aabb.h"
+#include "math/aabb.h"
 
 namespace lenslab {
 

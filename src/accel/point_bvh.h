@@ -8,7 +8,7 @@
 #include <functional>
 #include <vector>
 
-#include "geometry/aabb.h"
+#include "math/aabb.h"
 
 namespace lenslab {
 

@@ -14,10 +14,10 @@
 #include "analysis/ray_diagram_image.h"
 #include "analysis/ray_diagram_svg.h"
 #include "analysis/spot_report.h"
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "scene/json_reader.h"
-#include "scene/scene_error.h"
 #include "util/atomic_file.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

@@ -13,7 +13,7 @@
 #include "cluster/dealt_parts.h"
 #include "optics/spectrum.h"
 #include "render/photon_tracer.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

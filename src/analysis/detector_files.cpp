@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "analysis/detector_image.h"
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "util/atomic_file.h"
 
 namespace lenslab {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "util/bitmap_font.h"
-#include "util/colormap.h"
+#include "image/bitmap_font.h"
+#include "image/colormap.h"
 
 namespace lenslab {
 

@@ -5,7 +5,7 @@
 // writes it as <name>.png; the editor shows the same picture.
 
 #include "analysis/detector.h"
-#include "render/image_io.h"
+#include "image/image_io.h"
 
 namespace lenslab {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

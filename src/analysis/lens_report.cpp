@@ -7,7 +7,7 @@
 
 #include "analysis/first_order_report.h"
 #include "math/constants.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

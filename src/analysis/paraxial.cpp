@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "analysis/grin_gap.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

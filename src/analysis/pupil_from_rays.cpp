@@ -7,7 +7,7 @@
 #include "analysis/aberrations.h"
 #include "analysis/paraxial.h"
 #include "analysis/real_ray.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "analysis/diagram_canvas.h"
-#include "util/bitmap_font.h"
+#include "image/bitmap_font.h"
 
 namespace lenslab {
 

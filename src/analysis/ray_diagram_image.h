@@ -4,7 +4,7 @@
 // here, text in the project's bitmap font.
 
 #include "analysis/ray_diagram.h"
-#include "render/image_io.h"
+#include "image/image_io.h"
 
 namespace lenslab {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "analysis/system/optical_system.h"
-#include "geometry/ray.h"
+#include "math/ray.h"
 
 namespace lenslab {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <optional>
 
-#include "geometry/ray.h"
+#include "math/ray.h"
 
 namespace lenslab {
 

@@ -1,8 +1,8 @@
 #pragma once
 // Interface of every intersectable solid or surface in a scene.
 
-#include "geometry/aabb.h"
-#include "geometry/ray.h"
+#include "math/aabb.h"
+#include "math/ray.h"
 
 namespace lenslab {
 

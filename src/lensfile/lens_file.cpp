@@ -1,7 +1,6 @@
 #include "lensfile/lens_file.h"
 
 #include <filesystem>
-#include <regex>
 #include <tuple>
 #include <utility>
 
@@ -10,35 +9,10 @@
 #include "lensfile/seq_reader.h"
 #include "lensfile/zar_archive.h"
 #include "lensfile/zmx_reader.h"
-#include "scene/scene_error.h"
-#include "scene/scene_json.h"
 
 namespace lenslab {
 
 namespace {
-
-// Builds the group as a scene would, so a lens the scene reader refuses is refused here,
-// at the line of the element concerned.
-void check_imported_lens(const ImportedLens& lens, const std::string& path) {
-    nlohmann::json scene = {{"objects", nlohmann::json::array({lens.group})}};
-    scene["objects"][0]["vertex"] = {0, 0, 0};
-    scene["objects"][0]["axis"] = {0, 0, 1};
-    try {
-        (void)scene_from_json(scene, "", {.require_camera = false});
-    } catch (const SceneError& e) {
-        static const std::regex element(R"(elements\[(\d+)\])");
-        std::smatch m;
-        int line = 0;
-        if (std::regex_search(e.path(), m, element)) {
-            const size_t i = std::stoul(m[1]);
-            if (i < lens.element_lines.size()) line = lens.element_lines[i];
-        }
-        std::string where = e.path();
-        const size_t at = where.find("elements[");
-        where = at == std::string::npos ? "the lens" : where.substr(at);
-        throw LensFileError(path, line, where + ": " + e.reason());
-    }
-}
 
 // The .zmx file packed in a Zemax archive (the first; the archive's glass catalogues and
 // other files are left: the lens's glasses come from lenslab's catalogues), and the name
@@ -63,7 +37,7 @@ bool is_lens_file_path(const std::string& path) {
     return extension == ".ZMX" || extension == ".SEQ" || extension == ".ZAR";
 }
 
-ImportedLens import_lens_file(const std::string& path, const std::string& name) {
+ImportedLens read_lens_file(const std::string& path, const std::string& name) {
     const std::string extension = lens_file_upper(std::filesystem::path(path).extension().string());
     if (!is_lens_file_path(path)) {
         throw LensFileError(path, 0,
@@ -80,7 +54,7 @@ ImportedLens import_lens_file(const std::string& path, const std::string& name) 
     const LensFilePrescription p =
         extension == ".SEQ" ? read_seq(lines, file) : read_zmx(lines, file);
     ImportedLens lens = lens_group_from_prescription(p, name);
-    check_imported_lens(lens, file);
+    lens.file = file;
     return lens;
 }
 

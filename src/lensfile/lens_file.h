@@ -1,7 +1,6 @@
 #pragma once
 // Lens files in, lens files out: a Zemax .zmx or CODE V .seq file read as a lens_group (by
-// its extension), checked as the scene reader checks a lens_group; and a lens_group written
-// back as a .zmx file.
+// its extension); and a lens_group written back as a .zmx file.
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -13,10 +12,10 @@ namespace lenslab {
 // Whether `path` names a lens file by its extension (.zmx, .zar, .seq, any case).
 bool is_lens_file_path(const std::string& path);
 
-// Reads the lens file at `path` (.zmx or .seq, any case) into a lens_group named `name`, and
-// checks it builds (a surface crossing its neighbour is refused with the element's line).
+// Reads the lens file at `path` (.zmx, .zar or .seq, any case) into a lens_group named
+// `name`, not yet checked as the scene reader checks one (scene/lens_file_import.h does).
 // Throws LensFileError.
-ImportedLens import_lens_file(const std::string& path, const std::string& name);
+ImportedLens read_lens_file(const std::string& path, const std::string& name);
 
 // The scene fragment `lenslab import` writes: the lens_group at the origin along +z, and the
 // file's system data under "bench".

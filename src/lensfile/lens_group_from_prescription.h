@@ -20,6 +20,8 @@ struct ImportedLens {
     nlohmann::ordered_json bench;
     std::vector<LensFileWarning> warnings;
     std::vector<int> element_lines;  // the line of each element's front surface
+    // The name its lines are reported under (a .zar archive: "ARCHIVE.zar/LENS.zmx").
+    std::string file;
 };
 
 // Throws LensFileError.

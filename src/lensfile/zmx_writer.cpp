@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "lensfile/lens_file_glass.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

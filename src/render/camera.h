@@ -1,6 +1,6 @@
 #pragma once
 
-#include "geometry/ray.h"
+#include "math/ray.h"
 #include "scene/camera_settings.h"
 
 namespace lenslab {

@@ -20,7 +20,7 @@
 #include <cmath>
 #include <vector>
 
-#include "geometry/ray.h"
+#include "math/ray.h"
 #include "math/rng.h"
 #include "optics/spectrum.h"
 #include "scene/medium.h"

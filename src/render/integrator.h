@@ -4,9 +4,9 @@
 #include <memory>
 #include <string>
 
+#include "image/film.h"
 #include "optics/spectrum.h"
 #include "render/camera.h"
-#include "render/film.h"
 #include "render/render_control.h"
 #include "render/render_stats.h"
 #include "scene/scene.h"

@@ -9,7 +9,7 @@
 #include "render/integrators/sppm.h"
 #include "render/integrators/whitted.h"
 #include "scene/render_settings.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

@@ -6,7 +6,7 @@
 
 #include <memory>
 
-#include "render/film.h"
+#include "image/film.h"
 #include "render/integrator.h"
 #include "render/render_control.h"
 #include "render/render_stats.h"

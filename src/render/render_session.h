@@ -1,7 +1,7 @@
 #pragma once
 // Runs one render of a scene: picks the integrator, sets the thread count, reports progress.
 
-#include "render/film.h"
+#include "image/film.h"
 #include "render/integrator_registry.h"
 #include "render/memory_budget.h"
 #include "render/render_control.h"

@@ -28,7 +28,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/aabb.h"
+#include "math/aabb.h"
 #include "render/render_control.h"
 #include "scene/scene.h"
 

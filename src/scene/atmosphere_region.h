@@ -4,7 +4,7 @@
 // is sampled for a majorant over this box and taken as 0 outside it, so a ray leaving the
 // scene crosses a finite amount of it.
 
-#include "geometry/aabb.h"
+#include "math/aabb.h"
 
 namespace lenslab {
 

@@ -5,7 +5,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 
-#include "geometry/aabb.h"
+#include "math/aabb.h"
 
 namespace lenslab {
 

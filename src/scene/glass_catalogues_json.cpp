@@ -5,7 +5,7 @@
 #include "optics/glass_catalogue_file.h"
 #include "optics/user_glass_catalogues.h"
 #include "scene/json_reader.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

@@ -14,7 +14,7 @@
 
 #include "math/vec3.h"
 #include "optics/rgb.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

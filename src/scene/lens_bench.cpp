@@ -1,7 +1,7 @@
 #include "scene/lens_bench.h"
 
 #include "scene/json_reader.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "lensfile/lens_file.h"
+#include "scene/lens_file_import.h"
 #include "scene/object_spec.h"
 #include "scene/spec_reader.h"
 

@@ -12,7 +12,7 @@
 #include <memory>
 #include <vector>
 
-#include "geometry/ray.h"
+#include "math/ray.h"
 #include "math/rng.h"
 #include "optics/spectrum.h"
 #include "scene/photon_targets.h"

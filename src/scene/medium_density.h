@@ -17,7 +17,7 @@
 #include <memory>
 #include <string>
 
-#include "geometry/aabb.h"
+#include "math/aabb.h"
 #include "math/formula.h"
 #include "scene/density_grid.h"
 

@@ -58,7 +58,7 @@ struct RenderSettings {
     // sparse photon's disc grows until about N neighbours share it (render/volume_photon_radii.h).
     int volume_neighbours = 0;
 
-    // How light brighter than white is shown (render/tone_map.h): clip | log.
+    // How light brighter than white is shown (image/tone_map.h): clip | log.
     std::string tone_map = "clip";
     double highlight_stops = 8;  // log: stops above the knee that reach white
 };

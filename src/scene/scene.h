@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "accel/bvh.h"
+#include "geometry/bvh.h"
 #include "geometry/sphere.h"
 #include "scene/camera_settings.h"
 #include "scene/detector_settings.h"

@@ -12,8 +12,8 @@
 #include <sstream>
 
 #include "analysis/detector.h"
-#include "scene/scene_error.h"
 #include "scene/scene_json.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "analysis/detector_files.h"
 #include "analysis/detector_image.h"
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {

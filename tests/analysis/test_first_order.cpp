@@ -14,7 +14,7 @@
 #include "analysis/first_order.h"
 #include "lens_scene_builder.h"
 #include "sasian_triplet.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

@@ -19,7 +19,7 @@
 #include "analysis/real_ray.h"
 #include "lens_scene_builder.h"
 #include "math/constants.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "analysis/lens_bench_defaults.h"
 #include "lens_scene_builder.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "geometry/aabb.h"
+#include "math/aabb.h"
 
 namespace lenslab {
 namespace {

@@ -11,11 +11,11 @@
 #include <fstream>
 
 #include "analysis/analyze_request.h"
-#include "lensfile/lens_file.h"
 #include "lensfile/lens_file_text.h"
 #include "lensfile/lens_group_from_prescription.h"
 #include "lensfile/seq_reader.h"
 #include "lensfile/zmx_writer.h"
+#include "scene/lens_file_import.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {

@@ -19,15 +19,15 @@
 
 #include "analysis/paraxial.h"
 #include "analysis/system/optical_system.h"
-#include "lensfile/lens_file.h"
 #include "lensfile/lens_file_text.h"
 #include "lensfile/lens_group_from_prescription.h"
 #include "lensfile/seq_reader.h"
 #include "lensfile/zmx_reader.h"
 #include "lensfile/zmx_writer.h"
 #include "optics/glass.h"
-#include "scene/scene_error.h"
+#include "scene/lens_file_import.h"
 #include "scene/scene_json.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

@@ -10,10 +10,10 @@
 #include <map>
 #include <random>
 
-#include "lensfile/lens_file.h"
 #include "lensfile/lens_file_error.h"
 #include "lensfile/lens_file_text.h"
 #include "lensfile/zar_archive.h"
+#include "scene/lens_file_import.h"
 
 namespace lenslab {
 namespace {

@@ -14,8 +14,8 @@
 #include "optics/glass_catalogue_file.h"
 #include "optics/glass_library.h"
 #include "optics/user_glass_catalogues.h"
-#include "scene/scene_error.h"
 #include "scene/scene_json.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

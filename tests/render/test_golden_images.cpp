@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "render/render_session.h"
 #include "scene/scene_json.h"
 

@@ -14,8 +14,8 @@
 #include "mean_green.h"
 #include "render/medium_transport.h"
 #include "render/render_session.h"
-#include "scene/scene_error.h"
 #include "scene/scene_json.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

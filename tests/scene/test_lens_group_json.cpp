@@ -9,8 +9,8 @@
 
 #include "geometry/lens/lens_solid.h"
 #include "geometry/lens/mirror_surface.h"
-#include "scene/scene_error.h"
 #include "scene/scene_json.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

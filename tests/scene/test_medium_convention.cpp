@@ -7,8 +7,8 @@
 
 #include "optics/air_index.h"
 #include "optics/glass_library.h"
-#include "scene/scene_error.h"
 #include "scene/scene_json.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

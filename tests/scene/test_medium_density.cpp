@@ -9,8 +9,8 @@
 #include <string>
 #include <utility>
 
-#include "scene/scene_error.h"
 #include "scene/scene_json.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

@@ -8,8 +8,8 @@
 #include <cmath>
 
 #include "analysis/ray_tree.h"
-#include "scene/scene_error.h"
 #include "scene/scene_json.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

@@ -7,9 +7,9 @@
 
 #include <string>
 
-#include "scene/scene_error.h"
 #include "scene/scene_json.h"
 #include "scene/segment_medium.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {

@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "util/atomic_file.h"
 
 namespace lenslab {

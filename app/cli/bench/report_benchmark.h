@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "render/film.h"
+#include "image/film.h"
 #include "scene/scene.h"
 
 namespace lenslab {

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "render/integrator.h"
 #include "render/integrator_names.h"
 #include "render/integrator_registry.h"

@@ -7,7 +7,7 @@
 
 #include "geometry/lens/flat_surface.h"
 #include "scene/scattering.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

@@ -7,7 +7,7 @@
 #include "geometry/lens/mirror_surface.h"
 #include "scene/interaction.h"
 #include "scene/scattering.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/ray.h"
+#include "math/ray.h"
 
 namespace lenslab {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "bench/sppm_convergence.h"
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "render/integrator_names.h"
 #include "scene/scene_json.h"
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "render/image_io.h"
+#include "image/image_io.h"
 
 namespace lenslab {
 

@@ -1,6 +1,6 @@
 #pragma once
 // How radiance brighter than white is shown: in a PNG (image_io.h), the editor's view and
-// Python's write_image. The render block's `tone_map`:
+// Python's write_image (the scene's render block chooses it: scene/render_tone_map.h):
 //   clip: each channel, scaled by 2^exposure, is clipped at 1 (POV-Ray's and pbrt's PNGs);
 //   log:  a pixel whose brightest channel is at most kToneMapKnee is shown as with clip;
 //         a brighter one on a logarithmic scale that reaches the top `highlight_stops` stops
@@ -11,8 +11,7 @@
 //         is unchanged.
 // EXR files stay linear: exposure applies, the tone map does not.
 
-#include "render/film.h"
-#include "scene/render_settings.h"
+#include "image/film.h"
 
 namespace lenslab {
 
@@ -27,8 +26,5 @@ struct ToneMap {
     // Linear radiance -> display-linear, every channel in [0, 1].
     PixelRgb apply(const PixelRgb& linear) const;
 };
-
-// The scene's tone map with an exposure (the command line's --exposure).
-ToneMap tone_map_for(const RenderSettings& render, double exposure_stops = 0);
 
 }  // namespace lenslab

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "optics/glass.h"
-#include "render/image_io.h"
+#include "image/image_io.h"
 
 namespace lenslab {
 

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <limits>
 
-#include "render/image_io.h"
+#include "image/image_io.h"
 #include "util/output_path.h"
 
 namespace lenslab {

@@ -1,4 +1,4 @@
-#include "accel/bvh.h"
+#include "geometry/bvh.h"
 
 namespace lenslab {
 

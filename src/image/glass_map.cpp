@@ -1,4 +1,4 @@
-#include "optics/glass_map.h"
+#include "image/glass_map.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "optics/glass_library.h"
 #include "optics/glass_search.h"
-#include "util/bitmap_font.h"
+#include "image/bitmap_font.h"
 
 namespace lenslab {
 

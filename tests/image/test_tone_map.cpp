@@ -3,10 +3,11 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include "render/image_io.h"
-#include "render/tone_map.h"
+#include "image/image_io.h"
+#include "image/tone_map.h"
 #include "scene/render_settings_json.h"
-#include "scene/scene_error.h"
+#include "util/scene_error.h"
+#include "scene/render_tone_map.h"
 
 namespace lenslab {
 namespace {

@@ -1,4 +1,4 @@
-#include "util/bitmap_font.h"
+#include "image/bitmap_font.h"
 
 #include <array>
 #include <string_view>

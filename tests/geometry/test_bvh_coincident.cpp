@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "accel/bvh.h"
+#include "geometry/bvh.h"
 #include "accel/bvh_stats.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle_mesh.h"

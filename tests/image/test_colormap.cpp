@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "util/colormap.h"
+#include "image/colormap.h"
 
 namespace lenslab {
 namespace {

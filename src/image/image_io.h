@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "render/film.h"
-#include "render/tone_map.h"
+#include "image/film.h"
+#include "image/tone_map.h"
 #include "util/error.h"
 
 namespace lenslab {

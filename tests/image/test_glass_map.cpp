@@ -9,7 +9,7 @@
 #include <string>
 
 #include "optics/glass_library.h"
-#include "optics/glass_map.h"
+#include "image/glass_map.h"
 #include "optics/glass_search.h"
 
 namespace lenslab {

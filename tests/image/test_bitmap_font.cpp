@@ -6,7 +6,7 @@
 #include <set>
 #include <string>
 
-#include "util/bitmap_font.h"
+#include "image/bitmap_font.h"
 
 namespace lenslab {
 namespace {

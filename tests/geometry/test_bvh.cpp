@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "accel/bvh.h"
+#include "geometry/bvh.h"
 #include "geometry/sphere.h"
 #include "math/rng.h"
 #include "math/sampling.h"

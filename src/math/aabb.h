@@ -3,7 +3,7 @@
 
 #include <limits>
 
-#include "geometry/ray.h"
+#include "math/ray.h"
 
 namespace lenslab {
 

@@ -1,4 +1,4 @@
-#include "render/tone_map.h"
+#include "image/tone_map.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,10 +19,6 @@ PixelRgb ToneMap::apply(const PixelRgb& linear) const {
         p = {p.r * f, p.g * f, p.b * f};
     }
     return {std::clamp(p.r, 0.0f, 1.0f), std::clamp(p.g, 0.0f, 1.0f), std::clamp(p.b, 0.0f, 1.0f)};
-}
-
-ToneMap tone_map_for(const RenderSettings& render, double exposure_stops) {
-    return {exposure_stops, render.tone_map == "log", render.highlight_stops};
 }
 
 }  // namespace lenslab

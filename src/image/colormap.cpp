@@ -1,4 +1,4 @@
-#include "util/colormap.h"
+#include "image/colormap.h"
 
 #include <algorithm>
 
