@@ -6,10 +6,14 @@
 #      the Python module (python/) and its pytest tests run here only;
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: the library at
 #      -O1, tests and apps at -O0; the editor included, no benchmarks) + every test but the
-#      20M-photon convergence test (too slow sanitized). The editor is built and its QTest
-#      suites run here only: compiling Qt's headers twice was about a quarter of stage 1's
-#      build (docs/performance.md, "Test suite time");
-#   3. the libFuzzer targets, all at once for 60 s (scripts/fuzz.sh).
+#      20M-photon convergence test (too slow sanitized), each GoogleTest suite as 4 shards.
+#      The editor is built and its QTest suites run here only: compiling Qt's headers twice
+#      was about a quarter of stage 1's build (docs/performance.md, "Test suite time");
+#   3. ThreadSanitizer build (tsan preset: oneTBB built instrumented by scripts/tsan-tbb.sh,
+#      only the suites with threaded tests) + the threaded tests: renders at several thread
+#      counts and their cancellation, detectors, the optimiser, the editor's render
+#      controller, detector and optimiser threads (docs/reliability.md);
+#   4. the libFuzzer targets, all at once for 60 s (scripts/fuzz.sh).
 # Each stage prints a banner and its time; the first failure stops the run.
 #
 #   scripts/test-all.sh [--fuzz-seconds N]
@@ -35,21 +39,29 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0"
 
 scripts/check-format.sh
 
-banner "stage 1/3: release build and tests (the editor in stage 2)"
+banner "stage 1/4: release build and tests (the editor in stage 2)"
 cmake --preset release-ci
 cmake --build --preset release-ci
 ctest --preset release-ci
-finished "stage 1/3: release build and tests (the editor in stage 2)"
+finished "stage 1/4: release build and tests (the editor in stage 2)"
 
-banner "stage 2/3: AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
+banner "stage 2/4: AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 cmake --preset asan-ci
 cmake --build --preset asan-ci
-# PhotonMap.CausticErrorShrinksAsPhotonsGrow traces 20 million photons: minutes under ASan.
-ctest --preset asan-ci -E 'CausticErrorShrinksAsPhotonsGrow'
-finished "stage 2/3: AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
+# The preset skips PhotonMap.CausticErrorShrinksAsPhotonsGrow (20 million photons: minutes
+# under ASan).
+ctest --preset asan-ci
+finished "stage 2/4: AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 
-banner "stage 3/3: libFuzzer runs, the four targets at once, ${fuzz_seconds} s"
+banner "stage 3/4: ThreadSanitizer build and the threaded tests"
+scripts/tsan-tbb.sh
+cmake --preset tsan
+cmake --build --preset tsan
+ctest --preset tsan
+finished "stage 3/4: ThreadSanitizer build and the threaded tests"
+
+banner "stage 4/4: libFuzzer runs, the four targets at once, ${fuzz_seconds} s"
 scripts/fuzz.sh "$fuzz_seconds"
-finished "stage 3/3: libFuzzer runs, the four targets at once, ${fuzz_seconds} s"
+finished "stage 4/4: libFuzzer runs, the four targets at once, ${fuzz_seconds} s"
 
 printf '\n==== all stages finished clean in %d s ====\n' $((SECONDS - start_all))

@@ -28,10 +28,10 @@ RenderController::RenderController(QObject* parent, int preview_size)
 
 RenderController::~RenderController() {
     {
-        QMutexLocker lock(&m_mutex);
+        const std::lock_guard lock(m_mutex);
         m_quit = true;
         if (m_control) m_control->cancel();
-        m_wake.wakeAll();
+        m_wake.notify_all();
     }
     wait();
 }
@@ -51,7 +51,7 @@ void RenderController::restart(const Scene& scene, int delay_ms, RenderQuality q
     m_next = std::move(preview);
     {
         // Cancel the pass in flight now, so the worker is free when the debounce ends.
-        QMutexLocker lock(&m_mutex);
+        const std::lock_guard lock(m_mutex);
         if (m_control) m_control->cancel();
     }
     m_debounce.start(delay_ms);
@@ -59,37 +59,37 @@ void RenderController::restart(const Scene& scene, int delay_ms, RenderQuality q
 
 void RenderController::start_pending() {
     if (!m_next) return;
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     m_job = std::move(m_next);
     m_next.reset();
     m_stop = false;
     if (m_control) m_control->cancel();
-    m_wake.wakeAll();
+    m_wake.notify_all();
 }
 
 void RenderController::stop_rendering() {
     m_debounce.stop();
     m_next.reset();
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     m_stop = true;
     m_job.reset();
     if (m_control) m_control->cancel();
-    m_wake.wakeAll();  // a paused worker
+    m_wake.notify_all();  // a paused worker
 }
 
 void RenderController::set_paused(bool paused) {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     m_paused = paused;
-    m_wake.wakeAll();
+    m_wake.notify_all();
 }
 
 bool RenderController::is_rendering() const {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     return m_busy;
 }
 
 Film RenderController::last_film() const {
-    QMutexLocker lock(&m_mutex);
+    const std::lock_guard lock(m_mutex);
     return m_last;
 }
 
@@ -116,15 +116,15 @@ void RenderController::render_preview(Scene& scene) {
 }
 
 bool RenderController::begin_pass(RenderControl& control) {
-    QMutexLocker lock(&m_mutex);
-    while (m_paused && !m_quit && !m_stop && !m_job) m_wake.wait(&m_mutex);
+    std::unique_lock lock(m_mutex);
+    m_wake.wait(lock, [this] { return !m_paused || m_quit || m_stop || m_job; });
     if (m_quit || m_stop || m_job) return false;  // a newer scene waits, or stopped
     m_control = &control;
     return true;
 }
 
 RenderController::ForgetControl::~ForgetControl() {
-    QMutexLocker lock(&owner->m_mutex);
+    const std::lock_guard lock(owner->m_mutex);
     owner->m_control = nullptr;
 }
 
@@ -132,8 +132,8 @@ void RenderController::run() {
     for (;;) {
         Scene scene;
         {
-            QMutexLocker lock(&m_mutex);
-            while (!m_quit && !m_job) m_wake.wait(&m_mutex);
+            std::unique_lock lock(m_mutex);
+            m_wake.wait(lock, [this] { return m_quit || m_job; });
             if (m_quit) return;
             scene = std::move(*m_job);
             m_job.reset();
@@ -157,7 +157,7 @@ void RenderController::run() {
                 if (!finished) break;
                 const Film film = render.image();
                 {
-                    QMutexLocker lock(&m_mutex);
+                    const std::lock_guard lock(m_mutex);
                     m_last = film;
                 }
                 const double seconds = clock.elapsed() / 1000.0;
@@ -173,7 +173,7 @@ void RenderController::run() {
         }
         bool quitting = false;
         {
-            QMutexLocker lock(&m_mutex);
+            const std::lock_guard lock(m_mutex);
             m_busy = false;
             quitting = m_quit;
             if (end == RenderEnd::Restarted && m_stop && !m_job) end = RenderEnd::Stopped;

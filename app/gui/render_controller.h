@@ -8,10 +8,10 @@
 
 #include <QElapsedTimer>
 #include <QImage>
-#include <QMutex>
 #include <QThread>
 #include <QTimer>
-#include <QWaitCondition>
+#include <condition_variable>
+#include <mutex>
 #include <optional>
 
 #include "image/film.h"
@@ -97,8 +97,10 @@ private:
     int m_max_passes = 256;
     bool m_use_scene_integrator = false;
 
-    mutable QMutex m_mutex;
-    QWaitCondition m_wake;
+    // std:: rather than QMutex/QWaitCondition: ThreadSanitizer sees pthread's locks, not the
+    // futexes inside Qt's (uninstrumented) library.
+    mutable std::mutex m_mutex;
+    std::condition_variable m_wake;
     std::optional<Scene> m_job;          // handed to the worker
     RenderControl* m_control = nullptr;  // the pass in flight, to cancel it
     bool m_quit = false, m_stop = false, m_busy = false, m_paused = false;

@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <set>
 
+#include "image/bitmap_font.h"
 #include "optics/glass_library.h"
 #include "optics/glass_search.h"
-#include "image/bitmap_font.h"
 
 namespace lenslab {
 

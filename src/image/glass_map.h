@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "optics/glass.h"
 #include "image/image_io.h"
+#include "optics/glass.h"
 
 namespace lenslab {
 

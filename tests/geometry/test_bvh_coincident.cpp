@@ -7,8 +7,8 @@
 #include <memory>
 #include <vector>
 
-#include "geometry/bvh.h"
 #include "accel/bvh_stats.h"
+#include "geometry/bvh.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle_mesh.h"
 

@@ -8,8 +8,8 @@
 #include <regex>
 #include <string>
 
-#include "optics/glass_library.h"
 #include "image/glass_map.h"
+#include "optics/glass_library.h"
 #include "optics/glass_search.h"
 
 namespace lenslab {

@@ -6,8 +6,8 @@
 #include "image/image_io.h"
 #include "image/tone_map.h"
 #include "scene/render_settings_json.h"
-#include "util/scene_error.h"
 #include "scene/render_tone_map.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {
