@@ -8,8 +8,8 @@
 
 #include <cmath>
 
-#include "analysis/diffraction.h"
-#include "analysis/pupil_from_rays.h"
+#include "analysis/diffraction/diffraction.h"
+#include "analysis/diffraction/pupil_from_rays.h"
 #include "analysis/system/optical_system.h"
 #include "scene/scene_json.h"
 

@@ -6,7 +6,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "analysis/section_view.h"
+#include "analysis/section/section_view.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {

@@ -17,7 +17,7 @@ PACKAGES=(
     jupyter-nbconvert python3-nbformat python3-ipykernel python3-matplotlib ffmpeg
     libopenmpi-dev openmpi-bin
 )
-# libfftw3-dev: the FFTs of the diffraction PSF and MTF (src/analysis/fft_grid.cpp).
+# libfftw3-dev: the FFTs of the diffraction PSF and MTF (src/analysis/diffraction/fft_grid.cpp).
 # clang + libclang-rt-14-dev: libFuzzer and clang's sanitizers for the fuzz targets
 # (scripts/fuzz.sh); llvm: llvm-symbolizer, so sanitizer reports name files and lines;
 # clang-format: scripts/check-format.sh, the first thing the test suite checks; lld: the

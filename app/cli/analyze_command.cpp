@@ -1,18 +1,18 @@
 // `lenslab analyze SCENE` (or a lens file, .zmx, .zar or .seq): the optical bench. Focal
 // lengths, principal planes, spherical and chromatic aberration and spot sizes of the lenses
 // on one axis, as a table or JSON, and a ray diagram as SVG. The measuring is the library's
-// (analysis/analyze_request.h); this command reads the options and prints.
+// (analysis/report/analyze_request.h); this command reads the options and prints.
 
 #include <filesystem>
 #include <iostream>
 #include <memory>
 
-#include "analysis/analyze_request.h"
-#include "analysis/curve_report.h"
-#include "analysis/diffraction_report.h"
-#include "analysis/fan_report.h"
-#include "analysis/field_map_report.h"
-#include "analysis/spot_report.h"
+#include "analysis/report/analyze_request.h"
+#include "analysis/report/curve_report.h"
+#include "analysis/report/diffraction_report.h"
+#include "analysis/report/fan_report.h"
+#include "analysis/report/field_map_report.h"
+#include "analysis/report/spot_report.h"
 #include "analyze_options.h"
 #include "commands.h"
 #include "lensfile/lens_file.h"

@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "analysis/analyze_request.h"
+#include "analysis/report/analyze_request.h"
 
 namespace lenslab::cli {
 

@@ -9,9 +9,9 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "analysis/detection_run.h"
-#include "analysis/detector.h"
-#include "analysis/detector_files.h"
+#include "analysis/detectors/detection_run.h"
+#include "analysis/detectors/detector.h"
+#include "analysis/detectors/detector_files.h"
 #include "cluster/cluster_session.h"
 #include "commands.h"
 #include "render/photon_tracer.h"

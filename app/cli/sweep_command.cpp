@@ -9,8 +9,8 @@
 #include <memory>
 #include <sstream>
 
-#include "analysis/analyze_request.h"
-#include "analysis/sweep_table.h"
+#include "analysis/report/analyze_request.h"
+#include "analysis/report/sweep_table.h"
 #include "analyze_options.h"
 #include "cluster/cluster_session.h"
 #include "commands.h"

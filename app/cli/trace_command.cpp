@@ -4,7 +4,7 @@
 #include <memory>
 #include <regex>
 
-#include "analysis/ray_tree.h"
+#include "analysis/trace/ray_tree.h"
 #include "commands.h"
 #include "scene/scene_json.h"
 

@@ -5,7 +5,7 @@
 #include <QWidget>
 #include <optional>
 
-#include "analysis/ray_diagram.h"
+#include "analysis/figures/ray_diagram.h"
 
 namespace lenslab::gui {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "analysis/lens_report.h"
+#include "analysis/report/lens_report.h"
 #include "optics/glass.h"
 #include "util/error.h"
 

@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "analysis/diffraction_figures.h"
-#include "analysis/field_curves.h"
-#include "analysis/first_order.h"
-#include "analysis/ray_diagram.h"
-#include "analysis/ray_fans.h"
-#include "analysis/spot_diagrams.h"
+#include "analysis/aberrations/field_curves.h"
+#include "analysis/aberrations/ray_fans.h"
+#include "analysis/aberrations/spot_diagrams.h"
+#include "analysis/diffraction/diffraction_figures.h"
+#include "analysis/figures/ray_diagram.h"
+#include "analysis/system/first_order.h"
 
 namespace lenslab::gui {
 

@@ -7,8 +7,8 @@
 #include <QVBoxLayout>
 #include <algorithm>
 
-#include "analysis/detector_files.h"
-#include "analysis/detector_image.h"
+#include "analysis/detectors/detector_files.h"
+#include "analysis/detectors/detector_image.h"
 #include "json_pointer.h"
 #include "scene_document.h"
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <thread>
 
-#include "analysis/detector.h"
+#include "analysis/detectors/detector.h"
 
 namespace lenslab::gui {
 

@@ -1,11 +1,11 @@
 #pragma once
-// Paints a RayDiagram (analysis/ray_diagram.h) with QPainter: the editor's ray diagram and
+// Paints a RayDiagram (analysis/figures/ray_diagram.h) with QPainter: the editor's ray diagram and
 // section view draw the same model the SVG writer exports.
 
 #include <QPainter>
 #include <optional>
 
-#include "analysis/ray_diagram.h"
+#include "analysis/figures/ray_diagram.h"
 
 namespace lenslab::gui {
 

@@ -1,10 +1,10 @@
 #pragma once
-// The bench's figures (analysis/diagram_canvas.h) painted with QPainter: the same layout the
-// command line writes as SVG or PNG, scaled to fit a widget, so editor and CLI agree.
+// The bench's figures (analysis/figures/diagram_canvas.h) painted with QPainter: the same layout
+// the command line writes as SVG or PNG, scaled to fit a widget, so editor and CLI agree.
 
 #include <QPainter>
 
-#include "analysis/diagram_canvas.h"
+#include "analysis/figures/diagram_canvas.h"
 
 namespace lenslab::gui {
 

@@ -10,9 +10,9 @@
 #include <QVBoxLayout>
 #include <cmath>
 
-#include "analysis/curve_figures.h"
-#include "analysis/field_figures.h"
-#include "analysis/lens_report.h"
+#include "analysis/figures/curve_figures.h"
+#include "analysis/figures/field_figures.h"
+#include "analysis/report/lens_report.h"
 #include "bench_figure_view.h"
 #include "diagram_painter.h"
 #include "json_pointer.h"

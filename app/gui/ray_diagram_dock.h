@@ -10,7 +10,7 @@
 #include <QLabel>
 #include <optional>
 
-#include "analysis/ray_diagram.h"
+#include "analysis/figures/ray_diagram.h"
 #include "bench_figures.h"
 #include "optimise_design_json.h"
 

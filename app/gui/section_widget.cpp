@@ -6,7 +6,7 @@
 #include <QWheelEvent>
 #include <cmath>
 
-#include "analysis/ray_diagram_svg.h"
+#include "analysis/figures/ray_diagram_svg.h"
 #include "diagram_painter.h"
 #include "json_pointer.h"
 #include "scene/object_types.h"

@@ -1,14 +1,14 @@
 #pragma once
-// The 2-D section view: the plane through the selected lens's axis (analysis/section_view.h)
-// with every object's cross-section and the rays traced through them. It follows the
-// selection, redraws on every scene change, and an object dragged in it moves by the same
-// undoable edit as the property panel's (the rays follow while dragging).
+// The 2-D section view: the plane through the selected lens's axis
+// (analysis/section/section_view.h) with every object's cross-section and the rays traced through
+// them. It follows the selection, redraws on every scene change, and an object dragged in it moves
+// by the same undoable edit as the property panel's (the rays follow while dragging).
 
 #include <QPointF>
 #include <QWidget>
 #include <nlohmann/json.hpp>
 
-#include "analysis/section_view.h"
+#include "analysis/section/section_view.h"
 
 namespace lenslab::gui {
 

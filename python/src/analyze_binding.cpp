@@ -1,4 +1,4 @@
-// lenslab.analyze's engine: analyze_scene (analysis/analyze_request.h), the work of `lenslab
+// lenslab.analyze's engine: analyze_scene (analysis/report/analyze_request.h), the work of `lenslab
 // analyze`, kept as an AnalyzeRun whose document is the one `lenslab analyze --json` prints,
 // whose figures are the SVG text the command line writes to files, and whose spot diagrams'
 // ray hits come out as numpy arrays. lenslab.analyze_many runs it on a list of scenes across
@@ -15,8 +15,8 @@
 #include <thread>
 #include <vector>
 
-#include "analysis/analyze_figures.h"
-#include "analysis/analyze_request.h"
+#include "analysis/figures/analyze_figures.h"
+#include "analysis/report/analyze_request.h"
 #include "background_job.h"
 #include "bindings.h"
 #include "scene/json_reader.h"

@@ -1,4 +1,4 @@
-// lenslab.detect's engine: run_detection (analysis/detection_run.h), the work of `lenslab
+// lenslab.detect's engine: run_detection (analysis/detectors/detection_run.h), the work of `lenslab
 // detect`, as a BackgroundJob (Ctrl-C cancels it), kept as a DetectionRun whose maps come out
 // as numpy arrays and whose files are the command line's.
 
@@ -7,8 +7,8 @@
 
 #include <filesystem>
 
-#include "analysis/detection_run.h"
-#include "analysis/detector_files.h"
+#include "analysis/detectors/detection_run.h"
+#include "analysis/detectors/detector_files.h"
 #include "background_job.h"
 #include "bindings.h"
 #include "scene_bridge.h"

@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "analysis/ray_tree.h"
+#include "analysis/trace/ray_tree.h"
 #include "bindings.h"
 #include "optics/spectrum.h"
 #include "scene/json_reader.h"

@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "analysis/first_order.h"
-#include "analysis/paraxial.h"
-#include "analysis/polychromatic_spot.h"
+#include "analysis/aberrations/polychromatic_spot.h"
+#include "analysis/system/first_order.h"
+#include "analysis/system/paraxial.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // What the scene file says about a detector (docs/scene-format.md, "Detectors"): a flat
 // object (triangle, disc, rectangle) that measures the light arriving on it. The
-// measurement itself is in src/analysis/detector.h.
+// measurement itself is in src/analysis/detectors/detector.h.
 
 #include <algorithm>
 #include <cmath>

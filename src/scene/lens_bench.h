@@ -2,7 +2,7 @@
 // The system data an imported lens file keeps beside its lens: the scene's "bench" block, as
 // `lenslab import` writes it (docs/scene-format.md, "Lens file"). The optical bench takes
 // its wavelengths, fields, aperture and image plane for what it is not asked otherwise
-// (analysis/lens_bench_defaults.h); `lenslab export` writes them back.
+// (analysis/system/lens_bench_defaults.h); `lenslab export` writes them back.
 
 #include <nlohmann/json.hpp>
 #include <optional>

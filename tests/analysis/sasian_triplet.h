@@ -7,8 +7,8 @@
 // 3); the page uses an entrance pupil diameter of 12.5, a 20 degree field and 587.5618 nm.
 // The diameters are the page's semi-diameters, rounded up; paraxial figures ignore them.
 
-#include "analysis/first_order.h"
-#include "analysis/seidel.h"
+#include "analysis/aberrations/seidel.h"
+#include "analysis/system/first_order.h"
 #include "analysis/system/optical_system.h"
 #include "lens_scene_builder.h"
 

@@ -11,7 +11,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "analysis/detector.h"
+#include "analysis/detectors/detector.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {

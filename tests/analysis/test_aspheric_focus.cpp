@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/ray_tree.h"
+#include "analysis/trace/ray_tree.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {

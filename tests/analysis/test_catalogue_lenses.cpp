@@ -21,7 +21,7 @@
 
 #include <cmath>
 
-#include "analysis/lens_report.h"
+#include "analysis/report/lens_report.h"
 #include "lens_scene_builder.h"
 
 namespace lenslab {

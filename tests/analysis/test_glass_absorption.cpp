@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "analysis/detector.h"
-#include "analysis/ray_tree.h"
+#include "analysis/detectors/detector.h"
+#include "analysis/trace/ray_tree.h"
 #include "optics/absorption.h"
 #include "optics/glass_library.h"
 #include "scene/scene_json.h"

@@ -5,7 +5,7 @@
 
 #include <cstdio>
 
-#include "analysis/detector.h"
+#include "analysis/detectors/detector.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {

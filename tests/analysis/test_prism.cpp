@@ -9,7 +9,7 @@
 #include <numbers>
 #include <optional>
 
-#include "analysis/ray_tree.h"
+#include "analysis/trace/ray_tree.h"
 #include "optics/glass.h"
 #include "scene/scene_json.h"
 

@@ -10,7 +10,7 @@
 #include <numbers>
 #include <vector>
 
-#include "analysis/ray_tree.h"
+#include "analysis/trace/ray_tree.h"
 #include "optics/glass.h"
 #include "scene/scene_json.h"
 

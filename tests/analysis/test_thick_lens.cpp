@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "analysis/ray_tree.h"
+#include "analysis/trace/ray_tree.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {

@@ -7,8 +7,8 @@
 #include <QTabWidget>
 #include <QtTest>
 
-#include "analysis/lens_report.h"
-#include "analysis/spot_diagrams.h"
+#include "analysis/aberrations/spot_diagrams.h"
+#include "analysis/report/lens_report.h"
 #include "bench_figure_view.h"
 #include "main_window.h"
 #include "optics/glass.h"

@@ -3,7 +3,7 @@
 
 #include <QtTest>
 
-#include "analysis/paraxial.h"
+#include "analysis/system/paraxial.h"
 #include "main_window.h"
 #include "ray_diagram_dock.h"
 #include "scene_document.h"

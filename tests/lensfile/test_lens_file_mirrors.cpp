@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "analysis/analyze_request.h"
+#include "analysis/report/analyze_request.h"
 #include "lensfile/lens_file_text.h"
 #include "lensfile/lens_group_from_prescription.h"
 #include "lensfile/seq_reader.h"

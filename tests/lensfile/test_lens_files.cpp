@@ -17,8 +17,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "analysis/paraxial.h"
 #include "analysis/system/optical_system.h"
+#include "analysis/system/paraxial.h"
 #include "lensfile/lens_file_text.h"
 #include "lensfile/lens_group_from_prescription.h"
 #include "lensfile/seq_reader.h"

@@ -16,7 +16,7 @@
 #include <cstdio>
 #include <string>
 
-#include "analysis/analyze_request.h"
+#include "analysis/report/analyze_request.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {

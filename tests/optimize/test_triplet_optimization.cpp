@@ -12,9 +12,9 @@
 
 #include <filesystem>
 
-#include "analysis/first_order.h"
-#include "analysis/paraxial.h"
-#include "analysis/polychromatic_spot.h"
+#include "analysis/aberrations/polychromatic_spot.h"
+#include "analysis/system/first_order.h"
+#include "analysis/system/paraxial.h"
 #include "optimize/optimize_design.h"
 #include "scene/scene_json.h"
 

@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "analysis/detector.h"
+#include "analysis/detectors/detector.h"
 #include "mean_green.h"
 #include "render/density_tracking.h"
 #include "render/medium_transport.h"

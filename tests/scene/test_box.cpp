@@ -7,7 +7,7 @@
 #include <numbers>
 #include <string>
 
-#include "analysis/ray_tree.h"
+#include "analysis/trace/ray_tree.h"
 #include "geometry/triangle_mesh.h"
 #include "scene/scene_json.h"
 #include "util/scene_error.h"

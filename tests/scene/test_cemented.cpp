@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "analysis/ray_tree.h"
+#include "analysis/trace/ray_tree.h"
 #include "optics/fresnel.h"
 #include "scene/scene_json.h"
 

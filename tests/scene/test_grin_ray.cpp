@@ -6,7 +6,7 @@
 #include <numbers>
 #include <string>
 
-#include "analysis/ray_tree.h"
+#include "analysis/trace/ray_tree.h"
 #include "scene/interaction.h"
 #include "scene/scene_json.h"
 

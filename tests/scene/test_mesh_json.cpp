@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "analysis/ray_tree.h"
+#include "analysis/trace/ray_tree.h"
 #include "geometry/triangle_mesh.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "analysis/ray_tree.h"
+#include "analysis/trace/ray_tree.h"
 #include "scene/scene_json.h"
 #include "util/scene_error.h"
 

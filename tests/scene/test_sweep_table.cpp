@@ -1,9 +1,9 @@
-// The table of a sweep --analyze (analysis/sweep_table.h): which figures become columns, and
+// The table of a sweep --analyze (analysis/report/sweep_table.h): which figures become columns, and
 // the CSV and sweep.json built from them.
 
 #include <gtest/gtest.h>
 
-#include "analysis/sweep_table.h"
+#include "analysis/report/sweep_table.h"
 
 namespace lenslab {
 namespace {

@@ -75,7 +75,7 @@ struct SystemElement {
     double semi_diameter = 0.0;
     // A gradient index about the system's axis (radial or axial, optics/grin_profile.h),
     // null for homogeneous glass; its centre in world coordinates; and the lens solid, in
-    // which rays curve from one face to the other (analysis/grin_gap.h).
+    // which rays curve from one face to the other (analysis/system/grin_gap.h).
     std::shared_ptr<const GrinProfile> grin;
     Vec3 grin_centre;
     std::shared_ptr<const Shape> solid;

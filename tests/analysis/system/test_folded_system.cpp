@@ -10,13 +10,13 @@
 #include <cstdio>
 #include <sstream>
 
-#include "analysis/aberrations.h"
-#include "analysis/field_beam.h"
-#include "analysis/first_order.h"
-#include "analysis/paraxial.h"
-#include "analysis/real_ray.h"
-#include "analysis/seidel.h"
+#include "analysis/aberrations/aberrations.h"
+#include "analysis/aberrations/seidel.h"
+#include "analysis/system/field_beam.h"
+#include "analysis/system/first_order.h"
 #include "analysis/system/optical_system.h"
+#include "analysis/system/paraxial.h"
+#include "analysis/system/real_ray.h"
 #include "geometry/lens/lens_solid.h"
 #include "optics/refraction.h"
 #include "scene/scene_json.h"

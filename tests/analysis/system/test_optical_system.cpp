@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "../lens_scene_builder.h"
-#include "analysis/paraxial.h"
 #include "analysis/system/optical_system.h"
+#include "analysis/system/paraxial.h"
 
 namespace lenslab {
 namespace {

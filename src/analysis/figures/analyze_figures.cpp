@@ -1,0 +1,71 @@
+#include "analysis/figures/analyze_figures.h"
+
+#include "analysis/figures/curve_figures.h"
+#include "analysis/figures/field_figures.h"
+#include "analysis/figures/ray_diagram_svg.h"
+
+namespace lenslab {
+
+namespace {
+
+// The field figures' size: field_figure_width(panels) wide and at least 300 high.
+BenchFigure field_figure(RayDiagram diagram, int panels) {
+    return {std::move(diagram), field_figure_width(panels), 300};
+}
+
+[[noreturn]] void not_asked(const std::string& name, const std::string& option) {
+    throw AnalyzeRequestError("figure '" + name + "': it needs --" + option +
+                              ", which was not asked for");
+}
+
+}  // namespace
+
+const std::vector<std::string>& bench_figure_names() {
+    static const std::vector<std::string> names{"ray_diagram",  "spots",       "fans",
+                                                "field_curves", "focal_shift", "mtf"};
+    return names;
+}
+
+BenchFigure bench_figure(const AnalyzeResults& r, const AnalyzeRequest& request,
+                         const std::string& name) {
+    const std::string& unit = request.unit;
+    const std::string field_unit =
+        request.object_distance > 0 ? (unit.empty() ? "units" : unit) : "deg";
+    if (name == "ray_diagram") {
+        RayDiagramOptions diagram;
+        diagram.unit = unit;
+        return {make_ray_diagram(r.system, r.report, diagram), 1200, 360};
+    }
+    if (name == "spots") {
+        if (!r.spots) not_asked(name, "spots");
+        return field_figure(spot_diagram_figure(*r.spots, unit, field_unit),
+                            static_cast<int>(r.spots->fields.size()));
+    }
+    if (name == "fans") {
+        if (!r.fans) not_asked(name, "fans");
+        return field_figure(ray_fan_figure(*r.fans, unit, field_unit), 2);
+    }
+    if (name == "field_curves") {
+        if (!r.curves) not_asked(name, "field-curves");
+        return field_figure(field_curves_figure(*r.curves, unit, field_unit), 2);
+    }
+    if (name == "focal_shift") {
+        if (!r.shift) not_asked(name, "focal-shift");
+        return field_figure(focal_shift_figure(*r.shift, unit), 1);
+    }
+    if (name == "mtf") {
+        if (!r.diffraction || !request.mtf) not_asked(name, "mtf");
+        return field_figure(mtf_figure(*r.diffraction, unit), 1);
+    }
+    std::string known;
+    for (const std::string& n : bench_figure_names()) known += (known.empty() ? "" : ", ") + n;
+    throw AnalyzeRequestError("figure '" + name + "': unknown (known: " + known + ")");
+}
+
+std::string bench_figure_svg(const AnalyzeResults& results, const AnalyzeRequest& request,
+                             const std::string& name) {
+    const BenchFigure f = bench_figure(results, request, name);
+    return ray_diagram_svg(f.diagram, f.width, f.min_height);
+}
+
+}  // namespace lenslab

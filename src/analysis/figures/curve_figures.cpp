@@ -1,0 +1,156 @@
+#include "analysis/figures/curve_figures.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/figures/plot_panel.h"
+#include "analysis/section/section_view.h"
+
+namespace lenslab {
+
+namespace {
+
+constexpr double kCurvePanelGap = 0.6;  // between panels, in diagram units
+constexpr double kSagittalDash = 6;
+
+// The largest |v| over the values, or 1 when there is none (a flat chart).
+double curve_half_range(const std::vector<double>& values) {
+    double largest = 0;
+    for (double v : values) {
+        if (!std::isnan(v)) largest = std::max(largest, std::abs(v));
+    }
+    return largest > 0 ? 1.05 * largest : 1.0;
+}
+
+// The frame every chart of this file shares: room above for titles, below for axis labels.
+void frame_panels(RayDiagram& d, int panels) {
+    // A hair wider than the panels, so the frame's clip keeps their outer edges.
+    d.z_min = -1.02;
+    d.z_max = 1.02 + (panels - 1) * (2 + kCurvePanelGap);
+    d.y_min = -1.25;
+    d.y_max = 1.2;
+    d.scale_bar = 0;
+}
+
+}  // namespace
+
+RayDiagram field_curves_figure(const FieldCurves& r, const std::string& unit,
+                               const std::string& field_unit) {
+    RayDiagram d;
+    frame_panels(d, 2);
+    std::vector<double> foci, distortion, wavelengths;
+    double max_field = 0;
+    for (const FieldCurve& c : r.curves) {
+        wavelengths.push_back(c.wavelength_nm);
+        for (const FieldCurvePoint& p : c.points) {
+            foci.insert(foci.end(), {p.tangential, p.sagittal});
+            distortion.push_back(100.0 * p.distortion);
+            max_field = std::max(max_field, p.field);
+        }
+    }
+    const double focus_range = curve_half_range(foci),
+                 distortion_range = curve_half_range(distortion);
+    PlotPanel focus, distort;
+    focus.centre = {0, 0};
+    distort.centre = {2 + kCurvePanelGap, 0};
+    for (PlotPanel* p : {&focus, &distort}) {
+        p->y_min = 0;
+        p->y_max = max_field > 0 ? max_field : 1;
+        p->y_max_label = "field " + plot_text("%g ", max_field) + field_unit;
+    }
+    focus.x_min = -focus_range;
+    focus.x_max = focus_range;
+    focus.title = "foci: tangential solid, sagittal dashed";
+    focus.x_min_label = plot_length(-focus_range, unit);
+    focus.x_max_label = plot_length(focus_range, unit);
+    distort.x_min = -distortion_range;
+    distort.x_max = distortion_range;
+    distort.title = "distortion";
+    distort.x_min_label = plot_text("%.3g %%", -distortion_range);
+    distort.x_max_label = plot_text("%.3g %%", distortion_range);
+    for (const FieldCurve& c : r.curves) {
+        PlotCurve tangential, sagittal, real;
+        for (const FieldCurvePoint& p : c.points) {
+            tangential.x.push_back(p.tangential);
+            sagittal.x.push_back(p.sagittal);
+            // On the axis distortion is 0/0: the curve starts there at 0.
+            real.x.push_back(p.field == 0 ? 0.0 : 100.0 * p.distortion);
+            for (PlotCurve* curve : {&tangential, &sagittal, &real}) curve->y.push_back(p.field);
+        }
+        for (PlotCurve* curve : {&tangential, &sagittal, &real}) {
+            curve->colour = wavelength_colour(c.wavelength_nm);
+        }
+        sagittal.dash = kSagittalDash;
+        focus.curves.push_back(std::move(tangential));
+        focus.curves.push_back(std::move(sagittal));
+        distort.curves.push_back(std::move(real));
+    }
+    draw_plot_panel(d, focus);
+    draw_plot_panel(d, distort);
+    d.legend = wavelength_legend(wavelengths);
+    d.title = "Field curves, image plane " + plot_text("%.4f", r.image_z) + " (system z)";
+    d.subtitle = "foci from the image plane along z, > 0 behind it";
+    return d;
+}
+
+RayDiagram focal_shift_figure(const FocalShift& s, const std::string& unit) {
+    RayDiagram d;
+    frame_panels(d, 1);
+    const double range = curve_half_range(s.shift);
+    PlotPanel p;
+    p.x_min = s.wavelengths.front();
+    p.x_max = s.wavelengths.back();
+    p.y_min = -range;
+    p.y_max = range;
+    p.title = "shift against wavelength";
+    p.x_min_label = plot_text("%g nm", p.x_min);
+    p.x_max_label = plot_text("%g nm", p.x_max);
+    p.y_max_label = "+";
+    p.y_max_label += plot_length(range, unit);
+    p.curves.push_back({s.wavelengths, s.shift, kPlotInk, 0});
+    draw_plot_panel(d, p);
+    d.title = "Chromatic focal shift";
+    d.subtitle = "paraxial image position minus that at " + plot_text("%.2f nm", s.reference_nm);
+    return d;
+}
+
+RayDiagram mtf_figure(const DiffractionFigures& d, const std::string& unit) {
+    RayDiagram figure;
+    PlotPanel panel;
+    const MtfCurves& mtf = d.mtf;
+    panel.x_min = 0;
+    panel.x_max = mtf.frequencies.empty() ? 1.0 : mtf.frequencies.back();
+    panel.y_min = 0;
+    panel.y_max = 1;
+    panel.title = "MTF on axis, " + plot_text("%.1f nm", d.wavelength_nm) + ", Strehl " +
+                  plot_text("%.3f", d.strehl);
+    panel.x_min_label = plot_text("%g", 0.0);
+    panel.x_max_label =
+        plot_text("%.4g", panel.x_max) + " cycles/" + (unit.empty() ? "unit" : unit);
+    panel.y_max_label = plot_text("%g", 1.0);
+    // Every MTF is 1 at frequency 0 (normalised): the curves start there.
+    const auto from_zero = [](std::vector<double> v, double at_zero) {
+        v.insert(v.begin(), at_zero);
+        return v;
+    };
+    const bool has_zero = !mtf.frequencies.empty() && mtf.frequencies.front() == 0.0;
+    const auto curve = [&](const std::vector<double>& values, DiagramColour colour, double dash) {
+        if (has_zero) return PlotCurve{mtf.frequencies, values, colour, dash};
+        return PlotCurve{from_zero(mtf.frequencies, 0.0), from_zero(values, 1.0), colour, dash};
+    };
+    panel.curves = {curve(mtf.diffraction_limit, kPlotGrey, 0),
+                    curve(mtf.tangential, kDiagramBlueF, 0), curve(mtf.sagittal, kDiagramBlueF, 6)};
+    // One panel of ±1 about the origin, as the bench's other charts lay theirs out.
+    figure.z_min = -1.02;
+    figure.z_max = 1.02;
+    figure.y_min = -1.25;
+    figure.y_max = 1.15;
+    draw_plot_panel(figure, panel);
+    // Two entries, so the legend fits one panel's width.
+    figure.legend = {{kPlotGrey, "diffraction limit"}, {kDiagramBlueF, "T solid, S dashed"}};
+    figure.title = "MTF";
+    figure.scale_bar = 0;
+    return figure;
+}
+
+}  // namespace lenslab
