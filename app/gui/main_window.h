@@ -9,6 +9,10 @@
 #include <QProgressBar>
 #include <QTabWidget>
 
+namespace lenslab {
+struct ElementEdit;
+}  // namespace lenslab
+
 namespace lenslab::gui {
 
 class DetectorDock;
@@ -92,6 +96,10 @@ private:
     void export_section_svg();
     void build_section_tab();
     void show_message(const QString& text);
+    // Applies an edit of the scene's elements (scene/element_edits.h) as one undo step and
+    // selects what it added (nothing, after a removal); false, with the reason shown, if the
+    // document refused it.
+    bool apply_element_edit(const ElementEdit& edit, const QString& label);
     // The status line: "sppm · rendering (pass 12 of 256) · photons ... · 3.4 s", and the
     // progress bar beside it.
     void show_frame(int passes, qint64 photons, double seconds, const QString& integrator);

@@ -151,6 +151,8 @@ double radiant_watts(const Spectrum& s, double lo_nm = kLambdaMinNm, double hi_n
 // Light spectra normalised to the radiant power of D65 white over the visible range, so a
 // light's `power` means the same energy whatever its spectrum.
 SpectrumPtr d65_spectrum();
+// A blackbody's temperatures the scene accepts: from a candle's glow to a hot star's blue.
+inline constexpr double kBlackbodyMinK = 500, kBlackbodyMaxK = 100000;
 SpectrumPtr blackbody_spectrum(double kelvin);
 SpectrumPtr line_spectrum(double nm, double width_nm = 1.0);
 

@@ -14,6 +14,7 @@
 
 #include "math/vec3.h"
 #include "optics/rgb.h"
+#include "scene/json_strict_parse.h"
 #include "util/scene_error.h"
 
 namespace lenslab {
@@ -24,26 +25,17 @@ inline constexpr double kMaxSceneNumber = 1e15;
 // Formats a number for messages the way a user typed it: 5, -1, 0.25.
 std::string format_number(double v);
 
-// How deep arrays and objects may nest in a scene file, and how much memory its parsed values
-// may take (an estimate counting each value, array, object and key as the library stores it).
-// Far above any real scene; they keep a hostile or runaway file from exhausting the stack or
-// the memory. docs/scene-format.md#limits gives the messages.
-inline constexpr int kMaxJsonDepth = 512;
-inline constexpr uint64_t kMaxJsonValueBytes = uint64_t{512} << 20;
-
 // A bounded, flat excerpt of an input value for messages that quote it: at most about 60
 // characters, arrays and objects inside the value shown as [...] and {...} (so it never
 // recurses, however deep the value), control characters escaped.
 std::string excerpt(const nlohmann::json& value);
 
-// Parses JSON text, refusing what nlohmann would accept silently: a key given twice in one
-// object (the first value would be lost). Throws SceneError with path `source` for syntax
-// errors, numbers out of range, nesting deeper than kMaxJsonDepth and values over
-// kMaxJsonValueBytes, and with the JSON path of a duplicated key. Time and memory are linear
-// in the text's length.
-// `max_value_bytes` is for tests.
-nlohmann::json parse_json_strict(const std::string& text, const std::string& source,
-                                 uint64_t max_value_bytes = kMaxJsonValueBytes);
+// The path of an array's element: "objects" and 2 give "objects[2]".
+std::string element_path(const std::string& array_path, size_t i);
+
+// The `type` of an object or light, read first: it decides which other keys belong. Throws
+// SceneError at `path` when the value is no object, or its type is missing or no string.
+std::string read_type_key(const nlohmann::json& j, const std::string& path);
 
 // The candidate spelled most like `word` (at most 2 edits away), or "" if none is close:
 // for "did you mean" hints.

@@ -33,10 +33,6 @@ struct Polygons {
     std::string key;               // "faces" or "file": where problems with the surface point
 };
 
-std::string item_path(const std::string& base, size_t i) {
-    return base + "[" + std::to_string(i) + "]";
-}
-
 // Fans a polygon from its first corner: (0, 1, 2), (0, 2, 3), ... Exact for convex polygons,
 // and it keeps every polygon edge, so closedness does not depend on the triangulation.
 void add_fan(std::span<const int32_t> corners, int32_t face, Polygons& p) {
@@ -59,12 +55,12 @@ Vec3 read_vertex(const json& v, const std::string& base, size_t i) {
         }
         if (ok) return p;
     }
-    return JsonObjectReader::as_vec3(v, item_path(base, i));
+    return JsonObjectReader::as_vec3(v, element_path(base, i));
 }
 
 int32_t read_index(const json& v, const std::string& face_path, size_t k, size_t vertex_count) {
     if (!v.is_number_integer()) {
-        const std::string path = item_path(face_path, k);
+        const std::string path = element_path(face_path, k);
         const double d = JsonObjectReader::as_number(v, path);
         if (d != std::floor(d)) {
             throw SceneError(path,
@@ -75,10 +71,10 @@ int32_t read_index(const json& v, const std::string& face_path, size_t k, size_t
         const int64_t i = v.get<int64_t>();
         if (i >= 0 && static_cast<uint64_t>(i) < vertex_count) return static_cast<int32_t>(i);
     }
-    throw SceneError(item_path(face_path, k), "must be a vertex index from 0 to " +
-                                                  std::to_string(vertex_count - 1) +
-                                                  " (there are " + std::to_string(vertex_count) +
-                                                  " vertices), got " + excerpt(v));
+    throw SceneError(element_path(face_path, k), "must be a vertex index from 0 to " +
+                                                     std::to_string(vertex_count - 1) +
+                                                     " (there are " + std::to_string(vertex_count) +
+                                                     " vertices), got " + excerpt(v));
 }
 
 Polygons read_inline(JsonObjectReader& r) {
@@ -105,16 +101,16 @@ Polygons read_inline(JsonObjectReader& r) {
         const json& face = faces[f];
         if (!face.is_array() || face.size() < 3) {
             throw SceneError(
-                item_path(fpath, f),
+                element_path(fpath, f),
                 "a face must be an array of at least 3 vertex indices, got " +
                     (face.is_array() ? std::to_string(face.size()) + " indices" : excerpt(face)));
         }
         corners.clear();
         for (size_t k = 0; k < face.size(); ++k) {
-            const int32_t index = read_index(face[k], item_path(fpath, f), k, vertices.size());
+            const int32_t index = read_index(face[k], element_path(fpath, f), k, vertices.size());
             for (int32_t c : corners) {
                 if (c == index) {
-                    throw SceneError(item_path(fpath, f),
+                    throw SceneError(element_path(fpath, f),
                                      "vertex " + std::to_string(index) + " appears twice");
                 }
             }

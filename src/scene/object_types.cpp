@@ -20,10 +20,6 @@ namespace {
 
 using nlohmann::json;
 
-std::string index_path(const std::string& base, size_t i) {
-    return base + "[" + std::to_string(i) + "]";
-}
-
 // A length one form requires: absent is "missing (required)", as for any required key.
 double form_length(SpecReader& r, const std::string& key) {
     (void)r.require(key);
@@ -81,7 +77,7 @@ std::shared_ptr<const Shape> read_triangle(SpecReader& r) {
         throw SceneError(vpath, "must be an array of 3 points [[x,y,z], [x,y,z], [x,y,z]]");
     }
     Vec3 p[3];
-    for (int i = 0; i < 3; ++i) p[i] = JsonObjectReader::as_vec3(v[i], index_path(vpath, i));
+    for (int i = 0; i < 3; ++i) p[i] = JsonObjectReader::as_vec3(v[i], element_path(vpath, i));
     // Relative to the edges, so tiny triangles in a large-unit scene are fine: the sine of
     // the angle at vertex 0 must not vanish.
     const Vec3 e1 = p[1] - p[0], e2 = p[2] - p[0];

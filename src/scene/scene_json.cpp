@@ -39,10 +39,6 @@ namespace {
 
 using nlohmann::json;
 
-std::string index_path(const std::string& base, size_t i) {
-    return base + "[" + std::to_string(i) + "]";
-}
-
 void read_camera(const json& j, CameraSettings& cam) {
     SpecReader r(j, "camera", camera_spec());
     cam.position = r.point("position");
@@ -201,15 +197,6 @@ std::map<std::string, int> read_materials(const json& j, std::vector<Material>& 
     return by_name;
 }
 
-// The `type` of an object or light, read first: it decides which other keys belong.
-std::string peek_type(const json& j, const std::string& path) {
-    if (!j.is_object()) throw SceneError(path, "must be an object { \"type\": ... }");
-    const auto it = j.find("type");
-    if (it == j.end()) throw_missing_key(j, path, "type");
-    if (!it->is_string()) throw SceneError(path + ".type", "must be a string");
-    return it->get<std::string>();
-}
-
 int read_material_ref(JsonObjectReader& r, const std::string& owner_name,
                       const std::map<std::string, int>& materials, std::vector<Material>& all) {
     const json& m = r.require("material");
@@ -251,7 +238,7 @@ void check_not_emitting(JsonObjectReader& r, const Material& m) {
 SceneObject read_object(const json& j, const std::string& path,
                         const std::map<std::string, int>& materials, std::vector<Material>& all,
                         const std::string& base_dir) {
-    const std::string type = peek_type(j, path);
+    const std::string type = read_type_key(j, path);
     const ObjectTypeEntry* kind = find_object_type(type);
     if (!kind || !kind->read) throw SceneError(path + ".type", unknown_object_type_message(type));
     SceneObject o;
@@ -285,77 +272,6 @@ SceneObject read_object(const json& j, const std::string& path,
             throw SceneError(r.child_path("material"), "its GRIN index: " + *why);
     }
     return o;
-}
-
-// An axis across the beam: given (not parallel to the direction), or the automatic one;
-// made square to the direction.
-Vec3 read_beam_axis(SpecReader& r, const std::string& key, const Vec3& direction,
-                    const Vec3& automatic) {
-    if (!r.has(key)) return automatic;
-    const Vec3 axis = r.unit_vector(key);
-    if (length(cross(axis, direction)) < 1e-6)
-        throw SceneError(r.child_path(key), "must not be parallel to direction");
-    return normalize(axis - direction * dot(axis, direction));
-}
-
-// A beam's slit or a line laser's fan (light.h).
-void read_beam_shape(SpecReader& r, BeamLight& b) {
-    b.slit_width = r.real("slit_width");
-    b.fan_angle = r.real("fan_angle");
-    if (b.slit_width > 2.0 * b.radius) {
-        throw SceneError(r.child_path("slit_width"), "must be at most 2 radius (" +
-                                                         format_number(2.0 * b.radius) + "), got " +
-                                                         format_number(b.slit_width));
-    }
-    if (b.slit_width > 0.0 && b.fan_angle > 0.0) {
-        throw SceneError(r.child_path("slit_width"),
-                         "a slit and a fan (fan_angle) do not go together: give one");
-    }
-    b.slit_axis = read_beam_axis(r, "slit_axis", b.direction, default_slit_axis(b.direction));
-    b.fan_axis = read_beam_axis(r, "fan_axis", b.direction, default_fan_axis(b.direction));
-}
-
-void read_light(const json& j, const std::string& path, SceneLights& lights) {
-    const std::string type = peek_type(j, path);
-    if (type == "point") {
-        SpecReader r(j, path, point_light_spec());
-        PointLight l;
-        l.position = r.point("position");
-        l.power = r.real("power");
-        l.spectrum = light_spectrum(r, l.color, l.power);
-        lights.points.push_back(l);
-    } else if (type == "beam" || type == "laser") {
-        // A laser is a beam of one line, placed by its `position`.
-        const bool laser = type == "laser";
-        SpecReader r(j, path, laser ? laser_spec() : beam_spec());
-        BeamLight b;
-        b.origin = r.point(laser ? "position" : "origin");
-        b.direction = r.unit_vector("direction");
-        b.radius = r.real("radius");
-        b.power = r.real("power");
-        b.spectrum = laser ? laser_spectrum(r, r.real("wavelength"), b.power)
-                           : light_spectrum(r, b.color, b.power);
-        read_beam_shape(r, b);
-        lights.beams.push_back(b);
-    } else if (type == "spot") {
-        SpecReader r(j, path, spot_light_spec());
-        SpotLight l;
-        l.position = r.point("position");
-        l.direction = r.unit_vector("direction");
-        l.cone_angle = r.real("cone_angle");
-        l.falloff = r.real("falloff");
-        if (l.falloff > l.cone_angle) {
-            throw SceneError(r.child_path("falloff"), "must be at most cone_angle (" +
-                                                          format_number(l.cone_angle) + "), got " +
-                                                          format_number(l.falloff));
-        }
-        l.power = r.real("power");
-        l.spectrum = light_spectrum(r, l.color, l.power);
-        lights.spots.push_back(l);
-    } else {
-        throw SceneError(path + ".type",
-                         "unknown light type '" + type + "' (known: point, beam, laser, spot)");
-    }
 }
 
 }  // namespace
@@ -403,8 +319,8 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
         if (!jo->is_array()) throw SceneError("objects", "must be an array");
         check_count(jo->size(), kMaxObjects, "objects", "objects");
         for (size_t i = 0; i < jo->size(); ++i) {
-            const std::string path = index_path("objects", i);
-            const std::string type = peek_type((*jo)[i], path);
+            const std::string path = element_path("objects", i);
+            const std::string type = read_type_key((*jo)[i], path);
             if (type == "lens_group" || type == "lens_file") {
                 json file_bench;
                 const json group = type == "lens_file" ? lens_group_from_lens_file(
@@ -445,14 +361,6 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
         scene.atmosphere = read_atmosphere(*atmosphere, atmosphere_region(scene));
     if (options.build_for_rendering) scene.build();
     return scene;
-}
-
-SceneLights lights_from_json(const nlohmann::json& lights) {
-    if (!lights.is_array()) throw SceneError("lights", "must be an array");
-    check_count(lights.size(), kMaxLights, "lights", "lights");
-    SceneLights out;
-    for (size_t i = 0; i < lights.size(); ++i) read_light(lights[i], index_path("lights", i), out);
-    return out;
 }
 
 CameraSettings camera_from_json(const nlohmann::json& camera) {

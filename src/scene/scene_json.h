@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/light_json.h"
 #include "scene/scene.h"
 
 namespace lenslab {
@@ -34,10 +35,6 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir = 
 // Reads a scene's `camera` block alone, with the checks and messages scene_from_json gives
 // it: an editor moving the camera need not rebuild the objects. Throws SceneError.
 CameraSettings camera_from_json(const nlohmann::json& camera);
-
-// A scene's `lights` array alone, checked as scene_from_json checks it: an editor changing a
-// light need not rebuild the objects. Throws SceneError.
-SceneLights lights_from_json(const nlohmann::json& lights);
 
 // Reads and parses a scene file; relative paths in it are relative to the file's folder.
 // Throws SceneError (unreadable file, syntax, content).

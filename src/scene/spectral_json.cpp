@@ -98,9 +98,10 @@ SpectrumPtr read_spectrum(const nlohmann::json& j, const std::string& path) {
     JsonObjectReader r(j, path, {"blackbody", "line", "width"}, "a spectrum");
     if (r.has("blackbody")) {
         const double k = r.positive("blackbody");
-        if (k < 500 || k > 100000) {
+        if (k < kBlackbodyMinK || k > kBlackbodyMaxK) {
             throw SceneError(r.child_path("blackbody"),
-                             "must be between 500 and 100000 K, got " + format_number(k));
+                             "must be between " + format_number(kBlackbodyMinK) + " and " +
+                                 format_number(kBlackbodyMaxK) + " K, got " + format_number(k));
         }
         return blackbody_spectrum(k);
     }

@@ -82,14 +82,29 @@ private:
     struct MediumSegment;
     class PhotonColours;
 
-    // `segments`: where the path's kMaxSegments segments through media go (nullptr: none).
+    // A pass's steps, in the order add_pass takes them (sppm.cpp), each in a file of its own.
+    struct PhotonPassSettings photon_pass_settings() const;
+    PassState next_pass() const;
+    int64_t pass_photons() const;
+    // Camera paths (sppm_camera_paths.cpp): every pixel's visible point, and a new pixel's
+    // radius; false when cancelled. `segments`: where the path's segments through media go
+    // (sppm::kMaxSegments; nullptr: none).
+    bool trace_camera_paths(const PassState& pass, RenderControl& control);
     void trace_camera_path(int x, int y, const PassState& pass, VisiblePoint& vp,
                            MediumSegment* segments) const;
     double auto_radius(double path_length) const;
-    void share_visible_points(Communicator& comm);
+    // The share of the pass's photons that take the pass wavelength.
+    double dispersed_photon_share() const;
+    // The gathers (sppm_surface_gather.cpp, sppm_volume_gather.cpp); the surface one returns
+    // the photon hits it looked through.
+    size_t gather_surface(const struct PhotonPass& photons, const PhotonColours& colours);
     void gather_volume(const PassState& pass, const struct PhotonPass& photons,
                        const PhotonColours& colours);
-    int64_t pass_photons() const;
+    // The exchange between ranks (sppm_cluster.cpp): the visible points' radii and flags of
+    // the rows dealt to others, the pixels of every row at rank 0, the mean radius.
+    void share_visible_points(Communicator& comm);
+    std::vector<std::vector<Pixel>> pixel_rows_at_root() const;
+    double mean_radius() const;
 
     const Scene& m_scene;
     int m_width, m_height;
