@@ -7,6 +7,7 @@
 #include "lensfile/lens_file_glass.h"
 #include "optics/glass.h"
 #include "optics/glass_library.h"
+#include "util/format_number.h"
 
 namespace lenslab {
 
@@ -64,7 +65,7 @@ public:
             if (!(travel * front.thickness > 0.0)) {
                 refuse(front.line,
                        prescription_surface_label(i) + ": a glass thickness of " +
-                           number_text(front.thickness) +
+                           format_number(front.thickness) +
                            (travel > 0 ? " (must be > 0)" : " (after a mirror, must be < 0)"));
             }
             const double sd = std::max(semi_diameter(i), semi_diameter(i + 1)) * m_mm;
@@ -108,12 +109,6 @@ public:
 private:
     [[noreturn]] void refuse(int line, const std::string& reason) const {
         throw LensFileError(m_p.file, line, reason);
-    }
-
-    static std::string number_text(double v) {
-        char text[32];
-        std::snprintf(text, sizeof text, "%.10g", v);
-        return text;
     }
 
     void check_ends() const {
@@ -205,8 +200,8 @@ private:
                                                : "some surfaces have no semi-aperture") +
                                    ": each surface without one gets the largest height of the "
                                    "paraxial rim rays (entrance pupil " +
-                                   number_text(2.0 * std::abs(pupil_radius)) + ", fields up to " +
-                                   number_text(largest) + " degrees, vignetting as given)"});
+                                   format_number(2.0 * std::abs(pupil_radius)) + ", fields up to " +
+                                   format_number(largest) + " degrees, vignetting as given)"});
     }
 
     double semi_diameter(size_t j) const {
@@ -231,7 +226,7 @@ private:
         if (next < image) {
             if (!(gap > 0.0)) {
                 refuse(m_s[from].line,
-                       "an air space of " + number_text(travel * gap) + " after " +
+                       "an air space of " + format_number(travel * gap) + " after " +
                            prescription_surface_label(from) +
                            (travel > 0 ? " (must be > 0)"
                                        : " (light travels back after a mirror: must be < 0)"));
@@ -265,7 +260,7 @@ private:
         if (hole > 0.0) {
             if (!(hole * m_mm < sd)) {
                 refuse(s.line, prescription_surface_label(i) + ": a central hole of radius " +
-                                   number_text(hole) + " as large as the mirror");
+                                   format_number(hole) + " as large as the mirror");
             }
             e["hole_diameter"] = 2.0 * hole * m_mm;
         }
@@ -338,11 +333,11 @@ private:
         const double widest = 1.0 + s.conic > 0.0 ? r / std::sqrt(1.0 + s.conic) : INFINITY;
         if (sd > widest * (1.0 + 1e-12)) {
             refuse(s.radius_line ? s.radius_line : s.line,
-                   prescription_surface_label(i) + ": radius " + number_text(s.radius * m_mm) +
-                       (s.conic != 0.0 ? " with conic " + number_text(s.conic) : "") +
-                       " mm is undefined beyond " + number_text(widest) +
-                       " mm from the axis, inside its element's semi-diameter " + number_text(sd) +
-                       " mm");
+                   prescription_surface_label(i) + ": radius " + format_number(s.radius * m_mm) +
+                       (s.conic != 0.0 ? " with conic " + format_number(s.conic) : "") +
+                       " mm is undefined beyond " + format_number(widest) +
+                       " mm from the axis, inside its element's semi-diameter " +
+                       format_number(sd) + " mm");
         }
     }
 

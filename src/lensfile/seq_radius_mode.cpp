@@ -5,15 +5,11 @@
 #include <cstdio>
 #include <vector>
 
+#include "util/format_number.h"
+
 namespace lenslab {
 
 namespace {
-
-std::string seq_mode_number_text(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.10g", v);
-    return text;
-}
 
 // The semi-aperture surface j must have: its CIR, and for a lens seen from infinity, at the
 // first curved surface and any flat ones before it, at least the entrance pupil's radius (the
@@ -45,15 +41,15 @@ std::string seq_implausible_radii(const LensFilePrescription& lens,
         const double reach = 1.0 + s[j].conic > 0.0 ? r / std::sqrt(1.0 + s[j].conic) : INFINITY;
         const double sd = seq_required_semi_aperture(lens, j);
         if (sd > 0.0 && reach < sd) {
-            return "surface " + std::to_string(j) + "'s " + seq_mode_number_text(v) +
-                   " cannot reach its semi-aperture " + seq_mode_number_text(sd);
+            return "surface " + std::to_string(j) + "'s " + format_number(v) +
+                   " cannot reach its semi-aperture " + format_number(sd);
         }
         ++curved;
         if (r < 0.5 * thinnest) ++tight;
     }
     if (curved > 0 && tight == curved) {
         return "every face would be more curved than a hemisphere across the thinnest glass, " +
-               seq_mode_number_text(thinnest) + " thick";
+               format_number(thinnest) + " thick";
     }
     return "";
 }

@@ -12,6 +12,7 @@
 #include "lensfile/lens_file_tokens.h"
 #include "lensfile/seq_lines.h"
 #include "lensfile/seq_radius_mode.h"
+#include "util/format_number.h"
 
 namespace lenslab {
 
@@ -25,12 +26,6 @@ const std::set<std::string>& seq_session_commands() {
         "CON", "ASP", "END", "DES", "DER", "PUX", "PUY", "PUI", "PCX", "PCY", "PCI", "SEL",
         "CCX", "CCK", "CCA", "CCB", "CCC", "CCD", "CCE", "CCF", "CCG", "TEL"};
     return commands;
-}
-
-std::string seq_number_text(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.10g", v);
-    return text;
 }
 
 // CODE V's surface qualifiers: SO (the object), SI (the image), Sk (surface k).
@@ -147,8 +142,8 @@ private:
                 s.glass.clear();
                 s.model_nd = nd;
                 s.model_vd = vd;
-                warn("glass '" + name + "' read as a model glass of n_d " + seq_number_text(nd) +
-                     " and V_d " + seq_number_text(vd));
+                warn("glass '" + name + "' read as a model glass of n_d " + format_number(nd) +
+                     " and V_d " + format_number(vd));
                 return;
             }
         }
@@ -163,8 +158,8 @@ private:
         s.glass.clear();
         s.model_nd = code->n_d;
         s.model_vd = code->V_d;
-        warn("glass '" + name + "' read as a model glass of n_d " + seq_number_text(code->n_d) +
-             " and V_d " + seq_number_text(code->V_d) + " (a CODE V glass code)" +
+        warn("glass '" + name + "' read as a model glass of n_d " + format_number(code->n_d) +
+             " and V_d " + format_number(code->V_d) + " (a CODE V glass code)" +
              (code->V_d > 0.0 ? "" : ", without dispersion"));
     }
 
@@ -367,12 +362,12 @@ private:
             m_edges[j] = {*value, m_line};
         } else if (kind == "OBS") {
             s.obscuration_semi_diameter = *value;
-            warn("CIR OBS: a central obscuration of radius " + seq_number_text(*value) + where +
+            warn("CIR OBS: a central obscuration of radius " + format_number(*value) + where +
                  "; on a mirror, its central hole; elsewhere recorded, but not yet used (no ray "
                  "is blocked by it)");
         } else {
             s.hole_semi_diameter = *value;
-            warn("CIR HOL: a hole of radius " + seq_number_text(*value) + where +
+            warn("CIR HOL: a hole of radius " + format_number(*value) + where +
                  ": a mirror's central hole (left out on a surface that is not a mirror)");
         }
     }
@@ -406,7 +401,7 @@ private:
             m_lens.warnings.push_back(
                 {edge.second, "CIR EDG: surface " + std::to_string(j) +
                                   " has no clear aperture (CIR); its edge aperture " +
-                                  seq_number_text(edge.first) + " is taken as its semi-diameter"});
+                                  format_number(edge.first) + " is taken as its semi-diameter"});
         }
     }
 

@@ -106,13 +106,6 @@ std::string read_type_key(const nlohmann::json& j, const std::string& path) {
     return it->get<std::string>();
 }
 
-std::string format_number(double v) {
-    std::ostringstream s;
-    s.precision(10);
-    s << v;
-    return s.str();
-}
-
 JsonObjectReader::JsonObjectReader(const nlohmann::json& value, std::string path,
                                    const std::vector<std::string>& allowed,
                                    const std::string& owner)

@@ -15,15 +15,13 @@
 #include "math/vec3.h"
 #include "optics/rgb.h"
 #include "scene/json_strict_parse.h"
+#include "util/format_number.h"
 #include "util/scene_error.h"
 
 namespace lenslab {
 
 // Largest magnitude any number in a scene file may have.
 inline constexpr double kMaxSceneNumber = 1e15;
-
-// Formats a number for messages the way a user typed it: 5, -1, 0.25.
-std::string format_number(double v);
 
 // A bounded, flat excerpt of an input value for messages that quote it: at most about 60
 // characters, arrays and objects inside the value shown as [...] and {...} (so it never

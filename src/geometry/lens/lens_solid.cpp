@@ -7,6 +7,7 @@
 #include "geometry/lens/spherical_surface.h"
 #include "math/quadratic.h"
 #include "util/error.h"
+#include "util/format_number.h"
 
 namespace lenslab {
 
@@ -21,16 +22,9 @@ Frame lens_frame(const LensPrescription& p) {
     return {u, cross(p.axis, u), p.axis};
 }
 
-std::string format(double v) {
-    std::ostringstream s;
-    s.precision(10);
-    s << v;
-    return s.str();
-}
-
 std::string where(const DiscPoint& q, bool symmetric) {
-    if (symmetric) return "r = " + format(std::hypot(q.x, q.y));
-    return "(x, y) = (" + format(q.x) + ", " + format(q.y) + ")";
+    if (symmetric) return "r = " + format_number(std::hypot(q.x, q.y));
+    return "(x, y) = (" + format_number(q.x) + ", " + format_number(q.y) + ")";
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "geometry/lens/sag_intersection.h"
+#include "util/format_number.h"
 
 namespace lenslab {
 
@@ -14,13 +15,6 @@ namespace {
 // Variables in the order values are passed to the formula.
 const std::vector<std::string> kSagVariables{"x", "y", "r"};
 constexpr const char* kSagHint = "(use r, or x and y)";
-
-std::string sag_formula_number(double v) {
-    std::ostringstream out;
-    out.precision(10);
-    out << v;
-    return out.str();
-}
 
 // The sag and its gradient for one intersection, on the calling thread's evaluator.
 struct FormulaSag {
@@ -39,9 +33,9 @@ struct FormulaSag {
         const double r = std::hypot(x, y);
         const double z = at(x, y, r);
         if (std::isnan(z) && formula && r <= max_r) {
-            const std::string point = symmetric ? "r = " + sag_formula_number(r)
-                                                : "(x, y) = (" + sag_formula_number(x) + ", " +
-                                                      sag_formula_number(y) + ")";
+            const std::string point =
+                symmetric ? "r = " + format_number(r)
+                          : "(x, y) = (" + format_number(x) + ", " + format_number(y) + ")";
             throw UndefinedFormulaError(*owner, *formula, point, {x, y, r, 0.0});
         }
         return z;
