@@ -26,7 +26,7 @@ std::vector<ParamSpec> emission_params(const Rgb& colour,
 }
 
 // A beam's or a laser's shapes: a slit across it, or a line laser's fan (not both; the
-// rules between fields are the reader's, scene_json.cpp).
+// rules between fields are the reader's, light_json.cpp).
 void add_beam_shapes(ElementSpec& s) {
     s.params.push_back(number_param("slit_width", 0)
                            .at_least(0)
