@@ -37,5 +37,6 @@ Action add_import_command(CLI::App& app);
 Action add_export_command(CLI::App& app);
 Action add_optimize_command(CLI::App& app);
 Action add_sweep_command(CLI::App& app);
+Action add_types_command(CLI::App& app);
 
 }  // namespace lenslab::cli

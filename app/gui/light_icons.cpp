@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "scene/light_spec.h"
+
 namespace lenslab::gui {
 
 namespace {
@@ -20,6 +22,15 @@ std::optional<Vec3> light_vector(const nlohmann::json& light, const char* key) {
     return Vec3{(*it)[0].get<double>(), (*it)[1].get<double>(), (*it)[2].get<double>()};
 }
 
+// The light type's first required key of `kind` (where it is; which way it shines), or null:
+// read from its declaration, so a new light type is drawn without an edit here.
+const char* declared_key(const ElementSpec& spec, ParamKind kind) {
+    for (const ParamSpec& p : spec.params) {
+        if (p.kind == kind && p.required) return p.key.c_str();
+    }
+    return nullptr;
+}
+
 }  // namespace
 
 std::vector<LightIcon> light_icons(const nlohmann::json& document, const ViewCamera& view) {
@@ -28,14 +39,16 @@ std::vector<LightIcon> light_icons(const nlohmann::json& document, const ViewCam
     if (lights == document.end() || !lights->is_array()) return icons;
     for (size_t i = 0; i < lights->size(); ++i) {
         const nlohmann::json& light = (*lights)[i];
-        const bool beam = light.value("type", "") == "beam";
-        const std::optional<Vec3> p = light_vector(light, beam ? "origin" : "position");
+        const ElementSpec* spec = find_light_spec(light.value("type", ""));
+        const char* where = spec ? declared_key(*spec, ParamKind::Point) : nullptr;
+        if (!where) continue;
+        const std::optional<Vec3> p = light_vector(light, where);
         if (!p) continue;
         const std::optional<QPointF> at = view.project(*p);
         if (!at) continue;
         LightIcon icon{int(i), *p, *at, std::nullopt};
-        if (beam) {
-            if (const std::optional<Vec3> d = light_vector(light, "direction")) {
+        if (const char* towards = declared_key(*spec, ParamKind::Direction)) {
+            if (const std::optional<Vec3> d = light_vector(light, towards)) {
                 const double length = kBeamArrowPixels * view.units_per_pixel(*p);
                 icon.beam_towards = view.project(*p + normalize(*d) * length);
             }

@@ -13,10 +13,12 @@
 namespace lenslab::gui {
 
 struct LightIcon {
-    int index = -1;                       // into the document's `lights`
-    Vec3 position;                        // a point light's position, a beam's origin
-    QPointF at;                           // where it is drawn
-    std::optional<QPointF> beam_towards;  // a beam: a point along its direction, on screen
+    int index = -1;  // into the document's `lights`
+    Vec3 position;   // a point light's position, a beam's origin
+    QPointF at;      // where it is drawn
+    // A light that shines one way (a beam, a spot, an area light): a point along its direction
+    // (or normal), on screen.
+    std::optional<QPointF> beam_towards;
 };
 
 // The icons of a document's `lights` (as read: checked already) that are in front of the eye.

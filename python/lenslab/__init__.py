@@ -11,7 +11,7 @@ from ._lenslab import Error, Glass, SceneError, glass
 from ._detect import Detection, Detector, detect
 from ._optics import Analysis, analyze, analyze_many, trace
 from ._render import render, write_image
-from ._scene import Scene
+from ._scene import Scene, types
 
 # Named as the package exposes them, not after the compiled module that defines them.
 for _exported in (Error, Glass, SceneError):
@@ -19,4 +19,4 @@ for _exported in (Error, Glass, SceneError):
 del _exported
 
 __all__ = ["Analysis", "Detection", "Detector", "Error", "Glass", "Scene", "SceneError",
-           "analyze", "analyze_many", "detect", "glass", "render", "trace", "write_image"]
+           "analyze", "analyze_many", "detect", "glass", "render", "trace", "types", "write_image"]

@@ -136,6 +136,14 @@ class Scene(MutableMapping):
 SceneSource = Union[Scene, Mapping[str, Any], str, "os.PathLike[str]"]
 
 
+def types() -> dict[str, dict[str, list[str]]]:
+    """The object and light types a scene may hold, each with the keys it takes (besides
+    "type"), from lenslab's own type tables: {"objects": {"sphere": [...]}, "lights": {...}}.
+    The same as `lenslab types --json`."""
+    listing = json.loads(_lenslab.types_json())
+    return {kind: {row["type"]: row["keys"] for row in rows} for kind, rows in listing.items()}
+
+
 def as_scene(source: SceneSource) -> Scene:
     """A Scene from a Scene, a dict or a scene file's path. A file is read, not yet checked:
     building it for the work checks it, with the same messages."""

@@ -4,6 +4,7 @@
 
 #include "bindings.h"
 #include "scene/json_reader.h"
+#include "scene/type_listing.h"
 
 namespace lenslab::python {
 
@@ -33,6 +34,9 @@ void bind_scene(py::module_& m) {
         py::arg("json_text"), py::arg("path"), py::arg("require_camera"),
         "Builds the scene and throws it away: SceneError if it is not a valid scene");
     m.def("default_scene_text", &default_scene_text, "The built-in default scene's JSON");
+    m.def(
+        "types_json", [] { return scene_types_json().dump(); },
+        "The object and light types and their keys, as `lenslab types --json`");
 }
 
 }  // namespace lenslab::python

@@ -8,9 +8,7 @@ Aabb atmosphere_region(const Scene& scene) {
     Aabb box;
     for (const SceneObject& o : scene.objects) box.expand(o.shape->bounds());
     box.expand(scene.camera.position);
-    for (const PointLight& l : scene.point_lights) box.expand(l.position);
-    for (const SpotLight& l : scene.spots) box.expand(l.position);
-    for (const BeamLight& l : scene.beams) box.expand(l.origin);
+    for (const LightPtr& l : scene.lights()) box.expand(l->bounds());
     // A margin, relative with a floor, so a flat scene still has a volume and light at
     // its edges is inside.
     const Vec3 pad = Vec3{1, 1, 1} * (0.05 * length(box.extent()) + 1e-3);

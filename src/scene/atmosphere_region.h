@@ -10,6 +10,7 @@ namespace lenslab {
 
 class Scene;
 
+// Its lights() are the scene's lights (set_lights or build).
 Aabb atmosphere_region(const Scene& scene);
 
 }  // namespace lenslab

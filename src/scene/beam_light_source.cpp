@@ -78,6 +78,7 @@ public:
     }
 
     bool is_delta() const override { return true; }
+    Aabb bounds() const override { return {m_origin, m_origin}; }
 
     // Uniform along the chord of the ray inside the beam's cylinder (and the slit's slab),
     // ahead of its disc.

@@ -59,6 +59,7 @@ public:
     }
 
     bool is_delta() const override { return true; }
+    Aabb bounds() const override { return {m_origin, m_origin}; }
 
     // Uniform along the chord of the ray inside the sheet's slab and its wedge (ahead of the
     // aperture, within theta / 2 of the beam's direction). The wedge of a fan under 180

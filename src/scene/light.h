@@ -9,6 +9,7 @@
 #include "math/vec3.h"
 #include "optics/rgb.h"
 #include "optics/spectrum.h"
+#include "scene/light_source.h"
 
 namespace lenslab {
 
@@ -76,6 +77,8 @@ struct SceneLights {
     std::vector<PointLight> points;
     std::vector<BeamLight> beams;
     std::vector<SpotLight> spots;
+    // Lights with an area (rectangle_light.cpp, disc_light.cpp), built by their readers.
+    std::vector<LightPtr> areas;
 };
 
 }  // namespace lenslab

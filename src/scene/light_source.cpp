@@ -78,6 +78,7 @@ public:
     }
 
     bool is_delta() const override { return false; }
+    Aabb bounds() const override { return m_sphere->bounds(); }
 
     // Towards the centre: a small light seen from afar is all but a point, and a large one
     // still sends the most where the ray passes closest.

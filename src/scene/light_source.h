@@ -12,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "math/aabb.h"
 #include "math/ray.h"
 #include "math/rng.h"
 #include "optics/spectrum.h"
@@ -62,6 +63,9 @@ public:
     virtual bool sample_li(const Vec3& p, Rng& rng, LightSample& out) const = 0;
     // One sample of sample_li is exact (a point or a beam), not an estimate.
     virtual bool is_delta() const = 0;
+    // Where the light sits (a point light's point, a beam's origin, an area light's patch):
+    // the box a scene's media and sppm's volume photons fill holds it.
+    virtual Aabb bounds() const = 0;
     // Whether media gather this light's single scattering along whole ray segments
     // (sample_in_scattering) rather than at scattering points: every delta light, and
     // emitting spheres.
@@ -103,6 +107,7 @@ public:
     bool worth_aiming(const PhotonTargets& targets) const override;
     bool sample_li(const Vec3& p, Rng& rng, LightSample& out) const override;
     bool is_delta() const override { return true; }
+    Aabb bounds() const override { return {m_position, m_position}; }
     bool sample_in_scattering(const Ray& ray, double t_max, double u, double& t,
                               double& pdf) const override;
 

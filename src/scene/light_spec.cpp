@@ -5,11 +5,7 @@
 
 namespace lenslab {
 
-namespace {
-
-// What every light takes besides where it is.
-std::vector<ParamSpec> emission_params(const Rgb& colour,
-                                       std::string power_meaning = "radiant flux (W)") {
+std::vector<ParamSpec> light_emission_params(const Rgb& colour, std::string power_meaning) {
     return {
         number_param("power", 0)
             .above(0)
@@ -24,6 +20,8 @@ std::vector<ParamSpec> emission_params(const Rgb& colour,
             .describe("instead of color: a named spectrum"),
     };
 }
+
+namespace {
 
 // A beam's or a laser's shapes: a slit across it, or a line laser's fan (not both; the
 // rules between fields are the reader's, light_json.cpp).
@@ -59,7 +57,7 @@ ElementSpec declare_point() {
         string_param("type", "point").needed().describe("\"point\""),
         point_param("position").describe("where the light is").in_editor("Position"),
     };
-    for (ParamSpec& p : emission_params(PointLight{}.color)) s.params.push_back(std::move(p));
+    for (ParamSpec& p : light_emission_params(PointLight{}.color)) s.params.push_back(std::move(p));
     s.example =
         nlohmann::json::parse(R"json({"type": "point", "position": [0, 1, 0], "power": 100})json");
     return s;
@@ -79,7 +77,7 @@ ElementSpec declare_beam() {
             .describe("radius of the beam's disc")
             .in_editor("Beam radius"),
     };
-    for (ParamSpec& p : emission_params(BeamLight{}.color)) s.params.push_back(std::move(p));
+    for (ParamSpec& p : light_emission_params(BeamLight{}.color)) s.params.push_back(std::move(p));
     add_beam_shapes(s);
     s.example = nlohmann::json::parse(
         R"json({"type": "beam", "origin": [0, 1, 0], "direction": [0, -1, 0], "radius": 0.3, "power": 10})json");
@@ -138,7 +136,8 @@ ElementSpec declare_spot() {
             .describe("width of the soft edge inside the cone (at most cone_angle)")
             .in_editor("Falloff"),
     };
-    for (ParamSpec& p : emission_params(SpotLight{}.color, "radiant flux (W) sent into the cone"))
+    for (ParamSpec& p :
+         light_emission_params(SpotLight{}.color, "radiant flux (W) sent into the cone"))
         s.params.push_back(std::move(p));
     s.example = nlohmann::json::parse(
         R"json({"type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "cone_angle": 20, "power": 10})json");
@@ -165,19 +164,6 @@ const ElementSpec& point_light_spec() {
 const ElementSpec& beam_spec() {
     static const ElementSpec spec = declare_beam();
     return spec;
-}
-
-const std::vector<const ElementSpec*>& light_specs() {
-    static const std::vector<const ElementSpec*> specs{&point_light_spec(), &beam_spec(),
-                                                       &laser_spec(), &spot_light_spec()};
-    return specs;
-}
-
-const ElementSpec* find_light_spec(const std::string& type) {
-    for (const ElementSpec* s : light_specs()) {
-        if (s->example.value("type", "") == type) return s;
-    }
-    return nullptr;
 }
 
 }  // namespace lenslab

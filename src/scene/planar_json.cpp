@@ -1,6 +1,7 @@
 #include "scene/planar_json.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "geometry/disc.h"
@@ -15,15 +16,6 @@ namespace {
 using nlohmann::json;
 
 constexpr int kMaxBands = 16;
-
-// The frame's `up`: given (and not parallel to the normal), or the default.
-Vec3 read_up(JsonObjectReader& r, const Vec3& normal) {
-    if (!r.has("up")) return default_plane_up(normal);
-    const Vec3 up = r.direction("up");
-    if (length(cross(up, normal)) < 1e-9)
-        throw SceneError(r.child_path("up"), "must not be parallel to normal");
-    return up;
-}
 
 void read_resolution(const json& v, const std::string& path, DetectorSettings& d) {
     const ParamSpec& declared = detector_spec().param("resolution");
@@ -84,26 +76,40 @@ void read_bands(const json& v, const std::string& path, DetectorSettings& d) {
 
 }  // namespace
 
+// The frame's `up`: given (and not parallel to the normal), or the default.
+Vec3 read_plane_up(JsonObjectReader& r, const Vec3& normal) {
+    if (!r.has("up")) return default_plane_up(normal);
+    const Vec3 up = r.direction("up");
+    if (length(cross(up, normal)) < 1e-9)
+        throw SceneError(r.child_path("up"), "must not be parallel to normal");
+    return up;
+}
+
+std::array<double, 2> read_plane_size(JsonObjectReader& r) {
+    const json& size = r.require("size");
+    const std::string path = r.child_path("size");
+    if (!size.is_array() || size.size() != 2) throw SceneError(path, "must be [width, height]");
+    std::array<double, 2> wh;
+    for (size_t i = 0; i < 2; ++i) {
+        const std::string at = path + "[" + std::to_string(i) + "]";
+        wh[i] = JsonObjectReader::as_number(size[i], at);
+        if (!(wh[i] > 0)) throw SceneError(at, "must be > 0, got " + format_number(wh[i]));
+    }
+    return wh;
+}
+
 std::shared_ptr<const Shape> read_disc(SpecReader& r) {
     const Vec3 centre = r.point("center");
     const Vec3 normal = r.unit_vector("normal");
     const double radius = r.real("radius");
-    return std::make_shared<Disc>(centre, normal, radius, read_up(r, normal));
+    return std::make_shared<Disc>(centre, normal, radius, read_plane_up(r, normal));
 }
 
 std::shared_ptr<const Shape> read_rectangle(SpecReader& r) {
     const Vec3 centre = r.point("center");
     const Vec3 normal = r.unit_vector("normal");
-    const json& size = r.require("size");
-    const std::string path = r.child_path("size");
-    if (!size.is_array() || size.size() != 2) throw SceneError(path, "must be [width, height]");
-    double wh[2];
-    for (int i = 0; i < 2; ++i) {
-        const std::string at = path + "[" + std::to_string(i) + "]";
-        wh[i] = JsonObjectReader::as_number(size[i], at);
-        if (!(wh[i] > 0)) throw SceneError(at, "must be > 0, got " + format_number(wh[i]));
-    }
-    return std::make_shared<Rectangle>(centre, normal, wh[0], wh[1], read_up(r, normal));
+    const std::array<double, 2> wh = read_plane_size(r);
+    return std::make_shared<Rectangle>(centre, normal, wh[0], wh[1], read_plane_up(r, normal));
 }
 
 std::optional<DetectorSettings> read_detector(JsonObjectReader& r) {

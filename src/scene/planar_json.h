@@ -4,6 +4,7 @@
 //
 // Their keys, and the detector block's, are declared in planar_spec.cpp.
 
+#include <array>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -24,6 +25,11 @@ const ElementSpec& rectangle_spec();
 // `r` reads through disc_spec() or rectangle_spec().
 std::shared_ptr<const Shape> read_disc(SpecReader& r);
 std::shared_ptr<const Shape> read_rectangle(SpecReader& r);
+
+// A flat shape's `up` (given, and not parallel to the unit `normal`, or default_plane_up)
+// and a rectangle's `size` [width, height]: the rectangle and disc lights read them too.
+Vec3 read_plane_up(JsonObjectReader& r, const Vec3& normal);
+std::array<double, 2> read_plane_size(JsonObjectReader& r);
 
 // The `detector` object's keys (planar_spec.cpp).
 const ElementSpec& detector_spec();

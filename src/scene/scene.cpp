@@ -45,6 +45,7 @@ void Scene::set_lights(SceneLights lights) {
     point_lights = std::move(lights.points);
     beams = std::move(lights.beams);
     spots = std::move(lights.spots);
+    area_lights = std::move(lights.areas);
     find_lights_and_targets();
 }
 
@@ -58,6 +59,7 @@ void Scene::find_lights_and_targets() {
     for (const PointLight& l : point_lights) m_lights.push_back(make_point_light(l));
     for (const BeamLight& b : beams) m_lights.push_back(make_beam_light(b));
     for (const SpotLight& s : spots) m_lights.push_back(make_spot_light(s));
+    m_lights.insert(m_lights.end(), area_lights.begin(), area_lights.end());
     m_light_sampler = LightSampler(m_lights);
 
     std::vector<BoundingSphere> targets;

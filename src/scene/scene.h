@@ -72,6 +72,7 @@ public:
     std::vector<PointLight> point_lights;
     std::vector<BeamLight> beams;  // beams and lasers
     std::vector<SpotLight> spots;
+    std::vector<LightPtr> area_lights;  // rectangle and disc lights
     // The medium filling the space outside every object (fog in the room), if any.
     std::optional<Medium> atmosphere;
     // An imported lens file's system data (wavelengths, fields, aperture), if the scene has it.
@@ -79,8 +80,8 @@ public:
 
     // Builds the acceleration structure and the emitter list; call after filling the fields.
     void build();
-    // Replaces the lights without geometry of a built scene, keeping its acceleration
-    // structure (an editor's light edit).
+    // Sets the lights without geometry, and lights() from them; on a built scene it keeps the
+    // acceleration structure (an editor's light edit).
     void set_lights(SceneLights lights);
 
     bool intersect(const Ray& ray, double t_min, double t_max, SceneHit& hit) const;
@@ -101,7 +102,7 @@ public:
     int solid_beyond(int object, const Vec3& point, const Vec3& outward_normal) const;
     // Objects whose material emits light: spheres (the report's lights).
     const std::vector<SphereEmitter>& emitters() const { return m_emitters; }
-    // Every light: emitting spheres first, then point lights, beams, spots.
+    // Every light: emitting spheres first, then point lights, beams, spots, area lights.
     const std::vector<LightPtr>& lights() const { return m_lights; }
     const LightSampler& light_sampler() const { return m_light_sampler; }
     // The objects photons are aimed at, and whether `object` is one of them.

@@ -352,10 +352,7 @@ Scene scene_from_json(const nlohmann::json& root, const std::string& base_dir,
     }
     apply_medium_convention(convention, scene.materials);
     if (const json* jl = r.find("lights")) {
-        SceneLights lights = lights_from_json(*jl);
-        scene.point_lights = std::move(lights.points);
-        scene.beams = std::move(lights.beams);
-        scene.spots = std::move(lights.spots);
+        scene.set_lights(lights_from_json(*jl));  // lights() too: the atmosphere's box holds them
     }
     if (atmosphere && atmosphere_needs_region(*atmosphere))
         scene.atmosphere = read_atmosphere(*atmosphere, atmosphere_region(scene));

@@ -725,3 +725,9 @@ lenslab_cli_test(NAME sweep.bad.last_frame
     CHECKS -DEXPECT_EXIT=1
            "-DSTDERR_LINE=lenslab: error: frame 3/3 (/objects/1/thickness = -1): scenes/lens_caustic.json: objects[1].thickness: must be > 0, got -1"
            -DOUTPUT=${sweep_bad}/frames/00000.png -DOUTPUT_CREATED=OFF)
+
+# `lenslab types` lists every type from the tables, the area lights among them.
+lenslab_cli_test(NAME types.lists_area_lights ARGS types
+    CHECKS -DEXPECT_EXIT=0 "-DSTDOUT_CONTAINS=disc_light      center, normal, radius, power, color, spectrum")
+lenslab_cli_test(NAME types.json ARGS types --json
+    CHECKS -DEXPECT_EXIT=0 -DSTDOUT_JSON=ON "-DSTDOUT_CONTAINS=\"rectangle_light\"")

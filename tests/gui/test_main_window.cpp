@@ -453,6 +453,24 @@ private slots:
                  objects.back()["center"][0].get<double>() + 0.5);
     }
 
+    // A light type added by its own file (the disc light) gets its form from its declaration,
+    // and an edit there reaches the scene's light.
+    void an_area_light_is_added_and_edited_in_the_panel() {
+        MainWindow w;
+        QVERIFY(w.open_file(kSmallScene));
+        QAction* add = w.findChild<QAction*>("add:disc_light");
+        QVERIFY(add);
+        add->trigger();
+        const size_t last = w.document()->json()["lights"].size() - 1;
+        w.tree()->select_pointer(QString("/lights/%1").arg(last));
+        NumberField* radius = field(w, "radius");
+        QVERIFY(radius);
+        type_value(radius, 0.7);
+        QCOMPARE(w.document()->json()["lights"][last]["radius"].get<double>(), 0.7);
+        QCOMPARE(w.document()->scene().area_lights.size(), size_t(1));
+        QVERIFY(field(w, "power"));
+    }
+
     void lens_group_elements_are_edited_in_the_panel() {
         MainWindow w;
         QVERIFY(w.open_file(QStringLiteral(LENSLAB_SOURCE_DIR "/scenes/achromat_vs_singlet.json")));

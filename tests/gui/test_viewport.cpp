@@ -241,6 +241,25 @@ private slots:
         QCOMPARE(s.w.document()->undo_stack()->undoText(), QString("Move light"));
     }
 
+    // A light type's icon comes from its declaration: a disc light sits at its `center`, with
+    // an arrow along its `normal`.
+    void an_area_light_is_drawn_at_its_centre_with_its_normal() {
+        ShownWindow s;
+        QVERIFY(s.open());
+        const json disc = {{"type", "disc_light"},
+                           {"center", {1, 1.2, 1}},
+                           {"normal", {0, -1, 0}},
+                           {"radius", 0.3},
+                           {"power", 20}};
+        QVERIFY(s.w.document()->set_value(json::json_pointer("/lights/0"), disc, "Change light",
+                                          nullptr));
+        const std::vector<lenslab::gui::LightIcon> icons = s.v->light_icons();
+        QCOMPARE(icons.size(), size_t(1));
+        QVERIFY((icons[0].at - s.at({1, 1.2, 1})).manhattanLength() < 1e-6);
+        QVERIFY(icons[0].beam_towards.has_value());
+        QVERIFY(icons[0].beam_towards->y() > icons[0].at.y());  // down the screen
+    }
+
     void dragging_renders_coarse_frames_and_the_release_a_full_one() {
         QTemporaryDir dir;
         const QString path = write_small_scene(dir, {{"width", 800}, {"height", 600}});

@@ -75,3 +75,19 @@ def test_save_writes_a_scene_file_the_cli_reads(tmp_path):
     scene = lenslab.Scene.default()
     scene.save(tmp_path / "copy.json")
     assert lenslab.Scene.load(tmp_path / "copy.json").to_dict() == scene.to_dict()
+
+
+def test_types_list_the_area_lights_and_a_scene_with_one_renders():
+    types = lenslab.types()
+    assert types["lights"]["disc_light"] == ["center", "normal", "radius", "power", "color",
+                                             "spectrum"]
+    assert "size" in types["lights"]["rectangle_light"]
+    assert "sphere" in types["objects"]
+    scene = lenslab.Scene.from_dict({
+        "camera": {"position": [0, 3, 3], "look_at": [0, 0, 0]},
+        "objects": [{"type": "rectangle", "center": [0, 0, 0], "normal": [0, 1, 0],
+                     "size": [4, 4], "material": {"color": 0.8}}],
+        "lights": [{"type": "rectangle_light", "center": [0, 2, 0], "normal": [0, -1, 0],
+                    "size": [1, 1], "power": 20}]})
+    image = lenslab.render(scene, width=16, height=16, spp=1)
+    assert image.mean() > 0.01

@@ -22,6 +22,7 @@
 #include "scene/json_reader.h"
 #include "scene/lens_group_json.h"
 #include "scene/light_spec.h"
+#include "scene/light_types.h"
 #include "scene/material_spec.h"
 #include "scene/medium.h"
 #include "scene/mesh_json.h"
@@ -112,6 +113,18 @@ std::vector<Case> cases() {
     json with_spot = scene;
     with_spot["lights"] = {
         {{"type", "spot"}, {"position", {0, 2, 0}}, {"direction", {0, -1, 0}}, {"power", 1}}};
+    json with_rectangle_light = scene;
+    with_rectangle_light["lights"] = {{{"type", "rectangle_light"},
+                                       {"center", {0, 2, 0}},
+                                       {"normal", {0, -1, 0}},
+                                       {"size", {1, 0.5}},
+                                       {"power", 1}}};
+    json with_disc_light = scene;
+    with_disc_light["lights"] = {{{"type", "disc_light"},
+                                  {"center", {0, 2, 0}},
+                                  {"normal", {0, -1, 0}},
+                                  {"radius", 0.3},
+                                  {"power", 1}}};
     json with_atmosphere = scene;
     with_atmosphere["atmosphere"] = {{"scattering", 0.1}};
     json with_grin = scene;
@@ -234,6 +247,19 @@ std::vector<Case> cases() {
         {lenslab::spot_light_spec,
          "A spot light (`\"type\": \"spot\"`):",
          with_spot,
+         "/lights/0",
+         "lights[0]",
+         {}},
+        // The area lights declare themselves in their own files, reached through the table.
+        {[]() -> const ElementSpec& { return *lenslab::find_light_spec("rectangle_light"); },
+         "A rectangle light (`\"type\": \"rectangle_light\"`):",
+         with_rectangle_light,
+         "/lights/0",
+         "lights[0]",
+         {}},
+        {[]() -> const ElementSpec& { return *lenslab::find_light_spec("disc_light"); },
+         "A disc light (`\"type\": \"disc_light\"`):",
+         with_disc_light,
          "/lights/0",
          "lights[0]",
          {}},
@@ -488,7 +514,7 @@ TEST(Examples, EveryTypeHasOneTheReaderAcceptsWhereverItIsPut) {
     std::vector<const ElementSpec*> specs;
     for (const lenslab::ObjectTypeEntry& t : lenslab::object_types()) specs.push_back(&t.spec());
     for (const ElementSpec* l : lenslab::light_specs()) specs.push_back(l);
-    ASSERT_EQ(specs.size(), lenslab::object_types().size() + 4);
+    ASSERT_EQ(specs.size(), lenslab::object_types().size() + lenslab::light_types().size());
     const lenslab::Vec3 at{2, -1, 7};
     for (const ElementSpec* spec : specs) {
         SCOPED_TRACE(spec->name);

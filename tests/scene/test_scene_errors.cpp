@@ -255,7 +255,7 @@ const BadScene kBadScenes[] = {
     {"mesh_obj_device.json", "objects[0].file",
      "cannot read '/dev/zero': is not a regular file (a device or a pipe)"},
     // Lights.
-    {"unknown_light_type.json", "lights[1].type", "unknown light type 'torch' (known: point, beam, laser, spot)"},
+    {"unknown_light_type.json", "lights[1].type", "unknown light type 'torch' (known: point, beam, laser, spot, rectangle_light, disc_light)"},
     {"beam_with_position.json", "lights[0].position", "not a property of a beam"},
     {"beam_slit_wider_than_beam.json", "lights[0].slit_width", "must be at most 2 radius (1), got 1.5"},
     {"beam_slit_axis_along_beam.json", "lights[0].slit_axis", "must not be parallel to direction"},

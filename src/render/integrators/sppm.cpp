@@ -54,9 +54,7 @@ SppmIntegrator::SppmIntegrator(const Scene& scene)
         // radius: fog fills the space between the camera and a small lamp too.
         Aabb box = b;
         box.expand(scene.camera.position);
-        for (const PointLight& l : scene.point_lights) box.expand(l.position);
-        for (const BeamLight& l : scene.beams) box.expand(l.origin);
-        for (const SpotLight& l : scene.spots) box.expand(l.position);
+        for (const LightPtr& l : scene.lights()) box.expand(l->bounds());
         const double diagonal = length(box.extent());
         const double margin = 0.25 * diagonal;
         m_volume_box = {box.lo - Vec3{margin, margin, margin},

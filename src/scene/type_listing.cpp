@@ -1,0 +1,31 @@
+#include "scene/type_listing.h"
+
+#include "scene/light_types.h"
+#include "scene/object_types.h"
+
+namespace lenslab {
+
+namespace {
+
+nlohmann::ordered_json type_row(const std::string& name, const ElementSpec& spec) {
+    nlohmann::ordered_json keys = nlohmann::ordered_json::array();
+    for (const std::string& k : spec.keys()) {
+        if (k != "type") keys.push_back(k);
+    }
+    return {{"type", name}, {"keys", keys}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json scene_types_json() {
+    nlohmann::ordered_json out;
+    out["objects"] = nlohmann::ordered_json::array();
+    for (const ObjectTypeEntry& e : object_types())
+        out["objects"].push_back(type_row(e.name, e.spec()));
+    out["lights"] = nlohmann::ordered_json::array();
+    for (const LightTypeEntry& e : light_types())
+        out["lights"].push_back(type_row(e.name, e.spec()));
+    return out;
+}
+
+}  // namespace lenslab
