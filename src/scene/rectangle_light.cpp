@@ -34,14 +34,9 @@ ElementSpec declare_rectangle_light() {
         string_param("type", "rectangle_light").needed().describe("\"rectangle_light\""),
         point_param("center").describe("centre of the glowing rectangle").in_editor("Centre"),
         direction_param("normal").describe("the side it lights (its front)").in_editor("Normal"),
-        nested_param(ParamKind::Array, "size")
-            .needed()
-            .as_written("`[width, height]`, each `> 0`")
-            .describe("width along u, height along v"),
-        vector_param(ParamKind::Direction, "up", nullptr)
-            .meaning_auto("`[0, 1, 0]`, or `[0, 0, -1]` when the normal is vertical")
-            .describe("which way the height runs")
-            .in_editor("Up (orients u, v)"),
+        // The rectangle object's own, read by the same read_plane_size and read_plane_up.
+        rectangle_spec().param("size"),
+        rectangle_spec().param("up"),
     };
     for (ParamSpec& p : light_emission_params(Rgb{1, 1, 1})) s.params.push_back(std::move(p));
     s.example = nlohmann::json::parse(
