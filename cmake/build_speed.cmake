@@ -82,7 +82,7 @@ endif()
 # recompiles its batch; -DLENSLAB_UNITY=OFF goes back to one object per file while iterating.
 # Helpers at file scope (anonymous namespaces, statics) must have file-specific names.
 option(LENSLAB_UNITY "Compile the library and the command-line tool as unity builds" ON)
-set(LENSLAB_UNITY_BATCH 8 CACHE STRING "Sources per unity batch of the library and the CLI")
+set(LENSLAB_UNITY_BATCH 32 CACHE STRING "Sources per unity batch of the library and the CLI")
 function(lenslab_unity target)
     if(LENSLAB_UNITY)
         set_target_properties(${target} PROPERTIES

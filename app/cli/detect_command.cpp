@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -14,6 +13,7 @@
 #include "analysis/detectors/detector_files.h"
 #include "cluster/cluster_session.h"
 #include "commands.h"
+#include "interrupt_cancels.h"
 #include "render/photon_tracer.h"
 #include "render_overrides.h"
 #include "scene/scene_json.h"
@@ -29,12 +29,6 @@ struct DetectArgs {
     int threads = 0;
     bool json = false, quiet = false, log = false;
 };
-
-RenderControl* g_control = nullptr;
-
-extern "C" void on_detect_interrupt(int) {
-    if (g_control) g_control->cancel();  // an atomic store: safe in a signal handler
-}
 
 int run(const DetectArgs& a, const RenderOverrides& overrides) {
     const Scene scene = overrides.load(a.scene);
@@ -56,17 +50,12 @@ int run(const DetectArgs& a, const RenderOverrides& overrides) {
                                         last = percent;
                                         std::fprintf(stderr, "detecting %3d%%\n", percent);
                                     }});
-    g_control = &control;
     // Under mpirun or srun the ranks share the photons; rank 0 writes the files.
     Communicator& world = world_communicator();
     control.set_cluster(world);
-    struct sigaction action {};
-    action.sa_handler = on_detect_interrupt;
-    action.sa_flags = SA_RESETHAND;  // a second Ctrl-C ends the process at once
-    sigaction(SIGINT, &action, nullptr);
+    InterruptCancels interrupts(control);
     const DetectionResult result = measure_detectors(scene, settings, control);
-    signal(SIGINT, SIG_DFL);
-    g_control = nullptr;
+    interrupts.release();
     if (result.cancelled) {
         std::cerr << "lenslab: detection cancelled; nothing written\n";
         return 130;

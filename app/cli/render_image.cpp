@@ -10,6 +10,7 @@
 
 #include "commands.h"
 #include "image/image_io.h"
+#include "interrupt_cancels.h"
 #include "render/render_session.h"
 #include "scene/render_settings.h"
 #include "scene/render_tone_map.h"
@@ -18,16 +19,10 @@ namespace lenslab::cli {
 
 namespace {
 
-RenderControl* g_control = nullptr;
-
 std::string format_seconds(double s) {
     char text[32];
     std::snprintf(text, sizeof text, "%g s", s);
     return text;
-}
-
-extern "C" void on_interrupt(int) {
-    if (g_control) g_control->cancel();  // an atomic store: safe in a signal handler
 }
 
 // Prints "rendering ... 42%" on stderr: in place on a terminal, every 10% otherwise.
@@ -109,24 +104,16 @@ RenderImageOutcome render_image(const Scene& scene, const RenderImageOptions& op
     ProgressPrinter printer(label);
     RenderControl control(options.quiet ? RenderControl::ProgressFn{}
                                         : RenderControl::ProgressFn{std::ref(printer)});
-    g_control = &control;
     control.set_cluster(cluster);
-    // The first Ctrl-C asks the render to stop; SA_RESETHAND makes a second one end the
-    // process at once.
-    struct sigaction action {};
-    action.sa_handler = on_interrupt;
-    action.sa_flags = SA_RESETHAND;
-    sigaction(SIGINT, &action, nullptr);
+    InterruptCancels interrupts(control);
     const RenderResult result = render_scene(scene, control, threads);
     if (result.cancelled) {
-        signal(SIGINT, SIG_DFL);
-        g_control = nullptr;
+        interrupts.release();
         std::cerr << "\nlenslab: render cancelled; nothing written\n";
         return RenderImageOutcome::Cancelled;
     }
     if (!cluster.is_root()) {
-        signal(SIGINT, SIG_DFL);
-        g_control = nullptr;
+        interrupts.release();
         return RenderImageOutcome::Written;  // by the root
     }
     if (!result.stats.summary.empty() && !options.quiet)
@@ -146,13 +133,12 @@ RenderImageOutcome render_image(const Scene& scene, const RenderImageOptions& op
     // The file is written atomically; holding Ctrl-C (and kill's SIGTERM) back until it is
     // in place also leaves no temporary file behind. One that came meanwhile ends the
     // process right after.
-    sigset_t interrupts, previous;
-    sigemptyset(&interrupts);
-    sigaddset(&interrupts, SIGINT);
-    sigaddset(&interrupts, SIGTERM);
-    sigprocmask(SIG_BLOCK, &interrupts, &previous);
-    signal(SIGINT, SIG_DFL);
-    g_control = nullptr;
+    sigset_t held, previous;
+    sigemptyset(&held);
+    sigaddset(&held, SIGINT);
+    sigaddset(&held, SIGTERM);
+    sigprocmask(SIG_BLOCK, &held, &previous);
+    interrupts.release();
     try {
         write_image(result.film, output, tone_map_for(scene.render, options.exposure));
     } catch (...) {

@@ -3,14 +3,14 @@
 namespace lenslab {
 
 namespace {
-constexpr int kMaxLeafSize = 4;
+constexpr int kShapesPerLeaf = 4;
 }  // namespace
 
 Bvh::Bvh(std::vector<const Shape*> shapes) : m_shapes(std::move(shapes)) {
     std::vector<Aabb> boxes;
     boxes.reserve(m_shapes.size());
     for (const Shape* s : m_shapes) boxes.push_back(s->bounds());
-    m_layout = build_bvh(boxes, kMaxLeafSize);
+    m_layout = build_bvh(boxes, kShapesPerLeaf);
 }
 
 bool Bvh::intersect(const Ray& ray, double t_min, double t_max, BvhHit& hit) const {

@@ -9,7 +9,7 @@ namespace lenslab {
 
 namespace {
 
-constexpr int kMaxLeafSize = 4;
+constexpr int kTrianglesPerLeaf = 4;
 
 float round_down(double v) {
     const auto f = static_cast<float>(v);
@@ -107,7 +107,7 @@ TriangleMesh::TriangleMesh(const std::vector<Vec3>& vertices,
         for (int32_t k : triangles[i]) boxes[i].expand(vertices[k]);
         m_bounds.expand(boxes[i]);
     }
-    const BvhLayout layout = build_bvh(boxes, kMaxLeafSize);
+    const BvhLayout layout = build_bvh(boxes, kTrianglesPerLeaf);
     m_nodes.reserve(layout.nodes.size());
     for (const BvhNode& n : layout.nodes) {
         Node c{};

@@ -8,7 +8,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <sstream>
 
 #include "analysis/detectors/detector.h"
@@ -16,8 +15,6 @@
 
 namespace lenslab {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // Unpolarised Fresnel transmittance for incidence cosine `cos_i` from n1 into n2 (Hecht,
 // Optics, 5th ed., eqs. 4.42-4.43).

@@ -3,14 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
+#include "math/constants.h"
 #include "optics/fresnel.h"
 
 namespace lenslab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 double deg(double d) { return d * kPi / 180.0; }
 
 TEST(Fresnel, NormalIncidenceOnGlassReflectsFourPercent) {

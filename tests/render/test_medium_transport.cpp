@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <string>
 #include <utility>
 
+#include "math/constants.h"
 #include "mean_green.h"
 #include "render/medium_transport.h"
 #include "render/render_session.h"
@@ -21,8 +21,6 @@ namespace lenslab {
 namespace {
 
 using testing::mean_green_of_render;
-
-constexpr double kPiMedium = std::numbers::pi;
 
 // The mean weight of light passing a slab of thickness d is T = exp(-sigma_t d) in each band
 // (Beer–Lambert), and that of light scattering within [0, d] is the integral of
@@ -76,7 +74,7 @@ double airlight(double sigma, double intensity, double h, double d, double entry
         const double s = entry + i * step;
         const double r2 = h * h + (s - d) * (s - d);
         const double f = albedo * sigma * std::exp(-sigma * (s - entry + std::sqrt(r2))) /
-                         (4 * kPiMedium) * intensity / r2;
+                         (4 * kPi) * intensity / r2;
         sum += f * ((i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2));
     }
     return sum * step / 3;
@@ -96,7 +94,7 @@ TEST(PathInMedium, SingleScatteringMatchesTheAirlightIntegral) {
     // The light's colour per watt of intensity: power / (4 pi) W/sr of white light renders as
     // its spectrum's colour over 4 pi.
     const double white = spectrum_to_rgb(*scene.point_lights[0].spectrum).g / power;
-    const double expected = airlight(sigma, power / (4 * kPiMedium), h, d) * white;
+    const double expected = airlight(sigma, power / (4 * kPi), h, d) * white;
     EXPECT_NEAR(mean, expected, 0.02 * expected);
 }
 
@@ -122,7 +120,7 @@ TEST(PathInMedium, SingleScatteringFromASmallEmittingSphereMatchesTheAirlightInt
     const double mean = mean_green_of_render(scene);
     const double radiance_green = spectrum_to_rgb(*scene.material_of(0).emission).g;
     const double expected =
-        airlight(sigma_t, kPiMedium * radius * radius, h, d, 0, albedo) * radiance_green;
+        airlight(sigma_t, kPi * radius * radius, h, d, 0, albedo) * radiance_green;
     EXPECT_NEAR(mean, expected, 0.02 * expected);
 }
 
@@ -159,7 +157,7 @@ TEST(PathInMedium, SingleScatteringInASmokeBoxMatchesTheAirlightIntegral) {
     })");
     const double mean = mean_green_of_render(scene);
     const double white = spectrum_to_rgb(*scene.point_lights[0].spectrum).g / power;
-    const double expected = airlight(sigma, power / (4 * kPiMedium), h, d, entry) * white;
+    const double expected = airlight(sigma, power / (4 * kPi), h, d, entry) * white;
     EXPECT_NEAR(mean, expected, 0.02 * expected);
 }
 
@@ -236,8 +234,8 @@ TEST(PathInMedium, SingleScatteringFromABeamMatchesItsClosedForm) {
     const double mean = mean_green_of_render(scene);
     const double white = spectrum_to_rgb(*scene.beams[0].spectrum).g / power;
     const double chord = (std::exp(-sigma * (d - r)) - std::exp(-sigma * (d + r))) / sigma;
-    const double expected = sigma / (4 * kPiMedium) * power / (kPiMedium * r * r) *
-                            std::exp(-10 * sigma) * chord * white;
+    const double expected =
+        sigma / (4 * kPi) * power / (kPi * r * r) * std::exp(-10 * sigma) * chord * white;
     EXPECT_NEAR(mean, expected, 0.01 * expected);
 }
 
@@ -246,7 +244,7 @@ TEST(PathInMedium, SingleScatteringFromABeamMatchesItsClosedForm) {
 // [D - r, D + r]; and for a beam through a slit, crossed through the slit, whose chord the
 // strip cuts to [D - w/2, D + w/2], lit with P / A, A the disc's area inside the strip.
 TEST(PathInMedium, SingleScatteringFromAFanAndASlitMatchesTheirClosedForms) {
-    const double sigma = 0.05, power = 2, r = 0.2, d = 5, theta = kPiMedium / 3;
+    const double sigma = 0.05, power = 2, r = 0.2, d = 5, theta = kPi / 3;
     Scene fan = parse_scene(R"({
       "camera": {"position": [0, 0, 5], "look_at": [0, 0, 0], "fov": 0.001},
       "render": {"width": 2, "height": 2, "spp": 64, "max_depth": 1, "integrator": "path"},
@@ -256,7 +254,7 @@ TEST(PathInMedium, SingleScatteringFromAFanAndASlitMatchesTheirClosedForms) {
     })");
     const double white = spectrum_to_rgb(*fan.beams[0].spectrum).g / power;
     const double fan_chord = (std::exp(-sigma * (d - r)) - std::exp(-sigma * (d + r))) / sigma;
-    const double fan_expected = sigma / (4 * kPiMedium) * power / (theta * 10 * 2 * r) *
+    const double fan_expected = sigma / (4 * kPi) * power / (theta * 10 * 2 * r) *
                                 std::exp(-10 * sigma) * fan_chord * white;
     const double fan_mean = mean_green_of_render(fan);
     EXPECT_NEAR(fan_mean, fan_expected, 0.01 * fan_expected);
@@ -272,7 +270,7 @@ TEST(PathInMedium, SingleScatteringFromAFanAndASlitMatchesTheirClosedForms) {
     const double area = 2 * (h * std::sqrt(r * r - h * h) + r * r * std::asin(h / r));
     const double slit_chord = (std::exp(-sigma * (d - h)) - std::exp(-sigma * (d + h))) / sigma;
     const double slit_expected =
-        sigma / (4 * kPiMedium) * power / area * std::exp(-10 * sigma) * slit_chord * white;
+        sigma / (4 * kPi) * power / area * std::exp(-10 * sigma) * slit_chord * white;
     const double slit_mean = mean_green_of_render(slit);
     EXPECT_NEAR(slit_mean, slit_expected, 0.01 * slit_expected);
 }

@@ -5,17 +5,15 @@
 #include <tbb/task_arena.h>
 
 #include <cmath>
-#include <numbers>
 #include <sstream>
 
+#include "math/constants.h"
 #include "render/integrators/photon_map.h"
 #include "render/photon_tracer.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 std::string floor_triangles(double y, double half = 50) {
     std::ostringstream s;

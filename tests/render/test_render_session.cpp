@@ -3,15 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
+#include "math/constants.h"
 #include "render/render_session.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPiSession = std::numbers::pi;
 
 // A camera looking straight down at a diffuse floor (albedo 0.5) through a narrow field, so
 // the centre pixel sees the point below the light.
@@ -40,7 +38,7 @@ TEST(Radiometry, PointLightGivesLambertRadiance) {
     const double P = 100, h = 2;
     const Scene scene = parse_scene(
         floor_scene(R"(], "lights": [{"type": "point", "position": [0, 2, 0], "power": 100}])"));
-    const double expected = 0.5 * (P / (4 * kPiSession) / (h * h)) / kPiSession;
+    const double expected = 0.5 * (P / (4 * kPi) / (h * h)) / kPi;
     EXPECT_NEAR(centre_radiance(scene), expected, 5e-3 * expected);
 }
 
@@ -59,7 +57,7 @@ TEST(Radiometry, BeamGivesUniformIrradiance) {
     // incidence.
     const Scene scene = parse_scene(floor_scene(
         R"(], "lights": [{"type": "beam", "origin": [0, 3, 0], "direction": [0, -1, 0], "radius": 0.5, "power": 2}])"));
-    const double expected = 0.5 * (2 / (kPiSession * 0.25)) / kPiSession;
+    const double expected = 0.5 * (2 / (kPi * 0.25)) / kPi;
     EXPECT_NEAR(centre_radiance(scene), expected, 5e-3 * expected);
 }
 
@@ -71,7 +69,7 @@ TEST(Radiometry, EmittingSphereMatchesTheSolidAngleFormula) {
         R"(, {"type": "sphere", "center": [0, 2, 0], "radius": 0.25,
              "material": {"color": 0, "emission": {"intensity": 50}}}])",
         256));
-    const double expected = 0.5 * (kPiSession * L * (R / d) * (R / d)) / kPiSession;
+    const double expected = 0.5 * (kPi * L * (R / d) * (R / d)) / kPi;
     EXPECT_NEAR(centre_radiance(scene), expected, 0.01 * expected);
 }
 

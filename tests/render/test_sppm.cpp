@@ -5,17 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <string>
 
+#include "math/constants.h"
 #include "render/progressive_render.h"
 #include "render/render_session.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPiSppm = std::numbers::pi;
 
 struct Box {
     int x0, y0, x1, y1;  // pixels [x0, x1) x [y0, y1)
@@ -62,7 +60,7 @@ void project(const Scene& s, const Vec3& p, double& px, double& py) {
     const Vec3 r = normalize(cross(f, s.camera.up));
     const Vec3 u = cross(r, f);
     const Vec3 d = p - s.camera.position;
-    const double half_h = std::tan(0.5 * s.camera.fov_deg * kPiSppm / 180.0);
+    const double half_h = std::tan(0.5 * s.camera.fov_deg * kPi / 180.0);
     const double half_w = half_h * s.render.width / s.render.height;
     px = (dot(d, r) / dot(d, f) / half_w + 1.0) * 0.5 * s.render.width;
     py = (1.0 - dot(d, u) / dot(d, f) / half_h) * 0.5 * s.render.height;
@@ -203,7 +201,7 @@ std::string integrating_sphere(int spp) {
 // radiance L = a E0 / (pi (1 - a)). Half of it (a = 0.5) is interreflected light.
 double integrating_sphere_radiance() {
     const double a = 0.5, power = 100, radius = 1;
-    return a * power / (4 * kPiSppm * radius * radius) / (kPiSppm * (1 - a));
+    return a * power / (4 * kPi * radius * radius) / (kPi * (1 - a));
 }
 
 TEST(Path, IntegratingSphereRadiance) {
@@ -235,7 +233,7 @@ std::string beam_through(const std::string& obstacle, double camera_y, int passe
 }
 
 // Radiance of the floor lit by the whole beam: a E / pi with E = P / (pi r^2).
-constexpr double kBeamFloorRadiance = 0.5 * (2 / (kPiSppm * 0.25)) / kPiSppm;
+constexpr double kBeamFloorRadiance = 0.5 * (2 / (kPi * 0.25)) / kPi;
 
 TEST(Sppm, BeamThroughAPaneMatchesFresnel) {
     // An open transparent triangle pair is a thin pane (n = 1.5): at normal incidence each
@@ -335,7 +333,7 @@ TEST(Sppm, InitialRadiusIsTwoPixelFootprints) {
     // this field) its footprint is 2 * that, and the radius starts at two footprints (the
     // cap, 0.5% of the scene's diagonal, is 0.7 here).
     const RenderResult r = render(point_lit_floor(), "sppm");
-    const double footprint = 2.0 * (2.0 * std::tan(0.5 * kPiSppm / 180.0) / 3.0);
+    const double footprint = 2.0 * (2.0 * std::tan(0.5 * kPi / 180.0) / 3.0);
     EXPECT_NEAR(r.stats.value("mean_radius"), 2.0 * footprint, 1e-4 * footprint);
     Scene given = point_lit_floor();
     given.render.initial_radius = 0.01;

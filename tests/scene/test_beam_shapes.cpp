@@ -7,15 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
+#include "math/constants.h"
 #include "scene/light_source.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPiShapes = std::numbers::pi;
 
 // The disc of radius r inside the strip |x| <= h: the disc less its two segments beyond h.
 double disc_in_strip(double r, double h) {
@@ -51,7 +49,7 @@ TEST(BeamShapes, FanIrradianceIsPowerOverThetaRhoThickness) {
     EXPECT_TRUE(fan.is_delta());
     Rng rng(5, 1);
     LightSample s;
-    const double theta = kPiShapes / 3, phi = 20 * kPiShapes / 180, rho = 3;
+    const double theta = kPi / 3, phi = 20 * kPi / 180, rho = 3;
     const Vec3 p{rho * std::cos(phi), 0.004, rho * std::sin(phi)};
     ASSERT_TRUE(fan.sample_li(p, rng, s));
     EXPECT_NEAR(s.factor, 1 / (theta * rho * 0.02), 1e-12);
@@ -97,10 +95,10 @@ TEST(BeamShapes, FanPhotonsLeaveTheApertureInsideTheSheet) {
         EXPECT_EQ(ph.ray.origin.x, 0.0);
         EXPECT_NEAR(ph.ray.direction.y, 0, 1e-15);
         const double phi = std::atan2(ph.ray.direction.z, ph.ray.direction.x);
-        EXPECT_LE(std::abs(phi), kPiShapes / 6 + 1e-12);
+        EXPECT_LE(std::abs(phi), kPi / 6 + 1e-12);
         widest = std::max(widest, std::abs(phi));
     }
-    EXPECT_GT(widest, 0.99 * kPiShapes / 6);
+    EXPECT_GT(widest, 0.99 * kPi / 6);
     EXPECT_FALSE(fan.worth_aiming(PhotonTargets({{{3, 0, 0}, 0.1}})));
 }
 
@@ -123,7 +121,7 @@ TEST(BeamShapes, FanInScatteringChordHoldsTheSheet) {
     EXPECT_NEAR(c.t1, 1.01 * std::sqrt(2.0), 1e-12);
     // Within the sheet, across the fan at x = 2: |z| <= 2 tan 30 degrees.
     const Ray across{{2, 0, -5}, {0, 0, 1}};
-    const double half = 2 * std::tan(kPiShapes / 6);
+    const double half = 2 * std::tan(kPi / 6);
     c = sampled_chord(fan, across, 100);
     EXPECT_NEAR(c.t0, 5 - half, 1e-12);
     EXPECT_NEAR(c.t1, 5 + half, 1e-12);
@@ -166,7 +164,7 @@ TEST(BeamShapes, SlitIrradianceIsPowerOverTheOpenArea) {
         R"({"type": "beam", "origin": [0, 0, -2], "direction": [0, 0, 1], "radius": 0.5,
             "power": 3, "slit_width": 1})");
     ASSERT_TRUE(open.lights()[0]->sample_li({0.3, 0, 0}, rng, s));
-    EXPECT_NEAR(s.factor, 1 / (kPiShapes * 0.25), 1e-12);
+    EXPECT_NEAR(s.factor, 1 / (kPi * 0.25), 1e-12);
     // slit_axis [1, 0, 0] turns the strip to |y| <= 0.2.
     const Scene turned = one_light_scene(
         R"({"type": "beam", "origin": [0, 0, -2], "direction": [0, 0, 1], "radius": 0.5,

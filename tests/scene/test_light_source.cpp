@@ -6,15 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
+#include "math/constants.h"
 #include "render/photon_emission.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 Scene lights_scene(const std::string& lights) {
     return parse_scene(R"({"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]},

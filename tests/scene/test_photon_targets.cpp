@@ -6,16 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
+#include "math/constants.h"
 #include "math/rng.h"
 #include "math/sampling.h"
 #include "scene/photon_targets.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPiTargets = std::numbers::pi;
 
 TEST(PhotonTargets, ConeDensityIntegratesToTheUnionsSolidAngle) {
     // Two overlapping spheres and a separate one, seen from the origin. E_q[1 / q] is the
@@ -29,7 +27,7 @@ TEST(PhotonTargets, ConeDensityIntegratesToTheUnionsSolidAngle) {
         Vec3 dir;
         double pdf;
         ASSERT_TRUE(targets.sample_direction({0, 0, 0}, rng.uniform(), rng.uniform(), rng.uniform(),
-                                             4 * kPiTargets, dir, pdf));
+                                             4 * kPi, dir, pdf));
         EXPECT_NEAR(length(dir), 1.0, 1e-12);
         sum_inverse += 1.0 / pdf;
     }
@@ -45,8 +43,7 @@ TEST(PhotonTargets, ConeDensityIntegratesToTheUnionsSolidAngle) {
             }
         }
     }
-    const double by_density = sum_inverse / kSamples,
-                 by_counting = 4 * kPiTargets * inside / kSamples;
+    const double by_density = sum_inverse / kSamples, by_counting = 4 * kPi * inside / kSamples;
     std::printf("union solid angle: %.5f sr by the sampler's density, %.5f sr by counting\n",
                 by_density, by_counting);
     EXPECT_NEAR(by_density, by_counting, 0.01 * by_counting);
@@ -58,15 +55,15 @@ TEST(PhotonTargets, EveryDirectionTowardsATargetCanBeDrawn) {
     const PhotonTargets targets({s});
     Vec3 dir;
     double pdf;
-    ASSERT_TRUE(targets.sample_direction({0, 0, 0}, 0.3, 0.4, 0.5, 4 * kPiTargets, dir, pdf));
+    ASSERT_TRUE(targets.sample_direction({0, 0, 0}, 0.3, 0.4, 0.5, 4 * kPi, dir, pdf));
     const double d2 = length_squared(s.centre);
-    const double solid_angle = 2 * kPiTargets * (1 - std::sqrt(1 - s.radius * s.radius / d2));
+    const double solid_angle = 2 * kPi * (1 - std::sqrt(1 - s.radius * s.radius / d2));
     EXPECT_NEAR(pdf, 1 / solid_angle, 1e-9 / solid_angle);
     // From inside the sphere, every direction.
-    ASSERT_TRUE(targets.sample_direction(s.centre, 0.3, 0.4, 0.5, 4.1 * kPiTargets, dir, pdf));
-    EXPECT_NEAR(pdf, 1 / (4 * kPiTargets), 1e-12);
+    ASSERT_TRUE(targets.sample_direction(s.centre, 0.3, 0.4, 0.5, 4.1 * kPi, dir, pdf));
+    EXPECT_NEAR(pdf, 1 / (4 * kPi), 1e-12);
     // Not worth aiming when the cones cover more than the light's own sampling.
-    EXPECT_FALSE(targets.sample_direction(s.centre, 0.3, 0.4, 0.5, 4 * kPiTargets, dir, pdf));
+    EXPECT_FALSE(targets.sample_direction(s.centre, 0.3, 0.4, 0.5, 4 * kPi, dir, pdf));
 }
 
 TEST(PhotonTargets, PlaneDensityIntegratesToTheUnionsArea) {
@@ -92,7 +89,7 @@ TEST(PhotonTargets, PlaneDensityIntegratesToTheUnionsArea) {
         r1 * r1 * std::acos((d * d + r1 * r1 - r2 * r2) / (2 * d * r1)) +
         r2 * r2 * std::acos((d * d + r2 * r2 - r1 * r1) / (2 * d * r2)) -
         0.5 * std::sqrt((-d + r1 + r2) * (d + r1 - r2) * (d - r1 + r2) * (d + r1 + r2));
-    const double expected = kPiTargets * (r1 * r1 + r2 * r2) - lens;
+    const double expected = kPi * (r1 * r1 + r2 * r2) - lens;
     EXPECT_NEAR(sum_inverse / kSamples, expected, 0.01 * expected);
 }
 

@@ -150,7 +150,7 @@ TEST(SurfacelessBoundary, GlassInAWaterTankRefractsAgainstTheWater) {
     EXPECT_EQ(segment_medium(scene, ray, &it), &*scene.objects[0].medium);
 }
 
-std::string error_of(const std::string& object) {
+std::string medium_error_of(const std::string& object) {
     try {
         (void)parse_scene(R"({"camera": {"position": [0, 0, -10], "look_at": [0, 0, 0]},
                               "objects": [)" +
@@ -162,18 +162,18 @@ std::string error_of(const std::string& object) {
 }
 
 TEST(ShapeMedium, OpenShapesAreRefused) {
-    EXPECT_EQ(error_of(R"({"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]],
+    EXPECT_EQ(medium_error_of(R"({"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]],
                            "medium": {"scattering": 1}})"),
               "objects[0].medium: a medium fills a solid: this triangle is an open surface");
-    EXPECT_EQ(error_of(R"({"type": "disc", "center": [0, 0, 0], "normal": [0, 0, 1],
+    EXPECT_EQ(medium_error_of(R"({"type": "disc", "center": [0, 0, 0], "normal": [0, 0, 1],
                            "radius": 1, "medium": {"scattering": 1},
                            "material": {"color": 0.5}})"),
               "objects[0].medium: a medium fills a solid: this disc is an open surface");
-    EXPECT_EQ(error_of(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1,
+    EXPECT_EQ(medium_error_of(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1,
                            "medium": {"g": 2}})"),
               "objects[0].medium.g: must be between -1 and 1, got 2");
     // Without a medium, the material is still required.
-    EXPECT_EQ(error_of(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})"),
+    EXPECT_EQ(medium_error_of(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})"),
               "objects[0].material: missing (required)");
 }
 

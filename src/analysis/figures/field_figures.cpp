@@ -123,8 +123,7 @@ RayDiagram ray_fan_figure(const RayFans& fans, const std::string& unit,
                       (col == 0 ? ": tangential e_y (py)" : ": sagittal e_x (px)");
             p.x_min_label = col == 0 ? "py = -1" : "px = -1";
             p.x_max_label = col == 0 ? "py = 1" : "px = 1";
-            p.y_max_label = "+";
-            p.y_max_label += plot_length(scale, unit);
+            p.y_max_label = "+" + plot_length(scale, unit);
             for (const RayFan& fan : f.fans) {
                 // A vignetted ray (NaN) breaks the curve.
                 p.curves.push_back({fans.pupil, col == 0 ? fan.tangential : fan.sagittal,

@@ -8,17 +8,15 @@
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
-#include <numbers>
 #include <sstream>
 
 #include "analysis/detectors/detector.h"
+#include "math/constants.h"
 #include "scene/scene_json.h"
 #include "util/scene_error.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPiDetector = std::numbers::pi;
 
 DetectionResult measure(const Scene& scene, int64_t photons, int threads = 0) {
     return measure_detectors(scene, {.photons_per_light = photons, .threads = threads});
@@ -98,7 +96,7 @@ double cell_irradiance(double power, double d, double u0, double u1, double v0, 
         for (int j = 0; j < k; ++j) {
             const double u = u0 + (i + 0.5) * (u1 - u0) / k, v = v0 + (j + 0.5) * (v1 - v0) / k;
             const double r = std::sqrt(d * d + u * u + v * v);
-            sum += power / (4 * kPiDetector) * d / (r * r * r);
+            sum += power / (4 * kPi) * d / (r * r * r);
         }
     }
     return sum / (k * k);
@@ -155,8 +153,7 @@ TEST(Detector, DiscInterceptsTheFluxOfAGlowingSphere) {
                     {"type": "sphere", "center": [0, 1, 0], "radius": 0.2,
                      "material": {"color": 0, "emission": {"color": 1, "intensity": 10}}}]})");
     const DetectorMeasurement m = only(measure(scene, 400000));
-    const double expected =
-        2 * kPiDetector * kPiDetector * l * s * s * (1 - d / std::sqrt(d * d + a * a));
+    const double expected = 2 * kPi * kPi * l * s * s * (1 - d / std::sqrt(d * d + a * a));
     std::printf("P = %.4f W, expected %.4f W (%+.3f%%)\n", m.total_power, expected,
                 100 * (m.total_power / expected - 1));
     EXPECT_NEAR(m.total_power, expected, 0.015 * expected);

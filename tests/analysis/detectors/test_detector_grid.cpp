@@ -5,15 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "analysis/detectors/detector_grid.h"
+#include "math/constants.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPiGrid = std::numbers::pi;
 
 const SceneObject& only_object(const Scene& s) { return s.objects.at(0); }
 
@@ -29,7 +27,7 @@ TEST(DetectorGrid, DiscCellsAddUpToPiRSquared) {
     const DetectorGrid g = DetectorGrid::for_object(only_object(s));
     EXPECT_EQ(g.cells_u(), 37);
     EXPECT_EQ(g.cells_v(), 37);
-    EXPECT_NEAR(g.surface_area(), kPiGrid * 4, 1e-6 * kPiGrid * 4);
+    EXPECT_NEAR(g.surface_area(), kPi * 4, 1e-6 * kPi * 4);
     // The centre cell is wholly inside, a corner cell wholly outside.
     EXPECT_NEAR(g.cell_area(g.cell_at(0, 0)), g.cell_width() * g.cell_height(), 1e-15);
     EXPECT_EQ(g.cell_area(0), 0.0);
@@ -37,9 +35,9 @@ TEST(DetectorGrid, DiscCellsAddUpToPiRSquared) {
 
 TEST(DetectorGrid, DiscOverlapOfAQuarterAndAHalf) {
     // The square [0, r]^2 holds a quarter of the disc; [-r, r] x [0, r] half of it.
-    EXPECT_NEAR(rectangle_disc_overlap(0, 1, 0, 1, 1), kPiGrid / 4, 1e-6);
-    EXPECT_NEAR(rectangle_disc_overlap(-1, 1, 0, 1, 1), kPiGrid / 2, 1e-6);
-    EXPECT_NEAR(rectangle_disc_overlap(-3, 3, -3, 3, 1), kPiGrid, 1e-6);
+    EXPECT_NEAR(rectangle_disc_overlap(0, 1, 0, 1, 1), kPi / 4, 1e-6);
+    EXPECT_NEAR(rectangle_disc_overlap(-1, 1, 0, 1, 1), kPi / 2, 1e-6);
+    EXPECT_NEAR(rectangle_disc_overlap(-3, 3, -3, 3, 1), kPi, 1e-6);
     EXPECT_EQ(rectangle_disc_overlap(0.8, 1, 0.8, 1, 1), 0.0);  // corner beyond the rim
 }
 

@@ -6,15 +6,13 @@
 
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "analysis/detectors/detector.h"
+#include "math/constants.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {
 namespace {
-
-constexpr double kPiLights = std::numbers::pi;
 
 DetectorMeasurement measure_one_lights(const std::string& text, int64_t photons) {
     const DetectionResult r = measure_detectors(parse_scene(text), {.photons_per_light = photons});
@@ -33,7 +31,7 @@ double lights_disc_in_strip(double r, double h) {
 // column from z0 to z1 receives P (atan(z1 / d) - atan(z0 / d)) / theta. 400000 photons: the
 // whole screen's sigma is 0.16%, a column's (about 1/32 of the photons) 0.9%.
 TEST(DetectorLights, FanSpreadsItsPowerUniformlyInAngle) {
-    const double p = 2, d = 2, theta = kPiLights / 3, alpha = kPiLights / 12;
+    const double p = 2, d = 2, theta = kPi / 3, alpha = kPi / 12;
     const double width = 2 * d * std::tan(alpha);
     char text[1024];
     std::snprintf(text, sizeof text, R"({"camera": {"position": [0, 5, 5], "look_at": [0, 0, 0]},
