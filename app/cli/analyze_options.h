@@ -1,6 +1,7 @@
 #pragma once
-// The optical bench's options (--wavelength, --stop, --epd, --fields, --spots, ...), for
-// `lenslab analyze` and `lenslab sweep --analyze` alike, so both read them the same way.
+// The optical bench's options (--wavelength, --stop, --epd, --fields, --spots, ...), made from
+// their declarations (analysis/report/analyze_request_spec.h), for `lenslab analyze` and
+// `lenslab sweep --analyze` alike.
 
 #include <CLI/CLI.hpp>
 

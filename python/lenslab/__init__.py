@@ -9,7 +9,7 @@ See docs/python.md.
 
 from ._lenslab import Error, Glass, SceneError, glass
 from ._detect import Detection, Detector, detect
-from ._optics import Analysis, analyze, analyze_many, trace
+from ._optics import Analysis, analyze, analyze_many, analyze_options, trace
 from ._render import render, write_image
 from ._scene import Scene, types
 
@@ -19,4 +19,5 @@ for _exported in (Error, Glass, SceneError):
 del _exported
 
 __all__ = ["Analysis", "Detection", "Detector", "Error", "Glass", "Scene", "SceneError",
-           "analyze", "analyze_many", "detect", "glass", "render", "trace", "types", "write_image"]
+           "analyze", "analyze_many", "analyze_options", "detect", "glass", "render", "trace",
+           "types", "write_image"]

@@ -119,6 +119,7 @@ def analyze(
     field_map: int = ...,
     report: Optional[Sequence[str]] = ...,
 ) -> Analysis: ...
+def analyze_options() -> list[dict[str, Any]]: ...
 def analyze_many(
     scenes: Iterable[_SceneSource],
     *,

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import inspect
 import json
 import math
 import numbers
@@ -59,12 +58,6 @@ def _whole(name: str, value: Any, low: Optional[int] = None, high: Optional[int]
     return int(value)
 
 
-def _excludes(given: dict[str, Any], name: str, others: Sequence[str], why: str) -> None:
-    for other in others:
-        if given.get(name) is not None and given.get(other) is not None:
-            raise ValueError(f"{name} excludes {other} ({why})")
-
-
 class Analysis(JsonDocument):
     """The result of lenslab.analyze: a read-only dict equal to what `lenslab analyze FILE
     --json` prints with the same options (less the names of figure files, which Python asks
@@ -101,80 +94,59 @@ class Analysis(JsonDocument):
         return f"<lenslab.Analysis: {', '.join(self._data)}>"
 
 
-def _request_json(*, wavelength: Optional[float] = None,
-                  wavelengths: Optional[Sequence[float]] = None,
-                  aperture: Optional[float] = None,
-                  lens: Optional[str] = None, unit: Optional[str] = None,
-                  stop: Optional[int] = None, ray_aiming: Optional[str] = None,
-                  epd: Optional[float] = None, f_number: Optional[float] = None,
-                  object_distance: Optional[float] = None,
-                  fields: Optional[Sequence[float]] = None,
-                  field_heights: Optional[Sequence[float]] = None, seidel: bool = False,
-                  psf: bool = False, mtf: bool = False,
-                  mtf_frequencies: Optional[Sequence[float]] = None, spots: bool = False,
-                  rings: int = 6, fans: bool = False, fan_points: int = 21,
-                  image_distance: Optional[float] = None, field_curves: bool = False,
-                  field_curve_points: int = 11, focal_shift: bool = False,
-                  band: Optional[Sequence[float]] = None, focal_shift_points: int = 21,
-                  wavelength_weights: Optional[Sequence[float]] = None,
-                  field_map: int = 0,
-                  report: Optional[Sequence[str]] = None) -> str:
-    """The options checked and as the JSON the compiled module takes (AnalyzeRequest's
-    fields); bad ones raise ValueError."""
-    given = dict(wavelength=wavelength, wavelengths=wavelengths, aperture=aperture, epd=epd,
-                 f_number=f_number, object_distance=object_distance, fields=fields,
-                 field_heights=field_heights)
-    _excludes(given, "wavelengths", ["wavelength"], "the primary is the middle one")
-    _excludes(given, "epd", ["aperture"], "both set the entrance pupil")
-    _excludes(given, "f_number", ["aperture", "epd"], "both set the entrance pupil")
-    _excludes(given, "fields", ["object_distance"], "field angles are for an object at "
-              "infinity; use field_heights")
-    if field_heights is not None and object_distance is None:
-        raise ValueError("field_heights needs object_distance (heights of an object at a "
-                         "finite distance)")
-    request: dict[str, Any] = {
-        "seidel": bool(seidel), "psf": bool(psf), "mtf": bool(mtf), "spots": bool(spots),
-        "fans": bool(fans), "field_curves": bool(field_curves),
-        "focal_shift": bool(focal_shift),
-        "rings": _whole("rings", rings, 1, 200),
-        "fan_points": _whole("fan_points", fan_points, 2, 10001),
-        "field_curve_points": _whole("field_curve_points", field_curve_points, 2, 1001),
-        "focal_shift_points": _whole("focal_shift_points", focal_shift_points, 2, 10001),
-        "field_map": _whole("field_map", field_map, 0, 101),
-    }
-    for name, value in (("wavelength_nm", wavelength), ("aperture", aperture), ("epd", epd),
-                        ("f_number", f_number), ("object_distance", object_distance)):
-        if value is not None:
-            request[name] = _number(name.replace("_nm", ""), value, positive=True)
-    for name, values, positive in (("wavelengths", wavelengths, True),
-                                   ("mtf_frequencies", mtf_frequencies, True),
-                                   ("band", band, True), ("fields", fields, False),
-                                   ("field_heights", field_heights, False),
-                                   ("wavelength_weights", wavelength_weights, False)):
-        if values is not None:
-            request[name] = _numbers(name, values, positive=positive)
-    if stop is not None:
-        request["stop"] = _whole("stop", stop, 1, 100000)
-    if ray_aiming is not None:
-        if ray_aiming not in ("real", "paraxial"):
-            raise ValueError(f"ray_aiming: must be 'real' or 'paraxial', got {ray_aiming!r}")
-        request["ray_aiming"] = ray_aiming
-    if image_distance is not None:
-        request["image_distance"] = _number("image_distance", image_distance)
-    for name, text in (("lens", lens), ("unit", unit)):
-        if text is not None:
-            if not isinstance(text, str):
-                raise ValueError(f"{name}: must be a string, got {text!r}")
-            request[name] = text
-    if report is not None and (isinstance(report, str) or
-                               not all(isinstance(k, str) for k in report)):
-        raise ValueError(f"report: must be a list of the document's keys, got {report!r}")
-    if report:
-        request["report"] = list(report)
-    return json.dumps(request)
+# The analysis request's options as the compiled module declares them (one list for the
+# command line, this module and its stub: analysis/report/analyze_request_spec.h).
+_DECLARED = {o["name"]: o for o in json.loads(_lenslab.analyze_options())}
+_OPTIONS = frozenset(_DECLARED)
 
 
-_OPTIONS = frozenset(inspect.signature(_request_json).parameters)
+def analyze_options() -> list[dict[str, Any]]:
+    """The options of lenslab.analyze as declared once for it and `lenslab analyze`: name
+    (the keyword), option (the command line's), value (flag, number, positive_number, whole,
+    numbers, positive_numbers, text, texts or choice), default, help, and where they apply
+    low and high, choices, excludes and excludes_why, needs and needs_why."""
+    return json.loads(_lenslab.analyze_options())
+
+
+def _checked(option: dict[str, Any], value: Any) -> Any:
+    name, kind = option["name"], option["value"]
+    if kind == "flag":
+        return bool(value)
+    if kind in ("number", "positive_number"):
+        return _number(name, value, positive=kind == "positive_number")
+    if kind in ("numbers", "positive_numbers"):
+        return _numbers(name, value, positive=kind == "positive_numbers")
+    if kind == "whole":
+        return _whole(name, value, option["low"], option["high"])
+    if kind == "choice":
+        if value not in option["choices"]:
+            quoted = [repr(c) for c in option["choices"]]
+            raise ValueError(f"{name}: must be {', '.join(quoted[:-1])} or {quoted[-1]}, "
+                             f"got {value!r}")
+        return value
+    if kind == "text":
+        if not isinstance(value, str):
+            raise ValueError(f"{name}: must be a string, got {value!r}")
+        return value
+    if isinstance(value, str) or not all(isinstance(v, str) for v in value):  # texts
+        raise ValueError(f"{name}: must be a list of strings, got {value!r}")
+    return list(value)
+
+
+def _request_json(options: dict[str, Any]) -> str:
+    """The options checked against their declarations, as the JSON the compiled module takes;
+    bad ones raise ValueError."""
+    given = {name: value for name, value in options.items() if value is not None}
+    for name, value in given.items():
+        option = _DECLARED[name]
+        for other in option.get("excludes", []):
+            if other in given:
+                raise ValueError(f"{name} excludes {other} ({option['excludes_why']})")
+        if "needs" in option and option["needs"] not in given:
+            raise ValueError(f"{name} needs {option['needs']} ({option['needs_why']})")
+    return json.dumps({name: _checked(_DECLARED[name], value) for name, value in given.items()})
+
+
 
 
 def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
@@ -202,7 +174,7 @@ def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
     path. lenslab.analyze_many analyzes a list of scenes across the cores."""
     options = dict(locals())
     del options["scene_or_file"]
-    request = _request_json(**options)
+    request = _request_json(options)
     text, path = source_json(scene_or_file)
     return Analysis(_lenslab.analyze(text, path, request))
 
@@ -229,7 +201,7 @@ def analyze_many(scenes: Iterable[SceneSource], *, threads: Optional[int] = None
     if unknown:
         raise TypeError(f"analyze_many() got an unexpected keyword argument "
                         f"'{sorted(unknown)[0]}'")
-    request = _request_json(**options)
+    request = _request_json(options)
     workers = _thread_count(threads)
     texts, paths = [], []
     for index, scene in enumerate(scenes):

@@ -17,6 +17,7 @@
 
 #include "analysis/figures/analyze_figures.h"
 #include "analysis/report/analyze_request.h"
+#include "analysis/report/analyze_request_spec.h"
 #include "background_job.h"
 #include "bindings.h"
 #include "scene/json_reader.h"
@@ -45,47 +46,14 @@ std::string python_names(const std::string& message) {
     return out;
 }
 
-template <class T>
-void take(const json& j, const char* key, T& into) {
-    if (j.contains(key) && !j[key].is_null()) into = j[key].get<T>();
-}
-
-// The request from the JSON object lenslab/_optics.py sends (its keys are the fields' names).
-AnalyzeRequest request_from(const json& j) {
-    AnalyzeRequest a;
-    take(j, "wavelength_nm", a.wavelength_nm);
-    a.wavelength_given = j.contains("wavelength_nm");
-    take(j, "wavelengths", a.wavelengths);
-    take(j, "aperture", a.aperture);
-    take(j, "lens", a.lens);
-    take(j, "unit", a.unit);
-    take(j, "stop", a.stop);
-    if (j.contains("ray_aiming"))
-        a.ray_aiming = ray_aiming_named(j["ray_aiming"].get<std::string>());
-    take(j, "epd", a.epd);
-    take(j, "f_number", a.f_number);
-    take(j, "object_distance", a.object_distance);
-    take(j, "fields", a.fields);
-    take(j, "field_heights", a.field_heights);
-    take(j, "seidel", a.seidel);
-    take(j, "psf", a.psf);
-    take(j, "mtf", a.mtf);
-    take(j, "mtf_frequencies", a.mtf_frequencies);
-    take(j, "spots", a.spots);
-    take(j, "rings", a.rings);
-    take(j, "field_map", a.field_map);
-    if (j.contains("image_distance") && !j["image_distance"].is_null())
-        a.image_distance = j["image_distance"].get<double>();
-    take(j, "wavelength_weights", a.wavelength_weights);
-    take(j, "fans", a.fans);
-    take(j, "fan_points", a.fan_points);
-    take(j, "field_curves", a.field_curves);
-    take(j, "field_curve_points", a.field_curve_points);
-    take(j, "focal_shift", a.focal_shift);
-    take(j, "band", a.band);
-    take(j, "focal_shift_points", a.focal_shift_points);
-    take(j, "report", a.report_keys);
-    return a;
+// The request from the JSON object lenslab/_optics.py sends: Python's keywords, checked there
+// against the declarations (analyze_request_options_json).
+AnalyzeRequest request_from(const std::string& request_json) {
+    try {
+        return analyze_request_from_json(json::parse(request_json));
+    } catch (const AnalyzeRequestError& e) {
+        throw py::value_error(e.what());
+    }
 }
 
 // A finished analysis: the request, its results and the scene's file ("" for none); the
@@ -162,7 +130,7 @@ AnalyzeRun analyze_text(const std::string& json_text, const std::string& path,
 
 AnalyzeRun analyze(const std::string& json_text, const std::string& path,
                    const std::string& request_json) {
-    const AnalyzeRequest request = request_from(json::parse(request_json));
+    const AnalyzeRequest request = request_from(request_json);
     py::gil_scoped_release unlocked;
     return analyze_text(json_text, path, request);
 }
@@ -222,7 +190,7 @@ AnalyzeBatch analyze_many(const std::vector<std::string>& texts,
                           const std::vector<std::string>& paths, const std::string& request_json,
                           int threads, const py::object& progress) {
     if (texts.size() != paths.size()) throw py::value_error("as many paths as scenes, please");
-    const AnalyzeRequest request = request_from(json::parse(request_json));
+    const AnalyzeRequest request = request_from(request_json);
     BackgroundJob<AnalyzeBatch> job([&](RenderControl& control) {
         return analyze_all(texts, paths, request, threads, control);
     });
@@ -248,8 +216,10 @@ void bind_analyze(py::module_& m) {
         .def("figure", &figure, py::arg("name"))
         .def("spot_points", &spot_points);
     m.def("analyze", &analyze, py::arg("json_text"), py::arg("path"), py::arg("request_json"),
-          "Runs `lenslab analyze` on the scene with the request (JSON of AnalyzeRequest's "
-          "fields)");
+          "Runs `lenslab analyze` on the scene with the request (JSON: Python's keywords)");
+    m.def(
+        "analyze_options", [] { return analyze_request_options_json().dump(); },
+        "The analysis request's options as JSON (analysis/report/analyze_request_spec.h)");
     py::class_<AnalyzeBatch>(m, "AnalyzeBatch", "A finished lenslab.analyze_many")
         .def_property_readonly("failed", [](const AnalyzeBatch& b) { return b.failed; })
         .def("raise_failure", &raise_failure)

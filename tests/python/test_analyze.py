@@ -215,3 +215,49 @@ def test_a_lens_file_is_measured_as_its_file_says():
     assert report["first_order"]["entrance_pupil"]["diameter"] == 25.4
     # A wavelength asked for wins over the file's.
     assert "wavelengths" not in lenslab.analyze(imported, wavelength=550)["lens_file_bench"]["taken"]
+
+
+# What each kind of declared value is annotated as, in the signature and the stub.
+_ANNOTATIONS = {"flag": "bool", "number": "Optional[float]", "positive_number": "Optional[float]",
+                "numbers": "Optional[Sequence[float]]",
+                "positive_numbers": "Optional[Sequence[float]]", "text": "Optional[str]",
+                "texts": "Optional[Sequence[str]]", "choice": "Optional[str]"}
+
+
+def _annotation(option):
+    if option["value"] == "whole":
+        return "int" if option["default"] is not None else "Optional[int]"
+    return _ANNOTATIONS[option["value"]]
+
+
+def _stub_keywords(function):
+    import ast
+    import pathlib
+    stub = pathlib.Path(lenslab.__file__).with_suffix(".pyi")
+    for node in ast.parse(stub.read_text()).body:
+        if isinstance(node, ast.FunctionDef) and node.name == function:
+            return {a.arg: ast.unparse(a.annotation) for a in node.args.kwonlyargs}
+    raise AssertionError(f"{function} not in {stub}")
+
+
+def test_the_signature_and_the_stub_follow_the_declared_options():
+    import inspect
+    declared = lenslab.analyze_options()
+    assert [o["name"] for o in declared][:3] == ["wavelength", "wavelengths", "aperture"]
+    expected = {o["name"]: _annotation(o) for o in declared}
+    parameters = inspect.signature(lenslab.analyze).parameters
+    signature = {name: p.annotation for name, p in parameters.items() if name != "scene_or_file"}
+    assert signature == expected
+    defaults = {name: p.default for name, p in parameters.items() if name != "scene_or_file"}
+    assert defaults == {o["name"]: o["default"] for o in declared}
+    assert _stub_keywords("analyze") == expected
+    many = _stub_keywords("analyze_many")
+    assert {k: v for k, v in many.items() if k not in ("threads", "progress")} == expected
+
+
+def test_every_declared_option_reaches_the_cli_under_the_same_name():
+    help_text = run_cli("analyze", "--help").stdout
+    for option in lenslab.analyze_options():
+        if option["name"] != "report":  # Python's alone
+            assert option["option"] + " " in help_text or option["option"] + "," in help_text \
+                or option["option"] + "\n" in help_text, option["option"]
