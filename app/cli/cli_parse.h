@@ -20,7 +20,7 @@ public:
 
     // Parses and validates `argv` (argv[0] the program); throws CLI::ParseError, whose exit
     // code is 0 for --help and --version.
-    void parse(int argc, const char* const* argv) { m_app.parse(argc, argv); }
+    void parse(int argc, const char* const* argv);
     // The chosen command's action after a parse, or nullptr when there is none.
     const Action* chosen() const;
     // Prints --help or --version, or the error, and returns the exit code (CLI::App::exit).
