@@ -9,13 +9,19 @@ namespace {
 using nlohmann::json;
 using Request = AnalyzeRequest;
 
-template <class T>
-RequestOption member_option(std::string name, RequestValue value, T Request::*member,
-                            std::string help) {
+// An option's name, kind of value and help; its set and get still to be given.
+RequestOption declared(std::string name, RequestValue value, std::string help) {
     RequestOption o;
     o.name = std::move(name);
     o.value = value;
     o.help = std::move(help);
+    return o;
+}
+
+template <class T>
+RequestOption member_option(std::string name, RequestValue value, T Request::*member,
+                            std::string help) {
+    RequestOption o = declared(std::move(name), value, std::move(help));
     o.set = [member](Request& r, const json& j) { r.*member = j.get<T>(); };
     o.get = [member](const Request& r) { return json(r.*member); };
     return o;
@@ -46,14 +52,12 @@ RequestOption excluding(RequestOption o, std::vector<std::string> others, std::s
 
 std::vector<RequestOption> declare_options() {
     std::vector<RequestOption> all;
-    RequestOption wavelength;
-    wavelength.name = "wavelength";
-    wavelength.short_name = "w";
-    wavelength.value = RequestValue::PositiveNumber;
-    wavelength.help =
+    RequestOption wavelength = declared(
+        "wavelength", RequestValue::PositiveNumber,
         "Wavelength in air in nm for the figures (default: the d line, 587.56 nm; in vacuum "
         "for a scene with \"ambient\": \"vacuum\"; an imported lens file's wavelengths when its "
-        "scene has them)";
+        "scene has them)");
+    wavelength.short_name = "w";
     // Given, it wins over an imported lens file's wavelengths.
     wavelength.set = [](Request& r, const json& j) {
         r.wavelength_nm = j.get<double>();
@@ -82,14 +86,12 @@ std::vector<RequestOption> declare_options() {
     all.push_back(whole("stop", &Request::stop, 1, 100000,
                         "The aperture stop: a surface, counted from 1 along the light "
                         "(default: an imported lens file's stop, else 1, the first surface)"));
-    RequestOption aiming;
-    aiming.name = "ray-aiming";
-    aiming.value = RequestValue::Choice;
-    aiming.choices = {ray_aiming_name(RayAiming::Real), ray_aiming_name(RayAiming::Paraxial)};
-    aiming.help =
+    RequestOption aiming = declared(
+        "ray-aiming", RequestValue::Choice,
         "How real rays are aimed at a pupil point: real (through the real stop) or paraxial "
         "(at the paraxial entrance pupil, Zemax's default) (default: an imported lens file's, "
-        "else real)";
+        "else real)");
+    aiming.choices = {ray_aiming_name(RayAiming::Real), ray_aiming_name(RayAiming::Paraxial)};
     aiming.set = [](Request& r, const json& j) {
         r.ray_aiming = ray_aiming_named(j.get<std::string>());
     };
@@ -167,12 +169,10 @@ std::vector<RequestOption> declare_options() {
     all.push_back(whole("fan-points", &Request::fan_points, 2, 10001,
                         "Points along each ray fan, evenly from -1 to 1 across the stop "
                         "(default 21)"));
-    RequestOption image_distance;
-    image_distance.name = "image-distance";
-    image_distance.value = RequestValue::Number;
-    image_distance.help =
+    RequestOption image_distance = declared(
+        "image-distance", RequestValue::Number,
         "The image plane of the spots, fans and field curves, from the last vertex (default: "
-        "the paraxial image plane at the primary wavelength)";
+        "the paraxial image plane at the primary wavelength)");
     image_distance.set = [](Request& r, const json& j) { r.image_distance = j.get<double>(); };
     image_distance.get = [](const Request& r) {
         return r.image_distance ? json(*r.image_distance) : json();
