@@ -2,6 +2,7 @@
 // Progress reporting and cancellation shared between a render and whoever started it, and
 // the processes the render is split across (this one alone unless set: src/cluster/).
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -13,7 +14,9 @@ namespace lenslab {
 
 class RenderControl {
 public:
-    // Called with the finished fraction in [0, 1]; calls are serialised, from any thread.
+    // Called with the finished fraction in [0, 1]; calls are serialised, from any thread, and
+    // never go backwards (a worker that computed its fraction before another's may report it
+    // after; it is then raised to the highest fraction already reported).
     using ProgressFn = std::function<void(double)>;
 
     RenderControl() = default;
@@ -35,7 +38,8 @@ public:
     void report(double fraction) {
         if (!m_progress) return;
         std::lock_guard lock(m_mutex);
-        m_progress(fraction);
+        m_reported = std::max(m_reported, fraction);
+        m_progress(m_reported);
     }
 
 private:
@@ -43,6 +47,7 @@ private:
     std::atomic<bool> m_cancelled{false};
     std::atomic<int64_t> m_non_finite{0};
     std::mutex m_mutex;
+    double m_reported = 0;  // guarded by m_mutex
     Communicator* m_cluster = &this_process_alone();
 };
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "math/constants.h"
 #include "render/render_session.h"
@@ -129,6 +130,18 @@ TEST(RenderSession, ProgressReachesOne) {
     RenderControl control([&](double f) { last = f; });
     render_scene(scene, control);
     EXPECT_DOUBLE_EQ(last, 1.0);
+}
+
+TEST(RenderSession, ProgressNeverGoesBackwards) {
+    // Workers compute their fraction before taking the lock, so a slower one may report a
+    // smaller fraction after a faster one has reported a larger (CI saw 1/9 after 1).
+    std::vector<double> seen;
+    RenderControl control([&](double f) { seen.push_back(f); });
+    control.report(0.5);
+    control.report(1.0 / 9.0);
+    control.report(1.0);
+    control.report(0.25);
+    EXPECT_EQ(seen, (std::vector<double>{0.5, 0.5, 1.0, 1.0}));
 }
 
 TEST(RenderSession, DefaultSceneIsTheReportsExperiment) {
