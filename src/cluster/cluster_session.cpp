@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <string>
 
 #include "util/error.h"
 
@@ -102,9 +103,11 @@ void ClusterSession::report_error(const std::string& kind, const std::string& me
         std::cerr << "lenslab: " << kind << ": " << message << "\n";
         return;
     }
-    std::cerr << "lenslab: " << kind << " (rank " << m_world->rank() << " of " << m_world->size()
-              << "): " << message << "\n"
-              << std::flush;
+    // One write: piece by piece, mpirun's own abort notice could land between the pieces
+    // (seen under load: "lenslab: " on one line, the rest of the message after the notice).
+    const std::string line = "lenslab: " + kind + " (rank " + std::to_string(m_world->rank()) +
+                             " of " + std::to_string(m_world->size()) + "): " + message + "\n";
+    std::cerr.write(line.data(), static_cast<std::streamsize>(line.size())).flush();
 #ifdef LENSLAB_HAVE_MPI
     // The other ranks may be waiting for this one in an exchange: only an abort ends them.
     MPI_Abort(MPI_COMM_WORLD, exit_code);
