@@ -49,8 +49,4 @@ LmResult levenberg_marquardt(const ResidualFunction& residuals, std::vector<doub
                              const std::vector<double>& steps, const LmOptions& options = {},
                              const std::function<void(const LmProgress&)>& progress = {});
 
-// Solves the symmetric positive definite system A x = b (A n x n, row-major) by Cholesky
-// factorisation; none when A is not positive definite.
-std::optional<std::vector<double>> solve_cholesky(std::vector<double> a, std::vector<double> b);
-
 }  // namespace lenslab

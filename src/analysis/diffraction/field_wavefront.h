@@ -1,0 +1,56 @@
+#pragma once
+// The wavefront of a real system at any field point and wavelength: the optical path
+// difference (OPD) over the exit pupil from exact rays, as lens-design programs report it.
+//
+// Rays from the field point are aimed (ray_aiming.h, with the first-order data's aiming)
+// through a square grid of normalised stop coordinates (pupil_function.h's layout: sample
+// (i, j) at (px, py) = (coordinate(j), coordinate(i)), py meridional). Each ray's optical path
+// runs from the object's wavefront (the object point, or for an object at infinity the plane
+// through the start of the beam square to the field direction) through every medium to the
+// reference sphere. The sphere is centred on the chief ray's crossing of the image plane and
+// passes through the chief ray's crossing of the paraxial exit pupil's plane (when the exit
+// pupil lies at infinity, through the chief ray's last surface point). The OPD is
+// W = OPL(ray) − OPL(chief ray) in waves: the sign of pupil_from_rays.h (negative at the rim
+// for a positive singlet's undercorrected spherical aberration at the paraxial focus), so the
+// PSF of the pupil (diffraction.h) is centred on the chief ray's image point.
+//
+// Rays that are vignetted or totally reflected get amplitude 0. The image scale of the PSF
+// and MTF uses the paraxial working F-number; the grid is uniform in the stop, which the exit
+// pupil follows for a system obeying the sine condition.
+
+#include <optional>
+
+#include "analysis/diffraction/pupil_function.h"
+#include "analysis/system/first_order.h"
+#include "analysis/system/optical_system.h"
+#include "math/vec3.h"
+
+namespace lenslab {
+
+struct FieldWavefrontOptions {
+    double field = 0;    // y: degrees for an object at infinity, else an object height
+    double field_x = 0;  // the same in x
+    double wavelength_nm = 587.56;
+    PupilSampling sampling{64, 2};
+    std::optional<double> image_z;    // the image plane; default: the paraxial image (first order)
+    double nm_per_length_unit = 1e6;  // the system's length unit in nm (1e6: millimetres)
+};
+
+struct FieldWavefront {
+    double field = 0, field_x = 0, wavelength_nm = 0;
+    double image_z = 0;
+    Vec3 reference;               // the reference sphere's centre (the chief ray's image point)
+    double reference_radius = 0;  // the sphere's radius
+    PupilFunction pupil;          // amplitude 1 where a ray passed, OPD in waves
+    int passed = 0, lost = 0;     // rays inside the unit pupil that passed, and that did not
+    double rms_waves = 0;  // RMS about the mean (piston removed), against the chief ray's sphere
+    double pv_waves = 0;   // largest minus smallest OPD
+};
+
+// Throws SceneError through a gradient-index lens (its curved rays' optical path is not
+// measured) and std::invalid_argument when the chief ray does not pass or misses the
+// reference sphere, or the sampling is bad.
+FieldWavefront field_wavefront(const OpticalSystem& system, const FirstOrder& first_order,
+                               const FieldWavefrontOptions& options);
+
+}  // namespace lenslab
