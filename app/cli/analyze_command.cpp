@@ -13,6 +13,7 @@
 #include "analysis/report/fan_report.h"
 #include "analysis/report/field_map_report.h"
 #include "analysis/report/spot_report.h"
+#include "analysis/report/wavefront_report.h"
 #include "analyze_options.h"
 #include "commands.h"
 #include "lensfile/lens_file.h"
@@ -74,6 +75,7 @@ int run(const AnalyzeArgs& args) {
     for (const std::string& why : results.not_from_lens_file)
         std::cout << "Not taken from the lens file: " << why << "\n";
     if (results.diffraction) std::cout << diffraction_table(*results.diffraction, a.psf, a.mtf);
+    if (results.wavefronts) std::cout << wavefront_table(*results.wavefronts);
     if (results.spots) std::cout << spots_table(system, *results.spots);
     if (results.field_map) std::cout << field_map_table(system, *results.field_map);
     if (results.fans) std::cout << fans_table(system, *results.fans);

@@ -81,6 +81,8 @@ def trace(
 class Analysis(Mapping[str, Any]):
     @property
     def spot_points(self) -> dict[tuple[float, float], npt.NDArray[np.float64]]: ...
+    @property
+    def opd_maps(self) -> dict[tuple[float, float], npt.NDArray[np.float64]]: ...
     def figure(self, name: str) -> str: ...
     def __getitem__(self, key: str) -> Any: ...
     def __iter__(self) -> Iterator[str]: ...
@@ -104,6 +106,9 @@ def analyze(
     seidel: bool = ...,
     psf: bool = ...,
     mtf: bool = ...,
+    wavefront: bool = ...,
+    zernike_terms: int = ...,
+    wavefront_samples: int = ...,
     mtf_frequencies: Optional[Sequence[float]] = ...,
     spots: bool = ...,
     rings: int = ...,
@@ -140,6 +145,9 @@ def analyze_many(
     seidel: bool = ...,
     psf: bool = ...,
     mtf: bool = ...,
+    wavefront: bool = ...,
+    zernike_terms: int = ...,
+    wavefront_samples: int = ...,
     mtf_frequencies: Optional[Sequence[float]] = ...,
     spots: bool = ...,
     rings: int = ...,

@@ -61,8 +61,8 @@ def _whole(name: str, value: Any, low: Optional[int] = None, high: Optional[int]
 class Analysis(JsonDocument):
     """The result of lenslab.analyze: a read-only dict equal to what `lenslab analyze FILE
     --json` prints with the same options (less the names of figure files, which Python asks
-    for with figure()); spot_points, the spot diagrams' ray hits; figure(name), a figure as
-    SVG text."""
+    for with figure()); spot_points, the spot diagrams' ray hits; opd_maps, the wavefronts as
+    arrays; figure(name), a figure as SVG text."""
 
     def __init__(self, run: Any) -> None:
         self._run = run
@@ -77,6 +77,16 @@ class Analysis(JsonDocument):
         if self._spot_points is None:
             self._spot_points = {(field, nm): xy for field, nm, xy in self._run.spot_points()}
         return self._spot_points
+
+    @property
+    def opd_maps(self) -> dict[tuple[float, float], np.ndarray]:
+        """The wavefronts' OPD maps in waves, {(field, wavelength_nm): (samples, samples) array,
+        a row per pupil y from -1 to 1, NaN where no ray passed}, in the order of
+        self["wavefront"]["fields"] (those measured); empty without wavefront=True."""
+        block = self._data.get("wavefront", {})
+        return {(f["field"], f["wavelength_nm"]):
+                np.array([[np.nan if v is None else v for v in row] for row in f["opd_map"]])
+                for f in block.get("fields", []) if "opd_map" in f}
 
     def figure(self, name: str) -> str:
         """The figure `name` as the SVG text `lenslab analyze` writes to a file: "ray_diagram"
@@ -157,7 +167,8 @@ def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
             object_distance: Optional[float] = None,
             fields: Optional[Sequence[float]] = None,
             field_heights: Optional[Sequence[float]] = None, seidel: bool = False,
-            psf: bool = False, mtf: bool = False,
+            psf: bool = False, mtf: bool = False, wavefront: bool = False,
+            zernike_terms: int = 37, wavefront_samples: int = 64,
             mtf_frequencies: Optional[Sequence[float]] = None, spots: bool = False,
             rings: int = 6, fans: bool = False, fan_points: int = 21,
             image_distance: Optional[float] = None, field_curves: bool = False,

@@ -219,6 +219,21 @@ lenslab_cli_test(NAME analyze.bad.epd_and_f_number
 lenslab_cli_test(NAME analyze.bad.field_heights_at_infinity
     ARGS analyze ${analyze_triplet} --field-heights 5
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=requires --object-distance")
+# Wavefronts at every field (--wavefront): the JSON block, the table, and bad input.
+lenslab_cli_test(NAME analyze.wavefront_json
+    ARGS analyze ${analyze_triplet} --json --stop 3 --epd 12.5 --fields 0,20 --wavefront
+         --zernike-terms 11 --wavefront-samples 16
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=wavefront,first_order"
+           "-DSTDOUT_CONTAINS=\"zernike_fringe\": [")
+lenslab_cli_test(NAME analyze.wavefront_table
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 0,20 --wavefront
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=Z11 spherical")
+lenslab_cli_test(NAME analyze.bad.zernike_terms_without_wavefront
+    ARGS analyze ${analyze_triplet} --zernike-terms 11
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--zernike-terms requires --wavefront")
+lenslab_cli_test(NAME analyze.bad.wavefront_samples_odd
+    ARGS analyze ${analyze_triplet} --wavefront --wavefront-samples 15
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--wavefront-samples: 15 is odd")
 # Spot diagrams and ray fans per field and wavelength, their figures, and bad input.
 set(analyze_spots_svg ${LENSLAB_CLI_OUT}/triplet_spots.svg)
 set(analyze_fans_svg ${LENSLAB_CLI_OUT}/triplet_fans.svg)
@@ -259,7 +274,7 @@ lenslab_cli_test(NAME analyze.bad.weights_negative
            "-DSTDERR_LINE=lenslab: error: --wavelength-weights: -1 is negative (a weight is 0 or more)")
 lenslab_cli_test(NAME analyze.bad.image_distance_alone
     ARGS analyze ${analyze_triplet} --image-distance 40
-    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--image-distance: it places the image plane of --spots, --fans, --field-map and --field-curves")
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--image-distance: it places the image plane of --spots, --fans, --field-map, --field-curves and --wavefront")
 lenslab_cli_test(NAME analyze.bad.field_map_on_the_axis
     ARGS analyze ${analyze_triplet} --field-map 3
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--field-map: the fields reach no further than the axis")

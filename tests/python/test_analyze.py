@@ -31,6 +31,28 @@ def test_a_lens_file_with_mirrors_is_analysed_as_the_cli_does():
     assert report["surfaces"][0]["n_after"] == -1
 
 
+def test_wavefronts_equal_the_cli_and_come_as_arrays():
+    expected = cli_json("analyze", SCENE, "--json", "--fields", "0,2.5", "--wavelengths",
+                        "486.1327,656.2725", "--wavefront", "--zernike-terms", "15",
+                        "--wavefront-samples", "32")
+    report = lenslab.analyze(SCENE, fields=[0, 2.5], wavelengths=[486.1327, 656.2725],
+                             wavefront=True, zernike_terms=15, wavefront_samples=32)
+    assert report == expected
+    block = report["wavefront"]
+    assert [(f["field"], f["wavelength_nm"]) for f in block["fields"]] == [
+        (0, 486.1327), (0, 656.2725), (2.5, 486.1327), (2.5, 656.2725)]
+    assert all(len(f["zernike_noll"]) == 15 for f in block["fields"])
+    maps = report.opd_maps
+    assert list(maps) == [(f["field"], f["wavelength_nm"]) for f in block["fields"]]
+    opd = maps[(2.5, 486.1327)]
+    assert opd.shape == (32, 32)
+    assert np.isnan(opd[0, 0])  # a corner lies outside the pupil
+    inside = opd[~np.isnan(opd)]
+    assert inside.size == block["fields"][2]["rays_passed"]
+    assert inside.std() == pytest.approx(block["fields"][2]["rms_waves"], rel=1e-9)
+    assert lenslab.analyze(SCENE).opd_maps == {}
+
+
 def test_options_equal_the_cli():
     expected = cli_json("analyze", SCENE, "--json", "--wavelength", "550", "--stop", "2",
                         "--f-number", "8", "--fields", "0,2.5")
@@ -175,7 +197,8 @@ def test_a_figure_not_asked_for_raises():
     (dict(field_heights=[0, 1]), r"^field_heights needs object_distance"),
     (dict(fields="0,1"), r"^fields: must be a sequence of numbers"),
     (dict(image_distance=90), r"^image_distance: it places the image plane of spots, fans, "
-                              r"field_map and field_curves, none of which was asked for$"),
+                              r"field_map, field_curves and wavefront, none of which was asked "
+                              r"for$"),
     (dict(mtf_frequencies=[10]), r"^mtf_frequencies requires mtf \(or mtf_svg\)$"),
     (dict(focal_shift=True, band=[700, 450]), r"^band: two wavelengths in nm, the shorter "),
     (dict(wavelength_weights=[1, 2]), r"^wavelength_weights: 2 weights for 1 wavelengths"),

@@ -12,6 +12,7 @@
 #include "analysis/report/fan_report.h"
 #include "analysis/report/field_map_report.h"
 #include "analysis/report/spot_report.h"
+#include "analysis/report/wavefront_report.h"
 #include "analysis/system/lens_bench_defaults.h"
 #include "analysis/system/lens_lookup.h"
 #include "image/image_io.h"
@@ -128,6 +129,19 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         pupil.aperture_radius = 0.5 * report.first_order.entrance_pupil.diameter;
         out.diffraction = diffraction_figures(system, pupil, a.mtf_frequencies);
     }
+    if (a.wavefront) {
+        WavefrontFigureOptions wavefront;
+        wavefront.fields = first.fields;
+        wavefront.wavelengths = report.wavelengths;
+        wavefront.samples = a.wavefront_samples;
+        wavefront.zernike_terms = a.zernike_terms;
+        if (a.image_distance) wavefront.image_z = system.last_vertex() + *a.image_distance;
+        try {
+            out.wavefronts = wavefront_figures(system, report.first_order, wavefront);
+        } catch (const std::invalid_argument& e) {
+            throw AnalyzeRequestError(std::string("--wavefront: ") + e.what());
+        }
+    }
     if (a.field_curves) {
         FieldCurveOptions curve;
         for (double field : first.fields) {
@@ -192,9 +206,15 @@ AnalyzeRequest with_implied_tables(AnalyzeRequest a) {
 
 std::optional<std::string> figure_option_error(const AnalyzeRequest& a) {
     const std::vector<double>& weights = a.wavelength_weights;
-    if (a.image_distance && !a.spots && !a.fans && !a.field_curves && a.field_map == 0) {
-        return "--image-distance: it places the image plane of --spots, --fans, --field-map "
-               "and --field-curves, none of which was asked for";
+    if (a.image_distance && !a.spots && !a.fans && !a.field_curves && a.field_map == 0 &&
+        !a.wavefront) {
+        return "--image-distance: it places the image plane of --spots, --fans, --field-map, "
+               "--field-curves and --wavefront, none of which was asked for";
+    }
+    if (a.wavefront_samples % 2 != 0) {
+        return "--wavefront-samples: " + std::to_string(a.wavefront_samples) +
+               " is odd (an even number puts the pupil's centre between samples, as the FFT "
+               "grid needs)";
     }
     if (!a.mtf_frequencies.empty() && !a.mtf) {
         return "--mtf-frequencies requires --mtf (or --mtf-svg)";
@@ -280,6 +300,7 @@ void for_each_bench_key(const AnalyzeResults& results, const AnalyzeRequest& req
     }
     if (a.psf) put("psf", [&] { return psf_json(*results.diffraction); });
     if (a.mtf) put("mtf", [&] { return mtf_json(*results.diffraction); });
+    if (results.wavefronts) put("wavefront", [&] { return wavefront_json(*results.wavefronts); });
     if (results.spots) put("spots", [&] { return spots_json(results.system, *results.spots); });
     if (results.fans) put("fans", [&] { return fans_json(results.system, *results.fans); });
     if (results.curves) {

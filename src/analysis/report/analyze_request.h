@@ -14,6 +14,7 @@
 #include "analysis/aberrations/ray_fans.h"
 #include "analysis/aberrations/spot_diagrams.h"
 #include "analysis/diffraction/diffraction_figures.h"
+#include "analysis/diffraction/wavefront_figures.h"
 #include "analysis/report/lens_report.h"
 #include "analysis/system/optical_system.h"
 #include "optics/glass.h"
@@ -46,6 +47,10 @@ struct AnalyzeRequest {
     std::vector<double> fields, field_heights;
     bool seidel = false;
     bool psf = false, mtf = false;
+    // The wavefront at each field and wavelength (wavefront_figures.h).
+    bool wavefront = false;
+    int zernike_terms = 37;
+    int wavefront_samples = 64;
     std::vector<double> mtf_frequencies;  // empty: ten up to the cutoff
     bool spots = false;
     int rings = 6;                           // hexapolar rings of the spot diagrams
@@ -90,6 +95,7 @@ struct AnalyzeResults {
     std::optional<SpotDiagrams> spots;
     std::optional<RayFans> fans;
     std::optional<DiffractionFigures> diffraction;
+    std::optional<WavefrontFigures> wavefronts;
     std::optional<FieldCurves> curves;
     std::optional<FocalShift> shift;
     std::optional<FieldMap> field_map;

@@ -133,6 +133,23 @@ std::vector<RequestOption> declare_options() {
         "mtf", &Request::mtf,
         "Diffraction MTF on the axis at the primary wavelength, tangential and sagittal, beside "
         "the diffraction limit (frequencies in cycles/mm)"));
+    all.push_back(
+        flag("wavefront", &Request::wavefront,
+             "The wavefront at each field and wavelength from real rays, against the chief ray's "
+             "reference sphere in the image plane: RMS, peak-to-valley, Strehl ratio, Zernike "
+             "coefficients (Noll and Fringe) and the OPD map over the pupil, in waves"));
+    RequestOption terms = whole("zernike-terms", &Request::zernike_terms, 1, 231,
+                                "Noll Zernike terms fitted to each wavefront (default 37; the "
+                                "Fringe fit stops at its 37)");
+    terms.needs = "wavefront";
+    terms.needs_why = "the terms of the wavefront's fit";
+    all.push_back(terms);
+    RequestOption samples = whole("wavefront-samples", &Request::wavefront_samples, 8, 512,
+                                  "Rays across the pupil's diameter for each wavefront, even "
+                                  "(default 64)");
+    samples.needs = "wavefront";
+    samples.needs_why = "the sampling of the wavefront's pupil";
+    all.push_back(samples);
     all.push_back(member_option("mtf-frequencies", RequestValue::PositiveNumbers,
                                 &Request::mtf_frequencies,
                                 "Frequencies of the MTF in cycles/mm, comma-separated (default: "
@@ -171,8 +188,8 @@ std::vector<RequestOption> declare_options() {
                         "(default 21)"));
     RequestOption image_distance = declared(
         "image-distance", RequestValue::Number,
-        "The image plane of the spots, fans and field curves, from the last vertex (default: "
-        "the paraxial image plane at the primary wavelength)");
+        "The image plane of the spots, fans, field curves and wavefronts, from the last vertex "
+        "(default: the paraxial image plane at the primary wavelength)");
     image_distance.set = [](Request& r, const json& j) { r.image_distance = j.get<double>(); };
     image_distance.get = [](const Request& r) {
         return r.image_distance ? json(*r.image_distance) : json();
