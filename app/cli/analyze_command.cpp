@@ -74,7 +74,10 @@ int run(const AnalyzeArgs& args) {
     }
     for (const std::string& why : results.not_from_lens_file)
         std::cout << "Not taken from the lens file: " << why << "\n";
-    if (results.diffraction) std::cout << diffraction_table(*results.diffraction, a.psf, a.mtf);
+    if (results.diffraction) {
+        const FieldMtfs* mtf = results.field_mtf ? &*results.field_mtf : nullptr;
+        std::cout << diffraction_table(*results.diffraction, a.psf, mtf);
+    }
     if (results.wavefronts) std::cout << wavefront_table(*results.wavefronts);
     if (results.spots) std::cout << spots_table(system, *results.spots);
     if (results.field_map) std::cout << field_map_table(system, *results.field_map);

@@ -274,7 +274,7 @@ lenslab_cli_test(NAME analyze.bad.weights_negative
            "-DSTDERR_LINE=lenslab: error: --wavelength-weights: -1 is negative (a weight is 0 or more)")
 lenslab_cli_test(NAME analyze.bad.image_distance_alone
     ARGS analyze ${analyze_triplet} --image-distance 40
-    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--image-distance: it places the image plane of --spots, --fans, --field-map, --field-curves and --wavefront")
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--image-distance: it places the image plane of --spots, --fans, --field-map, --field-curves, --wavefront and --mtf")
 lenslab_cli_test(NAME analyze.bad.field_map_on_the_axis
     ARGS analyze ${analyze_triplet} --field-map 3
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--field-map: the fields reach no further than the axis")

@@ -197,8 +197,8 @@ def test_a_figure_not_asked_for_raises():
     (dict(field_heights=[0, 1]), r"^field_heights needs object_distance"),
     (dict(fields="0,1"), r"^fields: must be a sequence of numbers"),
     (dict(image_distance=90), r"^image_distance: it places the image plane of spots, fans, "
-                              r"field_map, field_curves and wavefront, none of which was asked "
-                              r"for$"),
+                              r"field_map, field_curves, wavefront and mtf, none of which was "
+                              r"asked for$"),
     (dict(mtf_frequencies=[10]), r"^mtf_frequencies requires mtf \(or mtf_svg\)$"),
     (dict(focal_shift=True, band=[700, 450]), r"^band: two wavelengths in nm, the shorter "),
     (dict(wavelength_weights=[1, 2]), r"^wavelength_weights: 2 weights for 1 wavelengths"),

@@ -55,6 +55,8 @@ struct OpticalTransfer {
     }
     // |OTF| at frequency (fx, fy), bilinearly interpolated; 0 beyond the grid.
     double modulation(double fx, double fy) const;
+    // The OTF itself there, its complex values bilinearly interpolated; 0 beyond the grid.
+    std::complex<double> value(double fx, double fy) const;
 };
 
 OpticalTransfer compute_otf(const Psf& psf);

@@ -33,14 +33,31 @@ OpticalTransfer compute_otf(const Psf& psf) {
     return otf;
 }
 
-double OpticalTransfer::modulation(double fx, double fy) const {
-    const double u = fx / spacing + size / 2, v = fy / spacing + size / 2;
-    if (!(u >= 0 && v >= 0 && u <= size - 1 && v <= size - 1)) return 0;
+namespace {
+
+// Bilinear interpolation of f(at(i, j)) at (fx, fy); T{} beyond the grid.
+template <class T, class F>
+T interpolate_otf(const OpticalTransfer& otf, double fx, double fy, F f) {
+    const int size = otf.size;
+    const double u = fx / otf.spacing + size / 2, v = fy / otf.spacing + size / 2;
+    if (!(u >= 0 && v >= 0 && u <= size - 1 && v <= size - 1)) return T{};
     const int j = std::min(static_cast<int>(u), size - 2),
               i = std::min(static_cast<int>(v), size - 2);
     const double tu = u - j, tv = v - i;
-    return (1 - tv) * ((1 - tu) * std::abs(at(i, j)) + tu * std::abs(at(i, j + 1))) +
-           tv * ((1 - tu) * std::abs(at(i + 1, j)) + tu * std::abs(at(i + 1, j + 1)));
+    return (1 - tv) * ((1 - tu) * f(otf.at(i, j)) + tu * f(otf.at(i, j + 1))) +
+           tv * ((1 - tu) * f(otf.at(i + 1, j)) + tu * f(otf.at(i + 1, j + 1)));
+}
+
+}  // namespace
+
+double OpticalTransfer::modulation(double fx, double fy) const {
+    return interpolate_otf<double>(*this, fx, fy,
+                                   [](const std::complex<double>& v) { return std::abs(v); });
+}
+
+std::complex<double> OpticalTransfer::value(double fx, double fy) const {
+    return interpolate_otf<std::complex<double>>(*this, fx, fy,
+                                                 [](const std::complex<double>& v) { return v; });
 }
 
 MtfCurves mtf_curves(const OpticalTransfer& otf, const std::vector<double>& frequencies) {

@@ -55,6 +55,7 @@ BenchFigure bench_figure(const AnalyzeResults& r, const AnalyzeRequest& request,
     }
     if (name == "mtf") {
         if (!r.diffraction || !request.mtf) not_asked(name, "mtf");
+        if (r.field_mtf) return field_figure(field_mtf_figure(*r.field_mtf, unit, field_unit), 1);
         return field_figure(mtf_figure(*r.diffraction, unit), 1);
     }
     std::string known;

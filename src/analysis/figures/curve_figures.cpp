@@ -114,16 +114,28 @@ RayDiagram focal_shift_figure(const FocalShift& s, const std::string& unit) {
     return d;
 }
 
-RayDiagram mtf_figure(const DiffractionFigures& d, const std::string& unit) {
+namespace {
+
+// One field's MTF in an MTF figure: tangential solid, sagittal dashed, in one colour.
+struct MtfFigureCurves {
+    DiagramColour colour;
+    std::string label;
+    const std::vector<double>& tangential;
+    const std::vector<double>& sagittal;
+};
+
+RayDiagram mtf_panel_figure(const std::vector<double>& frequencies,
+                            const std::vector<double>& diffraction_limit,
+                            const std::vector<MtfFigureCurves>& fields, std::string title,
+                            const std::string& unit,
+                            const char* limit_label = "diffraction limit") {
     RayDiagram figure;
     PlotPanel panel;
-    const MtfCurves& mtf = d.mtf;
     panel.x_min = 0;
-    panel.x_max = mtf.frequencies.empty() ? 1.0 : mtf.frequencies.back();
+    panel.x_max = frequencies.empty() ? 1.0 : frequencies.back();
     panel.y_min = 0;
     panel.y_max = 1;
-    panel.title = "MTF on axis, " + plot_text("%.1f nm", d.wavelength_nm) + ", Strehl " +
-                  plot_text("%.3f", d.strehl);
+    panel.title = std::move(title);
     panel.x_min_label = plot_text("%g", 0.0);
     panel.x_max_label =
         plot_text("%.4g", panel.x_max) + " cycles/" + (unit.empty() ? "unit" : unit);
@@ -133,24 +145,53 @@ RayDiagram mtf_figure(const DiffractionFigures& d, const std::string& unit) {
         v.insert(v.begin(), at_zero);
         return v;
     };
-    const bool has_zero = !mtf.frequencies.empty() && mtf.frequencies.front() == 0.0;
+    const bool has_zero = !frequencies.empty() && frequencies.front() == 0.0;
     const auto curve = [&](const std::vector<double>& values, DiagramColour colour, double dash) {
-        if (has_zero) return PlotCurve{mtf.frequencies, values, colour, dash};
-        return PlotCurve{from_zero(mtf.frequencies, 0.0), from_zero(values, 1.0), colour, dash};
+        if (has_zero) return PlotCurve{frequencies, values, colour, dash};
+        return PlotCurve{from_zero(frequencies, 0.0), from_zero(values, 1.0), colour, dash};
     };
-    panel.curves = {curve(mtf.diffraction_limit, kPlotGrey, 0),
-                    curve(mtf.tangential, kDiagramBlueF, 0), curve(mtf.sagittal, kDiagramBlueF, 6)};
+    panel.curves = {curve(diffraction_limit, kPlotGrey, 0)};
+    figure.legend = {{kPlotGrey, limit_label}};
+    for (const MtfFigureCurves& f : fields) {
+        if (f.tangential.empty()) continue;  // a field that could not be measured
+        panel.curves.push_back(curve(f.tangential, f.colour, 0));
+        panel.curves.push_back(curve(f.sagittal, f.colour, 6));
+        figure.legend.push_back({f.colour, f.label});
+    }
     // One panel of ±1 about the origin, as the bench's other charts lay theirs out.
     figure.z_min = -1.02;
     figure.z_max = 1.02;
     figure.y_min = -1.25;
     figure.y_max = 1.15;
     draw_plot_panel(figure, panel);
-    // Two entries, so the legend fits one panel's width.
-    figure.legend = {{kPlotGrey, "diffraction limit"}, {kDiagramBlueF, "T solid, S dashed"}};
     figure.title = "MTF";
     figure.scale_bar = 0;
     return figure;
+}
+
+}  // namespace
+
+RayDiagram mtf_figure(const DiffractionFigures& d, const std::string& unit) {
+    return mtf_panel_figure(
+        d.mtf.frequencies, d.mtf.diffraction_limit,
+        {{kDiagramBlueF, "T solid, S dashed", d.mtf.tangential, d.mtf.sagittal}},
+        "MTF on axis, " + plot_text("%.1f nm", d.wavelength_nm) + ", Strehl " +
+            plot_text("%.3f", d.strehl),
+        unit);
+}
+
+RayDiagram field_mtf_figure(const FieldMtfs& m, const std::string& unit,
+                            const std::string& field_unit) {
+    const DiagramColour colours[] = {kDiagramBlueF, kDiagramYellowGreenD, kDiagramRedC, kPlotInk};
+    std::vector<MtfFigureCurves> fields;
+    for (size_t k = 0; k < m.fields.size(); ++k) {
+        const FieldMtf& f = m.fields[k];
+        fields.push_back({colours[k % std::size(colours)], plot_text("%g ", f.field) + field_unit,
+                          f.tangential, f.sagittal});
+    }
+    // Short legend entries: one per field must fit the figure's width.
+    return mtf_panel_figure(m.frequencies, m.diffraction_limit, fields,
+                            "polychromatic; tangential solid, sagittal dashed", unit, "limit");
 }
 
 }  // namespace lenslab

@@ -12,6 +12,7 @@
 #include "analysis/aberrations/field_curves.h"
 #include "analysis/aberrations/focal_shift.h"
 #include "analysis/diffraction/diffraction_figures.h"
+#include "analysis/diffraction/field_mtf.h"
 #include "analysis/figures/ray_diagram.h"
 
 namespace lenslab {
@@ -21,5 +22,9 @@ RayDiagram field_curves_figure(const FieldCurves& curves, const std::string& uni
 RayDiagram focal_shift_figure(const FocalShift& shift, const std::string& unit);
 // `unit`: the length unit of the frequencies' "cycles/unit" ("mm" for prescriptions).
 RayDiagram mtf_figure(const DiffractionFigures& d, const std::string& unit);
+// The MTF of every field (field_mtf.h), a colour each; `field_unit` follows each field's
+// number in the legend ("°" for angles).
+RayDiagram field_mtf_figure(const FieldMtfs& mtf, const std::string& unit,
+                            const std::string& field_unit);
 
 }  // namespace lenslab

@@ -129,6 +129,16 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         pupil.aperture_radius = 0.5 * report.first_order.entrance_pupil.diameter;
         out.diffraction = diffraction_figures(system, pupil, a.mtf_frequencies);
     }
+    if (a.mtf) {
+        FieldMtfOptions mtf;
+        mtf.fields = first.fields;
+        mtf.wavelengths = report.wavelengths;
+        mtf.weights = a.wavelength_weights;
+        mtf.frequencies = out.diffraction->mtf.frequencies;
+        mtf.image_z =
+            a.image_distance ? system.last_vertex() + *a.image_distance : out.diffraction->image_z;
+        out.field_mtf = field_mtfs(system, report.first_order, mtf);
+    }
     if (a.wavefront) {
         WavefrontFigureOptions wavefront;
         wavefront.fields = first.fields;
@@ -207,9 +217,9 @@ AnalyzeRequest with_implied_tables(AnalyzeRequest a) {
 std::optional<std::string> figure_option_error(const AnalyzeRequest& a) {
     const std::vector<double>& weights = a.wavelength_weights;
     if (a.image_distance && !a.spots && !a.fans && !a.field_curves && a.field_map == 0 &&
-        !a.wavefront) {
+        !a.wavefront && !a.mtf) {
         return "--image-distance: it places the image plane of --spots, --fans, --field-map, "
-               "--field-curves and --wavefront, none of which was asked for";
+               "--field-curves, --wavefront and --mtf, none of which was asked for";
     }
     if (a.wavefront_samples % 2 != 0) {
         return "--wavefront-samples: " + std::to_string(a.wavefront_samples) +
@@ -299,7 +309,7 @@ void for_each_bench_key(const AnalyzeResults& results, const AnalyzeRequest& req
         if (!figure.file.empty()) put(figure.key, [&] { return BenchJson(figure.file); });
     }
     if (a.psf) put("psf", [&] { return psf_json(*results.diffraction); });
-    if (a.mtf) put("mtf", [&] { return mtf_json(*results.diffraction); });
+    if (a.mtf) put("mtf", [&] { return mtf_json(*results.diffraction, *results.field_mtf); });
     if (results.wavefronts) put("wavefront", [&] { return wavefront_json(*results.wavefronts); });
     if (results.spots) put("spots", [&] { return spots_json(results.system, *results.spots); });
     if (results.fans) put("fans", [&] { return fans_json(results.system, *results.fans); });

@@ -14,6 +14,7 @@
 #include "analysis/aberrations/ray_fans.h"
 #include "analysis/aberrations/spot_diagrams.h"
 #include "analysis/diffraction/diffraction_figures.h"
+#include "analysis/diffraction/field_mtf.h"
 #include "analysis/diffraction/wavefront_figures.h"
 #include "analysis/report/lens_report.h"
 #include "analysis/system/optical_system.h"
@@ -95,6 +96,7 @@ struct AnalyzeResults {
     std::optional<SpotDiagrams> spots;
     std::optional<RayFans> fans;
     std::optional<DiffractionFigures> diffraction;
+    std::optional<FieldMtfs> field_mtf;  // --mtf: every field, polychromatic
     std::optional<WavefrontFigures> wavefronts;
     std::optional<FieldCurves> curves;
     std::optional<FocalShift> shift;

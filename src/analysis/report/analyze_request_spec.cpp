@@ -129,10 +129,11 @@ std::vector<RequestOption> declare_options() {
         "psf", &Request::psf,
         "Diffraction on the axis at the primary wavelength: the point spread function's Strehl "
         "ratio, wavefront RMS and encircled energy at the best focus (lengths in mm)"));
-    all.push_back(flag(
-        "mtf", &Request::mtf,
-        "Diffraction MTF on the axis at the primary wavelength, tangential and sagittal, beside "
-        "the diffraction limit (frequencies in cycles/mm)"));
+    all.push_back(
+        flag("mtf", &Request::mtf,
+             "Diffraction MTF at every field, tangential and sagittal, polychromatic over the "
+             "wavelengths (weighted by --wavelength-weights), beside the diffraction limit, at the "
+             "axial best focus or --image-distance (frequencies in cycles/mm)"));
     all.push_back(
         flag("wavefront", &Request::wavefront,
              "The wavefront at each field and wavelength from real rays, against the chief ray's "
@@ -181,15 +182,16 @@ std::vector<RequestOption> declare_options() {
                               "Write the chromatic focal shift to this file, SVG or (.png) PNG; "
                               "implies --focal-shift"));
     all.push_back(figure_file("mtf-svg", &Request::mtf_svg,
-                              "Write the MTF on the axis beside the diffraction limit to this "
+                              "Write the MTF of every field beside the diffraction limit to this "
                               "file, SVG or (.png) PNG; implies --mtf"));
     all.push_back(whole("fan-points", &Request::fan_points, 2, 10001,
                         "Points along each ray fan, evenly from -1 to 1 across the stop "
                         "(default 21)"));
     RequestOption image_distance = declared(
         "image-distance", RequestValue::Number,
-        "The image plane of the spots, fans, field curves and wavefronts, from the last vertex "
-        "(default: the paraxial image plane at the primary wavelength)");
+        "The image plane of the spots, fans, field curves, wavefronts and MTF, from the last "
+        "vertex (default: the paraxial image plane at the primary wavelength; the MTF's: the "
+        "axial best focus)");
     image_distance.set = [](Request& r, const json& j) { r.image_distance = j.get<double>(); };
     image_distance.get = [](const Request& r) {
         return r.image_distance ? json(*r.image_distance) : json();

@@ -6,9 +6,6 @@ namespace lenslab {
 
 namespace {
 
-// Only the axial field is measured so far (diffraction_figures.h traces an axial beam).
-constexpr double kAxialField = 0.0;
-
 template <class... Numbers>
 std::string diffraction_line(const char* format, Numbers... numbers) {
     char text[160];
@@ -31,25 +28,36 @@ nlohmann::ordered_json psf_json(const DiffractionFigures& figures) {
     return j;
 }
 
-nlohmann::ordered_json mtf_json(const DiffractionFigures& figures) {
+nlohmann::ordered_json mtf_json(const DiffractionFigures& figures, const FieldMtfs& mtf) {
     nlohmann::ordered_json j;
-    j["frequencies"] = figures.mtf.frequencies;
+    j["frequencies"] = mtf.frequencies;
     j["cutoff"] = figures.psf.cutoff;
-    j["diffraction_limit"] = figures.mtf.diffraction_limit;
-    nlohmann::ordered_json field;
-    field["field"] = kAxialField;
-    field["tangential"] = figures.mtf.tangential;
-    field["sagittal"] = figures.mtf.sagittal;
-    j["fields"] = nlohmann::ordered_json::array({field});
+    j["diffraction_limit"] = mtf.diffraction_limit;
+    nlohmann::ordered_json fields = nlohmann::ordered_json::array();
+    for (const FieldMtf& f : mtf.fields) {
+        nlohmann::ordered_json field;
+        field["field"] = f.field;
+        if (!f.error.empty()) {
+            field["error"] = f.error;
+        } else {
+            field["tangential"] = f.tangential;
+            field["sagittal"] = f.sagittal;
+        }
+        fields.push_back(std::move(field));
+    }
+    j["fields"] = fields;
     j["wavelength_nm"] = figures.wavelength_nm;
+    j["image_z"] = mtf.image_z;
     return j;
 }
 
-std::string diffraction_table(const DiffractionFigures& figures, bool psf, bool mtf) {
-    std::string out = diffraction_line(
-        "\nDiffraction on the axis at %.2f nm, F/%.4g, best focus (%.4f behind the first vertex)\n",
-        figures.wavelength_nm, figures.f_number, figures.image_z);
+std::string diffraction_table(const DiffractionFigures& figures, bool psf, const FieldMtfs* mtf) {
+    std::string out;
     if (psf) {
+        out += diffraction_line(
+            "\nDiffraction on the axis at %.2f nm, F/%.4g, best focus (%.4f behind the first "
+            "vertex)\n",
+            figures.wavelength_nm, figures.f_number, figures.image_z);
         out += diffraction_line("  Strehl ratio %.4f   wavefront RMS %.4f waves\n", figures.strehl,
                                 figures.wavefront_rms);
         out +=
@@ -57,11 +65,25 @@ std::string diffraction_table(const DiffractionFigures& figures, bool psf, bool 
                              figures.airy_radius, figures.encircled_energy_at_airy_radius);
     }
     if (mtf) {
-        out += "  MTF (cycles/mm)                tangential  sagittal  diffraction limit\n";
-        for (size_t i = 0; i < figures.mtf.frequencies.size(); ++i) {
-            out += diffraction_line("  %10.2f                       %.4f      %.4f    %.4f\n",
-                                    figures.mtf.frequencies[i], figures.mtf.tangential[i],
-                                    figures.mtf.sagittal[i], figures.mtf.diffraction_limit[i]);
+        out += diffraction_line(
+            "\nMTF per field (tangential / sagittal), polychromatic, image plane at z = %.6g\n",
+            mtf->image_z);
+        out += "  cycles/mm  diffraction limit";
+        for (const FieldMtf& f : mtf->fields) out += diffraction_line("   field %-10g", f.field);
+        out += "\n";
+        for (size_t i = 0; i < mtf->frequencies.size(); ++i) {
+            out +=
+                diffraction_line("  %9.2f  %17.4f", mtf->frequencies[i], mtf->diffraction_limit[i]);
+            for (const FieldMtf& f : mtf->fields) {
+                out += f.error.empty()
+                           ? diffraction_line("   %.4f / %.4f", f.tangential[i], f.sagittal[i])
+                           : std::string("   not measured   ");
+            }
+            out += "\n";
+        }
+        for (const FieldMtf& f : mtf->fields) {
+            if (!f.error.empty())
+                out += diffraction_line("  field %g not measured: %s\n", f.field, f.error.c_str());
         }
     }
     return out;

@@ -1,20 +1,22 @@
 #pragma once
 // The diffraction figures of `lenslab analyze --psf` and `--mtf` as JSON and as a table: the
 // `psf` block (Strehl ratio, wavefront RMS, Airy radius, encircled energy there) and the
-// `mtf` block (frequencies, the diffraction limit, and per field the tangential and sagittal
-// curves).
+// `mtf` block (frequencies, the polychromatic diffraction limit, and per field the
+// polychromatic tangential and sagittal curves, field_mtf.h).
 
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "analysis/diffraction/diffraction_figures.h"
+#include "analysis/diffraction/field_mtf.h"
 
 namespace lenslab {
 
 nlohmann::ordered_json psf_json(const DiffractionFigures& figures);
-nlohmann::ordered_json mtf_json(const DiffractionFigures& figures);
+nlohmann::ordered_json mtf_json(const DiffractionFigures& figures, const FieldMtfs& mtf);
 
-// The lines the table prints for each block asked for; lengths in the system's unit (mm).
-std::string diffraction_table(const DiffractionFigures& figures, bool psf, bool mtf);
+// The lines the table prints for each block asked for (mtf: none when not asked for);
+// lengths in the system's unit (mm).
+std::string diffraction_table(const DiffractionFigures& figures, bool psf, const FieldMtfs* mtf);
 
 }  // namespace lenslab

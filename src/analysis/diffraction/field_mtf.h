@@ -1,0 +1,60 @@
+#pragma once
+// The MTF at every field, tangential and sagittal, polychromatic: what `lenslab analyze --mtf`
+// reports for each of --fields (Zemax's "FFT MTF").
+//
+// At each field and wavelength the real-ray wavefront (field_wavefront.h) is transformed to
+// its OTF (diffraction.h) with its tilt taken out (so the OTF's phase stays small between
+// samples), and the wavelengths' OTFs are summed with their weights, each shifted to where its
+// PSF lies against the primary wavelength's chief-ray image point (lateral colour and the
+// tilt put back as the phase exp(−i2π ν·Δ)): the OTF of the weighted sum of unit-energy PSFs
+// (Goodman, Introduction to Fourier Optics, 3rd ed., section 6.3; the shift theorem). The MTF
+// is its modulus. Tangential: frequencies along y (the field's direction); sagittal: along x.
+// The diffraction limit beside it is the weighted sum of each wavelength's aberration-free
+// MTF at the paraxial working F-number.
+
+#include <string>
+#include <vector>
+
+#include "analysis/diffraction/diffraction.h"
+#include "analysis/diffraction/field_wavefront.h"
+
+namespace lenslab {
+
+struct FieldMtfOptions {
+    std::vector<double> fields{0.0};  // as FirstOrderOptions::fields (y)
+    std::vector<double> wavelengths;  // nm; empty: the first-order data's; the first-order
+                                      // data's wavelength is the primary
+    std::vector<double> weights;      // one per wavelength; empty: equal
+    std::vector<double> frequencies;  // cycles per unit length
+    int samples = 64;                 // rays across the pupil (the FFT grid is twice that)
+    double image_z = 0;               // the image plane (system z)
+    double nm_per_length_unit = 1e6;
+};
+
+struct FieldMtf {
+    double field = 0;
+    std::vector<double> tangential, sagittal;  // at the options' frequencies; empty on error
+    std::string error;                         // why the field could not be measured
+};
+
+struct FieldMtfs {
+    double image_z = 0;
+    std::vector<double> frequencies, diffraction_limit;
+    std::vector<FieldMtf> fields;
+};
+
+// Throws std::invalid_argument for bad sampling or weights, SceneError through a
+// gradient-index lens. A field whose chief ray does not pass at some wavelength gets its error.
+FieldMtfs field_mtfs(const OpticalSystem& system, const FirstOrder& first_order,
+                     const FieldMtfOptions& options);
+
+// The OTF of `pupil` with its wavefront tilt (the least-squares plane) taken out, and where
+// that tilt put the PSF: a tilt W = t·x moves it to x = 2 t λN (diffraction.h), so the
+// pupil's own OTF is otf(ν)·exp(−i2π ν·shift).
+struct ShiftedOtf {
+    OpticalTransfer otf;
+    double shift_x = 0, shift_y = 0;  // the tilt-free PSF's place against the pupil's reference
+};
+ShiftedOtf untilted_otf(const PupilFunction& pupil);
+
+}  // namespace lenslab
