@@ -2,8 +2,10 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <optional>
 #include <stdexcept>
 
@@ -16,14 +18,44 @@ namespace {
 
 // One wavefront's OTF and where its PSF lies against the primary chief ray's image point.
 struct PlacedOtf {
-    std::optional<ShiftedOtf> otf;
+    std::optional<UntiltedPsf> otf;
     double x = 0, y = 0;
+    int samples = 0;
+    double max_step_waves = 0;
     std::string error;
 };
 
+// The FFT needs the pupil's phase to change by less than half a wave between samples; the
+// sampling is raised toward a quarter wave, up to kMostMtfSamples across.
+constexpr double kMtfStepWaves = 0.25, kAliasingStepWaves = 0.5;
+constexpr int kMostMtfSamples = 512;
+
 }  // namespace
 
-ShiftedOtf untilted_otf(const PupilFunction& pupil) {
+namespace {
+
+std::complex<double> line_spread_transform(const Psf& psf, const std::vector<double>& spread,
+                                           double frequency) {
+    std::complex<double> sum = 0;
+    double total = 0;
+    for (int k = 0; k < psf.size; ++k) {
+        sum += spread[k] * std::polar(1.0, -2 * kPi * frequency * psf.coordinate(k));
+        total += spread[k];
+    }
+    return sum / total;
+}
+
+}  // namespace
+
+std::complex<double> UntiltedPsf::otf_along_x(double fx) const {
+    return line_spread_transform(psf, spread_x, fx);
+}
+
+std::complex<double> UntiltedPsf::otf_along_y(double fy) const {
+    return line_spread_transform(psf, spread_y, fy);
+}
+
+UntiltedPsf untilted_psf(const PupilFunction& pupil) {
     // Least-squares plane W ≈ a + b x + c y over the samples that passed.
     std::vector<double> gram(9, 0.0), rhs(3, 0.0);
     for (int i = 0; i < pupil.size; ++i)
@@ -44,7 +76,18 @@ ShiftedOtf untilted_otf(const PupilFunction& pupil) {
             flat.opd_waves[flat.index(i, j)] -=
                 (*plane)[1] * flat.coordinate(j) + (*plane)[2] * flat.coordinate(i);
     const double scale = 2 * pupil.wavelength * pupil.f_number;
-    return {compute_otf(compute_psf(flat)), scale * (*plane)[1], scale * (*plane)[2]};
+    UntiltedPsf out;
+    out.psf = compute_psf(flat);
+    out.spread_x.assign(static_cast<size_t>(out.psf.size), 0.0);
+    out.spread_y.assign(static_cast<size_t>(out.psf.size), 0.0);
+    for (int i = 0; i < out.psf.size; ++i)
+        for (int j = 0; j < out.psf.size; ++j) {
+            out.spread_x[j] += out.psf.at(i, j);
+            out.spread_y[i] += out.psf.at(i, j);
+        }
+    out.shift_x = scale * (*plane)[1];
+    out.shift_y = scale * (*plane)[2];
+    return out;
 }
 
 FieldMtfs field_mtfs(const OpticalSystem& system, const FirstOrder& first_order,
@@ -86,8 +129,15 @@ FieldMtfs field_mtfs(const OpticalSystem& system, const FirstOrder& first_order,
         o.nm_per_length_unit = options.nm_per_length_unit;
         PlacedOtf& p = placed[n];
         try {
-            const FieldWavefront w = field_wavefront(system, first_order, o);
-            p.otf = untilted_otf(w.pupil);
+            FieldWavefront w = field_wavefront(system, first_order, o);
+            const int needed = samples_for_step(w, kMtfStepWaves, kMostMtfSamples);
+            if (needed > o.sampling.samples) {
+                o.sampling.samples = needed;
+                w = field_wavefront(system, first_order, o);
+            }
+            p.samples = w.pupil.samples;
+            p.max_step_waves = w.max_step_waves;
+            p.otf = untilted_psf(w.pupil);
             p.x = w.reference.x + p.otf->shift_x;
             p.y = w.reference.y + p.otf->shift_y;
         } catch (const std::invalid_argument& e) {
@@ -107,22 +157,35 @@ FieldMtfs field_mtfs(const OpticalSystem& system, const FirstOrder& first_order,
                 break;
             }
             if (!origin || wavelengths[k] == first_order.wavelength_nm) origin = &p;
+            field.samples = std::max(field.samples, p.samples);
+            field.max_step_waves = std::max(field.max_step_waves, p.max_step_waves);
+        }
+        if (field.max_step_waves > kAliasingStepWaves) {
+            char text[200];
+            std::snprintf(text, sizeof text,
+                          "the wavefront changes by %.2f waves between neighbouring samples even "
+                          "at %d across the pupil: the MTF is unreliable",
+                          field.max_step_waves, field.samples);
+            field.warning = text;
         }
         if (field.error.empty()) {
             const double ox = origin->x - origin->otf->shift_x,
                          oy = origin->y - origin->otf->shift_y;
-            const auto mtf_along = [&](double fx, double fy) {
+            // Σ w·OTF(ν)·exp(−i2π ν·Δ) along one axis; `along_y` picks the tangential cut.
+            const auto mtf_along = [&](double nu, bool along_y) {
                 std::complex<double> sum = 0;
                 for (size_t k = 0; k < per_field; ++k) {
                     const PlacedOtf& p = placed[f * per_field + k];
-                    const double phase = -2 * kPi * (fx * (p.x - ox) + fy * (p.y - oy));
-                    sum += weights[k] * p.otf->otf.value(fx, fy) * std::polar(1.0, phase);
+                    const double offset = along_y ? p.y - oy : p.x - ox;
+                    const std::complex<double> otf =
+                        along_y ? p.otf->otf_along_y(nu) : p.otf->otf_along_x(nu);
+                    sum += weights[k] * otf * std::polar(1.0, -2 * kPi * nu * offset);
                 }
                 return std::abs(sum) / total;
             };
             for (double nu : options.frequencies) {
-                field.tangential.push_back(mtf_along(0, nu));
-                field.sagittal.push_back(mtf_along(nu, 0));
+                field.tangential.push_back(mtf_along(nu, true));
+                field.sagittal.push_back(mtf_along(nu, false));
             }
         }
         out.fields.push_back(std::move(field));

@@ -3,8 +3,9 @@
 // reports for each of --fields (Zemax's "FFT MTF").
 //
 // At each field and wavelength the real-ray wavefront (field_wavefront.h) is transformed to
-// its OTF (diffraction.h) with its tilt taken out (so the OTF's phase stays small between
-// samples), and the wavelengths' OTFs are summed with their weights, each shifted to where its
+// its PSF (diffraction.h) with its tilt taken out, and on to its OTF along x and y (from the
+// line spread functions, untilted_psf below); the wavelengths' OTFs are summed with their
+// weights, each shifted to where its
 // PSF lies against the primary wavelength's chief-ray image point (lateral colour and the
 // tilt put back as the phase exp(−i2π ν·Δ)): the OTF of the weighted sum of unit-energy PSFs
 // (Goodman, Introduction to Fourier Optics, 3rd ed., section 6.3; the shift theorem). The MTF
@@ -12,6 +13,7 @@
 // The diffraction limit beside it is the weighted sum of each wavelength's aberration-free
 // MTF at the paraxial working F-number.
 
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -26,8 +28,10 @@ struct FieldMtfOptions {
                                       // data's wavelength is the primary
     std::vector<double> weights;      // one per wavelength; empty: equal
     std::vector<double> frequencies;  // cycles per unit length
-    int samples = 64;                 // rays across the pupil (the FFT grid is twice that)
-    double image_z = 0;               // the image plane (system z)
+    // Rays across the pupil (the FFT grid is twice that) to start with; raised for a wavefront
+    // whose phase changes by more than a quarter wave between samples, up to 512.
+    int samples = 64;
+    double image_z = 0;  // the image plane (system z)
     double nm_per_length_unit = 1e6;
 };
 
@@ -35,6 +39,9 @@ struct FieldMtf {
     double field = 0;
     std::vector<double> tangential, sagittal;  // at the options' frequencies; empty on error
     std::string error;                         // why the field could not be measured
+    int samples = 0;                           // rays across the pupil, the most of any wavelength
+    double max_step_waves = 0;                 // field_wavefront.h, the most of any wavelength
+    std::string warning;                       // set when the sampling could not resolve the phase
 };
 
 struct FieldMtfs {
@@ -48,13 +55,21 @@ struct FieldMtfs {
 FieldMtfs field_mtfs(const OpticalSystem& system, const FirstOrder& first_order,
                      const FieldMtfOptions& options);
 
-// The OTF of `pupil` with its wavefront tilt (the least-squares plane) taken out, and where
-// that tilt put the PSF: a tilt W = t·x moves it to x = 2 t λN (diffraction.h), so the
-// pupil's own OTF is otf(ν)·exp(−i2π ν·shift).
-struct ShiftedOtf {
-    OpticalTransfer otf;
-    double shift_x = 0, shift_y = 0;  // the tilt-free PSF's place against the pupil's reference
+// The PSF of `pupil` with its wavefront tilt (the least-squares plane) taken out, which keeps
+// it in the middle of its grid, and where that tilt put it: a tilt W = t·x moves the PSF to
+// x = 2 t λN (diffraction.h). Its OTF along x (sagittal) or y (tangential) is the Fourier
+// transform of its line spread function (the PSF summed across the other direction), taken
+// at exactly the frequency asked: the Nyquist-sampled PSF's transform needs no interpolation,
+// which a strongly aberrated PSF's quickly falling OTF would not survive. Phases are about the
+// pupil's reference point after the tilt: the pupil's own OTF is otf(ν)·exp(−i2π ν·shift).
+struct UntiltedPsf {
+    Psf psf;
+    std::vector<double> spread_x, spread_y;  // Σ over rows (a function of x), Σ over columns
+    double shift_x = 0, shift_y = 0;
+
+    std::complex<double> otf_along_x(double fx) const;
+    std::complex<double> otf_along_y(double fy) const;
 };
-ShiftedOtf untilted_otf(const PupilFunction& pupil);
+UntiltedPsf untilted_psf(const PupilFunction& pupil);
 
 }  // namespace lenslab

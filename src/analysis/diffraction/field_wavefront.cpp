@@ -131,9 +131,26 @@ FieldWavefront field_wavefront(const OpticalSystem& system, const FirstOrder& fi
             ++w.passed;
         }
     if (w.passed == 0) throw std::invalid_argument("no ray of the beam passes the system");
+    for (int i = 0; i + 1 < p.size; ++i)
+        for (int j = 0; j + 1 < p.size; ++j) {
+            const size_t cell = p.index(i, j);
+            if (p.amplitude[cell] == 0) continue;
+            for (const size_t next : {p.index(i, j + 1), p.index(i + 1, j)})
+                if (p.amplitude[next] > 0)
+                    w.max_step_waves =
+                        std::max(w.max_step_waves, std::abs(p.opd_waves[next] - p.opd_waves[cell]));
+        }
     w.rms_waves = wavefront_rms(p);
     w.pv_waves = highest - lowest;
     return w;
+}
+
+int samples_for_step(const FieldWavefront& wavefront, double step, int most) {
+    const int now = wavefront.pupil.samples;
+    if (!(wavefront.max_step_waves > step)) return now;
+    const double wanted = std::ceil(now * wavefront.max_step_waves / step);
+    const int even = 2 * static_cast<int>(std::ceil(std::min<double>(wanted, most) / 2));
+    return std::max(now, std::min(even, most));
 }
 
 }  // namespace lenslab

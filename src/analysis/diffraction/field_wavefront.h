@@ -45,7 +45,15 @@ struct FieldWavefront {
     int passed = 0, lost = 0;     // rays inside the unit pupil that passed, and that did not
     double rms_waves = 0;  // RMS about the mean (piston removed), against the chief ray's sphere
     double pv_waves = 0;   // largest minus smallest OPD
+    // The largest OPD change between neighbouring samples (in x or y) that both passed: above
+    // about half a wave the grid aliases the phase and its FFT figures are unreliable.
+    double max_step_waves = 0;
 };
+
+// The samples across the pupil that bring a wavefront's steps to `step` waves (scaling
+// linearly from one measured at `wavefront`'s sampling), even, at least the current ones and
+// at most `most`.
+int samples_for_step(const FieldWavefront& wavefront, double step, int most);
 
 // Throws SceneError through a gradient-index lens (its curved rays' optical path is not
 // measured) and std::invalid_argument when the chief ray does not pass or misses the

@@ -42,6 +42,9 @@ nlohmann::ordered_json mtf_json(const DiffractionFigures& figures, const FieldMt
         } else {
             field["tangential"] = f.tangential;
             field["sagittal"] = f.sagittal;
+            field["pupil_samples"] = f.samples;
+            field["max_step_waves"] = f.max_step_waves;
+            if (!f.warning.empty()) field["warning"] = f.warning;
         }
         fields.push_back(std::move(field));
     }
@@ -84,6 +87,8 @@ std::string diffraction_table(const DiffractionFigures& figures, bool psf, const
         for (const FieldMtf& f : mtf->fields) {
             if (!f.error.empty())
                 out += diffraction_line("  field %g not measured: %s\n", f.field, f.error.c_str());
+            if (!f.warning.empty())
+                out += diffraction_line("  field %g: %s\n", f.field, f.warning.c_str());
         }
     }
     return out;

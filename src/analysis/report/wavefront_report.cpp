@@ -35,6 +35,7 @@ ordered_json figure_json(const WavefrontFigure& f) {
     const FieldWavefront& w = *f.wavefront;
     j["rms_waves"] = w.rms_waves;
     j["pv_waves"] = w.pv_waves;
+    j["max_step_waves"] = w.max_step_waves;
     j["rms_tilt_removed_waves"] = f.rms_tilt_removed_waves;
     j["strehl"] = f.strehl;
     j["rays_passed"] = w.passed;
