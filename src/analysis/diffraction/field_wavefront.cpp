@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "analysis/system/ray_aiming.h"
 #include "analysis/system/real_ray.h"
@@ -101,14 +102,17 @@ FieldWavefront field_wavefront(const OpticalSystem& system, const FirstOrder& fi
     if (!(w.reference_radius > 0))
         throw std::invalid_argument("the exit pupil lies in the image plane: no reference sphere");
     const double image_index = std::abs(system.n_after(system.surfaces.size() - 1, nm));
-    const auto path_to_sphere = [&](const PathRay& ray) -> std::optional<double> {
+    w.image_index = image_index;
+    // The optical path to the sphere, and where the ray meets it.
+    const auto path_to_sphere = [&](const PathRay& ray) -> std::optional<std::pair<double, Vec3>> {
         const std::optional<double> t =
             distance_to_sphere(ray, w.reference, w.reference_radius, pupil_point);
         if (!t) return std::nullopt;
-        return ray.path + image_index * *t;
+        return std::pair{ray.path + image_index * *t, ray.point + ray.direction * *t};
     };
-    const std::optional<double> chief_path = path_to_sphere(*chief);
-    if (!chief_path) throw std::invalid_argument("the chief ray misses the reference sphere");
+    const auto chief_at_sphere = path_to_sphere(*chief);
+    if (!chief_at_sphere) throw std::invalid_argument("the chief ray misses the reference sphere");
+    const double chief_path = chief_at_sphere->first;
 
     PupilFunction& p = w.pupil;
     double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
@@ -118,12 +122,13 @@ FieldWavefront field_wavefront(const OpticalSystem& system, const FirstOrder& fi
             if (p.amplitude[cell] == 0) continue;
             p.amplitude[cell] = 0;
             const std::optional<PathRay> ray = passed(p.coordinate(j), p.coordinate(i));
-            const std::optional<double> path = ray ? path_to_sphere(*ray) : std::nullopt;
-            if (!path) {
+            const auto at_sphere = ray ? path_to_sphere(*ray) : std::nullopt;
+            if (!at_sphere) {
                 ++w.lost;
                 continue;
             }
-            const double opd = (*path - *chief_path) / wavelength;
+            const double opd = (at_sphere->first - chief_path) / wavelength;
+            w.sphere_points.push_back({cell, at_sphere->second});
             p.amplitude[cell] = 1;
             p.opd_waves[cell] = opd;
             lowest = std::min(lowest, opd);

@@ -19,6 +19,7 @@
 // pupil follows for a system obeying the sine condition.
 
 #include <optional>
+#include <vector>
 
 #include "analysis/diffraction/pupil_function.h"
 #include "analysis/system/first_order.h"
@@ -45,6 +46,14 @@ struct FieldWavefront {
     int passed = 0, lost = 0;     // rays inside the unit pupil that passed, and that did not
     double rms_waves = 0;  // RMS about the mean (piston removed), against the chief ray's sphere
     double pv_waves = 0;   // largest minus smallest OPD
+    // Where each ray that passed meets the reference sphere, with its pupil grid cell: the
+    // secondary sources of a Huygens PSF (huygens_psf.h).
+    struct SpherePoint {
+        size_t cell;
+        Vec3 at;
+    };
+    std::vector<SpherePoint> sphere_points;
+    double image_index = 1;  // the medium after the last surface
     // The largest OPD change between neighbouring samples (in x or y) that both passed: above
     // about half a wave the grid aliases the phase and its FFT figures are unreliable.
     double max_step_waves = 0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/figures/plot_panel.h"
 #include "analysis/system/grin_gap.h"
 #include "analysis/system/real_ray.h"
 
@@ -13,12 +14,6 @@ namespace {
 
 constexpr DiagramColour kInk{30, 30, 30};
 constexpr DiagramColour kGrey{120, 120, 120};
-
-std::string fmt(const char* format, double v) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, format, v);
-    return buffer;
-}
 
 std::string short_glass(const std::string& glass) {
     const std::string prefix = "constant ";
@@ -229,16 +224,16 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     const std::string unit = options.unit.empty() ? "units" : options.unit;
     d.subtitle = "rays from a point at infinity on the axis";
     d.title =
-        "EFL " + fmt("%.2f", p.efl) + " " + unit + ", BFL " + fmt("%.2f", p.bfl) + " " + unit +
-        " at " + fmt("%.2f", p.wavelength_nm) + " nm" +
+        "EFL " + plot_text("%.2f", p.efl) + " " + unit + ", BFL " + plot_text("%.2f", p.bfl) + " " +
+        unit + " at " + plot_text("%.2f", p.wavelength_nm) + " nm" +
         (fraunhofer_name(p.wavelength_nm).empty() ? ""
                                                   : " (" + fraunhofer_name(p.wavelength_nm) + ")") +
-        "; beam diameter " + fmt("%.2f", 2.0 * h) + " " + unit;
-    d.legend = {{kDiagramBlueF, fmt("%.1f nm (F)", kLineF)},
-                {kDiagramYellowGreenD, fmt("%.1f nm (d)", kLineD)},
-                {kDiagramRedC, fmt("%.1f nm (C)", kLineC)}};
+        "; beam diameter " + plot_text("%.2f", 2.0 * h) + " " + unit;
+    d.legend = {{kDiagramBlueF, plot_text("%.1f nm (F)", kLineF)},
+                {kDiagramYellowGreenD, plot_text("%.1f nm (d)", kLineD)},
+                {kDiagramRedC, plot_text("%.1f nm (C)", kLineC)}};
     d.scale_bar = diagram_round_length(0.2 * (d.z_max - d.z_min));
-    d.scale_bar_label = fmt("%g ", d.scale_bar) + unit;
+    d.scale_bar_label = plot_text("%g ", d.scale_bar) + unit;
     return d;
 }
 
