@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "analysis/diffraction/weighted_wavelengths.h"
 #include "math/cholesky.h"
 #include "math/constants.h"
 
@@ -24,11 +25,6 @@ struct PlacedOtf {
     double max_step_waves = 0;
     std::string error;
 };
-
-// The FFT needs the pupil's phase to change by less than half a wave between samples; the
-// sampling is raised toward a quarter wave, up to kMostMtfSamples across.
-constexpr double kMtfStepWaves = 0.25, kAliasingStepWaves = 0.5;
-constexpr int kMostMtfSamples = 512;
 
 }  // namespace
 
@@ -92,16 +88,11 @@ UntiltedPsf untilted_psf(const PupilFunction& pupil) {
 
 FieldMtfs field_mtfs(const OpticalSystem& system, const FirstOrder& first_order,
                      const FieldMtfOptions& options) {
-    const std::vector<double> wavelengths = options.wavelengths.empty()
-                                                ? std::vector<double>{first_order.wavelength_nm}
-                                                : options.wavelengths;
-    std::vector<double> weights = options.weights;
-    if (weights.empty()) weights.assign(wavelengths.size(), 1.0);
-    if (weights.size() != wavelengths.size())
-        throw std::invalid_argument("one weight per wavelength");
-    double total = 0;
-    for (double w : weights) total += w;
-    if (!(total > 0)) throw std::invalid_argument("the wavelengths' weights add up to zero");
+    const WeightedWavelengths chosen =
+        weighted_wavelengths(first_order, options.wavelengths, options.weights);
+    const std::vector<double>& wavelengths = chosen.nm;
+    const std::vector<double>& weights = chosen.weights;
+    const double total = chosen.total;
     make_pupil({options.samples, 2}, 1, 1, [](double, double) { return 0.0; });
 
     FieldMtfs out;
@@ -129,12 +120,7 @@ FieldMtfs field_mtfs(const OpticalSystem& system, const FirstOrder& first_order,
         o.nm_per_length_unit = options.nm_per_length_unit;
         PlacedOtf& p = placed[n];
         try {
-            FieldWavefront w = field_wavefront(system, first_order, o);
-            const int needed = samples_for_step(w, kMtfStepWaves, kMostMtfSamples);
-            if (needed > o.sampling.samples) {
-                o.sampling.samples = needed;
-                w = field_wavefront(system, first_order, o);
-            }
+            const FieldWavefront w = resolved_field_wavefront(system, first_order, o);
             p.samples = w.pupil.samples;
             p.max_step_waves = w.max_step_waves;
             p.otf = untilted_psf(w.pupil);

@@ -158,4 +158,13 @@ int samples_for_step(const FieldWavefront& wavefront, double step, int most) {
     return std::max(now, std::min(even, most));
 }
 
+FieldWavefront resolved_field_wavefront(const OpticalSystem& system, const FirstOrder& first_order,
+                                        FieldWavefrontOptions options) {
+    FieldWavefront w = field_wavefront(system, first_order, options);
+    const int needed = samples_for_step(w, kResolvedStepWaves, kMostResolvedSamples);
+    if (needed <= options.sampling.samples) return w;
+    options.sampling.samples = needed;
+    return field_wavefront(system, first_order, options);
+}
+
 }  // namespace lenslab

@@ -64,6 +64,14 @@ struct FieldWavefront {
 // at most `most`.
 int samples_for_step(const FieldWavefront& wavefront, double step, int most);
 
+// The FFT and matrix transforms need the pupil's phase to change by less than half a wave
+// between samples: field_wavefront traced again, when its steps exceed kResolvedStepWaves,
+// with proportionally more rays across (at most kMostResolvedSamples).
+inline constexpr double kResolvedStepWaves = 0.25, kAliasingStepWaves = 0.5;
+inline constexpr int kMostResolvedSamples = 512;
+FieldWavefront resolved_field_wavefront(const OpticalSystem& system, const FirstOrder& first_order,
+                                        FieldWavefrontOptions options);
+
 // Throws SceneError through a gradient-index lens (its curved rays' optical path is not
 // measured) and std::invalid_argument when the chief ray does not pass or misses the
 // reference sphere, or the sampling is bad.
