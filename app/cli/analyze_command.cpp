@@ -76,7 +76,8 @@ int run(const AnalyzeArgs& args) {
         std::cout << "Not taken from the lens file: " << why << "\n";
     if (results.diffraction) {
         const FieldMtfs* mtf = results.field_mtf ? &*results.field_mtf : nullptr;
-        std::cout << diffraction_table(*results.diffraction, a.psf, mtf);
+        std::cout << diffraction_table(*results.diffraction, a.psf ? &results.field_psf : nullptr,
+                                       mtf);
     }
     if (results.wavefronts) std::cout << wavefront_table(*results.wavefronts);
     if (results.spots) std::cout << spots_table(system, *results.spots);

@@ -61,8 +61,8 @@ def _whole(name: str, value: Any, low: Optional[int] = None, high: Optional[int]
 class Analysis(JsonDocument):
     """The result of lenslab.analyze: a read-only dict equal to what `lenslab analyze FILE
     --json` prints with the same options (less the names of figure files, which Python asks
-    for with figure()); spot_points, the spot diagrams' ray hits; opd_maps, the wavefronts as
-    arrays; figure(name), a figure as SVG text."""
+    for with figure()); spot_points, the spot diagrams' ray hits; opd_maps and psf_images, the
+    wavefronts and PSFs as arrays; figure(name), a figure as SVG text."""
 
     def __init__(self, run: Any) -> None:
         self._run = run
@@ -87,6 +87,15 @@ class Analysis(JsonDocument):
         return {(f["field"], f["wavelength_nm"]):
                 np.array([[np.nan if v is None else v for v in row] for row in f["opd_map"]])
                 for f in block.get("fields", []) if "opd_map" in f}
+
+    @property
+    def psf_images(self) -> dict[float, np.ndarray]:
+        """The polychromatic PSF of every field, {field: (size, size) array}, a row per image y
+        rising, about self["psf"]["fields"][k]["centre"], relative to the aberration-free peak
+        (its largest value is the Strehl ratio); empty without psf=True."""
+        block = self._data.get("psf", {})
+        return {f["field"]: np.array(f["image"], dtype=np.float64)
+                for f in block.get("fields", []) if "image" in f}
 
     def figure(self, name: str) -> str:
         """The figure `name` as the SVG text `lenslab analyze` writes to a file: "ray_diagram"

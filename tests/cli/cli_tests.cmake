@@ -234,6 +234,25 @@ lenslab_cli_test(NAME analyze.bad.zernike_terms_without_wavefront
 lenslab_cli_test(NAME analyze.bad.wavefront_samples_odd
     ARGS analyze ${analyze_triplet} --wavefront --wavefront-samples 15
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--wavefront-samples: 15 is odd")
+# The PSF of every field, its picture, and the OPD maps' picture.
+set(analyze_psf_png ${LENSLAB_CLI_OUT}/triplet_psf.png)
+set(analyze_opd_png ${LENSLAB_CLI_OUT}/triplet_opd.png)
+lenslab_cli_test(NAME analyze.psf_fields_json
+    ARGS analyze ${analyze_triplet} --json --stop 3 --epd 12.5 --fields 0,20 --psf
+         --psf-png ${analyze_psf_png} --psf-log --opd-png ${analyze_opd_png}
+    # The unbalanced "[" ends the list: it comes last.
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=psf,wavefront,psf_png,opd_png"
+           -DOUTPUT=${analyze_psf_png} -DOUTPUT_CREATED=ON
+           "-DSTDOUT_CONTAINS=\"strehl_per_wavelength\": [")
+lenslab_cli_test(NAME analyze.psf_fields_table
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 0,20 --psf
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=PSF per field, polychromatic")
+lenslab_cli_test(NAME analyze.bad.psf_log_alone
+    ARGS analyze ${analyze_triplet} --psf --psf-log
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--psf-log: it sets the scale of --psf-png")
+lenslab_cli_test(NAME analyze.bad.opd_png_not_png
+    ARGS analyze ${analyze_triplet} --opd-png ${LENSLAB_CLI_OUT}/opd.svg
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--opd-png: '${LENSLAB_CLI_OUT}/opd.svg' does not end in .png")
 # Spot diagrams and ray fans per field and wavelength, their figures, and bad input.
 set(analyze_spots_svg ${LENSLAB_CLI_OUT}/triplet_spots.svg)
 set(analyze_fans_svg ${LENSLAB_CLI_OUT}/triplet_fans.svg)

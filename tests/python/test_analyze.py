@@ -53,6 +53,25 @@ def test_wavefronts_equal_the_cli_and_come_as_arrays():
     assert lenslab.analyze(SCENE).opd_maps == {}
 
 
+def test_psfs_at_every_field_equal_the_cli_and_come_as_arrays():
+    expected = cli_json("analyze", SCENE, "--json", "--fields", "0,2.5", "--wavelengths",
+                        "486.1327,587.5618,656.2725", "--psf")
+    report = lenslab.analyze(SCENE, fields=[0, 2.5], wavelengths=[486.1327, 587.5618, 656.2725],
+                             psf=True)
+    assert report == expected
+    fields = report["psf"]["fields"]
+    images = report.psf_images
+    assert list(images) == [0, 2.5]
+    for f in fields:
+        image = images[f["field"]]
+        assert image.shape == (f["grid"]["size"], f["grid"]["size"])
+        assert image.shape[0] % 2 == 1
+        assert image.max() == f["strehl"]
+        assert len(f["strehl_per_wavelength"]) == 3
+        assert 0 < f["encircled_energy"]["fraction"][0] <= f["encircled_energy"]["fraction"][-1] <= 1
+    assert lenslab.analyze(SCENE).psf_images == {}
+
+
 def test_options_equal_the_cli():
     expected = cli_json("analyze", SCENE, "--json", "--wavelength", "550", "--stop", "2",
                         "--f-number", "8", "--fields", "0,2.5")

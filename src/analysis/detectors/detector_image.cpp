@@ -5,7 +5,6 @@
 #include <cstdio>
 
 #include "image/bitmap_font.h"
-#include "image/colormap.h"
 
 namespace lenslab {
 
@@ -20,24 +19,6 @@ std::string number(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.4g", v);
     return buf;
-}
-
-void fill(Image8& img, int x0, int y0, int x1, int y1, const unsigned char (&rgb)[3]) {
-    for (int y = std::max(0, y0); y < std::min(img.height, y1); ++y) {
-        for (int x = std::max(0, x0); x < std::min(img.width, x1); ++x) {
-            unsigned char* p = &img.rgb[(static_cast<size_t>(y) * img.width + x) * 3];
-            p[0] = rgb[0];
-            p[1] = rgb[1];
-            p[2] = rgb[2];
-        }
-    }
-}
-
-void colour_of(double t, unsigned char (&out)[3]) {
-    const Rgb c = inferno(t);
-    out[0] = static_cast<unsigned char>(std::lround(255 * c.r));
-    out[1] = static_cast<unsigned char>(std::lround(255 * c.g));
-    out[2] = static_cast<unsigned char>(std::lround(255 * c.b));
 }
 
 }  // namespace
@@ -103,11 +84,11 @@ Image8 detector_image(const DetectorMeasurement& m, ColourScale scale, int map_s
             const double u = g.u_min() + (x + 0.5) / px_per_unit;
             const int cell = g.cell_at(u, v);
             if (g.cell_area(cell) <= 0) {
-                fill(img, map_x + x, map_y + y, map_x + x + 1, map_y + y + 1, kOffSurface);
+                fill_rect(img, map_x + x, map_y + y, map_x + x + 1, map_y + y + 1, kOffSurface);
                 continue;
             }
-            colour_of(position(m.irradiance(cell)), c);
-            fill(img, map_x + x, map_y + y, map_x + x + 1, map_y + y + 1, c);
+            inferno_rgb8(position(m.irradiance(cell)), c);
+            fill_rect(img, map_x + x, map_y + y, map_x + x + 1, map_y + y + 1, c);
         }
     }
     if (m.total_power > 0) {  // the centroid: a small cross
@@ -115,22 +96,22 @@ Image8 detector_image(const DetectorMeasurement& m, ColourScale scale, int map_s
             map_x + static_cast<int>(std::lround((m.centroid_u - g.u_min()) * px_per_unit));
         const int cy =
             map_y + static_cast<int>(std::lround((g.v_max() - m.centroid_v) * px_per_unit));
-        fill(img, cx - 6, cy, cx - 2, cy + 1, kMarker);
-        fill(img, cx + 3, cy, cx + 7, cy + 1, kMarker);
-        fill(img, cx, cy - 6, cx + 1, cy - 2, kMarker);
-        fill(img, cx, cy + 3, cx + 1, cy + 7, kMarker);
+        fill_rect(img, cx - 6, cy, cx - 2, cy + 1, kMarker);
+        fill_rect(img, cx + 3, cy, cx + 7, cy + 1, kMarker);
+        fill_rect(img, cx, cy - 6, cx + 1, cy - 2, kMarker);
+        fill_rect(img, cx, cy + 3, cx + 1, cy + 7, kMarker);
     }
 
     // The colour bar, 0 at the bottom, the peak at the top, with five labelled ticks.
     for (int y = 0; y < map_h; ++y) {
-        colour_of(1.0 - (y + 0.5) / map_h, c);
-        fill(img, bar_x, map_y + y, bar_x + kBarWidth, map_y + y + 1, c);
+        inferno_rgb8(1.0 - (y + 0.5) / map_h, c);
+        fill_rect(img, bar_x, map_y + y, bar_x + kBarWidth, map_y + y + 1, c);
     }
     for (int i = 0; i < tick_count; ++i) {
         const int y =
             map_y +
             static_cast<int>(std::lround((map_h - 1) * (1.0 - tick_at[static_cast<size_t>(i)])));
-        fill(img, bar_x + kBarWidth, y, bar_x + kBarWidth + 4, y + 1, kLegendInk);
+        fill_rect(img, bar_x + kBarWidth, y, bar_x + kBarWidth + 4, y + 1, kLegendInk);
         draw_text(img, bar_x + kBarWidth + 6, std::clamp(y - 3, map_y - 3, map_y + map_h - 4),
                   ticks[static_cast<size_t>(i)], kLegendInk);
     }

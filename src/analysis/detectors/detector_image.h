@@ -5,15 +5,12 @@
 // writes it as <name>.png; the editor shows the same picture.
 
 #include "analysis/detectors/detector.h"
+#include "image/false_colour.h"
 #include "image/image_io.h"
 
 namespace lenslab {
 
-// Linear: colour in proportion to the irradiance, 0 to the peak. Log: over the decades
-// below the peak (kLogDecades of them), which shows faint halos beside a bright focus.
-enum class ColourScale { Linear, Log };
-inline constexpr int kLogDecades = 4;
-
+// Linear (false_colour.h): colour in proportion to the irradiance, 0 to the peak.
 // `map_size`: pixels along the map's longer side.
 Image8 detector_image(const DetectorMeasurement& m, ColourScale scale = ColourScale::Linear,
                       int map_size = 512);

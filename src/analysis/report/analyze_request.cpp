@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "analysis/figures/analyze_figures.h"
+#include "analysis/figures/diffraction_maps.h"
 #include "analysis/figures/ray_diagram_image.h"
 #include "analysis/figures/ray_diagram_svg.h"
 #include "analysis/report/curve_report.h"
@@ -129,6 +130,17 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         pupil.aperture_radius = 0.5 * report.first_order.entrance_pupil.diameter;
         out.diffraction = diffraction_figures(system, pupil, a.mtf_frequencies);
     }
+    const double diffraction_z = a.image_distance
+                                     ? system.last_vertex() + *a.image_distance
+                                     : (out.diffraction ? out.diffraction->image_z : 0);
+    if (a.psf) {
+        FieldPsfOptions psf;
+        psf.fields = first.fields;
+        psf.wavelengths = report.wavelengths;
+        psf.weights = a.wavelength_weights;
+        psf.image_z = diffraction_z;
+        out.field_psf = field_psfs(system, report.first_order, psf);
+    }
     if (a.mtf) {
         FieldMtfOptions mtf;
         mtf.fields = first.fields;
@@ -193,6 +205,18 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
     for (const auto& [file, name] : files) {
         if (!file->empty()) write_bench_figure(*file, bench_figure(out, a, name));
     }
+    const std::string field_unit =
+        a.object_distance > 0 ? (a.unit.empty() ? "units" : a.unit) : "deg";
+    if (!a.psf_png.empty()) {
+        write_png_image(
+            psf_map_image(out.field_psf, a.psf_log ? ColourScale::Log : ColourScale::Linear,
+                          a.unit.empty() ? "units" : a.unit, field_unit),
+            a.psf_png);
+    }
+    if (!a.opd_png.empty())
+        write_png_image(
+            opd_map_image(*out.wavefronts, report.first_order.wavelength_nm, field_unit),
+            a.opd_png);
     return out;
 }
 
@@ -211,6 +235,8 @@ AnalyzeRequest with_implied_tables(AnalyzeRequest a) {
     a.field_curves = a.field_curves || !a.curves_svg.empty();
     a.focal_shift = a.focal_shift || !a.focal_shift_svg.empty();
     a.mtf = a.mtf || !a.mtf_svg.empty();
+    a.psf = a.psf || !a.psf_png.empty();
+    a.wavefront = a.wavefront || !a.opd_png.empty();
     return a;
 }
 
@@ -225,6 +251,16 @@ std::optional<std::string> figure_option_error(const AnalyzeRequest& a) {
         return "--wavefront-samples: " + std::to_string(a.wavefront_samples) +
                " is odd (an even number puts the pupil's centre between samples, as the FFT "
                "grid needs)";
+    }
+    if (a.psf_log && a.psf_png.empty())
+        return "--psf-log: it sets the scale of --psf-png, which was not asked for";
+    for (const std::string* png : {&a.psf_png, &a.opd_png}) {
+        const std::string suffix = ".png";
+        if (!png->empty() &&
+            (png->size() <= suffix.size() ||
+             png->compare(png->size() - suffix.size(), suffix.size(), suffix) != 0))
+            return std::string(png == &a.psf_png ? "--psf-png" : "--opd-png") + ": '" + *png +
+                   "' does not end in .png (the figure is a PNG picture)";
     }
     if (!a.mtf_frequencies.empty() && !a.mtf) {
         return "--mtf-frequencies requires --mtf (or --mtf-svg)";
@@ -300,15 +336,15 @@ void for_each_bench_key(const AnalyzeResults& results, const AnalyzeRequest& req
         });
     }
     if (!a.svg.empty()) put("svg", [&] { return BenchJson(a.svg); });
-    const FigureFile figures[] = {{a.spots_svg, "spots_svg"},
-                                  {a.fans_svg, "fans_svg"},
-                                  {a.curves_svg, "curves_svg"},
-                                  {a.focal_shift_svg, "focal_shift_svg"},
-                                  {a.mtf_svg, "mtf_svg"}};
+    const FigureFile figures[] = {
+        {a.spots_svg, "spots_svg"},   {a.fans_svg, "fans_svg"},
+        {a.curves_svg, "curves_svg"}, {a.focal_shift_svg, "focal_shift_svg"},
+        {a.mtf_svg, "mtf_svg"},       {a.psf_png, "psf_png"},
+        {a.opd_png, "opd_png"}};
     for (const FigureFile& figure : figures) {
         if (!figure.file.empty()) put(figure.key, [&] { return BenchJson(figure.file); });
     }
-    if (a.psf) put("psf", [&] { return psf_json(*results.diffraction); });
+    if (a.psf) put("psf", [&] { return psf_json(*results.diffraction, results.field_psf); });
     if (a.mtf) put("mtf", [&] { return mtf_json(*results.diffraction, *results.field_mtf); });
     if (results.wavefronts) put("wavefront", [&] { return wavefront_json(*results.wavefronts); });
     if (results.spots) put("spots", [&] { return spots_json(results.system, *results.spots); });

@@ -15,6 +15,7 @@
 #include "analysis/aberrations/spot_diagrams.h"
 #include "analysis/diffraction/diffraction_figures.h"
 #include "analysis/diffraction/field_mtf.h"
+#include "analysis/diffraction/field_psf.h"
 #include "analysis/diffraction/wavefront_figures.h"
 #include "analysis/report/lens_report.h"
 #include "analysis/system/optical_system.h"
@@ -61,6 +62,10 @@ struct AnalyzeRequest {
     int fan_points = 21;
     // Figures; each implies its table.
     std::string spots_svg, fans_svg, curves_svg, focal_shift_svg, mtf_svg;
+    // False-colour PNG figures: the PSF of every field (implies psf; psf_log: its log scale)
+    // and the OPD map of every field at the primary wavelength (implies wavefront).
+    std::string psf_png, opd_png;
+    bool psf_log = false;
     bool field_curves = false;
     int field_curve_points = 11;
     bool focal_shift = false;
@@ -97,6 +102,7 @@ struct AnalyzeResults {
     std::optional<RayFans> fans;
     std::optional<DiffractionFigures> diffraction;
     std::optional<FieldMtfs> field_mtf;  // --mtf: every field, polychromatic
+    std::vector<FieldPsf> field_psf;     // --psf: every field, polychromatic
     std::optional<WavefrontFigures> wavefronts;
     std::optional<FieldCurves> curves;
     std::optional<FocalShift> shift;

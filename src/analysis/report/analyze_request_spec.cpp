@@ -128,7 +128,9 @@ std::vector<RequestOption> declare_options() {
     all.push_back(flag(
         "psf", &Request::psf,
         "Diffraction on the axis at the primary wavelength: the point spread function's Strehl "
-        "ratio, wavefront RMS and encircled energy at the best focus (lengths in mm)"));
+        "ratio, wavefront RMS and encircled energy at the best focus; and per field the "
+        "polychromatic PSF in that plane (or --image-distance): Strehl, centroid, encircled and "
+        "ensquared energy, the image (lengths in mm)"));
     all.push_back(
         flag("mtf", &Request::mtf,
              "Diffraction MTF at every field, tangential and sagittal, polychromatic over the "
@@ -184,6 +186,16 @@ std::vector<RequestOption> declare_options() {
     all.push_back(figure_file("mtf-svg", &Request::mtf_svg,
                               "Write the MTF of every field beside the diffraction limit to this "
                               "file, SVG or (.png) PNG; implies --mtf"));
+    all.push_back(figure_file("psf-png", &Request::psf_png,
+                              "Write the polychromatic PSF of every field to this PNG file, false "
+                              "colour on one scale; implies --psf"));
+    RequestOption psf_log = flag("psf-log", &Request::psf_log,
+                                 "Draw --psf-png on a log scale (four decades below the peak)");
+    psf_log.where = RequestWhere::CommandLine;
+    all.push_back(psf_log);
+    all.push_back(figure_file("opd-png", &Request::opd_png,
+                              "Write the OPD map of every field at the primary wavelength to this "
+                              "PNG file; implies --wavefront"));
     all.push_back(whole("fan-points", &Request::fan_points, 2, 10001,
                         "Points along each ray fan, evenly from -1 to 1 across the stop "
                         "(default 21)"));

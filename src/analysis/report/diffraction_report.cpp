@@ -15,7 +15,41 @@ std::string diffraction_line(const char* format, Numbers... numbers) {
 
 }  // namespace
 
-nlohmann::ordered_json psf_json(const DiffractionFigures& figures) {
+namespace {
+
+nlohmann::ordered_json field_psf_json(const FieldPsf& f) {
+    nlohmann::ordered_json j;
+    j["field"] = f.field;
+    if (!f.error.empty()) {
+        j["error"] = f.error;
+        return j;
+    }
+    const Psf& p = f.psf;
+    j["strehl"] = p.strehl;
+    j["strehl_per_wavelength"] = f.strehl_per_wavelength;
+    j["centre"] = {f.centre_x, f.centre_y};
+    j["centroid"] = {f.centroid_x, f.centroid_y};
+    j["encircled_energy"] = {{"radii", f.radii}, {"fraction", f.encircled}};
+    j["ensquared_energy"] = {{"half_widths", f.radii}, {"fraction", f.ensquared}};
+    j["pupil_samples"] = f.samples;
+    j["max_step_waves"] = f.max_step_waves;
+    if (!f.warning.empty()) j["warning"] = f.warning;
+    j["grid"] = {{"size", p.size}, {"spacing", p.spacing}};
+    // Row by row, y rising from -size/2 · spacing about the centre.
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (int i = 0; i < p.size; ++i) {
+        nlohmann::ordered_json row = nlohmann::ordered_json::array();
+        for (int k = 0; k < p.size; ++k) row.push_back(p.at(i, k));
+        rows.push_back(std::move(row));
+    }
+    j["image"] = std::move(rows);
+    return j;
+}
+
+}  // namespace
+
+nlohmann::ordered_json psf_json(const DiffractionFigures& figures,
+                                const std::vector<FieldPsf>& fields) {
     nlohmann::ordered_json j;
     j["strehl"] = figures.strehl;
     j["wavefront_rms_waves"] = figures.wavefront_rms;
@@ -25,6 +59,9 @@ nlohmann::ordered_json psf_json(const DiffractionFigures& figures) {
     j["image_z"] = figures.image_z;
     j["wavelength_nm"] = figures.wavelength_nm;
     j["f_number"] = figures.f_number;
+    nlohmann::ordered_json per_field = nlohmann::ordered_json::array();
+    for (const FieldPsf& f : fields) per_field.push_back(field_psf_json(f));
+    j["fields"] = std::move(per_field);
     return j;
 }
 
@@ -54,9 +91,10 @@ nlohmann::ordered_json mtf_json(const DiffractionFigures& figures, const FieldMt
     return j;
 }
 
-std::string diffraction_table(const DiffractionFigures& figures, bool psf, const FieldMtfs* mtf) {
+std::string diffraction_table(const DiffractionFigures& figures, const std::vector<FieldPsf>* psfs,
+                              const FieldMtfs* mtf) {
     std::string out;
-    if (psf) {
+    if (psfs) {
         out += diffraction_line(
             "\nDiffraction on the axis at %.2f nm, F/%.4g, best focus (%.4f behind the first "
             "vertex)\n",
@@ -66,6 +104,33 @@ std::string diffraction_table(const DiffractionFigures& figures, bool psf, const
         out +=
             diffraction_line("  Airy radius 1.22 lambda N = %.6f   encircled energy there %.4f\n",
                              figures.airy_radius, figures.encircled_energy_at_airy_radius);
+        out +=
+            "  PSF per field, polychromatic: Strehl (per wavelength), centroid against the chief "
+            "ray, 80% encircled energy radius\n";
+        for (const FieldPsf& f : *psfs) {
+            if (!f.error.empty()) {
+                out +=
+                    diffraction_line("  field %-8g not measured: %s\n", f.field, f.error.c_str());
+                continue;
+            }
+            std::string each;
+            for (double s : f.strehl_per_wavelength) each += diffraction_line(" %.4f", s);
+            // The first radius holding 80% of the energy (the curve's eighths, interpolated).
+            std::string d80 = "beyond the grid";
+            for (size_t k = 0; k < f.radii.size(); ++k) {
+                if (f.encircled[k] < 0.8) continue;
+                const double r0 = k == 0 ? 0.0 : f.radii[k - 1],
+                             e0 = k == 0 ? 0.0 : f.encircled[k - 1];
+                d80 = diffraction_line("%.5g",
+                                       r0 + (f.radii[k] - r0) * (0.8 - e0) / (f.encircled[k] - e0));
+                break;
+            }
+            out +=
+                diffraction_line("  field %-8g Strehl %.4f (%s)  centroid (%+.5g, %+.5g)  r80 %s\n",
+                                 f.field, f.psf.strehl, each.c_str() + 1, f.centroid_x - f.centre_x,
+                                 f.centroid_y - f.centre_y, d80.c_str());
+            if (!f.warning.empty()) out += "    " + f.warning + "\n";
+        }
     }
     if (mtf) {
         out += diffraction_line(

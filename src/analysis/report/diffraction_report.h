@@ -1,6 +1,7 @@
 #pragma once
 // The diffraction figures of `lenslab analyze --psf` and `--mtf` as JSON and as a table: the
-// `psf` block (Strehl ratio, wavefront RMS, Airy radius, encircled energy there) and the
+// `psf` block (on the axis at best focus: Strehl ratio, wavefront RMS, Airy radius, encircled
+// energy there; per field the polychromatic PSF, field_psf.h) and the
 // `mtf` block (frequencies, the polychromatic diffraction limit, and per field the
 // polychromatic tangential and sagittal curves, field_mtf.h).
 
@@ -9,14 +10,17 @@
 
 #include "analysis/diffraction/diffraction_figures.h"
 #include "analysis/diffraction/field_mtf.h"
+#include "analysis/diffraction/field_psf.h"
 
 namespace lenslab {
 
-nlohmann::ordered_json psf_json(const DiffractionFigures& figures);
+nlohmann::ordered_json psf_json(const DiffractionFigures& figures,
+                                const std::vector<FieldPsf>& fields);
 nlohmann::ordered_json mtf_json(const DiffractionFigures& figures, const FieldMtfs& mtf);
 
-// The lines the table prints for each block asked for (mtf: none when not asked for);
+// The lines the table prints for each block asked for (psfs, mtf: none when not asked for);
 // lengths in the system's unit (mm).
-std::string diffraction_table(const DiffractionFigures& figures, bool psf, const FieldMtfs* mtf);
+std::string diffraction_table(const DiffractionFigures& figures, const std::vector<FieldPsf>* psfs,
+                              const FieldMtfs* mtf);
 
 }  // namespace lenslab
