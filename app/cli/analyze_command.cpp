@@ -79,6 +79,7 @@ int run(const AnalyzeArgs& args) {
         std::cout << diffraction_table(*results.diffraction, a.psf ? &results.field_psf : nullptr,
                                        mtf);
     }
+    if (results.through_focus) std::cout << through_focus_table(*results.through_focus);
     if (results.wavefronts) std::cout << wavefront_table(*results.wavefronts);
     if (results.spots) std::cout << spots_table(system, *results.spots);
     if (results.field_map) std::cout << field_map_table(system, *results.field_map);

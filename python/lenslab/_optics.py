@@ -156,12 +156,16 @@ def _request_json(options: dict[str, Any]) -> str:
     """The options checked against their declarations, as the JSON the compiled module takes;
     bad ones raise ValueError."""
     given = {name: value for name, value in options.items() if value is not None}
-    for name, value in given.items():
+    # Chosen: given and not the default (a keyword left at its default chose nothing).
+    chosen = {name for name, value in given.items()
+              if not (isinstance(value, (bool, int, float, str))
+                      and value == _DECLARED[name].get("default"))}
+    for name in chosen:
         option = _DECLARED[name]
         for other in option.get("excludes", []):
-            if other in given:
+            if other in chosen:
                 raise ValueError(f"{name} excludes {other} ({option['excludes_why']})")
-        if "needs" in option and option["needs"] not in given:
+        if "needs" in option and option["needs"] not in chosen:
             raise ValueError(f"{name} needs {option['needs']} ({option['needs_why']})")
     return json.dumps({name: _checked(_DECLARED[name], value) for name, value in given.items()})
 
@@ -178,7 +182,10 @@ def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
             field_heights: Optional[Sequence[float]] = None, seidel: bool = False,
             psf: bool = False, mtf: bool = False, wavefront: bool = False,
             zernike_terms: int = 37, wavefront_samples: int = 64,
-            mtf_frequencies: Optional[Sequence[float]] = None, spots: bool = False,
+            mtf_frequencies: Optional[Sequence[float]] = None,
+            through_focus: Optional[float] = None,
+            through_focus_range: Optional[float] = None, through_focus_points: int = 11,
+            spots: bool = False,
             rings: int = 6, fans: bool = False, fan_points: int = 21,
             image_distance: Optional[float] = None, field_curves: bool = False,
             field_curve_points: int = 11, focal_shift: bool = False,

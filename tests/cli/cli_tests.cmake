@@ -253,6 +253,14 @@ lenslab_cli_test(NAME analyze.bad.psf_log_alone
 lenslab_cli_test(NAME analyze.bad.opd_png_not_png
     ARGS analyze ${analyze_triplet} --opd-png ${LENSLAB_CLI_OUT}/opd.svg
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--opd-png: '${LENSLAB_CLI_OUT}/opd.svg' does not end in .png")
+lenslab_cli_test(NAME analyze.through_focus_json
+    ARGS analyze ${analyze_triplet} --json --stop 3 --epd 12.5 --fields 0,20 --through-focus 40
+         --through-focus-points 5 --through-focus-range 0.05
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=through_focus"
+           "-DSTDOUT_CONTAINS=\"shifts\": [")
+lenslab_cli_test(NAME analyze.bad.through_focus_points_alone
+    ARGS analyze ${analyze_triplet} --through-focus-points 5
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--through-focus-points requires --through-focus")
 # Spot diagrams and ray fans per field and wavelength, their figures, and bad input.
 set(analyze_spots_svg ${LENSLAB_CLI_OUT}/triplet_spots.svg)
 set(analyze_fans_svg ${LENSLAB_CLI_OUT}/triplet_fans.svg)

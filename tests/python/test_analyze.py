@@ -219,6 +219,8 @@ def test_a_figure_not_asked_for_raises():
                               r"field_map, field_curves, wavefront and mtf, none of which was "
                               r"asked for$"),
     (dict(mtf_frequencies=[10]), r"^mtf_frequencies requires mtf \(or mtf_svg\)$"),
+    (dict(zernike_terms=11), r"^zernike_terms needs wavefront \(the terms of the wavefront's fit\)$"),
+    (dict(through_focus_points=5), r"^through_focus_points needs through_focus "),
     (dict(focal_shift=True, band=[700, 450]), r"^band: two wavelengths in nm, the shorter "),
     (dict(wavelength_weights=[1, 2]), r"^wavelength_weights: 2 weights for 1 wavelengths"),
     (dict(aperture=1000), r"^aperture: a beam of diameter 1000 does not pass the lenses"),

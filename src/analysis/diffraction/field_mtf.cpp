@@ -179,4 +179,33 @@ FieldMtfs field_mtfs(const OpticalSystem& system, const FirstOrder& first_order,
     return out;
 }
 
+ThroughFocusMtf through_focus_mtf(const OpticalSystem& system, const FirstOrder& first_order,
+                                  FieldMtfOptions options, double frequency,
+                                  const std::vector<double>& shifts) {
+    ThroughFocusMtf out;
+    out.frequency = frequency;
+    out.image_z = options.image_z;
+    out.shifts = shifts;
+    for (double field : options.fields) out.fields.push_back({field, {}, {}, {}, 0, 0, {}});
+    options.frequencies = {frequency};
+    for (double shift : shifts) {
+        FieldMtfOptions at = options;
+        at.image_z = out.image_z + shift;
+        const FieldMtfs m = field_mtfs(system, first_order, at);
+        for (size_t k = 0; k < m.fields.size(); ++k) {
+            FieldMtf& f = out.fields[k];
+            const FieldMtf& here = m.fields[k];
+            if (!here.error.empty() && f.error.empty()) f.error = here.error;
+            if (!here.warning.empty() && f.warning.empty()) f.warning = here.warning;
+            f.samples = std::max(f.samples, here.samples);
+            f.max_step_waves = std::max(f.max_step_waves, here.max_step_waves);
+            f.tangential.push_back(here.error.empty() ? here.tangential[0] : 0.0);
+            f.sagittal.push_back(here.error.empty() ? here.sagittal[0] : 0.0);
+        }
+    }
+    for (FieldMtf& f : out.fields)
+        if (!f.error.empty()) f.tangential.clear(), f.sagittal.clear();
+    return out;
+}
+
 }  // namespace lenslab

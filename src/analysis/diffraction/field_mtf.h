@@ -55,6 +55,18 @@ struct FieldMtfs {
 FieldMtfs field_mtfs(const OpticalSystem& system, const FirstOrder& first_order,
                      const FieldMtfOptions& options);
 
+// The MTF at one frequency as the image plane moves along the axis: field_mtfs at
+// options.image_z + each shift (system z). fields[k].tangential[n] and .sagittal[n] are at
+// shifts[n]; a field that cannot be measured at some plane gets that plane's error.
+struct ThroughFocusMtf {
+    double frequency = 0, image_z = 0;
+    std::vector<double> shifts;
+    std::vector<FieldMtf> fields;
+};
+ThroughFocusMtf through_focus_mtf(const OpticalSystem& system, const FirstOrder& first_order,
+                                  FieldMtfOptions options, double frequency,
+                                  const std::vector<double>& shifts);
+
 // The PSF of `pupil` with its wavefront tilt (the least-squares plane) taken out, which keeps
 // it in the middle of its grid, and where that tilt put it: a tilt W = t·x moves the PSF to
 // x = 2 t λN (diffraction.h). Its OTF along x (sagittal) or y (tangential) is the Fourier

@@ -124,7 +124,7 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         if (a.image_distance) fan.image_z = system.last_vertex() + *a.image_distance;
         out.fans = ray_fans(system, report.first_order, fan);
     }
-    if (a.psf || a.mtf) {
+    if (a.psf || a.mtf || a.through_focus > 0) {
         RayPupilOptions pupil;
         pupil.wavelength_nm = options.wavelength_nm;
         pupil.aperture_radius = 0.5 * report.first_order.entrance_pupil.diameter;
@@ -147,9 +147,25 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         mtf.wavelengths = report.wavelengths;
         mtf.weights = a.wavelength_weights;
         mtf.frequencies = out.diffraction->mtf.frequencies;
-        mtf.image_z =
-            a.image_distance ? system.last_vertex() + *a.image_distance : out.diffraction->image_z;
+        mtf.image_z = diffraction_z;
         out.field_mtf = field_mtfs(system, report.first_order, mtf);
+    }
+    if (a.through_focus > 0) {
+        FieldMtfOptions mtf;
+        mtf.fields = first.fields;
+        mtf.wavelengths = report.wavelengths;
+        mtf.weights = a.wavelength_weights;
+        mtf.image_z = diffraction_z;
+        const FirstOrder& f = report.first_order;
+        const double lambda = f.wavelength_nm * 1e-6;
+        const double range = a.through_focus_range > 0
+                                 ? a.through_focus_range
+                                 : 8 * lambda * f.working_f_number * f.working_f_number;
+        std::vector<double> shifts;
+        for (int k = 0; k < a.through_focus_points; ++k)
+            shifts.push_back(-range + 2 * range * k / (a.through_focus_points - 1));
+        out.through_focus =
+            through_focus_mtf(system, report.first_order, mtf, a.through_focus, shifts);
     }
     if (a.wavefront) {
         WavefrontFigureOptions wavefront;
@@ -346,6 +362,8 @@ void for_each_bench_key(const AnalyzeResults& results, const AnalyzeRequest& req
     }
     if (a.psf) put("psf", [&] { return psf_json(*results.diffraction, results.field_psf); });
     if (a.mtf) put("mtf", [&] { return mtf_json(*results.diffraction, *results.field_mtf); });
+    if (results.through_focus)
+        put("through_focus", [&] { return through_focus_json(*results.through_focus); });
     if (results.wavefronts) put("wavefront", [&] { return wavefront_json(*results.wavefronts); });
     if (results.spots) put("spots", [&] { return spots_json(results.system, *results.spots); });
     if (results.fans) put("fans", [&] { return fans_json(results.system, *results.fans); });

@@ -54,6 +54,10 @@ struct AnalyzeRequest {
     int zernike_terms = 37;
     int wavefront_samples = 64;
     std::vector<double> mtf_frequencies;  // empty: ten up to the cutoff
+    // The MTF at this frequency through focus (cycles/mm; 0: none), over ± the half range (0:
+    // one wave of defocus, 8 λN²) about the MTF's plane, at this many planes.
+    double through_focus = 0, through_focus_range = 0;
+    int through_focus_points = 11;
     bool spots = false;
     int rings = 6;                           // hexapolar rings of the spot diagrams
     std::optional<double> image_distance;    // image plane from the last vertex
@@ -102,7 +106,8 @@ struct AnalyzeResults {
     std::optional<RayFans> fans;
     std::optional<DiffractionFigures> diffraction;
     std::optional<FieldMtfs> field_mtf;  // --mtf: every field, polychromatic
-    std::vector<FieldPsf> field_psf;     // --psf: every field, polychromatic
+    std::optional<ThroughFocusMtf> through_focus;
+    std::vector<FieldPsf> field_psf;  // --psf: every field, polychromatic
     std::optional<WavefrontFigures> wavefronts;
     std::optional<FieldCurves> curves;
     std::optional<FocalShift> shift;

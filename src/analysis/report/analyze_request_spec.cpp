@@ -157,6 +157,23 @@ std::vector<RequestOption> declare_options() {
                                 &Request::mtf_frequencies,
                                 "Frequencies of the MTF in cycles/mm, comma-separated (default: "
                                 "ten up to the cutoff 1/(lambda N))"));
+    all.push_back(member_option("through-focus", RequestValue::PositiveNumber,
+                                &Request::through_focus,
+                                "The MTF at this frequency (cycles/mm) through focus: every "
+                                "field, tangential and sagittal, polychromatic, at planes about "
+                                "the MTF's"));
+    RequestOption range = member_option(
+        "through-focus-range", RequestValue::PositiveNumber, &Request::through_focus_range,
+        "Half the through-focus range along the axis (default: one wave of defocus, 8 lambda N^2)");
+    range.needs = "through-focus";
+    range.needs_why = "the range of the through-focus MTF";
+    all.push_back(range);
+    RequestOption planes = whole("through-focus-points", &Request::through_focus_points, 3, 201,
+                                 "Image planes of the through-focus MTF, evenly across the range "
+                                 "(default 11)");
+    planes.needs = "through-focus";
+    planes.needs_why = "the planes of the through-focus MTF";
+    all.push_back(planes);
     all.push_back(
         flag("spots", &Request::spots,
              "Spot diagrams per field and wavelength: RMS and geometric radii about the centroid, "

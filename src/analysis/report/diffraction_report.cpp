@@ -159,4 +159,51 @@ std::string diffraction_table(const DiffractionFigures& figures, const std::vect
     return out;
 }
 
+nlohmann::ordered_json through_focus_json(const ThroughFocusMtf& t) {
+    nlohmann::ordered_json j;
+    j["frequency"] = t.frequency;
+    j["image_z"] = t.image_z;
+    j["shifts"] = t.shifts;
+    nlohmann::ordered_json fields = nlohmann::ordered_json::array();
+    for (const FieldMtf& f : t.fields) {
+        nlohmann::ordered_json field;
+        field["field"] = f.field;
+        if (!f.error.empty()) {
+            field["error"] = f.error;
+        } else {
+            field["tangential"] = f.tangential;
+            field["sagittal"] = f.sagittal;
+            if (!f.warning.empty()) field["warning"] = f.warning;
+        }
+        fields.push_back(std::move(field));
+    }
+    j["fields"] = std::move(fields);
+    return j;
+}
+
+std::string through_focus_table(const ThroughFocusMtf& t) {
+    std::string out = diffraction_line(
+        "\nMTF at %g cycles/mm through focus (tangential / sagittal), about z = %.6g\n",
+        t.frequency, t.image_z);
+    out += "      shift";
+    for (const FieldMtf& f : t.fields) out += diffraction_line("   field %-10g", f.field);
+    out += "\n";
+    for (size_t n = 0; n < t.shifts.size(); ++n) {
+        out += diffraction_line("  %+9.5f", t.shifts[n]);
+        for (const FieldMtf& f : t.fields) {
+            out += f.error.empty()
+                       ? diffraction_line("   %.4f / %.4f", f.tangential[n], f.sagittal[n])
+                       : std::string("   not measured   ");
+        }
+        out += "\n";
+    }
+    for (const FieldMtf& f : t.fields) {
+        if (!f.error.empty())
+            out += diffraction_line("  field %g not measured: %s\n", f.field, f.error.c_str());
+        if (!f.warning.empty())
+            out += diffraction_line("  field %g: %s\n", f.field, f.warning.c_str());
+    }
+    return out;
+}
+
 }  // namespace lenslab

@@ -17,6 +17,8 @@ namespace lenslab {
 nlohmann::ordered_json psf_json(const DiffractionFigures& figures,
                                 const std::vector<FieldPsf>& fields);
 nlohmann::ordered_json mtf_json(const DiffractionFigures& figures, const FieldMtfs& mtf);
+nlohmann::ordered_json through_focus_json(const ThroughFocusMtf& t);
+std::string through_focus_table(const ThroughFocusMtf& t);
 
 // The lines the table prints for each block asked for (psfs, mtf: none when not asked for);
 // lengths in the system's unit (mm).

@@ -4,6 +4,7 @@
 //   autocorrelation of the defocused pupil, (1/π) ∫ 2√(1 − (|x| + s)²) cos(8π W020 s x) dx
 //   over |x| ≤ 1 − s at s = ν/ν_c, integrated here independently of the FFT, within 0.005 at
 //   five frequencies;
+// - through focus, planes ±1/8 to ±1/2 wave of defocus give Hopkins' MTF at each;
 // - a mirror has no colour: at two wavelengths, weighted 1 and 3, its MTF is the weighted
 //   diffraction limit;
 // - a PSF moved by a tilt is the tilt-free one shifted by 2 t λN: untilted_psf's OTF times
@@ -83,6 +84,31 @@ TEST(FieldMtf, AQuarterWaveOfDefocusGivesHopkinsMtf) {
         EXPECT_NEAR(m.fields[0].tangential[k], expected, 0.005) << "s = " << s;
         EXPECT_NEAR(m.fields[0].sagittal[k], expected, 0.005) << "s = " << s;
         EXPECT_LT(expected, diffraction_limited_mtf(o.frequencies[k], cutoff) - 0.01);
+    }
+}
+
+TEST(FieldMtf, ThroughFocusFollowsHopkinsDefocus) {
+    // At 0.2 of the cutoff, planes ±1/8, ±1/4 and ±1/2 wave of defocus (W020 = δz / (8N²))
+    // either side of the focus: symmetric, highest at the focus, Hopkins' value at each.
+    const OpticalSystem system = mtf_mirror_system();
+    const FirstOrder f = mtf_first_order(system, 0);
+    const double n = kMtfMirrorFocal / kMtfMirrorDiameter, lambda = kLineD * 1e-6;
+    const double cutoff = 1 / (lambda * n), wave = lambda * 8 * n * n;
+    FieldMtfOptions o;
+    o.image_z = -kMtfMirrorFocal;
+    o.samples = 128;
+    const std::vector<double> waves{-0.5, -0.25, -0.125, 0, 0.125, 0.25, 0.5};
+    std::vector<double> shifts;
+    for (double w : waves) shifts.push_back(w * wave);
+    const ThroughFocusMtf t = through_focus_mtf(system, f, o, 0.2 * cutoff, shifts);
+    ASSERT_EQ(t.fields.size(), 1u);
+    const FieldMtf& axis = t.fields[0];
+    ASSERT_EQ(axis.tangential.size(), waves.size());
+    for (size_t k = 0; k < waves.size(); ++k) {
+        EXPECT_NEAR(axis.tangential[k], hopkins_defocused_mtf(0.2, std::abs(waves[k])), 0.005)
+            << waves[k];
+        EXPECT_NEAR(axis.sagittal[k], axis.tangential[k], 1e-6);
+        EXPECT_LE(axis.tangential[k], axis.tangential[3] + 1e-9);
     }
 }
 
