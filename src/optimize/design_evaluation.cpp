@@ -1,8 +1,12 @@
 #include "optimize/design_evaluation.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "analysis/aberrations/polychromatic_spot.h"
+#include "analysis/diffraction/field_mtf.h"
+#include "analysis/diffraction/weighted_wavelengths.h"
+#include "analysis/diffraction/zernike.h"
 #include "analysis/system/first_order.h"
 #include "analysis/system/paraxial.h"
 #include "scene/json_reader.h"
@@ -29,6 +33,49 @@ const SystemElement& de_element(const OpticalSystem& system, const Scene& scene,
 struct RaysLost {
     std::string why;
 };
+
+// The optimiser's wavefronts: coarse and fixed, since a sampling that changed between two
+// designs would break the finite differences of the Jacobian.
+constexpr int kWavefrontOperandSamples = 32, kMtfOperandSamples = 32;
+
+// The polychromatic RMS wavefront of a field about its best tilt (piston and tilt removed, the
+// PSF's centroid as reference), in waves: √(Σ w rms² / Σ w). `lost`: the rays the wavefronts
+// lost, all wavelengths.
+double de_rms_wavefront(const OpticalSystem& system, const FirstOrder& first, const LensDesign& d,
+                        double field, double image_z, int* lost) {
+    const WeightedWavelengths chosen = weighted_wavelengths(first, d.wavelengths, d.weights);
+    double sum = 0;
+    *lost = 0;
+    for (size_t k = 0; k < chosen.nm.size(); ++k) {
+        FieldWavefrontOptions o;
+        o.field = field;
+        o.wavelength_nm = chosen.nm[k];
+        o.sampling = {kWavefrontOperandSamples, 2};
+        o.image_z = image_z;
+        const FieldWavefront w = field_wavefront(system, first, o);
+        const double rms = fit_zernike(w.pupil, ZernikeOrdering::Noll, 3).residual_rms;
+        sum += chosen.weights[k] * rms * rms;
+        *lost += w.lost;
+    }
+    return std::sqrt(sum / chosen.total);
+}
+
+double de_mtf(const OpticalSystem& system, const FirstOrder& first, const LensDesign& d,
+              const MeritOperand& op, double image_z) {
+    FieldMtfOptions o;
+    o.fields = {op.field};
+    o.wavelengths = d.wavelengths;
+    o.weights = d.weights;
+    o.frequencies = {op.frequency};
+    o.samples = kMtfOperandSamples;
+    o.resolve = false;
+    o.image_z = image_z;
+    const FieldMtf m = field_mtfs(system, first, o).fields[0];
+    if (!m.error.empty()) throw std::invalid_argument(m.error);
+    if (op.direction == "tangential") return m.tangential[0];
+    if (op.direction == "sagittal") return m.sagittal[0];
+    return 0.5 * (m.tangential[0] + m.sagittal[0]);
+}
 
 }  // namespace
 
@@ -113,6 +160,24 @@ DesignEvaluation DesignModel::evaluate_state(const DesignState& state,
                 value = spot.rms_radius;
                 break;
             }
+            case OperandKind::RmsWavefront:
+            case OperandKind::Mtf:
+                try {
+                    if (op.kind == OperandKind::Mtf) {
+                        value = de_mtf(system, first, d, op, image_z);
+                        break;
+                    }
+                    int lost = 0;
+                    value = de_rms_wavefront(system, first, d, op.field, image_z, &lost);
+                    // As for the spot: more rays lost than at the start is a step off the lenses.
+                    if (record_lost) (*record_lost)[i] = lost;
+                    if (lost > (record_lost ? lost : m_start_lost[i]))
+                        throw RaysLost{op.path + ": " + operand_label(op) + " loses " +
+                                       std::to_string(lost) + " rays"};
+                } catch (const std::invalid_argument& e) {
+                    throw RaysLost{op.path + ": " + operand_label(op) + ": " + e.what()};
+                }
+                break;
             case OperandKind::MinCenterThickness:
             case OperandKind::MaxCenterThickness:
                 value = de_thickness_at(system, de_element(system, scene, op.object, op.path), 0);

@@ -17,6 +17,8 @@ struct OperandName {
 constexpr OperandName kOperandNames[] = {
     {"efl", OperandKind::Efl},
     {"rms_spot", OperandKind::RmsSpot},
+    {"rms_wavefront", OperandKind::RmsWavefront},
+    {"mtf", OperandKind::Mtf},
     {"min_center_thickness", OperandKind::MinCenterThickness},
     {"max_center_thickness", OperandKind::MaxCenterThickness},
     {"min_edge_thickness", OperandKind::MinEdgeThickness},
@@ -27,10 +29,16 @@ bool mo_is_minimum(OperandKind kind) {
     return kind == OperandKind::MinCenterThickness || kind == OperandKind::MinEdgeThickness;
 }
 
+// The operands measured at a field (one per design field when none is given).
+bool mo_takes_field(OperandKind kind) {
+    return kind == OperandKind::RmsSpot || kind == OperandKind::RmsWavefront ||
+           kind == OperandKind::Mtf;
+}
+
 }  // namespace
 
 bool is_constraint(const MeritOperand& op) {
-    return op.kind != OperandKind::Efl && op.kind != OperandKind::RmsSpot;
+    return op.kind != OperandKind::Efl && !mo_takes_field(op.kind);
 }
 
 std::string operand_label(const MeritOperand& op) {
@@ -38,7 +46,12 @@ std::string operand_label(const MeritOperand& op) {
     for (const OperandName& n : kOperandNames) {
         if (n.kind == op.kind) label = n.name;
     }
-    if (op.kind == OperandKind::RmsSpot) label += " " + format_number(op.field) + "°";
+    if (op.kind == OperandKind::Mtf)
+        label += " " + format_number(op.frequency) + " " +
+                 (op.direction == "mean"         ? "T+S"
+                  : op.direction == "tangential" ? "T"
+                                                 : "S");
+    if (mo_takes_field(op.kind)) label += " " + format_number(op.field) + "°";
     if (!op.lens.empty()) label += " " + op.lens;
     return label;
 }
@@ -56,8 +69,10 @@ double operand_residual(const MeritOperand& op, double value) {
 std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const std::string& path,
                                               const nlohmann::ordered_json& scene,
                                               const std::vector<double>& fields) {
-    JsonObjectReader reader(spec, path, {"type", "target", "limit", "weight", "field", "lens"},
-                            "an operand");
+    JsonObjectReader reader(
+        spec, path,
+        {"type", "target", "limit", "weight", "field", "lens", "frequency", "direction"},
+        "an operand");
     if (!reader.has("type")) throw_missing_key(spec, path, "type");
     std::vector<std::string> names;
     for (const OperandName& n : kOperandNames) names.push_back(n.name);
@@ -87,12 +102,29 @@ std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const 
             throw SceneError(reader.child_path("limit"),
                              "an " + type + " operand takes a target, not a limit");
         }
-        // The spot's natural target is none at all; the focal length has no default.
-        op.target =
-            op.kind == OperandKind::Efl ? reader.number("target") : reader.number("target", 0.0);
+        // The spot's and the wavefront's natural target is none at all, the MTF's a perfect 1;
+        // the focal length has no default.
+        op.target = op.kind == OperandKind::Efl   ? reader.number("target")
+                    : op.kind == OperandKind::Mtf ? reader.number("target", 1.0)
+                                                  : reader.number("target", 0.0);
     }
-    if (op.kind != OperandKind::RmsSpot && reader.has("field")) {
-        throw SceneError(reader.child_path("field"), "only an rms_spot operand takes a field");
+    if (!mo_takes_field(op.kind) && reader.has("field")) {
+        throw SceneError(reader.child_path("field"),
+                         "only an rms_spot, rms_wavefront or mtf operand takes a field");
+    }
+    if (op.kind == OperandKind::Mtf) {
+        op.frequency = reader.number("frequency");
+        if (!(op.frequency > 0)) {
+            throw SceneError(
+                reader.child_path("frequency"),
+                "must be > 0 (cycles per unit length), got " + format_number(op.frequency));
+        }
+        op.direction = reader.choice("direction", "mean", {"tangential", "sagittal", "mean"});
+    } else {
+        for (const char* key : {"frequency", "direction"})
+            if (reader.has(key))
+                throw SceneError(reader.child_path(key),
+                                 std::string("only an mtf operand takes a ") + key);
     }
     if (!needs_lens && reader.has("lens")) {
         throw SceneError(reader.child_path("lens"), "a " + type + " operand takes no lens");
@@ -101,7 +133,7 @@ std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const 
         op.lens = reader.string("lens");
         op.object = find_design_lens(scene, op.lens, reader.child_path("lens"));
     }
-    if (op.kind != OperandKind::RmsSpot) return {op};
+    if (!mo_takes_field(op.kind)) return {op};
     if (reader.has("field")) {
         op.field = reader.number("field");
         if (!(std::abs(op.field) < 90.0)) {

@@ -6,14 +6,24 @@
 //   s = R - sqrt(R² - h²): t - 2 s = 5 - 2 (50 - sqrt(2400)) = 2.97959;
 // - the total length: first vertex to the image plane;
 // - constraints are one-sided, zero while the limit holds; the EFL's residual is the power
-//   difference target² (1/target - 1/EFL), EFL - target to first order.
+//   difference target² (1/target - 1/EFL), EFL - target to first order;
+// - rms_wavefront and mtf are the bench's figures (field_wavefront.h, field_mtf.h) at the
+//   optimiser's fixed sampling, and an image_distance freed against rms_wavefront settles at
+//   the least-RMS focus of pupil_from_rays.h, midway between the paraxial and marginal foci
+//   for primary spherical aberration (Mahajan, Optical Imaging and Aberrations, part I, 8.3).
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "analysis/diffraction/field_mtf.h"
+#include "analysis/diffraction/pupil_from_rays.h"
+#include "analysis/diffraction/zernike.h"
+#include "analysis/system/paraxial.h"
 #include "optimize/design_evaluation.h"
+#include "optimize/optimize_design.h"
 #include "optimize_test_design.h"
+#include "scene/scene_json.h"
 
 namespace lenslab {
 namespace {
@@ -68,6 +78,95 @@ TEST(MeritOperand, RmsSpotWithoutAFieldStandsForEveryField) {
     ASSERT_EQ(d.operands.size(), 3u);
     EXPECT_EQ(d.operands[2].field, 4.0);
     EXPECT_EQ(operand_label(d.operands[1]), "rms_spot 2°");
+}
+
+TEST(MeritOperand, WavefrontAndMtfAreTheBenchsFigures) {
+    const nlohmann::json operands = {
+        {{"type", "rms_wavefront"}, {"field", 2}},
+        {{"type", "mtf"}, {"field", 2}, {"frequency", 40}, {"direction", "tangential"}},
+        {{"type", "mtf"}, {"frequency", 40}}};
+    const LensDesign d = lens_design_from_json(
+        design_of(kBiconvex, {{"fields", {0, 2}}, {"operands", operands}, {"image_distance", 48}}),
+        "");
+    ASSERT_EQ(d.operands.size(), 4u);  // the last mtf: one per field
+    EXPECT_EQ(operand_label(d.operands[1]), "mtf 40 T 2°");
+    EXPECT_EQ(operand_label(d.operands[3]), "mtf 40 T+S 2°");
+    EXPECT_EQ(d.operands[1].target, 1.0);
+    const std::optional<DesignEvaluation> e = DesignModel(d).evaluate({});
+    ASSERT_TRUE(e);
+
+    const Scene scene =
+        scene_from_json(nlohmann::json(d.scene), d.base_dir, {.require_camera = false});
+    const OpticalSystem system = build_optical_system(scene);
+    FirstOrderOptions f;
+    f.wavelength_nm = 587.5618;
+    f.stop = 0;
+    f.epd = 4;
+    f.fields = {0, 2};
+    const FirstOrder first = first_order(system, paraxial_trace(system, f.wavelength_nm), f);
+    FieldWavefrontOptions w;
+    w.field = 2;
+    w.wavelength_nm = 587.5618;
+    w.sampling = {32, 2};
+    w.image_z = system.last_vertex() + 48;
+    const FieldWavefront wavefront = field_wavefront(system, first, w);
+    EXPECT_NEAR(e->values[0], fit_zernike(wavefront.pupil, ZernikeOrdering::Noll, 3).residual_rms,
+                1e-12);
+    EXPECT_GT(e->values[0], 0.1);  // a singlet 3 mm out of focus
+    FieldMtfOptions m;
+    m.fields = {2};
+    m.frequencies = {40};
+    m.samples = 32;
+    m.resolve = false;
+    m.image_z = *w.image_z;
+    const FieldMtfs mtf = field_mtfs(system, first, m);
+    EXPECT_NEAR(e->values[1], mtf.fields[0].tangential[0], 1e-12);
+    EXPECT_NEAR(e->values[3], 0.5 * (mtf.fields[0].tangential[0] + mtf.fields[0].sagittal[0]),
+                1e-12);
+    EXPECT_NEAR(e->residuals[1], e->values[1] - 1.0, 1e-12);
+}
+
+TEST(MeritOperand, MtfNeedsAFrequencyAndOthersTakeNone) {
+    const auto error_of = [](const nlohmann::json& op) {
+        try {
+            lens_design_from_json(design_of(kBiconvex, {{"operands", {op}}}), "");
+        } catch (const SceneError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(error_of({{"type", "mtf"}}).find("operands[0]"), std::string::npos);
+    EXPECT_NE(error_of({{"type", "mtf"}, {"frequency", -3}}).find("must be > 0"),
+              std::string::npos);
+    EXPECT_NE(error_of({{"type", "mtf"}, {"frequency", 3}, {"direction", "diagonal"}}),
+              std::string());
+    EXPECT_NE(error_of({{"type", "rms_spot"}, {"frequency", 3}}).find("only an mtf operand"),
+              std::string::npos);
+}
+
+TEST(MeritOperand, FreeingTheImagePlaneAgainstTheWavefrontFindsTheLeastRmsFocus) {
+    // A biconvex singlet at F/5 (EPD 10): strong primary spherical aberration.
+    const std::vector<test::LensSpec> singlet = {{"B", 0.0, 5.0, 20.0, sphere(50), sphere(-50)}};
+    const LensDesign d = lens_design_from_json(
+        design_of(singlet, {{"epd", 10},
+                            {"image_distance", 48},
+                            {"variables", {{{"type", "image_distance"}}}},
+                            {"operands", {{{"type", "rms_wavefront"}, {"field", 0}}}}}),
+        "");
+    const OptimizeResult result = optimize_design(d, 50);
+    const double found = result.after.image_distance;
+
+    const Scene scene =
+        scene_from_json(nlohmann::json(d.scene), d.base_dir, {.require_camera = false});
+    const OpticalSystem system = build_optical_system(scene);
+    RayPupilOptions axial;
+    axial.wavelength_nm = 587.5618;
+    axial.aperture_radius = 5;
+    const RayWavefront reference(system, axial);
+    const double best = reference.best_focus_z() - system.last_vertex();
+    const double paraxial = reference.paraxial_focus_z() - system.last_vertex();
+    EXPECT_GT(paraxial - best, 0.2);  // the least-RMS focus well inside the paraxial one
+    EXPECT_NEAR(found, best, 0.02 * (paraxial - best));
 }
 
 }  // namespace

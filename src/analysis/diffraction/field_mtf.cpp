@@ -120,7 +120,9 @@ FieldMtfs field_mtfs(const OpticalSystem& system, const FirstOrder& first_order,
         o.nm_per_length_unit = options.nm_per_length_unit;
         PlacedOtf& p = placed[n];
         try {
-            const FieldWavefront w = resolved_field_wavefront(system, first_order, o);
+            const FieldWavefront w = options.resolve
+                                         ? resolved_field_wavefront(system, first_order, o)
+                                         : field_wavefront(system, first_order, o);
             p.samples = w.pupil.samples;
             p.max_step_waves = w.max_step_waves;
             p.otf = untilted_psf(w.pupil);

@@ -31,6 +31,9 @@ struct FieldMtfOptions {
     // Rays across the pupil (the FFT grid is twice that) to start with; raised for a wavefront
     // whose phase changes by more than a quarter wave between samples, up to 512.
     int samples = 64;
+    // false: keep `samples` whatever the phase steps (the optimiser's operands, whose finite
+    // differences a sampling that changed between two designs would break).
+    bool resolve = true;
     double image_z = 0;  // the image plane (system z)
     double nm_per_length_unit = 1e6;
 };
