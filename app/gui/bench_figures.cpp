@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "analysis/report/lens_report.h"
 #include "optics/glass.h"
@@ -29,6 +30,8 @@ BenchFigures compute_bench_figures(const OpticalSystem& system, const BenchSetti
         try {
             work();
         } catch (const lenslab::Error& e) {
+            out.errors.push_back(std::string(name) + ": " + e.what());
+        } catch (const std::invalid_argument& e) {  // the diffraction figures' "no ray passes"
             out.errors.push_back(std::string(name) + ": " + e.what());
         }
     };
@@ -59,6 +62,13 @@ BenchFigures compute_bench_figures(const OpticalSystem& system, const BenchSetti
         pupil.aperture_radius = 0.5 * report.first_order.entrance_pupil.diameter;
         pupil.sampling.samples = settings.pupil_samples;
         out.diffraction = diffraction_figures(system, pupil, {});
+        FieldMtfOptions mtf;
+        mtf.fields = fields;
+        mtf.wavelengths = report.wavelengths;
+        mtf.frequencies = out.diffraction->mtf.frequencies;
+        mtf.samples = settings.pupil_samples;
+        mtf.image_z = out.diffraction->image_z;
+        out.mtf = field_mtfs(system, report.first_order, mtf);
     });
     return out;
 }

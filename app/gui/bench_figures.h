@@ -11,6 +11,7 @@
 #include "analysis/aberrations/ray_fans.h"
 #include "analysis/aberrations/spot_diagrams.h"
 #include "analysis/diffraction/diffraction_figures.h"
+#include "analysis/diffraction/field_mtf.h"
 #include "analysis/figures/ray_diagram.h"
 #include "analysis/system/first_order.h"
 
@@ -25,7 +26,7 @@ struct BenchSettings {
     int rings = 4;                           // the spot diagrams' hexapolar rings
     int fan_points = 15;
     int field_curve_points = 7;
-    int pupil_samples = 64;  // across the pupil for the MTF
+    int pupil_samples = 64;  // across the pupil for the MTF (raised for strong aberrations)
 };
 
 // What the dock shows; a figure is absent when its computation failed (its reason in
@@ -34,7 +35,8 @@ struct BenchFigures {
     std::optional<SpotDiagrams> spots;
     std::optional<RayFans> fans;
     std::optional<FieldCurves> curves;
-    std::optional<DiffractionFigures> diffraction;
+    std::optional<DiffractionFigures> diffraction;  // on the axis: its best focus
+    std::optional<FieldMtfs> mtf;                   // every field, polychromatic, in that plane
     std::vector<std::string> errors;
 };
 

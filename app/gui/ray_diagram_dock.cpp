@@ -266,7 +266,9 @@ void RayDiagramDock::show_bench() {
     } else {
         m_curve_view->set_figure(std::nullopt);
     }
-    if (b.diffraction) {
+    if (b.mtf) {
+        m_mtf_view->set_figure(field_mtf_figure(*b.mtf, "mm", "deg"), field_figure_width(1));
+    } else if (b.diffraction) {
         m_mtf_view->set_figure(mtf_figure(*b.diffraction, "mm"), field_figure_width(1));
     } else {
         m_mtf_view->set_figure(std::nullopt);

@@ -247,6 +247,12 @@ lenslab_cli_test(NAME analyze.psf_fields_json
 lenslab_cli_test(NAME analyze.psf_fields_table
     ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 0,20 --psf
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=PSF per field, polychromatic")
+lenslab_cli_test(NAME analyze.psf_huygens
+    ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --psf --psf-huygens
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=PSF per field, polychromatic")
+lenslab_cli_test(NAME analyze.bad.psf_huygens_alone
+    ARGS analyze ${analyze_triplet} --psf-huygens
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--psf-huygens: it sets how --psf")
 lenslab_cli_test(NAME analyze.bad.psf_log_alone
     ARGS analyze ${analyze_triplet} --psf --psf-log
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--psf-log: it sets the scale of --psf-png")

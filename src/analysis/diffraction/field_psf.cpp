@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "analysis/diffraction/huygens_psf.h"
 #include "analysis/diffraction/matrix_psf.h"
 #include "analysis/diffraction/weighted_wavelengths.h"
 
@@ -134,7 +135,10 @@ std::vector<FieldPsf> field_psfs(const OpticalSystem& system, const FirstOrder& 
             const FieldWavefront& w = *waves[f * per_field + k];
             const ImageGrid grid{size, spacing, field.centre_x - w.reference.x,
                                  field.centre_y - w.reference.y};
-            const Psf one = matrix_psf(w.pupil, grid);
+            const Psf one =
+                options.method == PsfMethod::Huygens
+                    ? huygens_psf(w, {grid.size, grid.spacing, grid.centre_x, grid.centre_y})
+                    : matrix_psf(w.pupil, grid);
             field.strehl_per_wavelength.push_back(one.strehl);
             const double weight = chosen.weights[k] / (chosen.nm[k] * chosen.nm[k]);
             if (field.psf.intensity.empty()) {

@@ -20,7 +20,13 @@
 
 namespace lenslab {
 
+// How each wavelength's PSF is found on the grid: the matrix Fourier transform (Fraunhofer,
+// fast) or Huygens' wavelets from the reference sphere (huygens_psf.h: exact distances, one
+// wavelet per ray and sample, slower).
+enum class PsfMethod { Transform, Huygens };
+
 struct FieldPsfOptions {
+    PsfMethod method = PsfMethod::Transform;
     std::vector<double> fields{0.0};  // as FirstOrderOptions::fields (y)
     std::vector<double> wavelengths;  // nm; empty: the first-order data's (the primary)
     std::vector<double> weights;      // one per wavelength; empty: equal

@@ -40,7 +40,8 @@ Psf huygens_psf(const FieldWavefront& w, const HuygensGrid& grid) {
 
     tbb::parallel_for(0, grid.size, [&](int i) {
         for (int j = 0; j < grid.size; ++j) {
-            const Vec3 d{psf.coordinate(j), psf.coordinate(i), 0.0};  // P − Q
+            const Vec3 d{grid.centre_x + psf.coordinate(j), grid.centre_y + psf.coordinate(i),
+                         0.0};  // P − Q
             std::complex<double> field = 0;
             for (const Source& s : sources) {
                 // |P − S| − R without the cancellation of two nearly equal lengths.

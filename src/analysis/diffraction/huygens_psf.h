@@ -12,7 +12,8 @@
 // Normalised as the FFT PSF: the aberration-free pupil of the same amplitude peaks at 1 at
 // the reference point, so an aberrated PSF's largest sample is its Strehl ratio (when the
 // grid is fine enough to catch the peak). The grid lies in the image plane, centred on the
-// reference point (the chief ray's image point), row i along y.
+// reference point (the chief ray's image point) or `centre` from it, row i along y;
+// Psf::coordinate is about the grid's centre.
 
 #include "analysis/diffraction/diffraction.h"
 #include "analysis/diffraction/field_wavefront.h"
@@ -22,6 +23,7 @@ namespace lenslab {
 struct HuygensGrid {
     int size = 64;       // samples a side
     double spacing = 0;  // between samples, in the system's length unit; 0: λN/2, the FFT's
+    double centre_x = 0, centre_y = 0;  // the grid's middle sample, against the reference point
 };
 
 // Throws std::invalid_argument for a size below 1 or a negative spacing.

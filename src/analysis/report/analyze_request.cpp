@@ -139,6 +139,7 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         psf.wavelengths = report.wavelengths;
         psf.weights = a.wavelength_weights;
         psf.image_z = diffraction_z;
+        psf.method = a.psf_huygens ? PsfMethod::Huygens : PsfMethod::Transform;
         out.field_psf = field_psfs(system, report.first_order, psf);
     }
     if (a.mtf) {
@@ -268,6 +269,9 @@ std::optional<std::string> figure_option_error(const AnalyzeRequest& a) {
                " is odd (an even number puts the pupil's centre between samples, as the FFT "
                "grid needs)";
     }
+    if (a.psf_huygens && !a.psf)
+        return "--psf-huygens: it sets how --psf (or --psf-png) finds each field's PSF, which was "
+               "not asked for";
     if (a.psf_log && a.psf_png.empty())
         return "--psf-log: it sets the scale of --psf-png, which was not asked for";
     for (const std::string* png : {&a.psf_png, &a.opd_png}) {

@@ -70,6 +70,7 @@ struct AnalyzeRequest {
     // and the OPD map of every field at the primary wavelength (implies wavefront).
     std::string psf_png, opd_png;
     bool psf_log = false;
+    bool psf_huygens = false;  // the PSF of every field by Huygens' wavelets, not the transform
     bool field_curves = false;
     int field_curve_points = 11;
     bool focal_shift = false;

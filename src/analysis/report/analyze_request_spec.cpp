@@ -203,6 +203,10 @@ std::vector<RequestOption> declare_options() {
     all.push_back(figure_file("mtf-svg", &Request::mtf_svg,
                               "Write the MTF of every field beside the diffraction limit to this "
                               "file, SVG or (.png) PNG; implies --mtf"));
+    all.push_back(flag("psf-huygens", &Request::psf_huygens,
+                       "Find the PSF of every field by Huygens' wavelets from the reference "
+                       "sphere (exact distances, no Fraunhofer approximation; slower) instead of "
+                       "the Fourier transform"));
     all.push_back(figure_file("psf-png", &Request::psf_png,
                               "Write the polychromatic PSF of every field to this PNG file, false "
                               "colour on one scale; implies --psf"));
