@@ -142,21 +142,17 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         psf.method = a.psf_huygens ? PsfMethod::Huygens : PsfMethod::Transform;
         out.field_psf = field_psfs(system, report.first_order, psf);
     }
+    // The MTF's fields, wavelengths and plane, for --mtf and --through-focus alike.
+    FieldMtfOptions mtf;
+    mtf.fields = first.fields;
+    mtf.wavelengths = report.wavelengths;
+    mtf.weights = a.wavelength_weights;
+    mtf.image_z = diffraction_z;
     if (a.mtf) {
-        FieldMtfOptions mtf;
-        mtf.fields = first.fields;
-        mtf.wavelengths = report.wavelengths;
-        mtf.weights = a.wavelength_weights;
         mtf.frequencies = out.diffraction->mtf.frequencies;
-        mtf.image_z = diffraction_z;
         out.field_mtf = field_mtfs(system, report.first_order, mtf);
     }
     if (a.through_focus > 0) {
-        FieldMtfOptions mtf;
-        mtf.fields = first.fields;
-        mtf.wavelengths = report.wavelengths;
-        mtf.weights = a.wavelength_weights;
-        mtf.image_z = diffraction_z;
         const FirstOrder& f = report.first_order;
         const double lambda = f.wavelength_nm * 1e-6;
         const double range = a.through_focus_range > 0

@@ -44,6 +44,12 @@ RequestOption figure_file(std::string name, std::string Request::*member, std::s
     return o;
 }
 
+RequestOption needing(RequestOption o, std::string other, std::string why) {
+    o.needs = std::move(other);
+    o.needs_why = std::move(why);
+    return o;
+}
+
 RequestOption excluding(RequestOption o, std::vector<std::string> others, std::string why) {
     o.excludes = std::move(others);
     o.excludes_why = std::move(why);
@@ -117,12 +123,10 @@ std::vector<RequestOption> declare_options() {
                       "Field angles in degrees, comma-separated, for an object at infinity "
                       "(default: 0); the chief ray comes from the largest"),
         {"object-distance"}, "field angles are for an object at infinity; use field-heights"));
-    RequestOption heights =
+    all.push_back(needing(
         member_option("field-heights", RequestValue::Numbers, &Request::field_heights,
-                      "Object heights, comma-separated, for an object at --object-distance");
-    heights.needs = "object-distance";
-    heights.needs_why = "heights of an object at a finite distance";
-    all.push_back(heights);
+                      "Object heights, comma-separated, for an object at --object-distance"),
+        "object-distance", "heights of an object at a finite distance"));
     all.push_back(flag("seidel", &Request::seidel,
                        "Print the Seidel sums surface by surface (JSON always has them)"));
     all.push_back(flag(
@@ -141,18 +145,14 @@ std::vector<RequestOption> declare_options() {
              "The wavefront at each field and wavelength from real rays, against the chief ray's "
              "reference sphere in the image plane: RMS, peak-to-valley, Strehl ratio, Zernike "
              "coefficients (Noll and Fringe) and the OPD map over the pupil, in waves"));
-    RequestOption terms = whole("zernike-terms", &Request::zernike_terms, 1, 231,
+    all.push_back(needing(whole("zernike-terms", &Request::zernike_terms, 1, 231,
                                 "Noll Zernike terms fitted to each wavefront (default 37; the "
-                                "Fringe fit stops at its 37)");
-    terms.needs = "wavefront";
-    terms.needs_why = "the terms of the wavefront's fit";
-    all.push_back(terms);
-    RequestOption samples = whole("wavefront-samples", &Request::wavefront_samples, 8, 512,
-                                  "Rays across the pupil's diameter for each wavefront, even "
-                                  "(default 64)");
-    samples.needs = "wavefront";
-    samples.needs_why = "the sampling of the wavefront's pupil";
-    all.push_back(samples);
+                                "Fringe fit stops at its 37)"),
+                          "wavefront", "the terms of the wavefront's fit"));
+    all.push_back(needing(whole("wavefront-samples", &Request::wavefront_samples, 8, 512,
+                                "Rays across the pupil's diameter for each wavefront, even "
+                                "(default 64)"),
+                          "wavefront", "the sampling of the wavefront's pupil"));
     all.push_back(member_option("mtf-frequencies", RequestValue::PositiveNumbers,
                                 &Request::mtf_frequencies,
                                 "Frequencies of the MTF in cycles/mm, comma-separated (default: "
@@ -162,18 +162,15 @@ std::vector<RequestOption> declare_options() {
                                 "The MTF at this frequency (cycles/mm) through focus: every "
                                 "field, tangential and sagittal, polychromatic, at planes about "
                                 "the MTF's"));
-    RequestOption range = member_option(
-        "through-focus-range", RequestValue::PositiveNumber, &Request::through_focus_range,
-        "Half the through-focus range along the axis (default: one wave of defocus, 8 lambda N^2)");
-    range.needs = "through-focus";
-    range.needs_why = "the range of the through-focus MTF";
-    all.push_back(range);
-    RequestOption planes = whole("through-focus-points", &Request::through_focus_points, 3, 201,
-                                 "Image planes of the through-focus MTF, evenly across the range "
-                                 "(default 11)");
-    planes.needs = "through-focus";
-    planes.needs_why = "the planes of the through-focus MTF";
-    all.push_back(planes);
+    all.push_back(needing(member_option("through-focus-range", RequestValue::PositiveNumber,
+                                        &Request::through_focus_range,
+                                        "Half the through-focus range along the axis (default: one "
+                                        "wave of defocus, 8 lambda N^2)"),
+                          "through-focus", "the range of the through-focus MTF"));
+    all.push_back(needing(whole("through-focus-points", &Request::through_focus_points, 3, 201,
+                                "Image planes of the through-focus MTF, evenly across the range "
+                                "(default 11)"),
+                          "through-focus", "the planes of the through-focus MTF"));
     all.push_back(
         flag("spots", &Request::spots,
              "Spot diagrams per field and wavelength: RMS and geometric radii about the centroid, "

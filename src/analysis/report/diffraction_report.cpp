@@ -46,6 +46,22 @@ nlohmann::ordered_json field_psf_json(const FieldPsf& f) {
     return j;
 }
 
+// A field's MTF curves and sampling, or why it was not measured; its warning when unresolved.
+nlohmann::ordered_json field_mtf_json(const FieldMtf& f) {
+    nlohmann::ordered_json field;
+    field["field"] = f.field;
+    if (!f.error.empty()) {
+        field["error"] = f.error;
+        return field;
+    }
+    field["tangential"] = f.tangential;
+    field["sagittal"] = f.sagittal;
+    field["pupil_samples"] = f.samples;
+    field["max_step_waves"] = f.max_step_waves;
+    if (!f.warning.empty()) field["warning"] = f.warning;
+    return field;
+}
+
 }  // namespace
 
 nlohmann::ordered_json psf_json(const DiffractionFigures& figures,
@@ -71,20 +87,7 @@ nlohmann::ordered_json mtf_json(const DiffractionFigures& figures, const FieldMt
     j["cutoff"] = figures.psf.cutoff;
     j["diffraction_limit"] = mtf.diffraction_limit;
     nlohmann::ordered_json fields = nlohmann::ordered_json::array();
-    for (const FieldMtf& f : mtf.fields) {
-        nlohmann::ordered_json field;
-        field["field"] = f.field;
-        if (!f.error.empty()) {
-            field["error"] = f.error;
-        } else {
-            field["tangential"] = f.tangential;
-            field["sagittal"] = f.sagittal;
-            field["pupil_samples"] = f.samples;
-            field["max_step_waves"] = f.max_step_waves;
-            if (!f.warning.empty()) field["warning"] = f.warning;
-        }
-        fields.push_back(std::move(field));
-    }
+    for (const FieldMtf& f : mtf.fields) fields.push_back(field_mtf_json(f));
     j["fields"] = fields;
     j["wavelength_nm"] = figures.wavelength_nm;
     j["image_z"] = mtf.image_z;
@@ -165,18 +168,7 @@ nlohmann::ordered_json through_focus_json(const ThroughFocusMtf& t) {
     j["image_z"] = t.image_z;
     j["shifts"] = t.shifts;
     nlohmann::ordered_json fields = nlohmann::ordered_json::array();
-    for (const FieldMtf& f : t.fields) {
-        nlohmann::ordered_json field;
-        field["field"] = f.field;
-        if (!f.error.empty()) {
-            field["error"] = f.error;
-        } else {
-            field["tangential"] = f.tangential;
-            field["sagittal"] = f.sagittal;
-            if (!f.warning.empty()) field["warning"] = f.warning;
-        }
-        fields.push_back(std::move(field));
-    }
+    for (const FieldMtf& f : t.fields) fields.push_back(field_mtf_json(f));
     j["fields"] = std::move(fields);
     return j;
 }

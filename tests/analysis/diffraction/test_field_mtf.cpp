@@ -19,12 +19,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 
 #include "analysis/diffraction/field_mtf.h"
-#include "analysis/system/paraxial.h"
 #include "math/constants.h"
-#include "scene/scene_json.h"
+#include "paraboloid_bench.h"
 
 namespace lenslab {
 namespace {
@@ -32,23 +30,11 @@ namespace {
 constexpr double kMtfMirrorFocal = 500.0, kMtfMirrorDiameter = 100.0;  // F/5
 
 OpticalSystem mtf_mirror_system() {
-    std::ostringstream s;
-    s.precision(17);
-    s << R"({"objects": [{"type": "lens_group", "name": "mirror", "vertex": [0, 0, 0],
-        "axis": [0, 0, 1], "diameter": )"
-      << kMtfMirrorDiameter << R"(, "elements": [{"mirror": {"shape": "conic", "radius": )"
-      << -2 * kMtfMirrorFocal << R"(, "k": -1}, "diameter": )" << kMtfMirrorDiameter
-      << R"(, "gap": 100, "material": {"color": 0, "specular": 1}}]}]})";
-    return build_optical_system(parse_scene(s.str(), "test", "", {.require_camera = false}));
+    return test::paraboloid_mirror(kMtfMirrorFocal, kMtfMirrorDiameter);
 }
 
 FirstOrder mtf_first_order(const OpticalSystem& system, double field) {
-    FirstOrderOptions o;
-    o.wavelength_nm = kLineD;
-    o.stop = 0;
-    o.epd = kMtfMirrorDiameter;
-    o.fields = {field};
-    return first_order(system, paraxial_trace(system, kLineD), o);
+    return test::mirror_first_order(system, kMtfMirrorDiameter, field);
 }
 
 // Hopkins' defocused OTF by Simpson's rule over the overlap of the two pupils.

@@ -16,42 +16,22 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 
 #include "analysis/diffraction/field_psf.h"
 #include "analysis/diffraction/huygens_psf.h"
 #include "analysis/diffraction/matrix_psf.h"
-#include "analysis/system/paraxial.h"
 #include "math/constants.h"
-#include "scene/scene_json.h"
+#include "paraboloid_bench.h"
 
 namespace lenslab {
 namespace {
 
 constexpr double kPsfMirrorFocal = 1000.0, kPsfMirrorDiameter = 100.0;  // F/10
 
-struct PsfBench {
-    OpticalSystem system;
-    FirstOrder first;
-};
+using PsfBench = test::MirrorBench;
 
 PsfBench psf_bench(double field) {
-    std::ostringstream s;
-    s.precision(17);
-    s << R"({"objects": [{"type": "lens_group", "name": "mirror", "vertex": [0, 0, 0],
-        "axis": [0, 0, 1], "diameter": )"
-      << kPsfMirrorDiameter << R"(, "elements": [{"mirror": {"shape": "conic", "radius": )"
-      << -2 * kPsfMirrorFocal << R"(, "k": -1}, "diameter": )" << kPsfMirrorDiameter
-      << R"(, "gap": 100, "material": {"color": 0, "specular": 1}}]}]})";
-    PsfBench b{build_optical_system(parse_scene(s.str(), "test", "", {.require_camera = false})),
-               {}};
-    FirstOrderOptions o;
-    o.wavelength_nm = kLineD;
-    o.stop = 0;
-    o.epd = kPsfMirrorDiameter;
-    o.fields = {field};
-    b.first = first_order(b.system, paraxial_trace(b.system, kLineD), o);
-    return b;
+    return test::mirror_bench(kPsfMirrorFocal, kPsfMirrorDiameter, field);
 }
 
 TEST(MatrixPsf, EqualsTheFftOnItsGridAndFollowsATilt) {

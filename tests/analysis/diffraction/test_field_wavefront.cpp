@@ -13,7 +13,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "../lens_scene_builder.h"
@@ -23,6 +22,7 @@
 #include "analysis/diffraction/zernike.h"
 #include "analysis/system/paraxial.h"
 #include "math/constants.h"
+#include "paraboloid_bench.h"
 #include "scene/scene_json.h"
 
 namespace lenslab {
@@ -31,24 +31,11 @@ namespace {
 constexpr double kParaboloidFocal = 1000.0, kParaboloidDiameter = 100.0;  // F/10
 
 OpticalSystem paraboloid_mirror_system(double hole = 0) {
-    std::ostringstream s;
-    s.precision(17);
-    s << R"({"objects": [{"type": "lens_group", "name": "telescope", "vertex": [0, 0, 0],
-        "axis": [0, 0, 1], "diameter": )"
-      << kParaboloidDiameter << R"(, "elements": [{"mirror": {"shape": "conic", "radius": )"
-      << -2 * kParaboloidFocal << R"(, "k": -1}, "diameter": )" << kParaboloidDiameter
-      << R"(, "hole_diameter": )" << hole
-      << R"(, "gap": 100, "material": {"color": 0, "specular": 1}}]}]})";
-    return build_optical_system(parse_scene(s.str(), "test", "", {.require_camera = false}));
+    return test::paraboloid_mirror(kParaboloidFocal, kParaboloidDiameter, hole);
 }
 
 FirstOrder wavefront_first_order(const OpticalSystem& system, double epd, double field) {
-    FirstOrderOptions o;
-    o.wavelength_nm = kLineD;
-    o.stop = 0;
-    o.epd = epd;
-    o.fields = {field};
-    return first_order(system, paraxial_trace(system, kLineD), o);
+    return test::mirror_first_order(system, epd, field);
 }
 
 FieldWavefrontOptions wavefront_options(double field) {

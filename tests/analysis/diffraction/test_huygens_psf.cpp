@@ -10,40 +10,20 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "analysis/diffraction/huygens_psf.h"
-#include "analysis/system/paraxial.h"
-#include "scene/scene_json.h"
+#include "paraboloid_bench.h"
 
 namespace lenslab {
 namespace {
 
 constexpr double kHuygensFocal = 1000.0, kHuygensDiameter = 100.0;  // F/10
 
-struct HuygensBench {
-    OpticalSystem system;
-    FirstOrder first;
-};
+using HuygensBench = test::MirrorBench;
 
 HuygensBench huygens_bench(double field) {
-    std::ostringstream s;
-    s.precision(17);
-    s << R"({"objects": [{"type": "lens_group", "name": "mirror", "vertex": [0, 0, 0],
-        "axis": [0, 0, 1], "diameter": )"
-      << kHuygensDiameter << R"(, "elements": [{"mirror": {"shape": "conic", "radius": )"
-      << -2 * kHuygensFocal << R"(, "k": -1}, "diameter": )" << kHuygensDiameter
-      << R"(, "gap": 100, "material": {"color": 0, "specular": 1}}]}]})";
-    HuygensBench b{
-        build_optical_system(parse_scene(s.str(), "test", "", {.require_camera = false})), {}};
-    FirstOrderOptions o;
-    o.wavelength_nm = kLineD;
-    o.stop = 0;
-    o.epd = kHuygensDiameter;
-    o.fields = {field};
-    b.first = first_order(b.system, paraxial_trace(b.system, kLineD), o);
-    return b;
+    return test::mirror_bench(kHuygensFocal, kHuygensDiameter, field);
 }
 
 FieldWavefront huygens_wavefront(const HuygensBench& b, double field, double defocus_waves) {
