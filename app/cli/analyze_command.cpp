@@ -84,6 +84,7 @@ int run(const AnalyzeArgs& args) {
     if (results.spots) std::cout << spots_table(system, *results.spots);
     if (results.field_map) std::cout << field_map_table(system, *results.field_map);
     if (results.fans) std::cout << fans_table(system, *results.fans);
+    if (results.opd_fans) std::cout << fans_table(system, *results.opd_fans, FanQuantity::Opd);
     if (results.curves) std::cout << field_curves_table(system, *results.curves);
     if (results.shift) std::cout << focal_shift_table(*results.shift);
     if (!a.svg.empty()) std::cout << "\nray diagram written to " << a.svg << "\n";

@@ -70,6 +70,26 @@ BenchFigures compute_bench_figures(const OpticalSystem& system, const BenchSetti
         mtf.image_z = out.diffraction->image_z;
         out.mtf = field_mtfs(system, report.first_order, mtf);
     });
+    if (!out.diffraction) return out;
+    const double image_z = out.diffraction->image_z;
+    if (settings.psf) {
+        attempt("PSF", [&] {
+            FieldPsfOptions psf;
+            psf.fields = fields;
+            psf.wavelengths = report.wavelengths;
+            psf.image_z = image_z;
+            out.psfs = field_psfs(system, report.first_order, psf);
+        });
+    }
+    if (settings.wavefront) {
+        attempt("wavefront", [&] {
+            WavefrontFigureOptions wavefront;
+            wavefront.fields = fields;
+            wavefront.wavelengths = {options.wavelength_nm};
+            wavefront.image_z = image_z;
+            out.wavefronts = wavefront_figures(system, report.first_order, wavefront);
+        });
+    }
     return out;
 }
 

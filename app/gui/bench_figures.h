@@ -12,6 +12,8 @@
 #include "analysis/aberrations/spot_diagrams.h"
 #include "analysis/diffraction/diffraction_figures.h"
 #include "analysis/diffraction/field_mtf.h"
+#include "analysis/diffraction/field_psf.h"
+#include "analysis/diffraction/wavefront_figures.h"
 #include "analysis/figures/ray_diagram.h"
 #include "analysis/system/first_order.h"
 
@@ -27,6 +29,9 @@ struct BenchSettings {
     int fan_points = 15;
     int field_curve_points = 7;
     int pupil_samples = 64;  // across the pupil for the MTF (raised for strong aberrations)
+    // The PSF and the wavefront cost more than the rest (about 0.4 s each for a triplet): only
+    // while their tab is shown.
+    bool psf = false, wavefront = false;
 };
 
 // What the dock shows; a figure is absent when its computation failed (its reason in
@@ -37,6 +42,8 @@ struct BenchFigures {
     std::optional<FieldCurves> curves;
     std::optional<DiffractionFigures> diffraction;  // on the axis: its best focus
     std::optional<FieldMtfs> mtf;                   // every field, polychromatic, in that plane
+    std::vector<FieldPsf> psfs;  // every field, polychromatic, in that plane (settings.psf)
+    std::optional<WavefrontFigures> wavefronts;  // every field, the primary wavelength, there
     std::vector<std::string> errors;
 };
 

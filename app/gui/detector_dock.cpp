@@ -10,21 +10,10 @@
 #include "analysis/detectors/detector_files.h"
 #include "analysis/detectors/detector_image.h"
 #include "json_pointer.h"
+#include "map_image_view.h"
 #include "scene_document.h"
 
 namespace lenslab::gui {
-
-namespace {
-
-QImage to_qimage(const Image8& img) {
-    QImage out(img.width, img.height, QImage::Format_RGB888);
-    for (int y = 0; y < img.height; ++y) {
-        std::copy_n(img.rgb.data() + size_t(y) * img.width * 3, img.width * 3, out.scanLine(y));
-    }
-    return out;
-}
-
-}  // namespace
 
 DetectorDock::DetectorDock(SceneDocument* document, QWidget* parent)
     : QDockWidget(tr("Detector"), parent),

@@ -11,11 +11,13 @@
 #include <cmath>
 
 #include "analysis/figures/curve_figures.h"
+#include "analysis/figures/diffraction_maps.h"
 #include "analysis/figures/field_figures.h"
 #include "analysis/report/lens_report.h"
 #include "bench_figure_view.h"
 #include "diagram_painter.h"
 #include "json_pointer.h"
+#include "map_image_view.h"
 #include "optics/glass.h"
 #include "scene_document.h"
 #include "util/scene_error.h"
@@ -91,6 +93,8 @@ RayDiagramDock::RayDiagramDock(SceneDocument* document, QWidget* parent)
       m_fan_view(new BenchFigureView(this)),
       m_curve_view(new BenchFigureView(this)),
       m_mtf_view(new BenchFigureView(this)),
+      m_psf_view(new MapImageView(this)),
+      m_wavefront_view(new MapImageView(this)),
       m_bench_timer(new QTimer(this)) {
     setObjectName("ray_diagram_dock");
     m_message->setObjectName("ray_diagram_message");
@@ -108,6 +112,10 @@ RayDiagramDock::RayDiagramDock(SceneDocument* document, QWidget* parent)
     m_tabs->addTab(m_fan_view, tr("Fans"));
     m_tabs->addTab(m_curve_view, tr("Field curves"));
     m_tabs->addTab(m_mtf_view, tr("MTF"));
+    m_tabs->addTab(m_psf_view, tr("PSF"));
+    m_tabs->addTab(m_wavefront_view, tr("Wavefront"));
+    m_psf_view->setObjectName("bench_psf");
+    m_wavefront_view->setObjectName("bench_wavefront");
     auto* body = new QWidget(this);
     auto* layout = new QVBoxLayout(body);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -223,6 +231,8 @@ void RayDiagramDock::update_bench() {
     if (m_lens < 0) {
         error = tr("Select a lens to see its bench figures.");
     } else if (read_settings(error)) {
+        m_settings.psf = m_tabs->currentWidget() == m_psf_view;
+        m_settings.wavefront = m_tabs->currentWidget() == m_wavefront_view;
         try {
             const OpticalSystem system = build_optical_system(m_document->scene(), m_lens);
             if (m_settings.stop > int(system.surfaces.size())) {
@@ -266,6 +276,14 @@ void RayDiagramDock::show_bench() {
     } else {
         m_curve_view->set_figure(std::nullopt);
     }
+    m_psf_view->set_image(
+        b.psfs.empty() ? QImage()
+                       : to_qimage(psf_map_image(b.psfs, ColourScale::Log, "units", field_unit)));
+    m_wavefront_view->set_image(
+        b.wavefronts && !b.wavefronts->figures.empty()
+            ? to_qimage(opd_map_image(*b.wavefronts, b.wavefronts->figures.front().wavelength_nm,
+                                      field_unit))
+            : QImage());
     if (b.mtf) {
         m_mtf_view->set_figure(field_mtf_figure(*b.mtf, "mm", "deg"), field_figure_width(1));
     } else if (b.diffraction) {

@@ -42,6 +42,7 @@ private:
 };
 
 class BenchFigureView;
+class MapImageView;
 
 class RayDiagramDock : public QDockWidget {
     Q_OBJECT
@@ -65,6 +66,8 @@ public:
     // the RMS and geometric radii.
     QString spot_numbers() const { return m_spot_numbers->text(); }
     BenchFigureView* spot_view() const { return m_spot_view; }
+    MapImageView* psf_view() const { return m_psf_view; }
+    MapImageView* wavefront_view() const { return m_wavefront_view; }
     QLineEdit* fields_edit() const { return m_fields; }
     QLineEdit* wavelengths_edit() const { return m_wavelengths; }
     // Recomputes the bench figures now instead of after the pause.
@@ -98,6 +101,8 @@ private:
     BenchFigureView* m_fan_view;
     BenchFigureView* m_curve_view;
     BenchFigureView* m_mtf_view;
+    MapImageView* m_psf_view;
+    MapImageView* m_wavefront_view;
     QTimer* m_bench_timer;
     BenchSettings m_settings;
     BenchFigures m_bench;

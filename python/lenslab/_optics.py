@@ -99,9 +99,9 @@ class Analysis(JsonDocument):
 
     def figure(self, name: str) -> str:
         """The figure `name` as the SVG text `lenslab analyze` writes to a file: "ray_diagram"
-        (--svg), "spots" (--spots-svg), "fans" (--fans-svg), "field_curves" (--curves-svg),
-        "focal_shift" (--focal-shift-svg), "mtf" (--mtf-svg). All but the ray diagram need
-        their table asked for (spots=True, ...)."""
+        (--svg), "spots" (--spots-svg), "fans" (--fans-svg), "opd_fans" (--opd-fans-svg),
+        "field_curves" (--curves-svg), "focal_shift" (--focal-shift-svg), "mtf" (--mtf-svg).
+        All but the ray diagram need their table asked for (spots=True, ...)."""
         return self._run.figure(name)
 
     def __eq__(self, other: object) -> bool:
@@ -183,11 +183,12 @@ def analyze(scene_or_file: SceneSource, *, wavelength: Optional[float] = None,
             psf: bool = False, psf_huygens: bool = False, mtf: bool = False,
             wavefront: bool = False,
             zernike_terms: int = 37, wavefront_samples: int = 64,
+            wavefront_reference: Optional[str] = None,
             mtf_frequencies: Optional[Sequence[float]] = None,
             through_focus: Optional[float] = None,
             through_focus_range: Optional[float] = None, through_focus_points: int = 11,
             spots: bool = False,
-            rings: int = 6, fans: bool = False, fan_points: int = 21,
+            rings: int = 6, fans: bool = False, opd_fans: bool = False, fan_points: int = 21,
             image_distance: Optional[float] = None, field_curves: bool = False,
             field_curve_points: int = 11, focal_shift: bool = False,
             band: Optional[Sequence[float]] = None, focal_shift_points: int = 21,

@@ -225,6 +225,11 @@ lenslab_cli_test(NAME analyze.wavefront_json
          --zernike-terms 11 --wavefront-samples 16
     CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=wavefront,first_order"
            "-DSTDOUT_CONTAINS=\"zernike_fringe\": [")
+lenslab_cli_test(NAME analyze.wavefront_centroid
+    ARGS analyze ${analyze_triplet} --json --stop 3 --epd 12.5 --fields 20 --wavefront
+         --wavefront-reference centroid --wavefront-samples 16
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=wavefront"
+           "-DSTDOUT_CONTAINS=\"reference\": \"centroid\"")
 lenslab_cli_test(NAME analyze.wavefront_table
     ARGS analyze ${analyze_triplet} --stop 3 --epd 12.5 --fields 0,20 --wavefront
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=Z11 spherical")
@@ -253,6 +258,13 @@ lenslab_cli_test(NAME analyze.psf_huygens
 lenslab_cli_test(NAME analyze.bad.psf_huygens_alone
     ARGS analyze ${analyze_triplet} --psf-huygens
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--psf-huygens: it sets how --psf")
+set(analyze_opd_fans_svg ${LENSLAB_CLI_OUT}/triplet_opd_fans.svg)
+lenslab_cli_test(NAME analyze.opd_fans_json
+    ARGS analyze ${analyze_triplet} --json --stop 3 --epd 12.5 --fields 0,20 --opd-fans-svg
+         ${analyze_opd_fans_svg} --fan-points 7
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=opd_fans,opd_fans_svg"
+           -DOUTPUT=${analyze_opd_fans_svg} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS=<svg"
+           "-DSTDOUT_CONTAINS=\"unit\": \"waves\"")
 lenslab_cli_test(NAME analyze.bad.psf_log_alone
     ARGS analyze ${analyze_triplet} --psf --psf-log
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--psf-log: it sets the scale of --psf-png")
@@ -307,7 +319,7 @@ lenslab_cli_test(NAME analyze.bad.weights_negative
            "-DSTDERR_LINE=lenslab: error: --wavelength-weights: -1 is negative (a weight is 0 or more)")
 lenslab_cli_test(NAME analyze.bad.image_distance_alone
     ARGS analyze ${analyze_triplet} --image-distance 40
-    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--image-distance: it places the image plane of --spots, --fans, --field-map, --field-curves, --wavefront and --mtf")
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--image-distance: it places the image plane of --spots, --fans, --opd-fans, --field-map, --field-curves, --wavefront and --mtf")
 lenslab_cli_test(NAME analyze.bad.field_map_on_the_axis
     ARGS analyze ${analyze_triplet} --field-map 3
     CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--field-map: the fields reach no further than the axis")

@@ -1,6 +1,6 @@
 // The bench dock's figures for the selected lens: the spot tab shows the library's spot
 // diagrams (the numbers of `lenslab analyze --spots` for the same settings), and the other
-// tabs draw their figures.
+// tabs draw their figures; the PSF and wavefront tabs compute theirs only while shown.
 
 #include <QComboBox>
 #include <QLineEdit>
@@ -11,6 +11,7 @@
 #include "analysis/report/lens_report.h"
 #include "bench_figure_view.h"
 #include "main_window.h"
+#include "map_image_view.h"
 #include "optics/glass.h"
 #include "ray_diagram_dock.h"
 #include "scene_document.h"
@@ -92,6 +93,29 @@ private slots:
         const QString screenshot = qEnvironmentVariable("LENSLAB_BENCH_SCREENSHOT");
         if (!screenshot.isEmpty()) QVERIFY(dock->grab().save(screenshot));
         QVERIFY(dock->bench().fans && dock->bench().curves && dock->bench().diffraction);
+    }
+
+    // The PSF and wavefront tabs: computed only while shown (they cost the most), drawn as the
+    // command line's --psf-png and --opd-png draw them.
+    void the_psf_and_wavefront_tabs_draw_only_when_shown() {
+        MainWindow w;
+        QVERIFY(w.open_file(LENSLAB_SOURCE_DIR "/scenes/achromat_doublet.json"));
+        w.tree()->select_pointer("/objects/1");
+        auto* dock = w.ray_diagram();
+        dock->tabs()->setCurrentWidget(dock->psf_view());
+        dock->update_bench();
+        QCOMPARE(dock->bench().psfs.size(), std::size_t(2));  // fields 0 and 5
+        QVERIFY(dock->bench().psfs[0].error.empty());
+        QVERIFY(dock->bench().psfs[0].psf.strehl > 0);
+        QVERIFY(!dock->bench().wavefronts.has_value());
+        QVERIFY(!dock->psf_view()->image().isNull());
+        dock->tabs()->setCurrentWidget(dock->wavefront_view());
+        dock->update_bench();
+        QVERIFY(dock->bench().wavefronts.has_value());
+        QCOMPARE(dock->bench().wavefronts->figures.size(), std::size_t(2));
+        QVERIFY(dock->bench().psfs.empty());
+        QVERIFY(!dock->wavefront_view()->image().isNull());
+        QVERIFY(dock->psf_view()->image().isNull());
     }
 
     void settings_and_edits_recompute_the_figures() {

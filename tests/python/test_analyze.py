@@ -51,6 +51,11 @@ def test_wavefronts_equal_the_cli_and_come_as_arrays():
     assert inside.size == block["fields"][2]["rays_passed"]
     assert inside.std() == pytest.approx(block["fields"][2]["rms_waves"], rel=1e-9)
     assert lenslab.analyze(SCENE).opd_maps == {}
+    fans = lenslab.analyze(SCENE, fields=[0, 2.5], opd_fans=True, fan_points=5)
+    assert fans == cli_json("analyze", SCENE, "--json", "--fields", "0,2.5", "--opd-fans",
+                            "--fan-points", "5")
+    assert fans["opd_fans"]["unit"] == "waves"
+    assert fans.figure("opd_fans").startswith("<svg")
 
 
 def test_psfs_at_every_field_equal_the_cli_and_come_as_arrays():
@@ -216,8 +221,8 @@ def test_a_figure_not_asked_for_raises():
     (dict(field_heights=[0, 1]), r"^field_heights needs object_distance"),
     (dict(fields="0,1"), r"^fields: must be a sequence of numbers"),
     (dict(image_distance=90), r"^image_distance: it places the image plane of spots, fans, "
-                              r"field_map, field_curves, wavefront and mtf, none of which was "
-                              r"asked for$"),
+                              r"opd_fans, field_map, field_curves, wavefront and mtf, none of "
+                              r"which was asked for$"),
     (dict(mtf_frequencies=[10]), r"^mtf_frequencies requires mtf \(or mtf_svg\)$"),
     (dict(zernike_terms=11), r"^zernike_terms needs wavefront \(the terms of the wavefront's fit\)$"),
     (dict(through_focus_points=5), r"^through_focus_points needs through_focus "),

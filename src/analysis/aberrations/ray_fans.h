@@ -47,4 +47,8 @@ struct RayFans {
 RayFans ray_fans(const OpticalSystem& system, const FirstOrder& first_order,
                  const RayFanOptions& options);
 
+// What a RayFans holds: transverse ray errors (ray_fans) in lengths, or OPD (opd_fans.h) in
+// waves; the report and the figure say which.
+enum class FanQuantity { TransverseError, Opd };
+
 }  // namespace lenslab

@@ -10,7 +10,6 @@
 #include <stdexcept>
 
 #include "analysis/diffraction/weighted_wavelengths.h"
-#include "math/cholesky.h"
 #include "math/constants.h"
 
 namespace lenslab {
@@ -52,25 +51,8 @@ std::complex<double> UntiltedPsf::otf_along_y(double fy) const {
 }
 
 UntiltedPsf untilted_psf(const PupilFunction& pupil) {
-    // Least-squares plane W ≈ a + b x + c y over the samples that passed.
-    std::vector<double> gram(9, 0.0), rhs(3, 0.0);
-    for (int i = 0; i < pupil.size; ++i)
-        for (int j = 0; j < pupil.size; ++j) {
-            const size_t cell = pupil.index(i, j);
-            if (!(pupil.amplitude[cell] > 0)) continue;
-            const double basis[3] = {1.0, pupil.coordinate(j), pupil.coordinate(i)};
-            for (int a = 0; a < 3; ++a) {
-                rhs[a] += basis[a] * pupil.opd_waves[cell];
-                for (int b = 0; b < 3; ++b) gram[a * 3 + b] += basis[a] * basis[b];
-            }
-        }
-    const std::optional<std::vector<double>> plane = solve_cholesky(gram, rhs);
-    if (!plane) throw std::invalid_argument("too few rays pass to measure the wavefront's tilt");
     PupilFunction flat = pupil;
-    for (int i = 0; i < flat.size; ++i)
-        for (int j = 0; j < flat.size; ++j)
-            flat.opd_waves[flat.index(i, j)] -=
-                (*plane)[1] * flat.coordinate(j) + (*plane)[2] * flat.coordinate(i);
+    const WavefrontTilt tilt = remove_tilt(flat);
     const double scale = 2 * pupil.wavelength * pupil.f_number;
     UntiltedPsf out;
     out.psf = compute_psf(flat);
@@ -81,8 +63,8 @@ UntiltedPsf untilted_psf(const PupilFunction& pupil) {
             out.spread_x[j] += out.psf.at(i, j);
             out.spread_y[i] += out.psf.at(i, j);
         }
-    out.shift_x = scale * (*plane)[1];
-    out.shift_y = scale * (*plane)[2];
+    out.shift_x = scale * tilt.x;
+    out.shift_y = scale * tilt.y;
     return out;
 }
 

@@ -14,12 +14,6 @@ namespace lenslab {
 
 namespace {
 
-// A ray as it leaves the last surface, with the optical path it has run so far.
-struct PathRay {
-    Vec3 point, direction;
-    double path = 0;
-};
-
 // The optical path from the object's wavefront to the ray's last point: segment k runs in the
 // medium in front of surface k. For an object at infinity the rays start on a plane across
 // the axis, not on the wavefront: each starts dot(start, d) further along the beam.
@@ -50,41 +44,48 @@ std::optional<double> distance_to_sphere(const PathRay& ray, const Vec3& centre,
     return d1 <= d2 ? t1 : t2;
 }
 
+// RMS (piston removed), peak-to-valley and the largest step between neighbours of the
+// wavefront's passing samples.
+void measure_spread(FieldWavefront& w) {
+    const PupilFunction& p = w.pupil;
+    double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
+    w.max_step_waves = 0;
+    for (int i = 0; i < p.size; ++i)
+        for (int j = 0; j < p.size; ++j) {
+            const size_t cell = p.index(i, j);
+            if (p.amplitude[cell] == 0) continue;
+            lowest = std::min(lowest, p.opd_waves[cell]);
+            highest = std::max(highest, p.opd_waves[cell]);
+            for (const size_t next :
+                 {p.index(std::min(i + 1, p.size - 1), j), p.index(i, std::min(j + 1, p.size - 1))})
+                if (next != cell && p.amplitude[next] > 0)
+                    w.max_step_waves =
+                        std::max(w.max_step_waves, std::abs(p.opd_waves[next] - p.opd_waves[cell]));
+        }
+    w.rms_waves = wavefront_rms(p);
+    w.pv_waves = highest - lowest;
+}
+
 }  // namespace
 
-FieldWavefront field_wavefront(const OpticalSystem& system, const FirstOrder& first_order,
-                               const FieldWavefrontOptions& options) {
+FieldOpd::FieldOpd(const OpticalSystem& system, const FirstOrder& first_order,
+                   const FieldWavefrontOptions& options)
+    : system_(system),
+      aimer_(system, first_order, options.field, options.wavelength_nm, options.field_x),
+      nm_(options.wavelength_nm),
+      wavelength_(options.wavelength_nm / options.nm_per_length_unit),
+      collimated_(!first_order.object_distance) {
     if (system.has_grin()) {
         throw SceneError("objects",
                          "wavefront figures (OPD, Zernike, PSF, MTF) are not computed through "
                          "gradient-index lenses: the optical path along their curved rays is "
                          "not measured yet");
     }
-    const double nm = options.wavelength_nm;
-    const double wavelength = nm / options.nm_per_length_unit;
-    FieldWavefront w;
-    w.field = options.field;
-    w.field_x = options.field_x;
-    w.wavelength_nm = nm;
-    w.image_z = options.image_z.value_or(system.last_vertex() + first_order.image_position);
-    w.pupil = make_pupil(options.sampling, wavelength, first_order.working_f_number,
-                         [](double, double) { return 0.0; });
-
-    const bool collimated = !first_order.object_distance;
-    const RayAimer aimer(system, first_order, options.field, nm, options.field_x);
-    const auto path_of = [&](const RealRay& ray) -> std::optional<PathRay> {
-        if (ray.fate != RayFate::Passed || !(ray.direction.z * system.image_travel() > 0))
-            return std::nullopt;
-        return path_ray(system, ray, nm, collimated);
-    };
-    const auto passed = [&](double px, double py) -> std::optional<PathRay> {
-        const std::optional<RealRay> ray = aimer.trace(px, py);
-        return ray ? path_of(*ray) : std::nullopt;
-    };
+    image_z_ = options.image_z.value_or(system.last_vertex() + first_order.image_position);
     // The chief ray is a reference, not light: it may cross a central obstruction.
-    const std::optional<Ray> chief_start = aimer.aim(0, 0);
+    const std::optional<Ray> chief_start = aimer_.aim(0, 0);
     const std::optional<PathRay> chief =
-        chief_start ? path_of(trace_real_ray(system, *chief_start, nm, Rims::Ignore))
+        chief_start ? path_of(trace_real_ray(system, *chief_start, nm_, Rims::Ignore))
                     : std::nullopt;
     if (!chief) throw std::invalid_argument("the chief ray does not pass the system");
 
@@ -93,61 +94,85 @@ FieldWavefront field_wavefront(const OpticalSystem& system, const FirstOrder& fi
     const auto along_chief_to = [&](double z) {
         return chief->point + chief->direction * ((z - chief->point.z) / chief->direction.z);
     };
-    w.reference = along_chief_to(w.image_z);
+    reference_ = along_chief_to(image_z_);
     const double pupil_position = first_order.exit_pupil.position;
-    const Vec3 pupil_point = std::isfinite(pupil_position)
-                                 ? along_chief_to(system.last_vertex() + pupil_position)
-                                 : chief->point;
-    w.reference_radius = length(w.reference - pupil_point);
-    if (!(w.reference_radius > 0))
+    pupil_point_ = std::isfinite(pupil_position)
+                       ? along_chief_to(system.last_vertex() + pupil_position)
+                       : chief->point;
+    reference_radius_ = length(reference_ - pupil_point_);
+    if (!(reference_radius_ > 0))
         throw std::invalid_argument("the exit pupil lies in the image plane: no reference sphere");
-    const double image_index = std::abs(system.n_after(system.surfaces.size() - 1, nm));
-    w.image_index = image_index;
-    // The optical path to the sphere, and where the ray meets it.
-    const auto path_to_sphere = [&](const PathRay& ray) -> std::optional<std::pair<double, Vec3>> {
-        const std::optional<double> t =
-            distance_to_sphere(ray, w.reference, w.reference_radius, pupil_point);
-        if (!t) return std::nullopt;
-        return std::pair{ray.path + image_index * *t, ray.point + ray.direction * *t};
-    };
+    image_index_ = std::abs(system.n_after(system.surfaces.size() - 1, nm_));
     const auto chief_at_sphere = path_to_sphere(*chief);
     if (!chief_at_sphere) throw std::invalid_argument("the chief ray misses the reference sphere");
-    const double chief_path = chief_at_sphere->first;
+    chief_path_ = chief_at_sphere->first;
+}
+
+std::optional<PathRay> FieldOpd::path_of(const RealRay& ray) const {
+    if (ray.fate != RayFate::Passed || !(ray.direction.z * system_.image_travel() > 0))
+        return std::nullopt;
+    return path_ray(system_, ray, nm_, collimated_);
+}
+
+std::optional<std::pair<double, Vec3>> FieldOpd::path_to_sphere(const PathRay& ray) const {
+    const std::optional<double> t =
+        distance_to_sphere(ray, reference_, reference_radius_, pupil_point_);
+    if (!t) return std::nullopt;
+    return std::pair{ray.path + image_index_ * *t, ray.point + ray.direction * *t};
+}
+
+std::optional<double> FieldOpd::opd_waves(double px, double py, Vec3* at_sphere) const {
+    const std::optional<RealRay> ray = aimer_.trace(px, py);
+    const std::optional<PathRay> path = ray ? path_of(*ray) : std::nullopt;
+    const auto at = path ? path_to_sphere(*path) : std::nullopt;
+    if (!at) return std::nullopt;
+    if (at_sphere) *at_sphere = at->second;
+    return (at->first - chief_path_) / wavelength_;
+}
+
+FieldWavefront field_wavefront(const OpticalSystem& system, const FirstOrder& first_order,
+                               const FieldWavefrontOptions& options) {
+    const FieldOpd opd(system, first_order, options);
+    FieldWavefront w;
+    w.field = options.field;
+    w.field_x = options.field_x;
+    w.wavelength_nm = options.wavelength_nm;
+    w.image_z = opd.image_z();
+    w.reference = opd.reference();
+    w.reference_radius = opd.reference_radius();
+    w.image_index = opd.image_index();
+    w.pupil = make_pupil(options.sampling, opd.wavelength(), first_order.working_f_number,
+                         [](double, double) { return 0.0; });
 
     PupilFunction& p = w.pupil;
-    double lowest = std::numeric_limits<double>::infinity(), highest = -lowest;
     for (int i = 0; i < p.size; ++i)
         for (int j = 0; j < p.size; ++j) {
             const size_t cell = p.index(i, j);
             if (p.amplitude[cell] == 0) continue;
             p.amplitude[cell] = 0;
-            const std::optional<PathRay> ray = passed(p.coordinate(j), p.coordinate(i));
-            const auto at_sphere = ray ? path_to_sphere(*ray) : std::nullopt;
-            if (!at_sphere) {
+            Vec3 at_sphere;
+            const std::optional<double> waves =
+                opd.opd_waves(p.coordinate(j), p.coordinate(i), &at_sphere);
+            if (!waves) {
                 ++w.lost;
                 continue;
             }
-            const double opd = (at_sphere->first - chief_path) / wavelength;
-            w.sphere_points.push_back({cell, at_sphere->second});
+            w.sphere_points.push_back({cell, at_sphere});
             p.amplitude[cell] = 1;
-            p.opd_waves[cell] = opd;
-            lowest = std::min(lowest, opd);
-            highest = std::max(highest, opd);
+            p.opd_waves[cell] = *waves;
             ++w.passed;
         }
     if (w.passed == 0) throw std::invalid_argument("no ray of the beam passes the system");
-    for (int i = 0; i + 1 < p.size; ++i)
-        for (int j = 0; j + 1 < p.size; ++j) {
-            const size_t cell = p.index(i, j);
-            if (p.amplitude[cell] == 0) continue;
-            for (const size_t next : {p.index(i, j + 1), p.index(i + 1, j)})
-                if (p.amplitude[next] > 0)
-                    w.max_step_waves =
-                        std::max(w.max_step_waves, std::abs(p.opd_waves[next] - p.opd_waves[cell]));
-        }
-    w.rms_waves = wavefront_rms(p);
-    w.pv_waves = highest - lowest;
+    measure_spread(w);
     return w;
+}
+
+void refer_to_centroid(FieldWavefront& w) {
+    const WavefrontTilt tilt = remove_tilt(w.pupil);
+    const double scale = 2 * w.pupil.wavelength * w.pupil.f_number;
+    w.reference.x += scale * tilt.x;
+    w.reference.y += scale * tilt.y;
+    measure_spread(w);
 }
 
 int samples_for_step(const FieldWavefront& wavefront, double step, int most) {

@@ -19,11 +19,14 @@
 // pupil follows for a system obeying the sine condition.
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "analysis/diffraction/pupil_function.h"
 #include "analysis/system/first_order.h"
 #include "analysis/system/optical_system.h"
+#include "analysis/system/ray_aiming.h"
+#include "analysis/system/real_ray.h"
 #include "math/vec3.h"
 
 namespace lenslab {
@@ -59,6 +62,11 @@ struct FieldWavefront {
     double max_step_waves = 0;
 };
 
+// Refers the wavefront to the sphere centred on its PSF's centroid rather than the chief ray's
+// image point, to first order: its tilt (remove_tilt) taken out and the reference moved by
+// 2 t λN; the RMS, peak-to-valley and steps measured again (Zemax's "reference to centroid").
+void refer_to_centroid(FieldWavefront& wavefront);
+
 // The samples across the pupil that bring a wavefront's steps to `step` waves (scaling
 // linearly from one measured at `wavefront`'s sampling), even, at least the current ones and
 // at most `most`.
@@ -71,6 +79,43 @@ inline constexpr double kResolvedStepWaves = 0.25, kAliasingStepWaves = 0.5;
 inline constexpr int kMostResolvedSamples = 512;
 FieldWavefront resolved_field_wavefront(const OpticalSystem& system, const FirstOrder& first_order,
                                         FieldWavefrontOptions options);
+
+// A ray as it leaves the last surface, with the optical path it has run so far.
+struct PathRay {
+    Vec3 point, direction;
+    double path = 0;
+};
+
+// The OPD of any ray of one field and wavelength against the chief ray's reference sphere (as
+// above): what the wavefront's grid and the OPD fans (opd_fans.h) sample. Keeps references
+// to the system and first-order data, which must outlive it. Throws as field_wavefront.
+class FieldOpd {
+public:
+    FieldOpd(const OpticalSystem& system, const FirstOrder& first_order,
+             const FieldWavefrontOptions& options);
+
+    // The OPD in waves of the ray through stop point (px, py), and where it meets the sphere;
+    // none when it is vignetted, totally reflected or cannot be aimed.
+    std::optional<double> opd_waves(double px, double py, Vec3* at_sphere = nullptr) const;
+
+    double image_z() const { return image_z_; }
+    const Vec3& reference() const { return reference_; }
+    double reference_radius() const { return reference_radius_; }
+    double image_index() const { return image_index_; }
+    double wavelength() const { return wavelength_; }  // in the system's length unit
+
+private:
+    std::optional<PathRay> path_of(const RealRay& ray) const;
+    std::optional<std::pair<double, Vec3>> path_to_sphere(const PathRay& ray) const;
+
+    const OpticalSystem& system_;
+    RayAimer aimer_;
+    double nm_ = 0, wavelength_ = 0;
+    bool collimated_ = true;
+    double image_z_ = 0;
+    Vec3 reference_, pupil_point_;
+    double reference_radius_ = 0, image_index_ = 1, chief_path_ = 0;
+};
 
 // Throws SceneError through a gradient-index lens (its curved rays' optical path is not
 // measured) and std::invalid_argument when the chief ray does not pass or misses the

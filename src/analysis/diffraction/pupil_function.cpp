@@ -1,7 +1,10 @@
 #include "analysis/diffraction/pupil_function.h"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
+
+#include "math/cholesky.h"
 
 namespace lenslab {
 
@@ -35,6 +38,28 @@ PupilFunction make_pupil(const PupilSampling& sampling, double wavelength, doubl
         }
     }
     return p;
+}
+
+WavefrontTilt remove_tilt(PupilFunction& pupil) {
+    std::vector<double> gram(9, 0.0), rhs(3, 0.0);
+    for (int i = 0; i < pupil.size; ++i)
+        for (int j = 0; j < pupil.size; ++j) {
+            const size_t cell = pupil.index(i, j);
+            if (!(pupil.amplitude[cell] > 0)) continue;
+            const double basis[3] = {1.0, pupil.coordinate(j), pupil.coordinate(i)};
+            for (int a = 0; a < 3; ++a) {
+                rhs[a] += basis[a] * pupil.opd_waves[cell];
+                for (int b = 0; b < 3; ++b) gram[a * 3 + b] += basis[a] * basis[b];
+            }
+        }
+    const std::optional<std::vector<double>> plane = solve_cholesky(gram, rhs);
+    if (!plane) throw std::invalid_argument("too few rays pass to measure the wavefront's tilt");
+    const WavefrontTilt tilt{(*plane)[1], (*plane)[2]};
+    for (int i = 0; i < pupil.size; ++i)
+        for (int j = 0; j < pupil.size; ++j)
+            pupil.opd_waves[pupil.index(i, j)] -=
+                tilt.x * pupil.coordinate(j) + tilt.y * pupil.coordinate(i);
+    return tilt;
 }
 
 double wavefront_rms(const PupilFunction& pupil) {

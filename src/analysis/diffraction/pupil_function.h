@@ -51,6 +51,15 @@ PupilFunction make_pupil(const PupilSampling& sampling, double wavelength, doubl
                          const std::function<double(double x, double y)>& opd_waves,
                          double apodisation = 0);
 
+// The least-squares plane W ≈ a + t_x·x + t_y·y through the passing samples (each alike),
+// taken out of the wavefront: the tilt that moves the PSF to (2 t_x λN, 2 t_y λN)
+// (diffraction.h). Returns (t_x, t_y) in waves per unit of normalised pupil; throws
+// std::invalid_argument when fewer than three samples pass.
+struct WavefrontTilt {
+    double x = 0, y = 0;
+};
+WavefrontTilt remove_tilt(PupilFunction& pupil);
+
 // RMS of the wavefront over the pupil about its mean (piston removed), weighted by intensity
 // (amplitude²), in waves: the σ of the Maréchal approximation S ≈ exp(-(2πσ)²).
 double wavefront_rms(const PupilFunction& pupil);

@@ -12,12 +12,14 @@ namespace {
 constexpr int kFringeTermCount = 37;
 
 WavefrontFigure measure_wavefront(const OpticalSystem& system, const FirstOrder& first_order,
-                                  const FieldWavefrontOptions& options, int terms) {
+                                  const FieldWavefrontOptions& options, int terms,
+                                  bool centroid_reference) {
     WavefrontFigure f;
     f.field = options.field;
     f.wavelength_nm = options.wavelength_nm;
     try {
         f.wavefront = field_wavefront(system, first_order, options);
+        if (centroid_reference) refer_to_centroid(*f.wavefront);
         const PupilFunction& pupil = f.wavefront->pupil;
         f.noll = fit_zernike(pupil, ZernikeOrdering::Noll, terms);
         f.fringe = fit_zernike(pupil, ZernikeOrdering::Fringe, std::min(terms, kFringeTermCount));
@@ -40,6 +42,7 @@ WavefrontFigures wavefront_figures(const OpticalSystem& system, const FirstOrder
     WavefrontFigures out;
     out.image_z = options.image_z.value_or(system.last_vertex() + first_order.image_position);
     out.samples = options.samples;
+    out.centroid_reference = options.centroid_reference;
     out.zernike_terms = options.zernike_terms;
     const std::vector<double> wavelengths = options.wavelengths.empty()
                                                 ? std::vector<double>{first_order.wavelength_nm}
@@ -52,7 +55,8 @@ WavefrontFigures wavefront_figures(const OpticalSystem& system, const FirstOrder
             o.sampling = {options.samples, 2};
             o.image_z = out.image_z;
             o.nm_per_length_unit = options.nm_per_length_unit;
-            out.figures.push_back(measure_wavefront(system, first_order, o, options.zernike_terms));
+            out.figures.push_back(measure_wavefront(system, first_order, o, options.zernike_terms,
+                                                    options.centroid_reference));
         }
     return out;
 }

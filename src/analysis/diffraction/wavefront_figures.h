@@ -20,6 +20,7 @@ struct WavefrontFigureOptions {
     int samples = 64;                 // across the pupil (even)
     int zernike_terms = 37;           // Noll terms; Fringe stops at its 37
     std::optional<double> image_z;    // default: the paraxial image of the first-order data
+    bool centroid_reference = false;  // refer_to_centroid: the sphere on the PSF's centroid
     double nm_per_length_unit = 1e6;
 };
 
@@ -35,6 +36,7 @@ struct WavefrontFigure {
 
 struct WavefrontFigures {
     double image_z = 0;
+    bool centroid_reference = false;
     int samples = 0, zernike_terms = 0;
     std::vector<WavefrontFigure> figures;  // each field, each wavelength within it
 };

@@ -21,8 +21,8 @@ BenchFigure field_figure(RayDiagram diagram, int panels) {
 }  // namespace
 
 const std::vector<std::string>& bench_figure_names() {
-    static const std::vector<std::string> names{"ray_diagram",  "spots",       "fans",
-                                                "field_curves", "focal_shift", "mtf"};
+    static const std::vector<std::string> names{"ray_diagram", "spots", "fans",    "field_curves",
+                                                "focal_shift", "mtf",   "opd_fans"};
     return names;
 }
 
@@ -44,6 +44,10 @@ BenchFigure bench_figure(const AnalyzeResults& r, const AnalyzeRequest& request,
     if (name == "fans") {
         if (!r.fans) not_asked(name, "fans");
         return field_figure(ray_fan_figure(*r.fans, unit, field_unit), 2);
+    }
+    if (name == "opd_fans") {
+        if (!r.opd_fans) not_asked(name, "opd-fans");
+        return field_figure(ray_fan_figure(*r.opd_fans, unit, field_unit, FanQuantity::Opd), 2);
     }
     if (name == "field_curves") {
         if (!r.curves) not_asked(name, "field-curves");

@@ -92,7 +92,8 @@ RayDiagram spot_diagram_figure(const SpotDiagrams& spots, const std::string& uni
 }
 
 RayDiagram ray_fan_figure(const RayFans& fans, const std::string& unit,
-                          const std::string& field_unit) {
+                          const std::string& field_unit, FanQuantity quantity) {
+    const bool opd = quantity == FanQuantity::Opd;
     RayDiagram d;
     std::vector<double> errors;
     for (const FieldFans& f : fans.fields) {
@@ -120,10 +121,11 @@ RayDiagram ray_fan_figure(const RayFans& fans, const std::string& unit,
             p.y_min = -scale;
             p.y_max = scale;
             p.title = field_label(f.field, field_unit) +
-                      (col == 0 ? ": tangential e_y (py)" : ": sagittal e_x (px)");
+                      (opd ? (col == 0 ? ": tangential W (py)" : ": sagittal W (px)")
+                           : (col == 0 ? ": tangential e_y (py)" : ": sagittal e_x (px)"));
             p.x_min_label = col == 0 ? "py = -1" : "px = -1";
             p.x_max_label = col == 0 ? "py = 1" : "px = 1";
-            p.y_max_label = "+" + plot_length(scale, unit);
+            p.y_max_label = "+" + (opd ? plot_text("%.4g waves", scale) : plot_length(scale, unit));
             for (const RayFan& fan : f.fans) {
                 // A vignetted ray (NaN) breaks the curve.
                 p.curves.push_back({fans.pupil, col == 0 ? fan.tangential : fan.sagittal,
@@ -137,9 +139,11 @@ RayDiagram ray_fan_figure(const RayFans& fans, const std::string& unit,
         for (const RayFan& fan : fans.fields[0].fans) wavelengths.push_back(fan.wavelength_nm);
     }
     d.legend = wavelength_legend(wavelengths);
-    d.title = "Ray fans, image plane " + plot_text("%.4f", fans.image_z) + " (system z)";
+    d.title = std::string(opd ? "OPD fans" : "Ray fans") + ", image plane " +
+              plot_text("%.4f", fans.image_z) + " (system z)";
     // Short: the legend shares its line. The full scale is in every panel's corner.
-    d.subtitle = "error from the chief ray at " + plot_text("%.2f nm", fans.primary_nm);
+    d.subtitle = opd ? std::string("waves, against each wavelength's chief ray")
+                     : "error from the chief ray at " + plot_text("%.2f nm", fans.primary_nm);
     d.scale_bar = 0;
     return d;
 }

@@ -21,7 +21,8 @@ namespace lenslab {
 RayDiagram spot_diagram_figure(const SpotDiagrams& spots, const std::string& unit,
                                const std::string& field_unit);
 RayDiagram ray_fan_figure(const RayFans& fans, const std::string& unit,
-                          const std::string& field_unit);
+                          const std::string& field_unit,
+                          FanQuantity quantity = FanQuantity::TransverseError);
 
 // The SVG picture's width in pixels for a figure of `panels` panels side by side.
 double field_figure_width(int panels);

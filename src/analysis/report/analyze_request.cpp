@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/diffraction/opd_fans.h"
 #include "analysis/figures/analyze_figures.h"
 #include "analysis/figures/diffraction_maps.h"
 #include "analysis/figures/ray_diagram_image.h"
@@ -124,6 +125,14 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         if (a.image_distance) fan.image_z = system.last_vertex() + *a.image_distance;
         out.fans = ray_fans(system, report.first_order, fan);
     }
+    if (a.opd_fans) {
+        RayFanOptions fan;
+        fan.fields = first.fields;
+        fan.wavelengths = report.wavelengths;
+        fan.points = a.fan_points;
+        if (a.image_distance) fan.image_z = system.last_vertex() + *a.image_distance;
+        out.opd_fans = opd_fans(system, report.first_order, fan);
+    }
     if (a.psf || a.mtf || a.through_focus > 0) {
         RayPupilOptions pupil;
         pupil.wavelength_nm = options.wavelength_nm;
@@ -170,6 +179,7 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         wavefront.wavelengths = report.wavelengths;
         wavefront.samples = a.wavefront_samples;
         wavefront.zernike_terms = a.zernike_terms;
+        wavefront.centroid_reference = a.wavefront_reference == "centroid";
         if (a.image_distance) wavefront.image_z = system.last_vertex() + *a.image_distance;
         try {
             out.wavefronts = wavefront_figures(system, report.first_order, wavefront);
@@ -214,7 +224,8 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
                                                                 {&a.fans_svg, "fans"},
                                                                 {&a.curves_svg, "field_curves"},
                                                                 {&a.focal_shift_svg, "focal_shift"},
-                                                                {&a.mtf_svg, "mtf"}};
+                                                                {&a.mtf_svg, "mtf"},
+                                                                {&a.opd_fans_svg, "opd_fans"}};
     for (const auto& [file, name] : files) {
         if (!file->empty()) write_bench_figure(*file, bench_figure(out, a, name));
     }
@@ -245,6 +256,7 @@ bool bench_applies(const Scene& scene, const LensBench& bench, const std::string
 AnalyzeRequest with_implied_tables(AnalyzeRequest a) {
     a.spots = a.spots || !a.spots_svg.empty();
     a.fans = a.fans || !a.fans_svg.empty();
+    a.opd_fans = a.opd_fans || !a.opd_fans_svg.empty();
     a.field_curves = a.field_curves || !a.curves_svg.empty();
     a.focal_shift = a.focal_shift || !a.focal_shift_svg.empty();
     a.mtf = a.mtf || !a.mtf_svg.empty();
@@ -255,10 +267,10 @@ AnalyzeRequest with_implied_tables(AnalyzeRequest a) {
 
 std::optional<std::string> figure_option_error(const AnalyzeRequest& a) {
     const std::vector<double>& weights = a.wavelength_weights;
-    if (a.image_distance && !a.spots && !a.fans && !a.field_curves && a.field_map == 0 &&
-        !a.wavefront && !a.mtf) {
-        return "--image-distance: it places the image plane of --spots, --fans, --field-map, "
-               "--field-curves, --wavefront and --mtf, none of which was asked for";
+    if (a.image_distance && !a.spots && !a.fans && !a.opd_fans && !a.field_curves &&
+        a.field_map == 0 && !a.wavefront && !a.mtf) {
+        return "--image-distance: it places the image plane of --spots, --fans, --opd-fans, "
+               "--field-map, --field-curves, --wavefront and --mtf, none of which was asked for";
     }
     if (a.wavefront_samples % 2 != 0) {
         return "--wavefront-samples: " + std::to_string(a.wavefront_samples) +
@@ -355,8 +367,8 @@ void for_each_bench_key(const AnalyzeResults& results, const AnalyzeRequest& req
     const FigureFile figures[] = {
         {a.spots_svg, "spots_svg"},   {a.fans_svg, "fans_svg"},
         {a.curves_svg, "curves_svg"}, {a.focal_shift_svg, "focal_shift_svg"},
-        {a.mtf_svg, "mtf_svg"},       {a.psf_png, "psf_png"},
-        {a.opd_png, "opd_png"}};
+        {a.mtf_svg, "mtf_svg"},       {a.opd_fans_svg, "opd_fans_svg"},
+        {a.psf_png, "psf_png"},       {a.opd_png, "opd_png"}};
     for (const FigureFile& figure : figures) {
         if (!figure.file.empty()) put(figure.key, [&] { return BenchJson(figure.file); });
     }
@@ -367,6 +379,10 @@ void for_each_bench_key(const AnalyzeResults& results, const AnalyzeRequest& req
     if (results.wavefronts) put("wavefront", [&] { return wavefront_json(*results.wavefronts); });
     if (results.spots) put("spots", [&] { return spots_json(results.system, *results.spots); });
     if (results.fans) put("fans", [&] { return fans_json(results.system, *results.fans); });
+    if (results.opd_fans) {
+        put("opd_fans",
+            [&] { return fans_json(results.system, *results.opd_fans, FanQuantity::Opd); });
+    }
     if (results.curves) {
         put("field_curves", [&] { return field_curves_json(results.system, *results.curves); });
     }

@@ -53,6 +53,7 @@ struct AnalyzeRequest {
     bool wavefront = false;
     int zernike_terms = 37;
     int wavefront_samples = 64;
+    std::string wavefront_reference;      // "chief" (or empty) or "centroid": the sphere's centre
     std::vector<double> mtf_frequencies;  // empty: ten up to the cutoff
     // The MTF at this frequency through focus (cycles/mm; 0: none), over ± the half range (0:
     // one wave of defocus, 8 λN²) about the MTF's plane, at this many planes.
@@ -63,9 +64,10 @@ struct AnalyzeRequest {
     std::optional<double> image_distance;    // image plane from the last vertex
     std::vector<double> wavelength_weights;  // one per wavelength; empty: equal
     bool fans = false;
+    bool opd_fans = false;  // the OPD along the same lines of the stop (opd_fans.h)
     int fan_points = 21;
     // Figures; each implies its table.
-    std::string spots_svg, fans_svg, curves_svg, focal_shift_svg, mtf_svg;
+    std::string spots_svg, fans_svg, curves_svg, focal_shift_svg, mtf_svg, opd_fans_svg;
     // False-colour PNG figures: the PSF of every field (implies psf; psf_log: its log scale)
     // and the OPD map of every field at the primary wavelength (implies wavefront).
     std::string psf_png, opd_png;
@@ -105,6 +107,7 @@ struct AnalyzeResults {
     LensReport report;
     std::optional<SpotDiagrams> spots;
     std::optional<RayFans> fans;
+    std::optional<RayFans> opd_fans;  // in waves
     std::optional<DiffractionFigures> diffraction;
     std::optional<FieldMtfs> field_mtf;  // --mtf: every field, polychromatic
     std::optional<ThroughFocusMtf> through_focus;

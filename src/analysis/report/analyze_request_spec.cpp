@@ -153,6 +153,16 @@ std::vector<RequestOption> declare_options() {
                                 "Rays across the pupil's diameter for each wavefront, even "
                                 "(default 64)"),
                           "wavefront", "the sampling of the wavefront's pupil"));
+    RequestOption reference =
+        declared("wavefront-reference", RequestValue::Choice,
+                 "Where the wavefront's reference sphere is centred: chief (the chief ray's image "
+                 "point, the default) or centroid (the PSF's centroid: the tilt taken out)");
+    reference.choices = {"chief", "centroid"};
+    reference.set = [](Request& r, const json& j) { r.wavefront_reference = j.get<std::string>(); };
+    reference.get = [](const Request& r) {
+        return r.wavefront_reference.empty() ? json() : json(r.wavefront_reference);
+    };
+    all.push_back(needing(reference, "wavefront", "the reference of the wavefront"));
     all.push_back(member_option("mtf-frequencies", RequestValue::PositiveNumbers,
                                 &Request::mtf_frequencies,
                                 "Frequencies of the MTF in cycles/mm, comma-separated (default: "
@@ -185,6 +195,13 @@ std::vector<RequestOption> declare_options() {
         "fans", &Request::fans,
         "Transverse ray fans per field and wavelength, tangential (e_y against py) and sagittal "
         "(e_x against px), from the primary wavelength's chief ray"));
+    all.push_back(flag("opd-fans", &Request::opd_fans,
+                       "OPD fans per field and wavelength: the wavefront's optical path "
+                       "difference along py (tangential) and px (sagittal), in waves against "
+                       "each wavelength's chief ray and reference sphere"));
+    all.push_back(figure_file("opd-fans-svg", &Request::opd_fans_svg,
+                              "Write the OPD fans to this file, SVG or (.png) PNG; implies "
+                              "--opd-fans"));
     all.push_back(
         figure_file("spots-svg", &Request::spots_svg,
                     "Write the spot diagrams to this file, SVG or (.png) PNG; implies --spots"));
@@ -214,9 +231,10 @@ std::vector<RequestOption> declare_options() {
     all.push_back(figure_file("opd-png", &Request::opd_png,
                               "Write the OPD map of every field at the primary wavelength to this "
                               "PNG file; implies --wavefront"));
-    all.push_back(whole("fan-points", &Request::fan_points, 2, 10001,
-                        "Points along each ray fan, evenly from -1 to 1 across the stop "
-                        "(default 21)"));
+    all.push_back(
+        whole("fan-points", &Request::fan_points, 2, 10001,
+              "Points along each ray fan and OPD fan, evenly from -1 to 1 across the stop "
+              "(default 21)"));
     RequestOption image_distance = declared(
         "image-distance", RequestValue::Number,
         "The image plane of the spots, fans, field curves, wavefronts and MTF, from the last "

@@ -13,11 +13,16 @@ using Json = nlohmann::ordered_json;
 
 }  // namespace
 
-Json fans_json(const OpticalSystem& system, const RayFans& r) {
+Json fans_json(const OpticalSystem& system, const RayFans& r, FanQuantity quantity) {
     Json j;
     j["image_z"] = r.image_z;
     j["image_position"] = r.image_z - system.last_vertex();
-    j["reference"] = "chief ray of the primary wavelength";
+    if (quantity == FanQuantity::Opd) {
+        j["reference"] = "each wavelength's chief ray and reference sphere";
+        j["unit"] = "waves";
+    } else {
+        j["reference"] = "chief ray of the primary wavelength";
+    }
     j["reference_wavelength_nm"] = r.primary_nm;
     j["pupil"] = r.pupil;
     Json fields = Json::array();
@@ -39,17 +44,25 @@ Json fans_json(const OpticalSystem& system, const RayFans& r) {
     return j;
 }
 
-std::string fans_table(const OpticalSystem& system, const RayFans& r) {
+std::string fans_table(const OpticalSystem& system, const RayFans& r, FanQuantity quantity) {
+    const bool opd = quantity == FanQuantity::Opd;
     char line[200];
-    std::snprintf(line, sizeof line,
-                  "\nRay fans in the plane %.4f from the last vertex: transverse error from the "
-                  "chief ray at %.2f nm; tangential e_y(py), sagittal e_x(px)\n",
-                  r.image_z - system.last_vertex(), r.primary_nm);
+    if (opd) {
+        std::snprintf(line, sizeof line,
+                      "\nOPD fans in the plane %.4f from the last vertex, waves against each "
+                      "wavelength's chief ray; tangential W(py), sagittal W(px)\n",
+                      r.image_z - system.last_vertex());
+    } else {
+        std::snprintf(line, sizeof line,
+                      "\nRay fans in the plane %.4f from the last vertex: transverse error from "
+                      "the chief ray at %.2f nm; tangential e_y(py), sagittal e_x(px)\n",
+                      r.image_z - system.last_vertex(), r.primary_nm);
+    }
     std::string out = line;
     for (const FieldFans& f : r.fields) {
         std::snprintf(line, sizeof line, "  field %.4g\n  %7s", f.field, "pupil");
         out += line;
-        for (const char* kind : {"e_y", "e_x"}) {
+        for (const char* kind : {opd ? "W_t" : "e_y", opd ? "W_s" : "e_x"}) {
             for (const RayFan& fan : f.fans) {
                 std::snprintf(line, sizeof line, " %4s %6.1f", kind, fan.wavelength_nm);
                 out += line;

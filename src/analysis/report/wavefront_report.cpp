@@ -64,7 +64,7 @@ double noll_term(const WavefrontFigure& f, size_t j) {
 
 ordered_json wavefront_json(const WavefrontFigures& figures) {
     ordered_json j;
-    j["reference"] = "chief ray";
+    j["reference"] = figures.centroid_reference ? "centroid" : "chief ray";
     j["image_z"] = figures.image_z;
     j["samples"] = figures.samples;
     j["zernike_terms"] = figures.zernike_terms;
@@ -80,9 +80,9 @@ ordered_json wavefront_json(const WavefrontFigures& figures) {
 
 std::string wavefront_table(const WavefrontFigures& figures) {
     std::string out = wavefront_line(
-        "\nWavefront against the chief ray's reference sphere, image plane at z = %.6g (waves; "
+        "\nWavefront against the reference sphere on the %s, image plane at z = %.6g (waves; "
         "Zernike: Noll)\n",
-        figures.image_z);
+        figures.centroid_reference ? "PSF's centroid" : "chief ray's image point", figures.image_z);
     out +=
         "   field  wavelength      RMS       PV   Strehl   Z4 defocus  Z5 astig  Z6 astig   Z7 "
         "coma   Z8 coma  Z11 spherical\n";

@@ -6,6 +6,8 @@
 //   Astronomical Optics, 2nd ed., section 6.2: sagittal angular coma θ / (16 N²)), which is the
 //   Seidel S_II / 2 of lenslab's seidel.h; in the Noll Zernike fit (zernike.h) it is the Z7
 //   coefficient W131 / (3√8);
+// - referred to the centroid (refer_to_centroid) the tilt goes, coma stays and the centre
+//   moves by 2tλN;
 // - on the axis of a plano-convex lens it is the axial wavefront of pupil_from_rays.h;
 // - a central hole in the mirror takes its share of the pupil, (30/100)² (an obscured
 //   pupil: the chief ray through the hole still sets the reference).
@@ -75,6 +77,30 @@ TEST(FieldWavefront, AParaboloidsComaOffTheAxisIsTheClosedForm) {
     // Coma is odd in y and even in x: no x-coma (Z8), and the sagittal terms vanish.
     EXPECT_LT(std::abs(fit.coefficients[7]), 1e-6);
     EXPECT_LT(std::abs(fit.coefficients[1]), 1e-6);
+}
+
+TEST(FieldWavefront, ReferredToTheCentroidItLosesItsTiltAndKeepsItsComa) {
+    const OpticalSystem system = paraboloid_mirror_system();
+    const double degrees = 0.5;
+    const FirstOrder f = wavefront_first_order(system, kParaboloidDiameter, degrees);
+    const FieldWavefront chief = field_wavefront(system, f, wavefront_options(degrees));
+    FieldWavefront centroid = chief;
+    refer_to_centroid(centroid);
+    const ZernikeFit before = fit_zernike(chief.pupil, ZernikeOrdering::Noll, 11);
+    const ZernikeFit after = fit_zernike(centroid.pupil, ZernikeOrdering::Noll, 11);
+    // The tilt is the least-squares plane: after it, the plane fit (Noll Z1-Z3) has no tilt.
+    const ZernikeFit tilt_before = fit_zernike(chief.pupil, ZernikeOrdering::Noll, 3);
+    const ZernikeFit tilt_after = fit_zernike(centroid.pupil, ZernikeOrdering::Noll, 3);
+    EXPECT_GT(std::abs(tilt_before.coefficients[2]), 1e-3);  // the chief ray leaves tilt
+    EXPECT_NEAR(tilt_after.coefficients[1], 0, 1e-12);
+    EXPECT_NEAR(tilt_after.coefficients[2], 0, 1e-12);
+    EXPECT_NEAR(after.coefficients[6], before.coefficients[6], 1e-9);  // coma is kept
+    EXPECT_LT(centroid.rms_waves, chief.rms_waves);
+    // The Noll Z3 = 2ρ sin θ tilt moves the centre by 2 · (2 Z3) λN along y.
+    const double lambda_n = kLineD * 1e-6 * f.working_f_number;
+    EXPECT_NEAR(centroid.reference.y - chief.reference.y,
+                4 * tilt_before.coefficients[2] * lambda_n, 1e-9 * lambda_n);
+    EXPECT_NEAR(centroid.reference.x, chief.reference.x, 1e-15);
 }
 
 TEST(FieldWavefront, OnTheAxisItIsTheAxialWavefront) {
