@@ -117,22 +117,14 @@ AnalyzeResults measure(const Scene& scene, const AnalyzeRequest& a, std::optiona
         if (a.image_distance) spot.image_z = system.last_vertex() + *a.image_distance;
         out.spots = spot_diagrams(system, report.first_order, spot);
     }
-    if (a.fans) {
-        RayFanOptions fan;
-        fan.fields = first.fields;
-        fan.wavelengths = report.wavelengths;
-        fan.points = a.fan_points;
-        if (a.image_distance) fan.image_z = system.last_vertex() + *a.image_distance;
-        out.fans = ray_fans(system, report.first_order, fan);
-    }
-    if (a.opd_fans) {
-        RayFanOptions fan;
-        fan.fields = first.fields;
-        fan.wavelengths = report.wavelengths;
-        fan.points = a.fan_points;
-        if (a.image_distance) fan.image_z = system.last_vertex() + *a.image_distance;
-        out.opd_fans = opd_fans(system, report.first_order, fan);
-    }
+    // The ray fans and the OPD fans sample the same lines of the stop.
+    RayFanOptions fan;
+    fan.fields = first.fields;
+    fan.wavelengths = report.wavelengths;
+    fan.points = a.fan_points;
+    if (a.image_distance) fan.image_z = system.last_vertex() + *a.image_distance;
+    if (a.fans) out.fans = ray_fans(system, report.first_order, fan);
+    if (a.opd_fans) out.opd_fans = opd_fans(system, report.first_order, fan);
     if (a.psf || a.mtf || a.through_focus > 0) {
         RayPupilOptions pupil;
         pupil.wavelength_nm = options.wavelength_nm;
