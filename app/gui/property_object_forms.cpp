@@ -152,6 +152,8 @@ void PropertyPanel::build_lens_group() {
         // A cemented element's back is the next element's front.
         if (value_at(e + "back")) build_surface(tr("Back surface"), e + "back");
         if (i + 1 < elements->size()) add_param(element.param("gap"), e);
+        for (const char* key : {"decenter_x", "decenter_y", "tilt_x", "tilt_y", "tilt_z"})
+            add_param(element.param(key), e);
         build_material_ref(tr("Material"), e + "material");
     }
 }

@@ -42,6 +42,8 @@ struct SceneObject {
                         // makes several objects)
     std::string group;  // the lens group's name, for its elements
     Vec3 group_axis;    // the axis light enters the lens group along (zero: not in a group)
+    Vec3 group_vertex;  // the group's `vertex`: with group_axis, the axis as designed, which
+                        // decentred and tilted elements leave
     // Set when the object is a detector (triangles, discs and rectangles only).
     std::optional<DetectorSettings> detector;
     // Whether photons are aimed at it (photon_targets.h); unset: when its material is

@@ -43,10 +43,9 @@ void trace_in_step(const OpticalSystem& system, const IndexRatios& ratios, StepR
                    size_t count) {
     for (size_t i = 0; i < system.surfaces.size(); ++i) {
         const SystemSurface& s = system.surfaces[i];
-        const double o = s.orientation;
         for (StepRay* r = rays; r != rays + count; ++r) {
             if (!r->on) continue;
-            const Ray local{{r->p.x, r->p.y, o * (r->p.z - s.z)}, {r->d.x, r->d.y, o * r->d.z}};
+            const Ray local = s.to_local(r->p, r->d);
             double t = 0;
             if (!s.shape->intersect(local, s.span, 0.0, INFINITY, t)) {
                 r->on = false;
@@ -57,8 +56,7 @@ void trace_in_step(const OpticalSystem& system, const IndexRatios& ratios, StepR
                 r->on = false;
                 continue;
             }
-            const Vec3 nl = s.shape->normal(local.at(t));
-            Vec3 n{nl.x, nl.y, o * nl.z};
+            Vec3 n = s.to_system(s.shape->normal(local.at(t)));
             if (dot(n, r->d) > 0) n = -n;  // facing the arriving ray
             if (s.mirror) {
                 r->d = reflect(r->d, n);

@@ -52,6 +52,7 @@ nlohmann::ordered_json first_order_json(const OpticalSystem& system, const First
     }
     return {
         {"wavelength_nm", f.wavelength_nm},
+        {"basis", f.parabasal ? "parabasal" : "paraxial"},
         {"efl", f.efl},
         {"bfl", f.bfl},
         {"f_number", f.f_number},
@@ -118,8 +119,11 @@ std::string first_order_table(const OpticalSystem& system, const FirstOrder& f) 
         std::snprintf(line, sizeof line, "  %-34s %14s", what, number_text(v).c_str());
         out << line << (note.empty() ? "" : "  " + note) << "\n";
     };
-    out << "First order (paraxial), stop at surface " << f.stop + 1 << " ("
-        << system.surfaces[f.stop].label << "); real rays aimed "
+    out << (f.parabasal ? "First order (parabasal: EFL, F-numbers, NA, image; the pupils and the "
+                          "rays below as designed, on the axis)"
+                        : "First order (paraxial)")
+        << ", stop at surface " << f.stop + 1 << " (" << system.surfaces[f.stop].label
+        << "); real rays aimed "
         << (f.ray_aiming == RayAiming::Paraxial ? "at the paraxial entrance pupil"
                                                 : "through the stop")
         << "\n";

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "analysis/report/first_order_report.h"
+#include "analysis/system/parabasal.h"
 #include "math/constants.h"
 #include "util/scene_error.h"
 
@@ -100,9 +101,24 @@ LensReport analyze_lens_system(const OpticalSystem& system, const LensReportOpti
         first.epd = 2.0 * r.aperture_radius;
     }
     r.first_order = first_order(system, r.paraxial, first);
+    if (r.first_order.parabasal) {
+        // A decentred or tilted system: every focal figure about its central chief ray.
+        r.paraxial = *r.first_order.parabasal;
+        const auto about_chief = [&](double nm) {
+            const auto m = parabasal_matrices(system, r.paraxial.reference, nm);
+            if (!m)
+                throw SceneError("objects",
+                                 "the central chief ray does not pass at " + wavelength_text(nm));
+            return parabasal_paraxial(system, *m, nm);
+        };
+        r.paraxial_F = about_chief(r.short_nm);
+        r.paraxial_C = about_chief(r.long_nm);
+        r.chromatic_shift_FC = r.paraxial_F.bfl - r.paraxial_C.bfl;
+    }
     // Seidel sums count surfaces alone; a gradient index adds transfer terms (Sands 1970)
-    // that are not modelled, so a GRIN system gets none.
-    if (options.parts.seidel && !system.has_grin())
+    // that are not modelled, so a GRIN system gets none; nor does a system that is not
+    // rotationally symmetric (its aberrations are not the five of a coaxial one).
+    if (options.parts.seidel && !system.has_grin() && system.coaxial())
         r.seidel = seidel_sums(system, r.first_order, r.short_nm, r.long_nm);
     if (options.parts.real_chief) r.real_chief = trace_real_chief_ray(system, r.first_order);
     // The axial beam fills the entrance pupil, as far as the lenses let it through.
@@ -118,7 +134,7 @@ LensReport analyze_lens_system(const OpticalSystem& system, const LensReportOpti
         r.spot_best = spot_at(rays, best_focus_z(rays, r.paraxial.z_rear_focus));
         r.best_focus = r.spot_best.z - system.last_vertex();
     }
-    if (options.parts.lsa) {
+    if (options.parts.lsa && system.coaxial()) {
         r.lsa = longitudinal_spherical_aberration(system, r.paraxial, r.aperture_radius,
                                                   options.lsa_samples);
     }
@@ -198,6 +214,14 @@ const ReportKey kReportKeys[] = {
      }},
     {"efl", kNeedsNoPart,
      [](const OpticalSystem&, const LensReport& r) { return Json(r.paraxial.efl); }},
+    {"first_order_basis", kNeedsNoPart,
+     [](const OpticalSystem&, const LensReport& r) {
+         return Json(r.paraxial.parabasal ? "parabasal" : "paraxial");
+     }},
+    {"efl_x", kNeedsNoPart,
+     [](const OpticalSystem&, const LensReport& r) {
+         return r.paraxial.parabasal ? Json(r.paraxial.efl_x) : Json(r.paraxial.efl);
+     }},
     {"bfl", kNeedsNoPart,
      [](const OpticalSystem&, const LensReport& r) { return Json(r.paraxial.bfl); }},
     {"ffl", kNeedsNoPart,
@@ -256,7 +280,7 @@ const ReportKey kReportKeys[] = {
     {"first_order", kNeedsRealChief, &first_order_with_chief_json},
     {"seidel", kNeedsSeidel,
      [](const OpticalSystem& system, const LensReport& r) {
-         return system.has_grin() ? Json() : seidel_json(system, r.seidel);
+         return system.has_grin() || !system.coaxial() ? Json() : seidel_json(system, r.seidel);
      }},
 };
 
@@ -303,7 +327,10 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
                                        [](const SystemSurface& s) { return s.mirror; });
     out << system.elements.size() << (system.elements.size() == 1 ? " lens, " : " lenses, ");
     if (mirrors > 0) out << mirrors << (mirrors == 1 ? " mirror, " : " mirrors, ");
-    out << system.surfaces.size() << " surfaces on one axis; lengths in the scene's unit "
+    out << system.surfaces.size()
+        << (system.coaxial() ? " surfaces on one axis"
+                             : " surfaces about one axis, some decentred or tilted")
+        << "; lengths in the scene's unit "
         << "(mm for lens prescriptions), light travelling along +z from the first vertex"
         << (system.folded() ? " and turning back at each mirror (indices signed by the way "
                               "light travels)"
@@ -327,7 +354,14 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
         std::snprintf(line, sizeof line, "  %-34s %12s", what.c_str(), length(v).c_str());
         out << line << (note.empty() ? "" : "  " + note) << "\n";
     };
-    out << "\nParaxial, at " << wavelength_text(r.wavelength_nm) << "\n";
+    if (p.parabasal) {
+        out << "\nParabasal (about the real chief ray of the central field: decentred or tilted "
+               "surfaces), at "
+            << wavelength_text(r.wavelength_nm) << "\n";
+        row("EFL in the x-z section", p.efl_x);
+    } else {
+        out << "\nParaxial, at " << wavelength_text(r.wavelength_nm) << "\n";
+    }
     row("effective focal length EFL", p.efl);
     row("back focal length BFL", p.bfl, "last vertex to the rear focal point F'");
     row("front focal length FFL", p.ffl, "front focal point F to the first vertex");
@@ -383,6 +417,9 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
     if (seidel && system.has_grin()) {
         out << "\nSeidel sums: not computed for gradient-index lenses (their transfer terms are "
                "not modelled)\n";
+    } else if (seidel && !system.coaxial()) {
+        out << "\nSeidel sums: not computed for a decentred or tilted system (not rotationally "
+               "symmetric); see its spots, fans and --field-map\n";
     } else if (seidel) {
         out << "\n" << seidel_table(system, r.seidel);
     }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "analysis/system/parabasal.h"
+#include "analysis/system/ray_aiming.h"
 #include "util/scene_error.h"
 
 namespace lenslab {
@@ -30,6 +32,23 @@ double largest_field(const std::vector<double>& fields) {
         if (std::abs(f) > std::abs(field)) field = f;
     }
     return field;
+}
+
+// The parabasal matrices about the chief ray of the central field, aimed through the centre
+// of the real stop from the pupils as designed (f: stop, entrance pupil position, object).
+ParabasalMatrices central_parabasal(const OpticalSystem& system, FirstOrder f) {
+    f.ray_aiming = RayAiming::Real;
+    const double field = 0.0;
+    const std::optional<Ray> chief = RayAimer(system, f, field, f.wavelength_nm).aim(0, 0);
+    std::optional<ParabasalMatrices> m;
+    if (chief) m = parabasal_matrices(system, *chief, f.wavelength_nm);
+    if (!m) {
+        throw SceneError("objects",
+                         "the chief ray of the central field does not pass the decentred or "
+                         "tilted system (or a ray beside it does not), so it has no parabasal "
+                         "first-order data");
+    }
+    return *m;
 }
 
 }  // namespace
@@ -66,10 +85,18 @@ FirstOrder first_order(const OpticalSystem& system, const ParaxialResult& paraxi
     }
     f.entrance_pupil.position = b / a;
     const double z_ep = f.entrance_pupil.position;
+    f.object_distance = o.object_distance;
+    std::optional<ParabasalMatrices> parabasal;
+    if (!system.coaxial()) {
+        parabasal = central_parabasal(system, f);
+        f.parabasal = parabasal_paraxial(system, *parabasal, nm);
+        f.efl = f.parabasal->efl;
+        f.bfl = f.parabasal->bfl;
+    }
     if (o.epd > 0) {
         f.entrance_pupil.diameter = o.epd;
     } else if (o.f_number > 0) {
-        f.entrance_pupil.diameter = std::abs(paraxial.efl) / o.f_number;
+        f.entrance_pupil.diameter = std::abs(f.efl) / o.f_number;
     } else {
         f.entrance_pupil.diameter = 2.0 * system.surfaces[o.stop].semi_diameter / std::abs(a);
     }
@@ -79,7 +106,6 @@ FirstOrder first_order(const OpticalSystem& system, const ParaxialResult& paraxi
     // The unit chief ray: slope 1 in object space, through the centre of the entrance pupil.
     const ParaxialRay unit_chief = combine_rays(-z_ep, height_ray, 1.0, slope_ray);
     f.field = largest_field(o.fields);
-    f.object_distance = o.object_distance;
     if (o.object_distance) {
         const double d = *o.object_distance;
         if (!(std::abs(d + z_ep) > 1e-12 * scale)) {
@@ -104,12 +130,30 @@ FirstOrder first_order(const OpticalSystem& system, const ParaxialResult& paraxi
                                 ? 2.0 * std::abs(f.marginal.height_after(
                                             system, system.last_vertex() + f.exit_pupil.position))
                                 : INFINITY;
-    f.f_number = std::abs(paraxial.efl) / f.entrance_pupil.diameter;
+    f.f_number = std::abs(f.efl) / f.entrance_pupil.diameter;
     f.na = std::abs(m.n_after * m.u_after);
     f.working_f_number = 1.0 / (2.0 * f.na);
     const double n0 = system.n_before(0, nm);
     f.lagrange_invariant = n0 * (f.chief.u0 * f.marginal.y0 - f.marginal.u0 * f.chief.y0);
     if (o.object_distance) f.magnification = n0 * f.marginal.u0 / (m.n_after * m.u_after);
+    if (parabasal) {
+        // Read off the y-z section about the central chief ray: a ray of height h (or, from
+        // a near object, of slope u) leaves at y' = A h (B n u), n' u' = C h (D n u).
+        const ParabasalMatrices::Section& s = parabasal->y;
+        Vec3 image = f.parabasal->rear_focus;
+        if (o.object_distance) {
+            image = parabasal->exit_point +
+                    parabasal->exit_direction * (-parabasal->n_image * s.b / s.d);
+            f.na = std::abs(s.d * n0 * f.marginal.u0);
+            f.magnification = (s.a * s.d - s.b * s.c) / s.d;
+            f.image_height = *f.magnification * f.field;
+        } else {
+            f.na = std::abs(s.c * r_ep);
+            f.image_height = f.efl * std::tan(f.field * M_PI / 180.0);
+        }
+        f.image_position = image.z - system.last_vertex();
+        f.working_f_number = 1.0 / (2.0 * f.na);
+    }
     return f;
 }
 

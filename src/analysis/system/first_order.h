@@ -69,6 +69,11 @@ struct FirstOrder {
     double field = 0;                        // the field point the chief ray comes from
     RayAiming ray_aiming = RayAiming::Real;  // as in FirstOrderOptions
     ParaxialRay marginal, chief;
+    // A decentred or tilted system (OpticalSystem::coaxial() false): the parabasal figures
+    // about the chief ray of the central field (parabasal.h), which set efl, bfl, the image
+    // position and height, the F-numbers, NA and magnification; the pupils, the marginal and
+    // chief paraxial rays and the Lagrange invariant stay those of the system as designed.
+    std::optional<ParaxialResult> parabasal;
 };
 
 // Throws SceneError when the entrance pupil lies at infinity, or the object sits at the

@@ -52,6 +52,11 @@ bool OpticalSystem::folded() const {
                        [](const SystemSurface& s) { return s.mirror; });
 }
 
+bool OpticalSystem::coaxial() const {
+    return std::none_of(surfaces.begin(), surfaces.end(),
+                        [](const SystemSurface& s) { return s.pose.has_value(); });
+}
+
 double OpticalSystem::max_semi_diameter() const {
     double a = 0.0;
     for (const SystemElement& e : elements) a = std::max(a, e.semi_diameter);

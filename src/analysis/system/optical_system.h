@@ -31,6 +31,13 @@
 
 namespace lenslab {
 
+// Where a decentred or tilted surface stands (a lens group element's decentre and tilts): its
+// vertex and its own axes (w: the axis its sag is measured along) in system coordinates.
+struct SurfacePose {
+    Vec3 vertex;
+    Frame axes;
+};
+
 // One refracting interface or mirror of the system.
 struct SystemSurface {
     std::shared_ptr<const LensSurface> shape;
@@ -51,13 +58,29 @@ struct SystemSurface {
     int element_before = -1;  // index into OpticalSystem::elements; -1: the outside (air)
     int element_after = -1;
     std::string label;  // "objects[0].front", "objects[0].back = objects[1].front"
+    // A surface off the axis or tilted from it; none: its vertex at (0, 0, z), its own z along
+    // `orientation`. `z`, `curvature` and `a4` then describe it as designed, on the axis: the
+    // system's paraxial figures (nominal pupils) use them, real rays the pose.
+    std::optional<SurfacePose> pose;
 
     bool cemented() const { return element_before >= 0 && element_after >= 0; }
     // The direction of travel behind the surface.
     double travel_after() const { return mirror ? -travel : travel; }
+    // A ray (system coordinates) in the surface's own frame: vertex at the origin, the sag
+    // along +z.
+    Ray to_local(const Vec3& p, const Vec3& d) const {
+        if (pose) return {pose->axes.to_local(p - pose->vertex), pose->axes.to_local(d)};
+        return {{p.x, p.y, orientation * (p.z - z)}, {d.x, d.y, orientation * d.z}};
+    }
+    // A direction of the surface's own frame (its normal) in system coordinates.
+    Vec3 to_system(const Vec3& local) const {
+        if (pose) return pose->axes.to_world(local);
+        return {local.x, local.y, orientation * local.z};
+    }
     // Whether a point of the surface (system coordinates) lies in a mirror's central hole.
     bool in_hole(const Vec3& p) const {
-        return p.x * p.x + p.y * p.y < hole_semi_diameter * hole_semi_diameter;
+        const Vec3 q = pose ? pose->axes.to_local(p - pose->vertex) : p;
+        return q.x * q.x + q.y * q.y < hole_semi_diameter * hole_semi_diameter;
     }
     // Axial position of the surface at distance r from the axis.
     double z_at(double r) const { return z + orientation * shape->sag(r); }
@@ -93,6 +116,9 @@ struct OpticalSystem {
     // The direction of travel in image space (+1: towards +z).
     double image_travel() const { return surfaces.back().travel_after(); }
     bool folded() const;  // holds a mirror
+    // No surface decentred or tilted: rotationally symmetric about the axis (paraxial
+    // figures and Seidel sums hold); else first-order figures are parabasal.
+    bool coaxial() const;
     // The system's size: its length along the axis or its largest diameter.
     double scale() const;
     // Refractive index of the medium in front of / behind surface i at a wavelength (in air),

@@ -6,6 +6,7 @@
 // section 6.2).
 
 #include "analysis/system/optical_system.h"
+#include "math/ray.h"
 
 namespace lenslab {
 
@@ -25,6 +26,13 @@ struct ParaxialResult {
     double z_rear_principal = 0, z_front_principal = 0;
     // The system matrix from the first vertex to the last, on (y, n u).
     double a = 1, b = 0, c = 0, d = 1;
+    // Parabasal figures of a decentred or tilted system (parabasal.h): about the chief ray of
+    // the central field, the matrix the y-z section's from its start to where it leaves the
+    // last surface; efl_x the x-z section's focal length and rear_focus the focal point.
+    bool parabasal = false;
+    double efl_x = 0;
+    Vec3 rear_focus;
+    Ray reference;  // the chief ray it is about, in object space
 };
 
 // Throws SceneError when the system has no focus (zero power: afocal).

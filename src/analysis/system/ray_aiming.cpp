@@ -50,7 +50,10 @@ std::optional<Vec3> RayAimer::at_stop(double a, double b) const {
     const RealRay ray = trace_real_ray(system_, candidate(a, b), ratios_, Rims::Ignore);
     const int stop = first_order_.stop;
     if (ray.fate != RayFate::Passed && ray.surface <= stop) return std::nullopt;
-    return ray.points[stop + 1];
+    // A decentred or tilted stop is aimed at in its own frame (about its vertex).
+    const SystemSurface& s = system_.surfaces[stop];
+    const Vec3& p = ray.points[stop + 1];
+    return s.pose ? s.pose->axes.to_local(p - s.pose->vertex) : p;
 }
 
 std::optional<RealRay> RayAimer::trace(double px, double py) const {

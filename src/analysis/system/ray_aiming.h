@@ -41,7 +41,8 @@ public:
 private:
     // The start of the ray for aim (a, b).
     Ray candidate(double a, double b) const;
-    // Where the ray of aim (a, b) crosses the stop surface; none when it does not get there.
+    // Where the ray of aim (a, b) crosses the stop surface (in its own frame when decentred or
+    // tilted); none when it does not get there.
     std::optional<Vec3> at_stop(double a, double b) const;
 
     const OpticalSystem& system_;

@@ -43,10 +43,7 @@ void trace_real_ray_into(RealRay& out, const OpticalSystem& system, const Ray& r
     bool on_surface = false;  // brought to surface i through a gradient index
     for (size_t i = 0; i < system.surfaces.size(); ++i) {
         const SystemSurface& s = system.surfaces[i];
-        // Into the surface's own frame: vertex at the origin, its +z along `orientation`.
-        // Surfaces of revolution need no turn about the axis.
-        const double o = s.orientation;
-        Ray local{{p.x, p.y, o * (p.z - s.z)}, {d.x, d.y, o * d.z}};
+        const Ray local = s.to_local(p, d);
         double t = 0;
         const SurfaceSpan& span = rims == Rims::Clip ? s.span : s.aim_span;
         if (!on_surface && !s.shape->intersect(local, span, 0.0, INFINITY, t)) {
@@ -64,8 +61,7 @@ void trace_real_ray_into(RealRay& out, const OpticalSystem& system, const Ray& r
             out.direction = d;
             return;
         }
-        const Vec3 nl = s.shape->normal(local.at(t));
-        Vec3 n{nl.x, nl.y, o * nl.z};
+        Vec3 n = s.to_system(s.shape->normal(local.at(t)));
         if (dot(n, d) > 0) n = -n;  // facing the arriving ray
         if (s.mirror) {
             d = reflect(d, n);
