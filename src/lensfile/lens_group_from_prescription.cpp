@@ -79,6 +79,12 @@ public:
             ordered_json e;
             e["front"] = surface_json(i);
             e["thickness"] = travel * front.thickness * m_mm;
+            static const char* const kMotionKeys[] = {"decenter_x", "decenter_y", "tilt_x",
+                                                      "tilt_y", "tilt_z"};
+            for (int k = 0; k < 5; ++k) {
+                if (front.element_motion[k] != 0.0)
+                    e[kMotionKeys[k]] = front.element_motion[k] * (k < 2 ? m_mm : 1.0);
+            }
             e["diameter"] = 2.0 * sd;
             group_diameter = std::max(group_diameter, 2.0 * sd);
             e["material"] = material_json(front, out.warnings);
@@ -289,6 +295,7 @@ private:
                               t[0] == 0 && t[1] == 0 && t[4] == 0 && (t[2] == 0) != (t[3] == 0) &&
                               b.thickness == 0 && m_s[i + 1].thickness == 0 &&
                               std::equal(t, t + 5, m_s[i + 2].break_parameters);
+            if (!fold && take_element_motion(i)) continue;
             if (!fold) {
                 static const char* const kWhat[] = {"a decentre in x", "a decentre in y",
                                                     "a tilt about x", "a tilt about y",
@@ -297,8 +304,9 @@ private:
                     static_cast<int>(std::find_if(t, t + 5, [](double v) { return v != 0; }) - t);
                 refuse(b.break_line ? b.break_line : b.line,
                        std::string("coordinate break with ") + kWhat[k] +
-                           ": a lens group holds elements on one axis, folded only by a mirror "
-                           "between two coordinate breaks of the same tilt about x or y");
+                           ": lenslab reads a fold (a mirror between two breaks of the same "
+                           "tilt about x or y) and a moved element (a break of order 0, the "
+                           "element, back to that plane, the inverse break of order 1)");
             }
             LensFileSurface& mirror = m_s[i + 1];
             mirror.tilt_x = t[2];
@@ -309,6 +317,38 @@ private:
             std::fill(m_s[i + 2].break_parameters, m_s[i + 2].break_parameters + 6, 0.0);
             i += 2;
         }
+    }
+
+    // Zemax writes a decentred or tilted element as a coordinate break of order 0 before it and
+    // its inverse after it (the same values negated, order 1), the thicknesses between
+    // returning to the first break's plane (its tilt/decenter elements tool writes it so):
+    // the element's decentre and tilts, the air after it counted as designed.
+    bool take_element_motion(size_t i) {
+        const size_t image = m_s.size() - 1;
+        const double* t = m_s[i].break_parameters;
+        if (t[5] != 0.0 || m_s[i].thickness != 0.0) return false;
+        size_t j = i + 1;
+        while (j < image && !m_s[j].coordinate_break) ++j;
+        if (j >= image || j < i + 3) return false;  // a front and a back face at least
+        const double* back = m_s[j].break_parameters;
+        for (int k = 0; k < 5; ++k) {
+            if (back[k] != -t[k]) return false;
+        }
+        if (back[5] == 0.0) return false;
+        // One element (or cemented run): glass behind each face but the last.
+        double inside = 0.0;
+        for (size_t k = i + 1; k < j; ++k) {
+            if (m_s[k].mirror || prescription_has_glass(m_s[k]) != (k + 1 < j)) return false;
+            if (k + 1 < j) inside += m_s[k].thickness;
+        }
+        if (std::abs(inside + m_s[j - 1].thickness) > 1e-9 * std::max(1.0, std::abs(inside)))
+            return false;
+        std::copy(t, t + 5, m_s[i + 1].element_motion);
+        m_s[j - 1].thickness = m_s[j].thickness - inside;
+        m_s[j].thickness = 0.0;
+        std::fill(m_s[i].break_parameters, m_s[i].break_parameters + 6, 0.0);
+        std::fill(m_s[j].break_parameters, m_s[j].break_parameters + 6, 0.0);
+        return true;
     }
 
     static bool turns(const LensFileSurface& s) {

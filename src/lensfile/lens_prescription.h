@@ -37,10 +37,15 @@ struct LensFileSurface {
     // frame turning by twice the tilt behind it.
     double tilt_x = 0.0, tilt_y = 0.0;
     // A Zemax coordinate break (TYPE COORDBRK): PARM 1-6, decentre x and y, tilts about x, y
-    // and z (degrees), the order flag. Only the fold around a mirror is represented.
+    // and z (degrees), the order flag. Represented: the fold around a mirror, and a pair
+    // around an element that moves it (element_motion).
     bool coordinate_break = false;
     double break_parameters[6] = {0, 0, 0, 0, 0, 0};
     int break_line = 0;
+    // The decentre (x, y) and tilts (about x, y, z; degrees) of the element that starts at this
+    // surface: a coordinate break of order 0 before it and its inverse after it (Zemax's tilted
+    // element), or CODE V's element decentre. Zero: none.
+    double element_motion[5] = {0, 0, 0, 0, 0};
 };
 
 struct LensFilePrescription {

@@ -1,6 +1,7 @@
 #include "lensfile/zmx_writer.h"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <functional>
@@ -41,9 +42,10 @@ struct ZmxSurface {
     double semi_diameter = 0;
     bool stop = false;
     double hole = 0;  // a mirror's central hole, written as a central obscuration
-    // A coordinate break's tilts about x and y (a fold around a mirror), when `fold` is set.
-    bool fold = false;
-    double tilt_x = 0, tilt_y = 0;
+    // A coordinate break (a fold around a mirror, or a pair around a moved element): PARM 1-6,
+    // decentre x and y, tilts about x, y and z, the order flag.
+    bool coordinate_break = false;
+    std::array<double, 6> parameters{};
 };
 
 struct ZmxElement {
@@ -52,8 +54,26 @@ struct ZmxElement {
     json mirror;       // a mirror element's surface (front and back null)
     double thickness = 0, gap = 0, diameter = 0, hole_diameter = 0;
     double tilt_x = 0, tilt_y = 0;  // a fold mirror's
+    // A lens element's decenter_x, decenter_y, tilt_x, tilt_y, tilt_z (with those cemented to
+    // it).
+    std::array<double, 5> motion{};
     json material;
+
+    bool moved() const {
+        return std::any_of(motion.begin(), motion.end(), [](double v) { return v != 0; });
+    }
 };
+
+// A coordinate break that bends nothing: `after` to the next surface.
+ZmxSurface coordinate_break(const std::string& path, const std::array<double, 6>& parameters,
+                            double after) {
+    ZmxSurface s;
+    s.path = path;
+    s.after = after;
+    s.coordinate_break = true;
+    s.parameters = parameters;
+    return s;
+}
 
 class ZmxWriter {
 public:
@@ -71,7 +91,9 @@ public:
         line(out, "  CURV 0");
         line(out, "  DISZ INFINITY");
         std::vector<ZmxSurface> surfaces;
-        double travel = 1;  // thicknesses behind an odd number of mirrors are negative
+        double travel = 1;               // thicknesses behind an odd number of mirrors are negative
+        std::array<double, 6> moving{};  // the break before a moved run of cemented elements
+        double moved_depth = 0;          // the run's thickness so far
         for (size_t i = 0; i < m_elements.size(); ++i) {
             const ZmxElement& e = m_elements[i];
             if (!e.mirror.is_null()) {
@@ -79,7 +101,7 @@ public:
                 const double after = i + 1 < m_elements.size() ? travel * e.gap : image_distance();
                 const bool tilted = e.tilt_x != 0 || e.tilt_y != 0;
                 // A fold: coordinate break, mirror, coordinate break of the same tilt.
-                ZmxSurface fold{json(), e.path, 0, "", 0, false, 0, true, e.tilt_x, e.tilt_y};
+                ZmxSurface fold = coordinate_break(e.path, {0, 0, e.tilt_x, e.tilt_y, 0, 0}, 0);
                 if (tilted) surfaces.push_back(fold);
                 surfaces.push_back({e.mirror, e.path + ".mirror", tilted ? 0 : after, "MIRROR",
                                     0.5 * e.diameter, false, 0.5 * e.hole_diameter});
@@ -94,11 +116,32 @@ public:
             if (i > 0 && m_elements[i - 1].back.is_null()) {
                 sd = 0.5 * std::min(e.diameter, m_elements[i - 1].diameter);
             }
+            // A moved element (and those cemented to it): a coordinate break of order 0, the
+            // faces, back to the break's plane, and the inverse break (order 1), as Zemax's
+            // tilt/decenter elements tool writes it.
+            if (e.moved()) {
+                const auto& m = e.motion;
+                moving = {m[0], m[1], m[2], m[3], m[4], 0};
+                moved_depth = 0;
+                surfaces.push_back(coordinate_break(e.path, moving, 0));
+            }
+            moved_depth += e.thickness;
             surfaces.push_back(
                 {e.front, e.path + ".front", travel * e.thickness, glass(e), sd, false});
             if (!e.back.is_null()) {
                 const double after = i + 1 < m_elements.size() ? travel * e.gap : image_distance();
-                surfaces.push_back({e.back, e.path + ".back", after, "", 0.5 * e.diameter, false});
+                const bool returning = moving != std::array<double, 6>{};
+                surfaces.push_back({e.back, e.path + ".back",
+                                    returning ? -travel * moved_depth : after, "", 0.5 * e.diameter,
+                                    false});
+                if (returning) {
+                    std::array<double, 6> back{};
+                    for (int k = 0; k < 5; ++k) back[k] = -moving[k];
+                    back[5] = 1;
+                    surfaces.push_back(
+                        coordinate_break(e.path, back, travel * moved_depth + after));
+                    moving = {};
+                }
             }
         }
         place_stop(surfaces);
@@ -169,6 +212,9 @@ private:
             e.gap = j.value("gap", 0.0);
             e.diameter = j.value("diameter", diameter);
             e.material = j.at("material");
+            static const char* const kMotionKeys[] = {"decenter_x", "decenter_y", "tilt_x",
+                                                      "tilt_y", "tilt_z"};
+            for (int k = 0; k < 5; ++k) e.motion[k] = j.value(kMotionKeys[k], 0.0);
             m_elements.push_back(e);
         }
     }
@@ -214,10 +260,13 @@ private:
     void surface(std::string& out, int n, const ZmxSurface& z) {
         line(out, "SURF " + std::to_string(n));
         if (z.stop) line(out, "  STOP");
-        if (z.fold) {
+        if (z.coordinate_break) {
             line(out, "  TYPE COORDBRK");
-            line(out, "  PARM 3 " + shortest_number_text(z.tilt_x));
-            line(out, "  PARM 4 " + shortest_number_text(z.tilt_y));
+            for (int k = 0; k < 6; ++k) {
+                if (z.parameters[k] != 0)
+                    line(out, "  PARM " + std::to_string(k + 1) + " " +
+                                  shortest_number_text(z.parameters[k]));
+            }
             line(out, "  DISZ " + shortest_number_text(z.after));
             return;
         }
@@ -349,12 +398,15 @@ private:
         }
         double z = 0;  // as the reader sums the thicknesses
         for (size_t i = 0; i < surfaces.size(); ++i) {
-            if (z == at) {
+            if (z == at && !surfaces[i].coordinate_break) {
                 surfaces[i].stop = true;
                 return;
             }
             const double next = z + surfaces[i].after;
-            if (surfaces[i].glass.empty() && at > z && (at < next || i + 1 == surfaces.size())) {
+            // Not inside a moved element's way back to its break.
+            const bool forward = surfaces[i].after > 0 && !surfaces[i].coordinate_break;
+            if (surfaces[i].glass.empty() && forward && at > z &&
+                (at < next || i + 1 == surfaces.size())) {
                 const double space = surfaces[i].after;
                 const double a = zmx_exact_preimage(at, at - z, [z](double x) { return z + x; });
                 stop.after = zmx_exact_preimage(space, space - a, [a](double x) { return a + x; });

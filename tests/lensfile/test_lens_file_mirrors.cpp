@@ -1,8 +1,9 @@
-// Mirrors in lens files (Zemax GLAS MIRROR, CODE V REFL): read into lens groups whose mirror
-// elements turn the light back, the files' negative thicknesses becoming distances along the
-// light's way, and written back to .zmx unchanged. The telescope is a Ritchey-Chretien typed
-// from the textbook formulas (Schroeder, Astronomical Optics, 2nd ed., section 6.2): F 2000,
-// mirrors D = 500 apart, focus B = 700 behind the secondary.
+// Mirrors and coordinate breaks in lens files (Zemax GLAS MIRROR, CODE V REFL, Zemax COORDBRK
+// folds and tilted elements): read into lens groups whose mirror elements turn the light back, the
+// files' negative thicknesses becoming distances along the light's way, and written back to .zmx
+// unchanged. The telescope is a Ritchey-Chretien typed from the textbook formulas (Schroeder,
+// Astronomical Optics, 2nd ed., section 6.2): F 2000, mirrors D = 500 apart, focus B = 700 behind
+// the secondary.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -14,6 +15,7 @@
 #include "lensfile/lens_file_text.h"
 #include "lensfile/lens_group_from_prescription.h"
 #include "lensfile/seq_reader.h"
+#include "lensfile/zmx_reader.h"
 #include "lensfile/zmx_writer.h"
 #include "scene/lens_file_import.h"
 #include "scene/scene_json.h"
@@ -133,8 +135,7 @@ TEST(LensFileMirrors, ZemaxFoldMirrorsRoundTripAsTiltedMirrors) {
     EXPECT_EQ(group["elements"][0]["gap"], 50.0);
     EXPECT_EQ(group["elements"][1]["tilt_x"], -45.0);
     const std::string zmx = expect_zmx_round_trip(file, "periscope");
-    EXPECT_NE(zmx.find("TYPE COORDBRK\n  PARM 3 45\n  PARM 4 0\n  DISZ 0"), std::string::npos)
-        << zmx;
+    EXPECT_NE(zmx.find("TYPE COORDBRK\n  PARM 3 45\n  DISZ 0"), std::string::npos) << zmx;
 }
 
 // CODE V writes a fold as a mirror tilted by ADE (or BDE) with BEN; a tilt without BEN, or on
@@ -153,22 +154,75 @@ TEST(LensFileMirrors, CodeVBendsAreFoldMirrors) {
               "a tilted mirror with BEN");
 }
 
-// Other coordinate breaks are refused with their line.
-TEST(LensFileMirrors, ACoordinateBreakThatIsNotAFoldIsRefused) {
-    EXPECT_THROW(
-        {
-            try {
-                (void)import_lens_file(std::string(LENSLAB_SOURCE_DIR) +
-                                           "/tests/lensfile/data/public/zx_sk_cooke_tilt.zmx",
-                                       "tilted");
-            } catch (const LensFileError& e) {
-                EXPECT_NE(std::string(e.what()).find(":121: coordinate break with a decentre in x"),
-                          std::string::npos)
-                    << e.what();
-                throw;
-            }
-        },
-        LensFileError);
+// Zemax writes a decentred and tilted element as a coordinate break of order 0 before it and
+// its inverse (order 1) after it, the thicknesses between returning to the first break's plane
+// (zx_sk_cooke_tilt.zmx, the flint of a Cooke triplet): read as the element's decentre and
+// tilts, measured about the central chief ray, written back the same way.
+TEST(LensFileMirrors, AZemaxTiltedElementRoundTripsAsADecentredTiltedElement) {
+    const std::string file =
+        std::string(LENSLAB_SOURCE_DIR) + "/tests/lensfile/data/public/zx_sk_cooke_tilt.zmx";
+    const ImportedLens first = import_lens_file(file, "tilted");
+    const json group = json(first.group);
+    ASSERT_EQ(group["elements"].size(), 3u);
+    const json& flint = group["elements"][1];
+    // The first break's PARM 1-5 (lines 121-125).
+    EXPECT_EQ(flint["decenter_x"], -0.062814902461408195);
+    EXPECT_EQ(flint["decenter_y"], -0.058001069043036001);
+    EXPECT_EQ(flint["tilt_x"], -0.027239972197479499);
+    EXPECT_EQ(flint["tilt_y"], -0.072380002207503805);
+    EXPECT_EQ(flint["tilt_z"], -0.000698957981352194);
+    EXPECT_EQ(flint["thickness"], 1.0);
+    EXPECT_EQ(flint["gap"], 4.75);  // the return break's 1, less the way back, and the dummy's
+    EXPECT_FALSE(group["elements"][0].contains("tilt_x"));
+    const std::string zmx = expect_zmx_round_trip(file, "tilted");
+    EXPECT_NE(zmx.find("  PARM 5 0.000698957981352194\n  PARM 6 1\n  DISZ 5.75"), std::string::npos)
+        << zmx;
+
+    // Measured about the central chief ray; without the motions, the same lens on its axis.
+    json scene = json(imported_scene_json(first, file));
+    AnalyzeRequest request;
+    request.report_keys = {"efl", "first_order_basis"};
+    const auto measure = [&](const json& s) {
+        return analyze_report(parse_scene(s.dump(), "test", "", {.require_camera = false}),
+                              request);
+    };
+    const auto tilted = measure(scene);
+    for (const char* key : {"decenter_x", "decenter_y", "tilt_x", "tilt_y", "tilt_z"})
+        scene["objects"][0]["elements"][1].erase(key);
+    const auto nominal = measure(scene);
+    EXPECT_EQ(tilted["first_order_basis"], "parabasal");
+    EXPECT_EQ(nominal["first_order_basis"], "paraxial");
+    // Decentres of 0.06 and tilts of 0.07 degrees change the focal length at second order:
+    // here by 6 parts in 1e5 (the flint's prism deviation, 0.06 / 20, squared, times the
+    // triplet's sensitivity).
+    EXPECT_NEAR(tilted["efl"].get<double>(), nominal["efl"].get<double>(),
+                1e-4 * nominal["efl"].get<double>());
+}
+
+// Other coordinate breaks are refused with their line: here the return break does not undo
+// the first (its tilt differs).
+TEST(LensFileMirrors, ACoordinateBreakThatNeitherFoldsNorMovesAnElementIsRefused) {
+    const std::vector<std::string> lines = {"MODE SEQ",        "UNIT MM X W X CM MR CPMM",
+                                            "ENPD 10",         "SURF 0",
+                                            "  DISZ INFINITY", "SURF 1",
+                                            "  TYPE COORDBRK", "  PARM 3 2",
+                                            "  DISZ 0",        "SURF 2",
+                                            "  CURV 0.02",     "  DISZ 4",
+                                            "  GLAS N-BK7",    "  DIAM 10",
+                                            "SURF 3",          "  CURV -0.02",
+                                            "  DISZ -4",       "  DIAM 10",
+                                            "SURF 4",          "  TYPE COORDBRK",
+                                            "  PARM 3 -1",     "  PARM 6 1",
+                                            "  DISZ 50",       "SURF 5",
+                                            "  DISZ 0"};
+    try {
+        (void)lens_group_from_prescription(read_zmx(lines, "test.zmx"), "lens");
+        FAIL() << "accepted";
+    } catch (const LensFileError& e) {
+        EXPECT_NE(std::string(e.what()).find("test.zmx:8: coordinate break with a tilt about x"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 }  // namespace

@@ -256,9 +256,9 @@ TEST(LensFiles, BadFilesAreRefusedWithOneMessageNamingTheLine) {
               "inside the glass) is not yet supported");
     EXPECT_EQ(
         error_of(replaced(achromat_text(), "SURF 3\n", "SURF 3\n  TYPE COORDBRK\n  PARM 3 5\n")),
-        "test.zmx:18: coordinate break with a tilt about x: a lens group holds elements on one "
-        "axis, folded only by a mirror between two coordinate breaks of the same tilt about x "
-        "or y");
+        "test.zmx:18: coordinate break with a tilt about x: lenslab reads a fold (a mirror "
+        "between two breaks of the same tilt about x or y) and a moved element (a break of "
+        "order 0, the element, back to that plane, the inverse break of order 1)");
     const std::string seq = error_of(
         "S 50 5 N-BK7\n  CIR 10\nS -50 40\n  CIR 10\nS 20 3 NOSUCHGLASS_SCHOTT\n  CIR 1\n"
         "S 0 1\n  CIR 1\nSI 0 0\n",

@@ -385,10 +385,14 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
             " from the paraxial focus");
     row("RMS spot radius at the best focus", r.spot_best.rms_radius,
         "geometric radius " + length(r.spot_best.geometric_radius));
-    out << "  longitudinal spherical aberration (axis crossing minus paraxial focus; < 0: in "
-           "front):\n";
-    std::snprintf(line, sizeof line, "    %12s %12s %14s\n", "ray height", "LSA", "transverse");
-    out << line;
+    if (!system.coaxial()) {
+        out << "  longitudinal spherical aberration: not for a decentred or tilted system\n";
+    } else {
+        out << "  longitudinal spherical aberration (axis crossing minus paraxial focus; < 0: in "
+               "front):\n";
+        std::snprintf(line, sizeof line, "    %12s %12s %14s\n", "ray height", "LSA", "transverse");
+        out << line;
+    }
     const size_t step = std::max<size_t>(1, r.lsa.size() / 10);
     for (size_t i = 0; i < r.lsa.size(); ++i) {
         if ((i + 1) % step != 0 && i + 1 != r.lsa.size()) continue;
