@@ -2,7 +2,7 @@
 // axis at each. Every expected value comes from a closed form: the mirror's focal length R/2,
 // the exact axial crossing of a ray reflected by a sphere, the spherical aberration of a
 // conic mirror in proportion to (1 + k), the Cassegrain and Ritchey-Chretien formulas, the
-// Schmidt corrector's fourth-order profile.
+// Schmidt corrector's fourth-order profile, Paul's three-mirror anastigmat.
 
 #include <gtest/gtest.h>
 
@@ -232,6 +232,47 @@ TEST(FoldedSystem, TheSchmidtCamerasPlateCancelsTheSpheresAberrations) {
     };
     const double with_plate = rms(schmidt), without = rms(bare);
     EXPECT_LT(with_plate, 0.1 * without) << with_plate << " against " << without;
+}
+
+// Paul's three-mirror anastigmat (M. Paul, Rev. d'Optique 14, 1935; Wilson, Reflecting
+// Telescope Optics I, 2nd ed., section 3.6.5; Korsch, Reflective Optics, section 8.2): a
+// paraboloid primary and a convex spherical secondary confocal with it (an afocal Mersenne
+// pair, the beam compressed F1 / f2), then a concave spherical tertiary of the secondary's
+// radius with its centre of curvature on the secondary, which carries the stop. The tertiary's
+// spherical aberration cancels the secondary's departure from a paraboloid, and with the
+// stop at its centre of curvature it adds no coma or astigmatism: S_I = S_II = S_III = 0, the
+// field curved. EFL = f3 F1 / f2. Here F1 = 1000, f2 = f3 = 400: EFL 1000, at EPD 200 F/5.
+TEST(FoldedSystem, PaulsThreeMirrorAnastigmatHasNoSphericalComaOrAstigmatism) {
+    const double F1 = 1000, f2 = 400;
+    const double R2 = -2 * f2;  // convex towards the primary: its centre beyond it
+    const double d = F1 - f2;   // confocal
+    const OpticalSystem paul = build_optical_system(
+        group_scene(mirror(conic(-2 * F1, -1), 220, d, 90) + "," + mirror(conic(R2, 0), 90, -R2) +
+                        "," + mirror(conic(R2, 0), 100, 0),
+                    220));
+    ASSERT_EQ(paul.surfaces.size(), 3u);
+    const double f3 = -R2 / 2;        // the tertiary has the secondary's radius
+    const double efl = f3 * F1 / f2;  // its focal length times the compression
+    const ParaxialResult p = paraxial_trace(paul, kLineD);
+    EXPECT_NEAR(p.efl, efl, 1e-6);
+    EXPECT_NEAR(p.z_rear_focus, -d - R2 + R2 / 2, 1e-6);  // f3 in front of the tertiary
+    const FirstOrder f = first_order_at(paul, 1, 200, {0.2});
+    EXPECT_NEAR(f.f_number, efl / 200, 1e-6);
+    const Seidel seidel = seidel_sums(paul, f, kLineF, kLineC);
+    const double scale = std::abs(seidel.surfaces[1].spherical);  // the secondary's alone
+    EXPECT_GT(scale, 1e-3);
+    EXPECT_NEAR(seidel.total.spherical, 0.0, 1e-9 * scale);
+    EXPECT_NEAR(seidel.total.coma, 0.0, 1e-9 * scale);
+    EXPECT_NEAR(seidel.total.astigmatism, 0.0, 1e-9 * scale);
+    EXPECT_GT(std::abs(seidel.total.petzval), 1e-5);  // Paul's curved field
+    // Real rays across the field: well inside the Airy radius 1.22 lambda N.
+    const double airy = 1.22 * kLineD * 1e-6 * f.f_number;
+    for (double field : {0.0, 0.2}) {
+        const FieldBeam beam = trace_field_beam(paul, f, field, kLineD, 6);
+        EXPECT_GT(beam.rays.size(), 100u) << field;
+        const SpotDiagram spot = spot_at(beam.rays, p.z_rear_focus);
+        EXPECT_LT(spot.rms_radius, 0.1 * airy) << field;
+    }
 }
 
 // An independent trace through the scene as it stands in space (Scene::intersect, the law
