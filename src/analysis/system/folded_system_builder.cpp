@@ -172,7 +172,13 @@ OpticalSystem build_folded_system(const Scene& scene, int group) {
         p.centre = straight.point(p.centre);
         p.axis = straight.direction(p.axis);
         check_on_axis(scene, i, p.axis, p.centre, axis, start, size);
-        check_lens_faces(scene, i, p);
+        check_lens_transparent(scene, i);
+        if (has_freeform_face(p)) {
+            throw SceneError(
+                object_path(scene, i) + (p.front->is_rotationally_symmetric() ? ".back" : ".front"),
+                "a freeform face (not a surface of revolution) in a system with "
+                "mirrors is not yet measured by the bench");
+        }
         if (scene.material_of(i).grin) {
             throw SceneError(object_path(scene, i) + ".material",
                              "a gradient index in a system with mirrors is not measured by the "

@@ -85,8 +85,9 @@ ParaxialResult parabasal_paraxial(const OpticalSystem& system, const ParabasalMa
     r.power = -m.y.c;
     if (!(std::abs(r.power) * system.scale() > 1e-6)) {
         throw SceneError("objects",
-                         "the lens system is afocal (zero optical power about its chief ray): "
-                         "it has no focus");
+                         "the lens system has no optical power in the y-z section about its "
+                         "chief ray (afocal, or a cylinder lens whose power lies in x: turn it "
+                         "a quarter about its axis to measure that section)");
     }
     r.efl = 1.0 / r.power;
     r.efl_x = m.x.c != 0 ? -1.0 / m.x.c : INFINITY;

@@ -33,7 +33,10 @@ ParaxialResult paraxial_trace(const OpticalSystem& system, double nm) {
     r.power = -c;
     const double scale = system.scale();
     // A focal length a million times the system's size is, for a bench, no focus at all.
-    if (!(std::abs(r.power) * scale > 1e-6)) {
+    // A system that is not rotationally symmetric is measured about its chief ray
+    // (parabasal.h): as designed on the axis it may have no power in the y-z section (a
+    // cylinder lens across it) and still focus.
+    if (!(std::abs(r.power) * scale > 1e-6) && system.coaxial()) {
         throw SceneError("objects",
                          "the lens system is afocal (zero optical power): it has no focus");
     }

@@ -72,7 +72,15 @@ void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
         s.semi_diameter = a;
         s.span = intersect_span(*shape, a);
         s.aim_span = measure_aim_span(*shape, a);
-        const VertexSag vertex = shape->vertex_sag(a);
+        VertexSag vertex;
+        if (shape->is_rotationally_symmetric()) {
+            vertex = shape->vertex_sag(a);
+        } else {
+            // A freeform face, for the system as designed: its curvature in the y-z section
+            // (the meridional one), by a central difference over a thousandth of its radius.
+            const double h = 1e-3 * a;
+            vertex.curvature = (shape->sag_xy(0, h) + shape->sag_xy(0, -h)) / (h * h);
+        }
         s.curvature = p.orientation * vertex.curvature;
         s.a4 = p.orientation * vertex.a4;
         s.label = path + "." + face;
@@ -142,14 +150,11 @@ SystemElement make_element(const Scene& scene, int object) {
     return e;
 }
 
-void check_lens_faces(const Scene& scene, int i, const LensPrescription& p) {
-    for (const auto& face : {p.front, p.back}) {
-        if (!face->is_rotationally_symmetric()) {
-            throw SceneError(object_path(scene, i) + (face == p.front ? ".front" : ".back"),
-                             "a sag formula in x and y is not a surface of revolution; "
-                             "the lens bench measures rotationally symmetric systems");
-        }
-    }
+bool has_freeform_face(const LensPrescription& p) {
+    return !p.front->is_rotationally_symmetric() || !p.back->is_rotationally_symmetric();
+}
+
+void check_lens_transparent(const Scene& scene, int i) {
     if (!(scene.material_of(i).transparency > 0.0)) {
         throw SceneError(object_path(scene, i) + ".material",
                          "transparency is 0: light does not pass this lens");
@@ -254,12 +259,14 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
         const double off_axis = length(offset - axis * dot(offset, axis));
         const bool off = sine > kAxisAngleTolerance || off_axis > kAxisOffsetTolerance * largest;
         const bool in_group = seed_in_group && scene.objects[i].source == seed_object.source;
-        if (off && in_group) {
-            check_lens_faces(scene, i, p);
+        // A moved group element, or a lens with a freeform face: its surfaces placed by the
+        // lens's own frame (the face's x and y are the lens's).
+        if ((off && in_group) || (!off && has_freeform_face(p))) {
+            check_lens_transparent(scene, i);
             if (scene.material_of(i).grin) {
                 throw SceneError(object_path(scene, i) + ".material",
-                                 "a gradient-index element decentred or tilted from the axis is "
-                                 "not measured by the bench");
+                                 "a gradient-index lens decentred, tilted or with a freeform face "
+                                 "is not measured by the bench");
             }
             const double orientation = dot(p.axis, axis) > 0 ? 1.0 : -1.0;
             const double z_first = dot(vertices_met(p, orientation).first - centre, axis);
@@ -284,7 +291,7 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
             why << " (all lenses must share one axis; pick one system with --lens NAME)";
             throw SceneError(object_path(scene, i), why.str());
         }
-        check_lens_faces(scene, i, p);
+        check_lens_transparent(scene, i);
         const double orientation = dot(p.axis, axis) > 0 ? 1.0 : -1.0;
         const double zc = dot(offset, axis);
         placed.push_back({i, solid, orientation, zc - 0.5 * p.thickness, zc + 0.5 * p.thickness});

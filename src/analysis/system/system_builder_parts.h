@@ -45,8 +45,10 @@ SurfaceSpan measure_aim_span(const LensSurface& shape, double semi_diameter);
 // with the lens before when cemented to it).
 void add_surfaces(const Placed& p, int element, OpticalSystem& system);
 SystemElement make_element(const Scene& scene, int object);
-// Refuses a lens whose faces are not surfaces of revolution or that lets no light through.
-void check_lens_faces(const Scene& scene, int i, const LensPrescription& p);
+// Refuses a lens that lets no light through.
+void check_lens_transparent(const Scene& scene, int i);
+// Whether a face is not a surface of revolution (a sag in x and y, a biconic, ...).
+bool has_freeform_face(const LensPrescription& p);
 
 // A folded system: the group's elements in its order (folded_system_builder.cpp).
 std::optional<int> folded_group(const Scene& scene, std::optional<int> lens);

@@ -183,6 +183,26 @@ TEST(DecentredElements, ATiltedThinLensFocusesItsSectionsAsCoddingtonSays) {
                 1e-3);
 }
 
+// A cylinder lens (faces curved in y alone, typed as sag formulas in x and y) has the thick
+// lens's focal length in its y-z section and no power in x.
+TEST(DecentredElements, ACylinderLensFocusesItsCurvedSectionOnly) {
+    const auto cylinder = [](double r) {
+        return json{{"shape", "sag"},
+                    {"formula", std::to_string(r) + " - " + (r > 0 ? "" : "-") + "sqrt(" +
+                                    std::to_string(r * r) + " - y^2)"}};
+    };
+    json scene = decentred_singlet(json::object());
+    scene["objects"][0]["elements"][0]["front"] = cylinder(kSingletR1);
+    scene["objects"][0]["elements"][0]["back"] = cylinder(kSingletR2);
+    const OpticalSystem system = decentred_system(scene);
+    ASSERT_FALSE(system.coaxial());
+    const FirstOrder f = decentred_first_order(system);
+    ASSERT_TRUE(f.parabasal);
+    // A typed formula's normal is a central difference: good to a few parts in 1e5 here.
+    EXPECT_NEAR(f.efl, singlet_efl(), 1e-4 * singlet_efl());
+    EXPECT_GT(std::abs(f.parabasal->efl_x), 1e6 * singlet_efl());
+}
+
 TEST(DecentredElements, TheReportSaysParabasalAndLeavesOutSeidelSums) {
     const OpticalSystem system = decentred_system(decentred_singlet({{"tilt_y", 1}}));
     LensReportOptions options;

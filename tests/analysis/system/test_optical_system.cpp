@@ -126,10 +126,16 @@ TEST(OpticalSystem, RefusesWhatIsNotOneCoaxialLensSystem) {
     LensSpec opaque = kCrown;
     opaque.material = R"({"color": 0.5})";
     expect_refused(lens_scene({opaque}), "objects[0].material", "transparency is 0");
+}
 
+// A freeform face is measured, about the chief ray: its surfaces placed by the lens's frame.
+TEST(OpticalSystem, ALensWithAFreeformFaceIsPlacedByItsOwnFrame) {
     LensSpec saddle = kCrown;
     saddle.front = R"({"shape": "sag", "formula": "(x^2 - y^2) / 200"})";
-    expect_refused(lens_scene({saddle}), "objects[0].front", "not a surface of revolution");
+    const OpticalSystem s = build_optical_system(lens_scene({saddle}));
+    EXPECT_FALSE(s.coaxial());
+    ASSERT_TRUE(s.surfaces[0].pose);
+    EXPECT_NEAR(s.surfaces[0].curvature, -1.0 / 100, 1e-9);  // the y-z section's, as designed
 }
 
 TEST(OpticalSystem, AChosenLensTakesOnlyTheLensesOnItsAxis) {
