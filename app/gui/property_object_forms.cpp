@@ -75,6 +75,14 @@ json surface_of_shape(const std::string& chosen, const json* current, double dia
     if (chosen == "conic" || chosen == "asphere") s["k"] = old.value("k", 0.0);
     if (chosen == "asphere")
         s["coefficients"] = old.contains("coefficients") ? old["coefficients"] : json::array({0.0});
+    if (chosen == "biconic") {
+        s["radius_x"] = s["radius_y"] = radius;
+        s["k_x"] = s["k_y"] = old.value("k", 0.0);
+    }
+    if (chosen == "toroidal") {
+        s["radius"] = s["radius_of_rotation"] = radius;
+        s["k"] = old.value("k", 0.0);
+    }
     if (chosen == "sag")
         s["formula"] =
             old.contains("formula") ? old["formula"].get<std::string>() : sag_formula_of(old);
@@ -202,6 +210,12 @@ void PropertyPanel::build_surface(const QString& label, const std::string& key) 
     };
     add_field("radius", 2.0 * diameter);
     add_field("k", 0.0);
+    for (const char* field : {"radius_x", "radius_y", "k_x", "k_y", "radius_of_rotation"})
+        add_field(field, 0.0);
+    if (shape == "toroidal") {
+        add_number_list(label + tr(" y curve A4, A6, ... A16"), key + "/coefficients",
+                        json::array(), 7);
+    }
     if (shape == "asphere") {
         add_number_list(label + tr(" A4, A6, ... A16"), key + "/coefficients", json::array({0.0}),
                         7);

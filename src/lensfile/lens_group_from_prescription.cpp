@@ -5,6 +5,7 @@
 #include <map>
 
 #include "lensfile/lens_file_glass.h"
+#include "lensfile/prescription_surface.h"
 #include "optics/glass.h"
 #include "optics/glass_library.h"
 #include "util/format_number.h"
@@ -18,8 +19,6 @@ using nlohmann::ordered_json;
 bool prescription_has_glass(const LensFileSurface& s) {
     return !s.glass.empty() || s.model_nd > 0.0;
 }
-
-std::string prescription_surface_label(size_t i) { return "surface " + std::to_string(i); }
 
 class GroupBuilder {
 public:
@@ -74,10 +73,10 @@ public:
                                        prescription_surface_label(i + 1) +
                                        " has no semi-diameter (Zemax DIAM, CODE V CIR)");
             }
-            check_span(i, sd);
-            check_span(i + 1, sd);
+            check_prescription_span(m_p, i, sd);
+            check_prescription_span(m_p, i + 1, sd);
             ordered_json e;
-            e["front"] = surface_json(i);
+            e["front"] = prescription_surface_json(m_p, i);
             e["thickness"] = travel * front.thickness * m_mm;
             static const char* const kMotionKeys[] = {"decenter_x", "decenter_y", "tilt_x",
                                                       "tilt_y", "tilt_z"};
@@ -89,7 +88,7 @@ public:
             group_diameter = std::max(group_diameter, 2.0 * sd);
             e["material"] = material_json(front, out.warnings);
             if (!prescription_has_glass(back)) {
-                e["back"] = surface_json(i + 1);
+                e["back"] = prescription_surface_json(m_p, i + 1);
                 air_after(i + 1, i + 1, travel, e, out);
             }
             elements.push_back(e);
@@ -257,9 +256,9 @@ private:
             refuse(s.line, "the mirror " + prescription_surface_label(i) +
                                " has no semi-diameter (Zemax DIAM, CODE V CIR)");
         }
-        check_span(i, sd);
+        check_prescription_span(m_p, i, sd);
         ordered_json e;
-        e["mirror"] = surface_json(i);
+        e["mirror"] = prescription_surface_json(m_p, i);
         e["diameter"] = 2.0 * sd;
         // In a sequential trace a central obscuration on a mirror stops the same rays as a hole.
         const double hole = std::max(s.hole_semi_diameter, s.obscuration_semi_diameter);
@@ -363,65 +362,6 @@ private:
             warnings.push_back({s.line, prescription_surface_label(j) +
                                             " has air on both sides and bends no light; left out"});
         }
-    }
-
-    // A face must exist out to the element's semi-diameter: |R| / sqrt(1 + k) for a conic.
-    void check_span(size_t i, double sd) const {
-        const LensFileSurface& s = m_s[i];
-        if (s.radius == 0.0) return;
-        const double r = std::abs(s.radius) * m_mm;
-        const double widest = 1.0 + s.conic > 0.0 ? r / std::sqrt(1.0 + s.conic) : INFINITY;
-        if (sd > widest * (1.0 + 1e-12)) {
-            refuse(s.radius_line ? s.radius_line : s.line,
-                   prescription_surface_label(i) + ": radius " + format_number(s.radius * m_mm) +
-                       (s.conic != 0.0 ? " with conic " + format_number(s.conic) : "") +
-                       " mm is undefined beyond " + format_number(widest) +
-                       " mm from the axis, inside its element's semi-diameter " +
-                       format_number(sd) + " mm");
-        }
-    }
-
-    ordered_json surface_json(size_t i) const {
-        const LensFileSurface& s = m_s[i];
-        std::vector<double> terms = s.even_terms;
-        while (!terms.empty() && terms.back() == 0.0) terms.pop_back();
-        if (!terms.empty() && terms[0] != 0.0) {
-            refuse(s.line, prescription_surface_label(i) +
-                               ": an aspheric r^2 term; lenslab's asphere starts at r^4 (fold "
-                               "it into the curvature)");
-        }
-        if (terms.size() > 8) {
-            refuse(s.line, prescription_surface_label(i) +
-                               ": aspheric terms beyond r^16 cannot be represented");
-        }
-        if (s.radius == 0.0) {
-            if (terms.empty()) return {{"shape", "flat"}};
-            // A flat base with aspheric terms (a Schmidt plate's): lenslab's asphere needs a
-            // vertex radius, a sag formula in r does not.
-            std::string formula;
-            for (size_t m = 1; m < terms.size(); ++m) {
-                if (terms[m] == 0.0) continue;
-                char term[64];
-                std::snprintf(term, sizeof term, "%s(%.17g)*r^%zu", formula.empty() ? "" : " + ",
-                              terms[m] * std::pow(m_mm, 1.0 - 2.0 * (m + 1)), 2 * (m + 1));
-                formula += term;
-            }
-            return {{"shape", "sag"}, {"formula", formula}};
-        }
-        const double radius = s.radius * m_mm;
-        if (terms.empty()) {
-            if (s.conic == 0.0) return {{"shape", "sphere"}, {"radius", radius}};
-            return {{"shape", "conic"}, {"radius", radius}, {"k", s.conic}};
-        }
-        // The r^(2m) term scales as length^(1 - 2m).
-        ordered_json coefficients = ordered_json::array();
-        for (size_t m = 1; m < terms.size(); ++m) {
-            coefficients.push_back(terms[m] * std::pow(m_mm, 1.0 - 2.0 * (m + 1)));
-        }
-        return {{"shape", "asphere"},
-                {"radius", radius},
-                {"k", s.conic},
-                {"coefficients", coefficients}};
     }
 
     ordered_json material_json(const LensFileSurface& s,

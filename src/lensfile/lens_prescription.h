@@ -18,8 +18,14 @@ struct LensFileSurface {
     double radius = 0.0;     // vertex radius of curvature, signed; 0: flat
     double thickness = 0.0;  // axial distance to the next surface (may be infinite: object)
     double conic = 0.0;
-    // Even asphere terms: r^2, r^4, r^6, ... (index 0 is the r^2 term).
+    // Even asphere terms: r^2, r^4, r^6, ... (index 0 is the r^2 term); of a toroid, its y
+    // curve's y^2, y^4, ...
     std::vector<double> even_terms;
+    // A surface not of revolution: "biconic" (Zemax BICONICX: radius and conic above are the
+    // y section's, radius_x and conic_x the x section's, 0 flat) or "toroidal" (Zemax
+    // TOROIDAL: the y curve turned about the radius of rotation, 0 none). Empty: neither.
+    std::string anamorphic;
+    double radius_x = 0.0, conic_x = 0.0, radius_of_rotation = 0.0;
     std::string glass;  // the medium after the surface; empty: air
     // A model glass given by its index and Abbe number (Zemax ___BLANK, a CODE V glass code
     // such as 517642 or 517000.520000), when glass is empty.

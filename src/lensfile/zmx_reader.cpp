@@ -225,12 +225,16 @@ private:
     void surface_type() {
         surface();
         const std::string t = m_words.size() > 1 ? lens_file_upper(m_words[1]) : "";
-        if (t != "STANDARD" && t != "EVENASPH" && t != "COORDBRK") {
+        if (t != "STANDARD" && t != "EVENASPH" && t != "COORDBRK" && t != "BICONICX" &&
+            t != "TOROIDAL") {
             refuse("surface type '" + t +
-                   "' cannot be represented (lenslab reads STANDARD, EVENASPH and COORDBRK)");
+                   "' cannot be represented (lenslab reads STANDARD, EVENASPH, BICONICX, "
+                   "TOROIDAL and COORDBRK)");
         }
         m_type = t;
         surface().coordinate_break = t == "COORDBRK";
+        if (t == "BICONICX") surface().anamorphic = "biconic";
+        if (t == "TOROIDAL") surface().anamorphic = "toroidal";
     }
 
     void parameter() {
@@ -242,11 +246,29 @@ private:
             s.even_terms[i - 1] = v;
             return;
         }
+        if (m_type == "BICONICX" && (i == 1 || i == 2)) {
+            (i == 1 ? s.radius_x : s.conic_x) = v;
+            return;
+        }
+        // TOROIDAL: the radius of rotation, then the y curve's y^2, y^4, ... y^16 terms.
+        if (m_type == "TOROIDAL" && i >= 1 && i <= 9) {
+            if (i == 1) {
+                s.radius_of_rotation = v;
+                return;
+            }
+            if (static_cast<int>(s.even_terms.size()) < i - 1) s.even_terms.resize(i - 1, 0.0);
+            s.even_terms[i - 2] = v;
+            return;
+        }
         if (m_type == "COORDBRK" && i >= 1 && i <= 6) {
             // Kept for the lens group builder, which takes the fold around a mirror.
             s.break_parameters[i - 1] = v;
             if (v != 0.0 && !s.break_line) s.break_line = m_line;
             return;
+        }
+        if (v != 0.0 && !s.anamorphic.empty()) {
+            refuse("PARM " + std::to_string(i) + " = " + m_words[2] + " of a " + m_type +
+                   " surface cannot be represented");
         }
         if (v != 0.0) {
             warn("PARM " + std::to_string(i) + " = " + m_words[2] + " means nothing for a " +

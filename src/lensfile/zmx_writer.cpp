@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -273,26 +274,43 @@ private:
         const json& s = z.shape;
         const std::string& path = z.path;
         const std::string shape = s.value("shape", std::string());
-        line(out, std::string("  TYPE ") + (shape == "asphere" ? "EVENASPH" : "STANDARD"));
-        if (shape == "flat") {
-            line(out, "  CURV 0");
-        } else if (shape == "sphere" || shape == "conic" || shape == "asphere") {
-            const double r = s.at("radius").get<double>();
-            const double c = zmx_exact_preimage(r, 1.0 / r, [](double x) { return 1.0 / x; });
-            line(out, "  CURV " + shortest_number_text(c));
-            if (s.contains("k")) line(out, "  CONI " + shortest_number_text(s["k"].get<double>()));
-        } else {
+        static const std::map<std::string, std::string> kTypes = {
+            {"flat", "STANDARD"},    {"sphere", "STANDARD"},  {"conic", "STANDARD"},
+            {"asphere", "EVENASPH"}, {"biconic", "BICONICX"}, {"toroidal", "TOROIDAL"}};
+        const auto type = kTypes.find(shape);
+        if (type == kTypes.end()) {
             throw SceneError(path, "a " + shape +
                                        " surface has no Zemax surface type lenslab writes "
-                                       "(flat, sphere, conic and asphere do)");
+                                       "(flat, sphere, conic, asphere, biconic and toroidal do)");
         }
-        if (shape == "asphere") {
-            line(out, "  PARM 1 0");
-            const json& a = s.at("coefficients");
-            for (size_t i = 0; i < a.size(); ++i) {
-                line(out, "  PARM " + std::to_string(i + 2) + " " +
-                              shortest_number_text(a[i].get<double>()));
-            }
+        line(out, "  TYPE " + type->second);
+        const auto curvature = [&](const char* key) {
+            const double r = s.at(key).get<double>();
+            if (r == 0) return std::string("0");
+            return shortest_number_text(
+                zmx_exact_preimage(r, 1.0 / r, [](double x) { return 1.0 / x; }));
+        };
+        const auto parameter = [&](int k, double v) {
+            line(out, "  PARM " + std::to_string(k) + " " + shortest_number_text(v));
+        };
+        const char* conic = shape == "biconic" ? "k_y" : "k";
+        line(out,
+             "  CURV " + (shape == "flat" ? std::string("0")
+                                          : curvature(shape == "biconic" ? "radius_y" : "radius")));
+        if (s.contains(conic)) line(out, "  CONI " + shortest_number_text(s[conic].get<double>()));
+        if (shape == "biconic") {
+            parameter(1, s.at("radius_x").get<double>());
+            parameter(2, s.value("k_x", 0.0));
+        }
+        if (shape == "toroidal") {
+            parameter(1, s.at("radius_of_rotation").get<double>());
+            parameter(2, 0);
+        }
+        if (shape == "asphere") parameter(1, 0);
+        if (shape == "asphere" || shape == "toroidal") {
+            const json a = s.value("coefficients", json::array());
+            for (size_t i = 0; i < a.size(); ++i)
+                parameter(int(i) + 2 + (shape == "toroidal"), a[i].get<double>());
         }
         line(out, "  DISZ " + shortest_number_text(z.after));
         if (!z.glass.empty()) line(out, "  GLAS " + z.glass);

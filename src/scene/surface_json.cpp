@@ -3,16 +3,19 @@
 #include <algorithm>
 
 #include "geometry/lens/asphere_surface.h"
+#include "geometry/lens/biconic_surface.h"
 #include "geometry/lens/conic_surface.h"
 #include "geometry/lens/flat_surface.h"
 #include "geometry/lens/sag_formula_surface.h"
 #include "geometry/lens/spherical_surface.h"
+#include "geometry/lens/toroidal_surface.h"
 #include "scene/json_reader.h"
 #include "scene/spec_reader.h"
 
 namespace lenslab {
 
-const std::vector<std::string> kSurfaceShapeNames{"flat", "sphere", "conic", "asphere", "sag"};
+const std::vector<std::string> kSurfaceShapeNames{"flat",    "sphere",   "conic", "asphere",
+                                                  "biconic", "toroidal", "sag"};
 
 namespace {
 
@@ -48,6 +51,31 @@ std::vector<ElementSpec> declare_surfaces() {
                                 .needed()
                                 .as_written("array of 1 to 7 numbers")
                                 .describe("[A4, A6, ..., A16]")}),
+        declare("biconic",
+                {number_param("radius_x", 0)
+                     .needed()
+                     .describe("vertex radius of the x-z section (0: straight, a cylinder)")
+                     .in_editor("radius in x (0: straight)"),
+                 number_param("radius_y", 0)
+                     .needed()
+                     .describe("vertex radius of the y-z section (0: straight)")
+                     .in_editor("radius in y (0: straight)"),
+                 number_param("k_x", 0).describe("conic constant in x").in_editor("conic k in x"),
+                 number_param("k_y", 0).describe("conic constant in y").in_editor("conic k in y")}),
+        declare("toroidal",
+                {number_param("radius", 0)
+                     .needed()
+                     .describe("vertex radius of the y-z curve (0: straight)")
+                     .in_editor("radius of the y curve (0: straight)"),
+                 k_param(),
+                 nested_param(ParamKind::Array, "coefficients")
+                     .as_written("array of 0 to 7 numbers")
+                     .describe("the y curve's [A4, A6, ..., A16]"),
+                 number_param("radius_of_rotation", 0)
+                     .needed()
+                     .describe("distance from the vertex to the axis (parallel to y) the curve "
+                               "turns about, signed as a radius (0: none, a cylinder)")
+                     .in_editor("radius of rotation (0: none)")}),
         declare("sag", {string_param("formula", "")
                             .needed()
                             .describe("z(r) or z(x, y), 0 on the axis")
@@ -81,11 +109,14 @@ double vertex_radius(SpecReader& r) {
     return radius;
 }
 
-std::vector<double> read_coefficients(JsonObjectReader& r) {
+std::vector<double> read_coefficients(JsonObjectReader& r, bool may_be_empty = false) {
+    if (may_be_empty && !r.has("coefficients")) return {};
     const nlohmann::json& j = r.require("coefficients");
     const std::string path = r.child_path("coefficients");
-    if (!j.is_array() || j.empty() || j.size() > AsphereSurface::kMaxCoefficients) {
-        throw SceneError(path, "must be an array of 1 to 7 numbers [A4, A6, ..., A16]");
+    if (!j.is_array() || (j.empty() && !may_be_empty) ||
+        j.size() > AsphereSurface::kMaxCoefficients) {
+        throw SceneError(path, std::string("must be an array of ") + (may_be_empty ? "0" : "1") +
+                                   " to 7 numbers [A4, A6, ..., A16]");
     }
     std::vector<double> out;
     for (size_t i = 0; i < j.size(); ++i) {
@@ -146,6 +177,15 @@ std::shared_ptr<const LensSurface> read_lens_surface(const nlohmann::json& j,
         const double radius = vertex_radius(r);
         const double k = r.real("k");
         return std::make_shared<AsphereSurface>(radius, k, read_coefficients(r));
+    }
+    if (shape == "biconic") {
+        return std::make_shared<BiconicSurface>(r.real("radius_x"), r.real("radius_y"),
+                                                r.real("k_x"), r.real("k_y"));
+    }
+    if (shape == "toroidal") {
+        return std::make_shared<ToroidalSurface>(r.real("radius"), r.real("k"),
+                                                 read_coefficients(r, true),
+                                                 r.real("radius_of_rotation"));
     }
     const std::string formula = r.text("formula");
     try {

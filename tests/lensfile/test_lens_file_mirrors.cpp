@@ -199,6 +199,34 @@ TEST(LensFileMirrors, AZemaxTiltedElementRoundTripsAsADecentredTiltedElement) {
                 1e-4 * nominal["efl"].get<double>());
 }
 
+// Zemax's BICONICX and TOROIDAL become biconic and toroidal faces; each section focuses as
+// its thick lens: y, R 50 and -200 (the toroid's y curve); x, R 80 and flat (a rotation
+// radius of 0 sweeps the y curve straight along x).
+TEST(LensFileMirrors, ZemaxBiconicAndToroidalFacesAreReadAndWritten) {
+    const std::string file =
+        std::string(LENSLAB_SOURCE_DIR) + "/tests/lensfile/data/anamorphic_singlet.zmx";
+    const ImportedLens lens = import_lens_file(file, "anamorphic");
+    const json element = json(lens.group)["elements"][0];
+    EXPECT_EQ(element["front"], json::parse(R"({"shape": "biconic", "radius_x": 80.0,
+        "radius_y": 50.0, "k_x": 0.0, "k_y": -0.5})"));
+    EXPECT_EQ(element["back"], json::parse(R"({"shape": "toroidal", "radius": -200.0, "k": 0.0,
+        "coefficients": [1e-07], "radius_of_rotation": 0.0})"));
+    const std::string zmx = expect_zmx_round_trip(file, "anamorphic");
+    EXPECT_NE(zmx.find("TYPE TOROIDAL"), std::string::npos) << zmx;
+
+    const Scene scene = parse_scene(R"({"objects": [{"type": "lens_file", "file": ")" + file +
+                                        R"(", "vertex": [0, 0, 0], "axis": [0, 0, 1]}]})",
+                                    "test", "", {.require_camera = false});
+    AnalyzeRequest request;
+    request.report_keys = {"efl", "efl_x", "first_order_basis"};
+    const json report = analyze_report(scene, request);
+    const double n = 1.5, t = 5, r1 = 50, r2 = -200;
+    const double efl_y = 1 / ((n - 1) * (1 / r1 - 1 / r2 + (n - 1) * t / (n * r1 * r2)));
+    EXPECT_EQ(report["first_order_basis"], "parabasal");
+    EXPECT_NEAR(report["efl"].get<double>(), efl_y, 1e-7 * efl_y);
+    EXPECT_NEAR(report["efl_x"].get<double>(), 80 / (n - 1), 1e-7 * 160);
+}
+
 // Other coordinate breaks are refused with their line: here the return break does not undo
 // the first (its tilt differs).
 TEST(LensFileMirrors, ACoordinateBreakThatNeitherFoldsNorMovesAnElementIsRefused) {

@@ -329,7 +329,7 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
     if (mirrors > 0) out << mirrors << (mirrors == 1 ? " mirror, " : " mirrors, ");
     out << system.surfaces.size()
         << (system.coaxial() ? " surfaces on one axis"
-                             : " surfaces about one axis, some decentred or tilted")
+                             : " surfaces about one axis, some decentred, tilted or anamorphic")
         << "; lengths in the scene's unit "
         << "(mm for lens prescriptions), light travelling along +z from the first vertex"
         << (system.folded() ? " and turning back at each mirror (indices signed by the way "
@@ -355,8 +355,8 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
         out << line << (note.empty() ? "" : "  " + note) << "\n";
     };
     if (p.parabasal) {
-        out << "\nParabasal (about the real chief ray of the central field: decentred or tilted "
-               "surfaces), at "
+        out << "\nParabasal (about the real chief ray of the central field: decentred, tilted "
+               "or anamorphic surfaces), at "
             << wavelength_text(r.wavelength_nm) << "\n";
         row("EFL in the x-z section", p.efl_x);
     } else {
@@ -386,7 +386,8 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
     row("RMS spot radius at the best focus", r.spot_best.rms_radius,
         "geometric radius " + length(r.spot_best.geometric_radius));
     if (!system.coaxial()) {
-        out << "  longitudinal spherical aberration: not for a decentred or tilted system\n";
+        out << "  longitudinal spherical aberration: not for a decentred, tilted or anamorphic "
+               "system\n";
     } else {
         out << "  longitudinal spherical aberration (axis crossing minus paraxial focus; < 0: in "
                "front):\n";
@@ -422,7 +423,8 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
         out << "\nSeidel sums: not computed for gradient-index lenses (their transfer terms are "
                "not modelled)\n";
     } else if (seidel && !system.coaxial()) {
-        out << "\nSeidel sums: not computed for a decentred or tilted system (not rotationally "
+        out << "\nSeidel sums: not computed for a decentred, tilted or anamorphic system (not "
+               "rotationally "
                "symmetric); see its spots, fans and --field-map\n";
     } else if (seidel) {
         out << "\n" << seidel_table(system, r.seidel);

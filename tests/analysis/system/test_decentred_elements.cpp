@@ -203,6 +203,32 @@ TEST(DecentredElements, ACylinderLensFocusesItsCurvedSectionOnly) {
     EXPECT_GT(std::abs(f.parabasal->efl_x), 1e6 * singlet_efl());
 }
 
+TEST(DecentredElements, BiconicAndToroidalCylinderLensesFocusAsTheThickLens) {
+    // The same cylinder lens given in closed form (exact normals): the thick lens's EFL in y
+    // to 1e-7, none in x. A toroid whose rotation radius equals its curve's is the sphere:
+    // the same EFL in both sections.
+    const auto biconic = [](double r) {
+        return json{{"shape", "biconic"}, {"radius_x", 0}, {"radius_y", r}};
+    };
+    json scene = decentred_singlet(json::object());
+    scene["objects"][0]["elements"][0]["front"] = biconic(kSingletR1);
+    scene["objects"][0]["elements"][0]["back"] = biconic(kSingletR2);
+    const FirstOrder cylinder = decentred_first_order(decentred_system(scene));
+    ASSERT_TRUE(cylinder.parabasal);
+    EXPECT_NEAR(cylinder.efl, singlet_efl(), 1e-7);
+    EXPECT_GT(std::abs(cylinder.parabasal->efl_x), 1e6 * singlet_efl());
+
+    const auto toroid = [](double r) {
+        return json{{"shape", "toroidal"}, {"radius", r}, {"radius_of_rotation", r}};
+    };
+    scene["objects"][0]["elements"][0]["front"] = toroid(kSingletR1);
+    scene["objects"][0]["elements"][0]["back"] = toroid(kSingletR2);
+    const FirstOrder sphere = decentred_first_order(decentred_system(scene));
+    ASSERT_TRUE(sphere.parabasal);
+    EXPECT_NEAR(sphere.efl, singlet_efl(), 1e-7);
+    EXPECT_NEAR(sphere.parabasal->efl_x, singlet_efl(), 1e-7);
+}
+
 TEST(DecentredElements, TheReportSaysParabasalAndLeavesOutSeidelSums) {
     const OpticalSystem system = decentred_system(decentred_singlet({{"tilt_y", 1}}));
     LensReportOptions options;
@@ -212,7 +238,8 @@ TEST(DecentredElements, TheReportSaysParabasalAndLeavesOutSeidelSums) {
     EXPECT_EQ(j["first_order_basis"], "parabasal");
     EXPECT_EQ(j["first_order"]["basis"], "parabasal");
     EXPECT_TRUE(j["seidel"].is_null());
-    EXPECT_NE(report_table(system, r, true).find("not computed for a decentred or tilted system"),
+    EXPECT_NE(report_table(system, r, true)
+                  .find("not computed for a decentred, tilted or anamorphic system"),
               std::string::npos);
 }
 
