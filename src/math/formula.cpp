@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <limits>
 #include <numbers>
-#include <regex>
+#include <string_view>
 
 namespace lenslab {
 
@@ -22,9 +22,33 @@ std::string describe(int position, const std::string& message) {
 
 // muparser appends " found at position 4" (counting from 0) to its messages; the position
 // is reported separately, counting from 1 as editors do.
+// Scanned from the end by hand: std::regex backtracks for seconds over a long message (a
+// fuzzed formula's text is part of it).
 std::string strip_position(std::string msg) {
-    static const std::regex tail(R"((\s+found)?\s+at position \d+\.?$)");
-    msg = std::regex_replace(msg, tail, "");
+    const auto space_before = [&](size_t i) {
+        while (i > 0 && std::isspace(static_cast<unsigned char>(msg[i - 1]))) --i;
+        return i;
+    };
+    const auto ends_with_at = [&](size_t i, std::string_view word) {
+        return i >= word.size() &&
+               std::string_view(msg).substr(i - word.size(), word.size()) == word;
+    };
+    size_t end = msg.size();
+    if (end > 0 && msg[end - 1] == '.') --end;
+    size_t digits = end;
+    while (digits > 0 && std::isdigit(static_cast<unsigned char>(msg[digits - 1]))) --digits;
+    constexpr std::string_view kAt = "at position ";
+    if (digits < end && ends_with_at(digits, kAt)) {
+        const size_t at = digits - kAt.size();
+        size_t cut = space_before(at);
+        if (cut < at) {
+            if (ends_with_at(cut, "found")) {
+                const size_t before_found = space_before(cut - 5);
+                if (before_found < cut - 5) cut = before_found;
+            }
+            msg.erase(cut);
+        }
+    }
     while (!msg.empty() && (msg.back() == '.' || msg.back() == ' ')) msg.pop_back();
     return msg;
 }
