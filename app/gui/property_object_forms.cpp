@@ -83,6 +83,13 @@ json surface_of_shape(const std::string& chosen, const json* current, double dia
         s["radius"] = s["radius_of_rotation"] = radius;
         s["k"] = old.value("k", 0.0);
     }
+    if (chosen == "xy_polynomial" || chosen == "zernike") {
+        s["radius"] = radius;
+        s["k"] = old.value("k", 0.0);
+        if (old.contains("coefficients")) s["coefficients"] = old["coefficients"];
+        s["normalization_radius"] = diameter / 2;
+        s[chosen == "zernike" ? "zernike" : "terms"] = json::array({0.0});
+    }
     if (chosen == "sag")
         s["formula"] =
             old.contains("formula") ? old["formula"].get<std::string>() : sag_formula_of(old);
@@ -210,11 +217,24 @@ void PropertyPanel::build_surface(const QString& label, const std::string& key) 
     };
     add_field("radius", 2.0 * diameter);
     add_field("k", 0.0);
-    for (const char* field : {"radius_x", "radius_y", "k_x", "k_y", "radius_of_rotation"})
+    for (const char* field :
+         {"radius_x", "radius_y", "k_x", "k_y", "radius_of_rotation", "normalization_radius"})
         add_field(field, 0.0);
     if (shape == "toroidal") {
         add_number_list(label + tr(" y curve A4, A6, ... A16"), key + "/coefficients",
                         json::array(), 7);
+    }
+    if (shape == "xy_polynomial" || shape == "zernike") {
+        add_number_list(label + tr(" base A4, A6, ... A16"), key + "/coefficients", json::array(),
+                        7);
+    }
+    if (shape == "xy_polynomial") {
+        add_number_list(label + tr(" terms x, y, x², xy, y², x³, ..."), key + "/terms",
+                        json::array({0.0}), 230);
+    }
+    if (shape == "zernike") {
+        add_number_list(label + tr(" Zernike Z1, Z2, ... (Noll)"), key + "/zernike",
+                        json::array({0.0}), 231);
     }
     if (shape == "asphere") {
         add_number_list(label + tr(" A4, A6, ... A16"), key + "/coefficients", json::array({0.0}),

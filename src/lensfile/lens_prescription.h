@@ -22,10 +22,16 @@ struct LensFileSurface {
     // curve's y^2, y^4, ...
     std::vector<double> even_terms;
     // A surface not of revolution: "biconic" (Zemax BICONICX: radius and conic above are the
-    // y section's, radius_x and conic_x the x section's, 0 flat) or "toroidal" (Zemax
-    // TOROIDAL: the y curve turned about the radius of rotation, 0 none). Empty: neither.
+    // y section's, radius_x and conic_x the x section's, 0 flat), "toroidal" (Zemax
+    // TOROIDAL: the y curve turned about the radius of rotation, 0 none), "zernike" (Zemax
+    // SZERNSAG: the even asphere plus Noll Zernike terms) or "xy_polynomial" (Zemax XPOLYNOM:
+    // the conic plus terms in x, y, x^2, xy, ...). Empty: none of them.
     std::string anamorphic;
     double radius_x = 0.0, conic_x = 0.0, radius_of_rotation = 0.0;
+    // Zemax's extra data (XDAT 1, 2, ...): of SZERNSAG and XPOLYNOM, the number of terms, the
+    // normalisation radius, then the terms.
+    std::vector<double> extra_data;
+    int extra_data_line = 0;
     std::string glass;  // the medium after the surface; empty: air
     // A model glass given by its index and Abbe number (Zemax ___BLANK, a CODE V glass code
     // such as 517642 or 517000.520000), when glass is empty.

@@ -23,15 +23,50 @@ ordered_json coefficients_mm(const std::vector<double>& terms, double mm) {
     return coefficients;
 }
 
-// A biconic or a toroid (terms: the toroid's y curve's, without a y^2 term).
-ordered_json anamorphic_json(const LensFileSurface& s, const std::vector<double>& terms,
-                             double mm) {
+// A Zernike sag or an XY polynomial: XDAT 1 the number of terms, 2 the normalisation
+// radius, 3 ... the terms (lengths: scaled to mm, as the radius).
+ordered_json polynomial_json(const LensFileSurface& s, const std::vector<double>& terms, double mm,
+                             const std::string& file) {
+    const bool zernike = s.anamorphic == "zernike";
+    const int line = s.extra_data_line ? s.extra_data_line : s.line;
+    const std::vector<double>& x = s.extra_data;
+    const double count = x.empty() ? 0.0 : x[0];
+    const double most = zernike ? 231 : 230;
+    if (!(count >= 1 && count <= most) || count != std::floor(count)) {
+        throw LensFileError(file, line,
+                            "XDAT 1, the number of terms, must be a whole number from 1 to " +
+                                format_number(most) + ", got " + format_number(count));
+    }
+    if (x.size() < 2 || !(x[1] > 0)) {
+        throw LensFileError(file, line,
+                            "XDAT 2, the normalisation radius, must be > 0, got " +
+                                format_number(x.size() < 2 ? 0.0 : x[1]));
+    }
+    ordered_json list = ordered_json::array();
+    for (size_t j = 0; j < size_t(count); ++j)
+        list.push_back(2 + j < x.size() ? x[2 + j] * mm : 0.0);
+    ordered_json out = {{"shape", zernike ? "zernike" : "xy_polynomial"},
+                        {"radius", s.radius * mm},
+                        {"k", s.conic}};
+    if (terms.size() > 1) out["coefficients"] = coefficients_mm(terms, mm);
+    out["normalization_radius"] = x[1] * mm;
+    out[zernike ? "zernike" : "terms"] = list;
+    return out;
+}
+
+// A face not of revolution (terms: the even ones of a toroid's y curve or a Zernike sag's
+// base, without an r^2 term).
+ordered_json anamorphic_json(const LensFileSurface& s, const std::vector<double>& terms, double mm,
+                             const std::string& file) {
     if (s.anamorphic == "biconic") {
         return {{"shape", "biconic"},
                 {"radius_x", s.radius_x * mm},
                 {"radius_y", s.radius * mm},
                 {"k_x", s.conic_x},
                 {"k_y", s.conic}};
+    }
+    if (s.anamorphic == "zernike" || s.anamorphic == "xy_polynomial") {
+        return polynomial_json(s, terms, mm, file);
     }
     ordered_json toroid = {{"shape", "toroidal"}, {"radius", s.radius * mm}, {"k", s.conic}};
     if (terms.size() > 1) toroid["coefficients"] = coefficients_mm(terms, mm);
@@ -76,7 +111,7 @@ ordered_json prescription_surface_json(const LensFilePrescription& p, size_t i) 
         refuse(s.line, prescription_surface_label(i) +
                            ": aspheric terms beyond r^16 cannot be represented");
     }
-    if (!s.anamorphic.empty()) return anamorphic_json(s, terms, mm);
+    if (!s.anamorphic.empty()) return anamorphic_json(s, terms, mm, p.file);
     if (s.radius == 0.0) {
         if (terms.empty()) return {{"shape", "flat"}};
         // A flat base with aspheric terms (a Schmidt plate's): lenslab's asphere needs a

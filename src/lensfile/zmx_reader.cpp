@@ -99,6 +99,7 @@ private:
             return;
         }
         if (k == "PARM") return parameter();
+        if (k == "XDAT") return extra_data();
         if (k == "GLAS") return glass();
         if (k == "DIAM") {
             surface().semi_diameter = number(1, "semi-diameter");
@@ -225,23 +226,27 @@ private:
     void surface_type() {
         surface();
         const std::string t = m_words.size() > 1 ? lens_file_upper(m_words[1]) : "";
-        if (t != "STANDARD" && t != "EVENASPH" && t != "COORDBRK" && t != "BICONICX" &&
-            t != "TOROIDAL") {
+        static const std::map<std::string, std::string> kFreeforms = {
+            {"BICONICX", "biconic"},
+            {"TOROIDAL", "toroidal"},
+            {"SZERNSAG", "zernike"},
+            {"XPOLYNOM", "xy_polynomial"}};
+        const auto freeform = kFreeforms.find(t);
+        if (t != "STANDARD" && t != "EVENASPH" && t != "COORDBRK" && freeform == kFreeforms.end()) {
             refuse("surface type '" + t +
                    "' cannot be represented (lenslab reads STANDARD, EVENASPH, BICONICX, "
-                   "TOROIDAL and COORDBRK)");
+                   "TOROIDAL, SZERNSAG, XPOLYNOM and COORDBRK)");
         }
         m_type = t;
         surface().coordinate_break = t == "COORDBRK";
-        if (t == "BICONICX") surface().anamorphic = "biconic";
-        if (t == "TOROIDAL") surface().anamorphic = "toroidal";
+        if (freeform != kFreeforms.end()) surface().anamorphic = freeform->second;
     }
 
     void parameter() {
         LensFileSurface& s = surface();
         const int i = static_cast<int>(number(1, "parameter number"));
         const double v = number(2, "value");
-        if (m_type == "EVENASPH" && i >= 1 && i <= 8) {
+        if ((m_type == "EVENASPH" || m_type == "SZERNSAG") && i >= 1 && i <= 8) {
             if (static_cast<int>(s.even_terms.size()) < i) s.even_terms.resize(i, 0.0);
             s.even_terms[i - 1] = v;
             return;
@@ -274,6 +279,24 @@ private:
             warn("PARM " + std::to_string(i) + " = " + m_words[2] + " means nothing for a " +
                  m_type + " surface; left out");
         }
+    }
+
+    // XDAT n value ...: the extra data of SZERNSAG and XPOLYNOM surfaces (what follows the
+    // value says how Zemax solves for it).
+    void extra_data() {
+        LensFileSurface& s = surface();
+        const int i = static_cast<int>(number(1, "extra data number"));
+        const double v = number(2, "value");
+        if (i < 1 || i > 300) refuse("XDAT " + std::to_string(i) + ": no such extra data");
+        if (s.anamorphic != "zernike" && s.anamorphic != "xy_polynomial") {
+            if (v != 0.0)
+                warn("XDAT " + std::to_string(i) + " means nothing for a " + m_type +
+                     " surface; left out");
+            return;
+        }
+        if (static_cast<int>(s.extra_data.size()) < i) s.extra_data.resize(i, 0.0);
+        s.extra_data[i - 1] = v;
+        if (!s.extra_data_line) s.extra_data_line = m_line;
     }
 
     // OBSC r R ...: a circular obscuration from radius r to R (Zemax's "circular obscuration"

@@ -275,13 +275,16 @@ private:
         const std::string& path = z.path;
         const std::string shape = s.value("shape", std::string());
         static const std::map<std::string, std::string> kTypes = {
-            {"flat", "STANDARD"},    {"sphere", "STANDARD"},  {"conic", "STANDARD"},
-            {"asphere", "EVENASPH"}, {"biconic", "BICONICX"}, {"toroidal", "TOROIDAL"}};
+            {"flat", "STANDARD"},    {"sphere", "STANDARD"},       {"conic", "STANDARD"},
+            {"asphere", "EVENASPH"}, {"biconic", "BICONICX"},      {"toroidal", "TOROIDAL"},
+            {"zernike", "SZERNSAG"}, {"xy_polynomial", "XPOLYNOM"}};
         const auto type = kTypes.find(shape);
         if (type == kTypes.end()) {
-            throw SceneError(path, "a " + shape +
-                                       " surface has no Zemax surface type lenslab writes "
-                                       "(flat, sphere, conic, asphere, biconic and toroidal do)");
+            throw SceneError(path,
+                             "a " + shape +
+                                 " surface has no Zemax surface type lenslab writes "
+                                 "(flat, sphere, conic, asphere, biconic, toroidal, zernike and "
+                                 "xy_polynomial do)");
         }
         line(out, "  TYPE " + type->second);
         const auto curvature = [&](const char* key) {
@@ -306,11 +309,25 @@ private:
             parameter(1, s.at("radius_of_rotation").get<double>());
             parameter(2, 0);
         }
-        if (shape == "asphere") parameter(1, 0);
-        if (shape == "asphere" || shape == "toroidal") {
+        if (shape == "xy_polynomial" && !s.value("coefficients", json::array()).empty()) {
+            throw SceneError(path + ".coefficients",
+                             "Zemax's extended polynomial (XPOLYNOM) has no aspheric terms: "
+                             "a .zmx file cannot hold them");
+        }
+        if (shape == "asphere" || shape == "zernike") parameter(1, 0);
+        if (shape == "asphere" || shape == "toroidal" || shape == "zernike") {
             const json a = s.value("coefficients", json::array());
             for (size_t i = 0; i < a.size(); ++i)
                 parameter(int(i) + 2 + (shape == "toroidal"), a[i].get<double>());
+        }
+        if (shape == "zernike" || shape == "xy_polynomial") {
+            const json& terms = s.at(shape == "zernike" ? "zernike" : "terms");
+            const auto extra = [&](size_t k, double v) {
+                line(out, "  XDAT " + std::to_string(k) + " " + shortest_number_text(v));
+            };
+            extra(1, double(terms.size()));
+            extra(2, s.at("normalization_radius").get<double>());
+            for (size_t i = 0; i < terms.size(); ++i) extra(i + 3, terms[i].get<double>());
         }
         line(out, "  DISZ " + shortest_number_text(z.after));
         if (!z.glass.empty()) line(out, "  GLAS " + z.glass);

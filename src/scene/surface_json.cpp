@@ -6,6 +6,7 @@
 #include "geometry/lens/biconic_surface.h"
 #include "geometry/lens/conic_surface.h"
 #include "geometry/lens/flat_surface.h"
+#include "geometry/lens/polynomial_sag_surface.h"
 #include "geometry/lens/sag_formula_surface.h"
 #include "geometry/lens/spherical_surface.h"
 #include "geometry/lens/toroidal_surface.h"
@@ -14,8 +15,8 @@
 
 namespace lenslab {
 
-const std::vector<std::string> kSurfaceShapeNames{"flat",    "sphere",   "conic", "asphere",
-                                                  "biconic", "toroidal", "sag"};
+const std::vector<std::string> kSurfaceShapeNames{
+    "flat", "sphere", "conic", "asphere", "biconic", "toroidal", "xy_polynomial", "zernike", "sag"};
 
 namespace {
 
@@ -32,6 +33,24 @@ ParamSpec radius_param() {
 
 ParamSpec k_param() {
     return number_param("k", 0).describe("the conic constant").in_editor("conic constant k");
+}
+
+// The even asphere base and normalisation radius of the polynomial freeforms.
+std::vector<ParamSpec> freeform_base(ParamSpec terms) {
+    return {number_param("radius", 0)
+                .needed()
+                .describe("R, the base's vertex radius (0: a flat base)")
+                .in_editor("base radius (0: flat)"),
+            k_param(),
+            nested_param(ParamKind::Array, "coefficients")
+                .as_written("array of 0 to 7 numbers")
+                .describe("the base's [A4, A6, ..., A16]"),
+            number_param("normalization_radius", 0)
+                .needed()
+                .above(0)
+                .describe("R_n: the terms are in x / R_n and y / R_n")
+                .in_editor("normalization radius"),
+            std::move(terms)};
 }
 
 ElementSpec declare(const std::string& shape, std::vector<ParamSpec> own) {
@@ -76,6 +95,19 @@ std::vector<ElementSpec> declare_surfaces() {
                      .describe("distance from the vertex to the axis (parallel to y) the curve "
                                "turns about, signed as a radius (0: none, a cylinder)")
                      .in_editor("radius of rotation (0: none)")}),
+        declare("xy_polynomial",
+                freeform_base(nested_param(ParamKind::Array, "terms")
+                                  .needed()
+                                  .as_written("array of 1 to 230 numbers")
+                                  .describe("coefficients of x, y, x^2, xy, y^2, x^3, x^2 y, ... "
+                                            "(by degree, then by the power of y; Zemax's order) "
+                                            "in x / R_n and y / R_n"))),
+        declare("zernike",
+                freeform_base(nested_param(ParamKind::Array, "zernike")
+                                  .needed()
+                                  .as_written("array of 1 to 231 numbers")
+                                  .describe("[Z1, Z2, ...]: Noll-ordered (Zemax's Standard) "
+                                            "Zernike terms on the disc of radius R_n"))),
         declare("sag", {string_param("formula", "")
                             .needed()
                             .describe("z(r) or z(x, y), 0 on the axis")
@@ -117,6 +149,20 @@ std::vector<double> read_coefficients(JsonObjectReader& r, bool may_be_empty = f
         j.size() > AsphereSurface::kMaxCoefficients) {
         throw SceneError(path, std::string("must be an array of ") + (may_be_empty ? "0" : "1") +
                                    " to 7 numbers [A4, A6, ..., A16]");
+    }
+    std::vector<double> out;
+    for (size_t i = 0; i < j.size(); ++i) {
+        out.push_back(JsonObjectReader::as_number(j[i], path + "[" + std::to_string(i) + "]"));
+    }
+    return out;
+}
+
+std::vector<double> read_numbers(JsonObjectReader& r, const std::string& key, size_t most,
+                                 const std::string& what) {
+    const nlohmann::json& j = r.require(key);
+    const std::string path = r.child_path(key);
+    if (!j.is_array() || j.empty() || j.size() > most) {
+        throw SceneError(path, "must be an array of 1 to " + std::to_string(most) + " " + what);
     }
     std::vector<double> out;
     for (size_t i = 0; i < j.size(); ++i) {
@@ -186,6 +232,15 @@ std::shared_ptr<const LensSurface> read_lens_surface(const nlohmann::json& j,
         return std::make_shared<ToroidalSurface>(r.real("radius"), r.real("k"),
                                                  read_coefficients(r, true),
                                                  r.real("radius_of_rotation"));
+    }
+    if (shape == "xy_polynomial" || shape == "zernike") {
+        const bool xy = shape == "xy_polynomial";
+        XyPolynomial terms =
+            xy ? xy_polynomial_from_terms(read_numbers(r, "terms", 230, "numbers"))
+               : zernike_sag_polynomial(read_numbers(r, "zernike", 231, "numbers"));
+        return std::make_shared<PolynomialSagSurface>(
+            r.real("radius"), r.real("k"), read_coefficients(r, true),
+            r.real("normalization_radius"), std::move(terms), xy ? "XY polynomial" : "Zernike sag");
     }
     const std::string formula = r.text("formula");
     try {

@@ -670,7 +670,7 @@ lenslab_cli_test(NAME import.seq_to_stdout
 lenslab_cli_test(NAME import.bad.unknown_surface_type
     ARGS import ${lensfile_data}/bad_unknown_surface.zmx -o ${LENSLAB_CLI_OUT}/bad_surface.json
     CHECKS -DEXPECT_EXIT=1
-           "-DSTDERR_LINE=lenslab: error: ${lensfile_data}/bad_unknown_surface.zmx:14: surface type 'SZERNSAG' cannot be represented (lenslab reads STANDARD, EVENASPH, BICONICX, TOROIDAL and COORDBRK)"
+           "-DSTDERR_LINE=lenslab: error: ${lensfile_data}/bad_unknown_surface.zmx:14: surface type 'GRID_SAG' cannot be represented (lenslab reads STANDARD, EVENASPH, BICONICX, TOROIDAL, SZERNSAG, XPOLYNOM and COORDBRK)"
            -DOUTPUT=${LENSLAB_CLI_OUT}/bad_surface.json -DOUTPUT_CREATED=OFF)
 lenslab_cli_test(NAME analyze.lens_file
     ARGS analyze ${lensfile_data}/triplet_scene.json

@@ -227,6 +227,41 @@ TEST(LensFileMirrors, ZemaxBiconicAndToroidalFacesAreReadAndWritten) {
     EXPECT_NEAR(report["efl_x"].get<double>(), 80 / (n - 1), 1e-7 * 160);
 }
 
+// Zemax's SZERNSAG and XPOLYNOM (their extra data: the number of terms, the normalisation
+// radius, the terms) become zernike and xy_polynomial faces, here from centimetres: the
+// paraxial power of Z4 = √3 (2ρ² − 1) and of x² + y² terms as a thick lens's, Z4's constant
+// making the lens thicker.
+TEST(LensFileMirrors, ZemaxZernikeAndXyPolynomialFacesAreReadAndWritten) {
+    const std::string file =
+        std::string(LENSLAB_SOURCE_DIR) + "/tests/lensfile/data/freeform_singlet.zmx";
+    const ImportedLens lens = import_lens_file(file, "freeform");
+    const json element = json(lens.group)["elements"][0];
+    EXPECT_EQ(element["front"]["shape"], "zernike");
+    EXPECT_DOUBLE_EQ(element["front"]["radius"].get<double>(), 50.0);
+    EXPECT_DOUBLE_EQ(element["front"]["normalization_radius"].get<double>(), 10.0);
+    EXPECT_DOUBLE_EQ(element["front"]["coefficients"][0].get<double>(), 1e-7);  // cm^-3 to mm^-3
+    ASSERT_EQ(element["front"]["zernike"].size(), 4u);
+    EXPECT_DOUBLE_EQ(element["front"]["zernike"][3].get<double>(), 0.01);
+    EXPECT_EQ(element["back"]["shape"], "xy_polynomial");
+    EXPECT_EQ(element["back"]["terms"], json::parse("[0.0, 0.0, 0.05, 0.0, 0.05]"));
+    const std::string zmx = expect_zmx_round_trip(file, "freeform");
+    EXPECT_NE(zmx.find("TYPE SZERNSAG"), std::string::npos) << zmx;
+    EXPECT_NE(zmx.find("XDAT 2 10"), std::string::npos) << zmx;
+
+    const Scene scene = parse_scene(R"({"objects": [{"type": "lens_file", "file": ")" + file +
+                                        R"(", "vertex": [0, 0, 0], "axis": [0, 0, 1]}]})",
+                                    "test", "", {.require_camera = false});
+    AnalyzeRequest request;
+    request.report_keys = {"efl", "efl_x"};
+    const json report = analyze_report(scene, request);
+    const double n = 1.5, z4 = 0.01, rn = 10;
+    const double c1 = 1 / 50.0 + 4 * std::sqrt(3.0) * z4 / (rn * rn), t = 5 + std::sqrt(3.0) * z4;
+    const double c2 = -1 / 40.0 + 2 * 0.05 / (rn * rn);
+    const double efl = 1 / ((n - 1) * (c1 - c2 + (n - 1) * t * c1 * c2 / n));
+    EXPECT_NEAR(report["efl"].get<double>(), efl, 1e-7 * efl);
+    EXPECT_NEAR(report["efl_x"].get<double>(), efl, 1e-7 * efl);
+}
+
 // Other coordinate breaks are refused with their line: here the return break does not undo
 // the first (its tilt differs).
 TEST(LensFileMirrors, ACoordinateBreakThatNeitherFoldsNorMovesAnElementIsRefused) {

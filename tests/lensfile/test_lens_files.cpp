@@ -242,9 +242,9 @@ TEST(LensFiles, BadFilesAreRefusedWithOneMessageNamingTheLine) {
               "surface)");
     EXPECT_EQ(error_of(replaced(achromat_text(), "DISZ 97", "DISZ 9.7E")),
               "test.zmx:18: DISZ thickness: '9.7E' is not a number (the line may be cut short)");
-    EXPECT_EQ(error_of(replaced(achromat_text(), "SURF 2\n", "SURF 2\n  TYPE SZERNSAG\n")),
-              "test.zmx:12: surface type 'SZERNSAG' cannot be represented (lenslab reads "
-              "STANDARD, EVENASPH, BICONICX, TOROIDAL and COORDBRK)");
+    EXPECT_EQ(error_of(replaced(achromat_text(), "SURF 2\n", "SURF 2\n  TYPE GRID_SAG\n")),
+              "test.zmx:12: surface type 'GRID_SAG' cannot be represented (lenslab reads "
+              "STANDARD, EVENASPH, BICONICX, TOROIDAL, SZERNSAG, XPOLYNOM and COORDBRK)");
     EXPECT_EQ(error_of(replaced(achromat_text(), "GLAS N-BK7", "GLAS N-BK77")),
               "test.zmx:9: unknown glass 'N-BK77'; did you mean N-BK7 (SCHOTT)?");
     // R = 11 cannot reach the 12.7 mm semi-diameter.

@@ -157,7 +157,7 @@ const BadScene kBadScenes[] = {
     {"surface_zero_radius.json", "objects[0].front.radius",
      "must not be 0 (use {\"shape\": \"flat\"} for a plane)"},
     {"surface_unknown_shape.json", "objects[0].front.shape",
-     "unknown surface shape 'parabola' (known: flat, sphere, conic, asphere, biconic, toroidal, sag)"},
+     "unknown surface shape 'parabola' (known: flat, sphere, conic, asphere, biconic, toroidal, xy_polynomial, zernike, sag)"},
     // Meshes and prisms.
     {"mesh_open_transparent.json", "objects[0].faces",
      "the mesh is not closed: edge (0, 2) belongs to 1 face (face 0): the surface has a hole "

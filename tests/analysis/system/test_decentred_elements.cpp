@@ -229,6 +229,43 @@ TEST(DecentredElements, BiconicAndToroidalCylinderLensesFocusAsTheThickLens) {
     EXPECT_NEAR(sphere.parabasal->efl_x, singlet_efl(), 1e-7);
 }
 
+// The thick lens (Hecht eq. 6.2) of front curvature c1, back radius R2, thickness t.
+double thick_lens_efl(double c1, double t) {
+    const double n = kSingletIndex, c2 = 1 / kSingletR2;
+    return 1 / ((n - 1) * (c1 - c2 + (n - 1) * t * c1 * c2 / n));
+}
+
+TEST(DecentredElements, ZernikeAndXyPolynomialFacesFocusAsTheirVertexCurvature) {
+    // On the front's sphere: Noll Z4 = √3 (2ρ² − 1) adds 4√3 Z4 / R_n² to the vertex curvature
+    // and stands the face off its vertex plane by −√3 Z4 (a thicker lens); C x² + C y² (in
+    // x / R_n, y / R_n) adds 2C / R_n² and nothing at the vertex.
+    const double rn = 10, z4 = 0.01, c = 0.05;
+    json scene = decentred_singlet(json::object());
+    json& front = scene["objects"][0]["elements"][0]["front"];
+    front = {{"shape", "zernike"},
+             {"radius", kSingletR1},
+             {"normalization_radius", rn},
+             {"zernike", {0, 0, 0, z4}}};
+    const FirstOrder zernike = decentred_first_order(decentred_system(scene));
+    const double z4_efl = thick_lens_efl(1 / kSingletR1 + 4 * std::sqrt(3.0) * z4 / (rn * rn),
+                                         kSingletThickness + std::sqrt(3.0) * z4);
+    EXPECT_NEAR(zernike.efl, z4_efl, 1e-7 * z4_efl);
+    EXPECT_NEAR(zernike.parabasal->efl_x, z4_efl, 1e-7 * z4_efl);
+
+    front = {{"shape", "xy_polynomial"},
+             {"radius", kSingletR1},
+             {"normalization_radius", rn},
+             {"terms", {0, 0, c, 0, c}}};
+    const FirstOrder xy = decentred_first_order(decentred_system(scene));
+    const double xy_efl = thick_lens_efl(1 / kSingletR1 + 2 * c / (rn * rn), kSingletThickness);
+    EXPECT_NEAR(xy.efl, xy_efl, 1e-7 * xy_efl);
+    // Only the x² term: the y section keeps the sphere's power.
+    front["terms"] = {0, 0, c};
+    const FirstOrder x_only = decentred_first_order(decentred_system(scene));
+    EXPECT_NEAR(x_only.efl, singlet_efl(), 1e-7 * singlet_efl());
+    EXPECT_NEAR(x_only.parabasal->efl_x, xy_efl, 1e-7 * xy_efl);
+}
+
 TEST(DecentredElements, TheReportSaysParabasalAndLeavesOutSeidelSums) {
     const OpticalSystem system = decentred_system(decentred_singlet({{"tilt_y", 1}}));
     LensReportOptions options;

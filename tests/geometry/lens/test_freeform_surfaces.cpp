@@ -1,6 +1,6 @@
-// Biconic and toroidal surfaces (not of revolution, given in closed form): their sags
-// against the defining formulas and the surfaces of revolution they reduce to, their
-// gradients against finite differences, and hits that lie on the surface.
+// Surfaces not of revolution given in closed form (biconic, toroidal, XY polynomial, Zernike
+// sag): their sags against the defining formulas and the surfaces of revolution they reduce
+// to, their gradients against finite differences, and hits that lie on the surface.
 
 #include <gtest/gtest.h>
 
@@ -8,6 +8,7 @@
 
 #include "geometry/lens/biconic_surface.h"
 #include "geometry/lens/conic_surface.h"
+#include "geometry/lens/polynomial_sag_surface.h"
 #include "geometry/lens/spherical_surface.h"
 #include "geometry/lens/toroidal_surface.h"
 #include "math/rng.h"
@@ -123,6 +124,71 @@ TEST(ToroidalSurface, TheYCurveTurnsAboutAnAxisParallelToY) {
     const ToroidalSurface cylinder(ry, k, {a4}, 0);
     EXPECT_NEAR(cylinder.sag_xy(9, 4), zy(4) - a6 * std::pow(4.0, 6), 1e-14);
     EXPECT_FALSE(cylinder.is_rotationally_symmetric());
+}
+
+TEST(XyPolynomialSurface, TermsInZemaxsOrderOnAnAsphereBase) {
+    // x, y, x^2, xy, y^2, x^3, x^2 y: the first seven terms.
+    const XyPolynomial p = xy_polynomial_from_terms({1, 2, 3, 4, 5, 6, 7});
+    EXPECT_EQ(p.at(1, 0), 1);
+    EXPECT_EQ(p.at(0, 1), 2);
+    EXPECT_EQ(p.at(2, 0), 3);
+    EXPECT_EQ(p.at(1, 1), 4);
+    EXPECT_EQ(p.at(0, 2), 5);
+    EXPECT_EQ(p.at(3, 0), 6);
+    EXPECT_EQ(p.at(2, 1), 7);
+    EXPECT_EQ(p.at(1, 2), 0);
+    const double rn = 12, r = 60, k = -0.7, a4 = 3e-7;
+    const PolynomialSagSurface s(r, k, {a4}, rn, p, "XY polynomial");
+    for (double x : {0.0, 4.0, -7.0}) {
+        for (double y : {0.0, 2.5, -9.0}) {
+            const double u = x / rn, v = y / rn, rr = std::hypot(x, y);
+            const double expected = ConicSurface(r, k).sag(rr) + a4 * std::pow(rr, 4) + u + 2 * v +
+                                    3 * u * u + 4 * u * v + 5 * v * v + 6 * u * u * u +
+                                    7 * u * u * v;
+            EXPECT_NEAR(s.sag_xy(x, y), expected, 1e-12);
+        }
+    }
+    expect_gradient_matches(s, 10);
+}
+
+TEST(XyPolynomialSurface, EqualSquareTermsOnAFlatBaseAreAParaboloid) {
+    // C (x^2 + y^2) / R_n^2 is the paraboloid of vertex radius R_n^2 / (2C).
+    const double rn = 10, c = 0.4;
+    const PolynomialSagSurface s(0, 0, {}, rn, xy_polynomial_from_terms({0, 0, c, 0, c}),
+                                 "XY polynomial");
+    const ConicSurface paraboloid(rn * rn / (2 * c), -1);
+    for (double x : {0.0, 3.0, -6.0}) {
+        for (double y : {1.0, -8.0}) {
+            EXPECT_NEAR(s.sag_xy(x, y), paraboloid.sag(std::hypot(x, y)), 1e-13);
+            const Vec3 p{x, y, s.sag_xy(x, y)};
+            EXPECT_NEAR(length(s.normal(p) - paraboloid.normal(p)), 0.0, 1e-13);
+        }
+    }
+    expect_hits_lie_on_the_surface(s, 10);
+}
+
+TEST(ZernikeSagSurface, NollTermsOnTheNormalisationDisc) {
+    // Zemax's Zernike Standard Sag: Z4 = √3 (2ρ² − 1), Z7 = √8 (3ρ³ − 2ρ) sin θ, Z11 =
+    // √5 (6ρ⁴ − 6ρ² + 1), ρ = r / R_n; the constant of Z4 and Z11 stands the face off its
+    // vertex plane.
+    const double rn = 8, z4 = 0.01, z7 = -0.002, z11 = 0.003, r = -40;
+    std::vector<double> noll(11, 0.0);
+    noll[3] = z4;
+    noll[6] = z7;
+    noll[10] = z11;
+    const PolynomialSagSurface s(r, 0, {}, rn, zernike_sag_polynomial(noll), "Zernike sag");
+    for (double x : {0.0, 2.0, -5.0}) {
+        for (double y : {0.0, 3.0, -6.0}) {
+            const double rho = std::hypot(x, y) / rn, sin_t = rho > 0 ? y / (rho * rn) : 0.0;
+            const double expected =
+                SphericalSurface(r).sag(rho * rn) + z4 * std::sqrt(3.0) * (2 * rho * rho - 1) +
+                z7 * std::sqrt(8.0) * (3 * std::pow(rho, 3) - 2 * rho) * sin_t +
+                z11 * std::sqrt(5.0) * (6 * std::pow(rho, 4) - 6 * rho * rho + 1);
+            EXPECT_NEAR(s.sag_xy(x, y), expected, 1e-13);
+        }
+    }
+    expect_gradient_matches(s, 8);
+    expect_hits_lie_on_the_surface(s, 8);
 }
 
 }  // namespace
