@@ -370,8 +370,14 @@ void PropertyPanel::add_param(const ParamSpec& p, const std::string& prefix) {
         case ParamKind::Direction:
             add_vec3(label, key, d.is_null() ? json::array({0, 0, -1}) : d, -1e6, 1e6, p.doc);
             break;
-        case ParamKind::Object:
         case ParamKind::Array:
+            // An array of numbers: a comma-separated list (one 0 to start where it needs one).
+            if (p.most_count > 0) {
+                const json start = json::array_t(p.least_count, json(0.0));
+                add_number_list(label, key, d.is_array() ? d : start, p.most_count);
+            }
+            break;  // other arrays have forms of their own
+        case ParamKind::Object:
             break;  // nested things have forms of their own
     }
 }

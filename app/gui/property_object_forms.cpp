@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "geometry/implicit_solid.h"
-#include "geometry/lens/sag_formula_surface.h"
 #include "image/image_io.h"
 #include "json_pointer.h"
 #include "number_field.h"
@@ -27,76 +26,12 @@
 #include "scene/object_types.h"
 #include "scene/planar_json.h"
 #include "scene/render_settings_spec.h"
-#include "scene/surface_json.h"
+#include "scene/surface_shapes.h"
 #include "scene_document.h"
 
 namespace lenslab::gui {
 
 using nlohmann::json;
-
-namespace {
-
-// A number as a formula term: negative ones in parentheses.
-std::string term(double v) {
-    std::string s = format_number(v);
-    if (v < 0) {  // built in place: GCC 12 warns falsely (-Wrestrict) on "(" + s + ")"
-        s.insert(0, 1, '(');
-        s.push_back(')');
-    }
-    return s;
-}
-
-// The sag formula of a conic or even asphere with these parameters, so that switching a
-// surface to "sag" keeps its shape and shows how it is written.
-std::string sag_formula_of(const json& s) {
-    if (!s.contains("radius")) return "0";
-    const double radius = s.value("radius", 1.0), k = s.value("k", 0.0);
-    const std::string q = k == 0 ? "" : term(1 + k) + "*";
-    std::string f =
-        "r^2/(" + term(radius) + "*(1 + sqrt(1 - " + q + "r^2/" + term(radius) + "^2)))";
-    if (s.contains("coefficients") && s["coefficients"].is_array()) {
-        int power = 4;
-        for (const json& a : s["coefficients"]) {
-            if (a.is_number() && a.get<double>() != 0)
-                f += " + " + term(a.get<double>()) + "*r^" + std::to_string(power);
-            power += 2;
-        }
-    }
-    return f;
-}
-
-// A surface of shape `chosen` that keeps what it can of `current` (radius, k,
-// coefficients); new lenses get a radius of twice the diameter.
-json surface_of_shape(const std::string& chosen, const json* current, double diameter) {
-    const json old = current && current->is_object() ? *current : json::object();
-    json s{{"shape", chosen}};
-    const double radius = old.contains("radius") ? old["radius"].get<double>() : 2.0 * diameter;
-    if (chosen == "sphere" || chosen == "conic" || chosen == "asphere") s["radius"] = radius;
-    if (chosen == "conic" || chosen == "asphere") s["k"] = old.value("k", 0.0);
-    if (chosen == "asphere")
-        s["coefficients"] = old.contains("coefficients") ? old["coefficients"] : json::array({0.0});
-    if (chosen == "biconic") {
-        s["radius_x"] = s["radius_y"] = radius;
-        s["k_x"] = s["k_y"] = old.value("k", 0.0);
-    }
-    if (chosen == "toroidal") {
-        s["radius"] = s["radius_of_rotation"] = radius;
-        s["k"] = old.value("k", 0.0);
-    }
-    if (chosen == "xy_polynomial" || chosen == "zernike") {
-        s["radius"] = radius;
-        s["k"] = old.value("k", 0.0);
-        if (old.contains("coefficients")) s["coefficients"] = old["coefficients"];
-        s["normalization_radius"] = diameter / 2;
-        s[chosen == "zernike" ? "zernike" : "terms"] = json::array({0.0});
-    }
-    if (chosen == "sag")
-        s["formula"] =
-            old.contains("formula") ? old["formula"].get<std::string>() : sag_formula_of(old);
-    return s;
-}
-
-}  // namespace
 
 void PropertyPanel::build_object() {
     const json& o = *value_at("");
@@ -200,49 +135,31 @@ void PropertyPanel::build_surface(const QString& label, const std::string& key) 
     // what carries over.
     const double diameter = value_at("diameter") ? value_at("diameter")->get<double>() : 1.0;
     QStringList shapes;
-    for (const std::string& name : kSurfaceShapeNames) shapes << QString::fromStdString(name);
+    for (const SurfaceShapeEntry& e : surface_shapes()) shapes << QString::fromStdString(e.name);
     add_choice(label, key + "/shape", shape, shapes,
                [this, key, label, diameter](const std::string& chosen) {
-                   commit(key, surface_of_shape(chosen, value_at(key), diameter), label);
+                   const SurfaceShapeEntry* entry = find_surface_shape(chosen);
+                   const json* current = value_at(key);
+                   if (entry)
+                       commit(key, entry->start(current ? *current : json::object(), diameter),
+                              label);
                });
-    // The shape's declared fields, labelled with the face they belong to; a new radius is
-    // twice the diameter.
-    const ElementSpec* declared = surface_spec(shape);
-    const auto add_field = [&](const std::string& field, const json& shown) {
-        if (!declared || !declared->find(field)) return;
-        ParamSpec p = declared->param(field);
+    // The shape's declared fields, labelled with the face they belong to, showing what a new
+    // face of the shape starts with where the file has nothing.
+    const SurfaceShapeEntry* entry = find_surface_shape(shape);
+    if (!entry) return;
+    const json fresh = entry->start(json::object(), diameter);
+    for (ParamSpec p : entry->spec().params) {
+        if (p.label.empty()) continue;
         p.label = label.toStdString() + " " + p.label;
+        const json shown = fresh.contains(p.key) ? fresh[p.key] : p.fallback;
+        if (p.kind == ParamKind::String && entry->check_formula) {
+            add_formula(QString::fromStdString(p.label), key + "/" + p.key,
+                        shown.is_string() ? shown.get<std::string>() : "", entry->check_formula);
+            continue;
+        }
         if (p.fallback.is_null()) p.fallback = shown;
         add_param(p, key + "/");
-    };
-    add_field("radius", 2.0 * diameter);
-    add_field("k", 0.0);
-    for (const char* field :
-         {"radius_x", "radius_y", "k_x", "k_y", "radius_of_rotation", "normalization_radius"})
-        add_field(field, 0.0);
-    if (shape == "toroidal") {
-        add_number_list(label + tr(" y curve A4, A6, ... A16"), key + "/coefficients",
-                        json::array(), 7);
-    }
-    if (shape == "xy_polynomial" || shape == "zernike") {
-        add_number_list(label + tr(" base A4, A6, ... A16"), key + "/coefficients", json::array(),
-                        7);
-    }
-    if (shape == "xy_polynomial") {
-        add_number_list(label + tr(" terms x, y, x², xy, y², x³, ..."), key + "/terms",
-                        json::array({0.0}), 230);
-    }
-    if (shape == "zernike") {
-        add_number_list(label + tr(" Zernike Z1, Z2, ... (Noll)"), key + "/zernike",
-                        json::array({0.0}), 231);
-    }
-    if (shape == "asphere") {
-        add_number_list(label + tr(" A4, A6, ... A16"), key + "/coefficients", json::array({0.0}),
-                        7);
-    }
-    if (shape == "sag") {
-        add_formula(label + tr(" z(r) or z(x, y)"), key + "/formula", "r^2/100",
-                    SagFormulaSurface::check);
     }
 }
 

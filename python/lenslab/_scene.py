@@ -137,9 +137,10 @@ SceneSource = Union[Scene, Mapping[str, Any], str, "os.PathLike[str]"]
 
 
 def types() -> dict[str, dict[str, list[str]]]:
-    """The object and light types a scene may hold, each with the keys it takes (besides
-    "type"), from lenslab's own type tables: {"objects": {"sphere": [...]}, "lights": {...}}.
-    The same as `lenslab types --json`."""
+    """The object and light types a scene may hold and the shapes a lens surface may take,
+    each with the keys it takes (besides "type" or "shape"), from lenslab's own type tables:
+    {"objects": {"sphere": [...]}, "lights": {...}, "surfaces": {"asphere": [...]}}. The
+    same as `lenslab types --json`."""
     listing = json.loads(_lenslab.types_json())
     return {kind: {row["type"]: row["keys"] for row in rows} for kind, rows in listing.items()}
 

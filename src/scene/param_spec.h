@@ -55,6 +55,8 @@ struct ParamSpec {
     bool cli = false;  // `lenslab render --KEY` overrides it (the option names are a contract)
     bool positions = false;  // an array of points that move with the element (its vertices)
     int decimals = 6;        // digits the editor shows
+    // An array of numbers: how many it holds (most 0: not such an array).
+    size_t least_count = 0, most_count = 0;
 
     // Chained setters keep each declaration one readable expression.
     ParamSpec& above(double v) { return (min = Bound{v, true}, *this); }
@@ -74,6 +76,15 @@ struct ParamSpec {
     ParamSpec& needed() { return (required = true, fallback = nullptr, *this); }
     ParamSpec& as_written(std::string words) { return (written_as = std::move(words), *this); }
     ParamSpec& of_positions() { return (positions = true, *this); }
+    // An array of `least` to `most` numbers (the editor's comma-separated list).
+    ParamSpec& holding_numbers(size_t least, size_t most) {
+        kind = ParamKind::Array;
+        least_count = least;
+        most_count = most;
+        written_as =
+            "array of " + std::to_string(least) + " to " + std::to_string(most) + " numbers";
+        return *this;
+    }
 
     bool is_integer() const { return kind == ParamKind::WholeNumber; }
     // The command-line option for this key: "max_depth" -> "--max-depth".

@@ -1,7 +1,7 @@
 #pragma once
-// Lens surfaces in scene files: `{"shape": "flat" | "sphere" | "conic" | "asphere" | "sag",
-// ...}` (docs/scene-format.md, "Surfaces"). Kept apart from scene_json.cpp because every
-// shape has its own keys (declared here, one ElementSpec per shape) and checks.
+// Lens surfaces in scene files: `{"shape": "sphere", ...}` (docs/scene-format.md,
+// "Surfaces"): the shape's entry in surface_shapes.h's table declares and reads its keys;
+// here, the keys no shape takes and a shape's foreign keys are refused.
 
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -13,12 +13,8 @@
 
 namespace lenslab {
 
-// The shapes a lens face can take, in the order the documentation and the editor list them.
-extern const std::vector<std::string> kSurfaceShapeNames;
-
-// Each shape's declaration ("sphere surface": `shape` and the shape's own keys), in the order
-// of kSurfaceShapeNames; the one for `shape`, or null.
-const std::vector<ElementSpec>& surface_specs();
+// Each shape's declaration ("sphere surface": `shape` and the shape's own keys); the shapes
+// themselves are surface_shapes.h's table. The one for `shape`, or null.
 const ElementSpec* surface_spec(const std::string& shape);
 const ElementSpec& flat_surface_spec();
 const ElementSpec& sphere_surface_spec();

@@ -2,6 +2,7 @@
 
 #include "scene/light_types.h"
 #include "scene/object_types.h"
+#include "scene/surface_shapes.h"
 
 namespace lenslab {
 
@@ -25,6 +26,12 @@ nlohmann::ordered_json scene_types_json() {
     out["lights"] = nlohmann::ordered_json::array();
     for (const LightTypeEntry& e : light_types())
         out["lights"].push_back(type_row(e.name, e.spec()));
+    out["surfaces"] = nlohmann::ordered_json::array();
+    for (const SurfaceShapeEntry& e : surface_shapes()) {
+        nlohmann::ordered_json row = type_row(e.name, e.spec());
+        row["keys"].erase(0);  // "shape", which the row's type already names
+        out["surfaces"].push_back(std::move(row));
+    }
     return out;
 }
 

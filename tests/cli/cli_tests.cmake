@@ -789,5 +789,8 @@ lenslab_cli_test(NAME sweep.bad.last_frame
 # `lenslab types` lists every type from the tables, the area lights among them.
 lenslab_cli_test(NAME types.lists_area_lights ARGS types
     CHECKS -DEXPECT_EXIT=0 "-DSTDOUT_CONTAINS=disc_light      center, normal, radius, power, color, spectrum")
+# ... and every lens surface shape from its table, with the keys besides "shape".
+lenslab_cli_test(NAME types.lists_surface_shapes ARGS types
+    CHECKS -DEXPECT_EXIT=0 "-DSTDOUT_CONTAINS=biconic         radius_x, radius_y, k_x, k_y")
 lenslab_cli_test(NAME types.json ARGS types --json
     CHECKS -DEXPECT_EXIT=0 -DSTDOUT_JSON=ON "-DSTDOUT_CONTAINS=\"rectangle_light\"")

@@ -25,6 +25,7 @@
 #include "scene/planar_json.h"
 #include "scene/render_settings_spec.h"
 #include "scene/surface_json.h"
+#include "scene/surface_shapes.h"
 #include "scene_document.h"
 #include "scene_tree.h"
 
@@ -102,6 +103,7 @@ void check_form(MainWindow& w, const ElementSpec& spec, const std::vector<std::s
                 break;
             }
             case ParamKind::String:
+            case ParamKind::Array:  // a formula, or numbers as a comma-separated list
                 QVERIFY2(w.panel()->findChild<QLineEdit*>(name), where.constData());
                 break;
             default: {  // colours, points, directions: three boxes, key.x, key.y, key.z
@@ -264,6 +266,32 @@ private slots:
         QVERIFY2(w.open_file(path, &error), qPrintable(error));
         w.tree()->select_pointer("/objects/0");
         check_form(w, lenslab::box_spec(), {});
+    }
+
+    // A lens face switched to each shape of the table becomes a valid surface of that shape
+    // (the document refuses an invalid one), and its form shows the shape's declared fields.
+    void every_surface_shape_switches_and_has_its_form() {
+        QTemporaryDir dir;
+        MainWindow w;
+        open_objects(w, dir,
+                     {{{"type", "lens"},
+                       {"center", {0, 0, 0}},
+                       {"axis", {0, 0, 1}},
+                       {"thickness", 0.5},
+                       {"diameter", 1},
+                       {"front", {{"shape", "asphere"}, {"radius", 2}, {"coefficients", {0.001}}}},
+                       {"back", {{"shape", "sphere"}, {"radius", -2}}},
+                       {"material", "grey"}}});
+        for (const lenslab::SurfaceShapeEntry& e : lenslab::surface_shapes()) {
+            auto* shape = w.panel()->findChild<QComboBox*>("field:front/shape");
+            QVERIFY(shape);
+            shape->setCurrentText(QString::fromStdString(e.name));
+            QCOMPARE(shape->currentText(), QString::fromStdString(e.name));
+            emit shape->activated(shape->currentIndex());
+            QCOMPARE(w.document()->json()["objects"][0]["front"]["shape"].get<std::string>(),
+                     e.name);
+            check_form(w, e.spec(), {}, "front/");
+        }
     }
 
     // The lens's two forms, its faces, the lens group and its elements, the mesh, the prism

@@ -83,6 +83,8 @@ def test_types_list_the_area_lights_and_a_scene_with_one_renders():
                                              "spectrum"]
     assert "size" in types["lights"]["rectangle_light"]
     assert "sphere" in types["objects"]
+    assert types["surfaces"]["conic"] == ["radius", "k"]
+    assert list(types["surfaces"])[:4] == ["flat", "sphere", "conic", "asphere"]
     scene = lenslab.Scene.from_dict({
         "camera": {"position": [0, 3, 3], "look_at": [0, 0, 0]},
         "objects": [{"type": "rectangle", "center": [0, 0, 0], "normal": [0, 1, 0],
