@@ -30,4 +30,8 @@ Aabb Disc::bounds() const {
     return b;
 }
 
+std::optional<FlatPatch> Disc::flat_patch() const {
+    return FlatPatch{m_frame, -m_radius, m_radius, -m_radius, m_radius, m_radius, {}};
+}
+
 }  // namespace lenslab

@@ -15,6 +15,7 @@ public:
     bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const override;
     Aabb bounds() const override;
     bool is_closed() const override { return false; }
+    std::optional<FlatPatch> flat_patch() const override;
 
     const PlaneFrame& frame() const { return m_frame; }  // origin at the centre
     const Vec3& centre() const { return m_frame.origin; }

@@ -28,4 +28,15 @@ Aabb Rectangle::bounds() const {
     return b;
 }
 
+std::optional<FlatPatch> Rectangle::flat_patch() const {
+    const double w = 0.5 * m_width, h = 0.5 * m_height;
+    return FlatPatch{m_frame,
+                     -w,
+                     w,
+                     -h,
+                     h,
+                     0,
+                     {m_frame.at(-w, -h), m_frame.at(w, -h), m_frame.at(w, h), m_frame.at(-w, h)}};
+}
+
 }  // namespace lenslab

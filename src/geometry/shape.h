@@ -1,6 +1,9 @@
 #pragma once
 // Interface of every intersectable solid or surface in a scene.
 
+#include <optional>
+
+#include "geometry/flat_patch.h"
 #include "math/aabb.h"
 #include "math/ray.h"
 
@@ -33,6 +36,8 @@ public:
     virtual bool contains(const Vec3& p) const;
     // Default: the sphere through the corners of bounds().
     virtual BoundingSphere bounding_sphere() const;
+    // A flat shape's frame and outline (a disc, rectangle or triangle); nothing for others.
+    virtual std::optional<FlatPatch> flat_patch() const { return std::nullopt; }
 };
 
 }  // namespace lenslab

@@ -1,5 +1,6 @@
 #include "geometry/triangle.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lenslab {
@@ -34,6 +35,19 @@ Aabb Triangle::bounds() const {
     Aabb b;
     for (const Vec3& v : m_v) b.expand(v);
     return b;
+}
+
+std::optional<FlatPatch> Triangle::flat_patch() const {
+    // u along the first edge, from the first vertex.
+    const Vec3 u = normalize(m_v[1] - m_v[0]);
+    FlatPatch p{{m_v[0], u, cross(m_normal, u), m_normal}, 0, 0, 0, 0, 0, {m_v[0], m_v[1], m_v[2]}};
+    for (const Vec3& corner : p.corners) {
+        p.u0 = std::min(p.u0, p.frame.u_of(corner));
+        p.u1 = std::max(p.u1, p.frame.u_of(corner));
+        p.v0 = std::min(p.v0, p.frame.v_of(corner));
+        p.v1 = std::max(p.v1, p.frame.v_of(corner));
+    }
+    return p;
 }
 
 }  // namespace lenslab

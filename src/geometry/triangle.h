@@ -12,6 +12,7 @@ public:
     bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const override;
     Aabb bounds() const override;
     bool is_closed() const override { return false; }
+    std::optional<FlatPatch> flat_patch() const override;
 
     const Vec3& vertex(int i) const { return m_v[i]; }
     const Vec3& normal() const { return m_normal; }

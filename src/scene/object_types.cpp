@@ -116,18 +116,18 @@ std::shared_ptr<const Shape> declared(SpecReader& r, const std::string&) {
 std::vector<ObjectTypeEntry> make_table() {
     // clang-format off
     return {
-        //  type          ObjectType             declaration        reader                         detect emit  mesh check
-        {"sphere",     ObjectType::Sphere,    &sphere_spec,     &declared<read_sphere>,       false, true,  false},
-        {"triangle",   ObjectType::Triangle,  &triangle_spec,   &declared<read_triangle>,     true,  false, false},
-        {"disc",       ObjectType::Disc,      &disc_spec,       &declared<read_disc>,         true,  false, false},
-        {"rectangle",  ObjectType::Rectangle, &rectangle_spec,  &declared<read_rectangle>,    true,  false, false},
-        {"lens",       ObjectType::Lens,      &lens_spec,       &declared<read_lens>,         false, false, false},
-        {"lens_group", ObjectType::Lens,      &lens_group_spec, nullptr,                      false, false, false},  // read by scene_from_json
-        {"mesh",       ObjectType::Mesh,      &mesh_spec,       &read_mesh,                  false, false, true},
-        {"prism",      ObjectType::Mesh,      &prism_spec,      &declared<read_prism>,        false, false, false},  // closed by construction
-        {"implicit",   ObjectType::Implicit,  &implicit_spec,   &declared<read_implicit>,     false, false, false},
-        {"box",        ObjectType::Mesh,      &box_spec,        &declared<read_box>,          false, false, false},  // closed by construction
-        {"mirror",     ObjectType::Mirror,    &mirror_spec,     &declared<read_mirror>,       false, false, false},
+        //  type          ObjectType             declaration        reader                         detector size   emit  mesh check
+        {"sphere",     ObjectType::Sphere,    &sphere_spec,     &declared<read_sphere>,       nullptr,     true,  false},
+        {"triangle",   ObjectType::Triangle,  &triangle_spec,   &declared<read_triangle>,     "vertices",  false, false},
+        {"disc",       ObjectType::Disc,      &disc_spec,       &declared<read_disc>,         "radius",    false, false},
+        {"rectangle",  ObjectType::Rectangle, &rectangle_spec,  &declared<read_rectangle>,    "size",      false, false},
+        {"lens",       ObjectType::Lens,      &lens_spec,       &declared<read_lens>,         nullptr,     false, false},
+        {"lens_group", ObjectType::Lens,      &lens_group_spec, nullptr,                      nullptr,     false, false},  // read by scene_from_json
+        {"mesh",       ObjectType::Mesh,      &mesh_spec,       &read_mesh,                  nullptr,     false, true},
+        {"prism",      ObjectType::Mesh,      &prism_spec,      &declared<read_prism>,        nullptr,     false, false},  // closed by construction
+        {"implicit",   ObjectType::Implicit,  &implicit_spec,   &declared<read_implicit>,     nullptr,     false, false},
+        {"box",        ObjectType::Mesh,      &box_spec,        &declared<read_box>,          nullptr,     false, false},  // closed by construction
+        {"mirror",     ObjectType::Mirror,    &mirror_spec,     &declared<read_mirror>,       nullptr,     false, false},
     };
     // clang-format on
 }

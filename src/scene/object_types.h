@@ -24,7 +24,8 @@ struct ObjectTypeEntry {
     // Builds the shape; `r` is the SpecReader made from `spec`. Null for lens_group, which
     // scene_from_json reads itself (it makes one object per element).
     std::shared_ptr<const Shape> (*read)(SpecReader& r, const std::string& base_dir) = nullptr;
-    bool may_detect = false;       // may take `detector` (flat shapes)
+    // May take `detector` (flat shapes): the key that sets its size ("radius"), else null.
+    const char* detector_size_key = nullptr;
     bool may_emit = false;         // its material may have an emission
     bool open_mesh_check = false;  // refuse an open mesh with a transparent material
 };

@@ -148,39 +148,17 @@ std::optional<DetectorSettings> read_detector(JsonObjectReader& r) {
     return d;
 }
 
-void check_detector_size(const Shape& shape, const DetectorSettings& d, const std::string& path) {
+void check_detector_size(const Shape& shape, const DetectorSettings& d, const std::string& path,
+                         const std::string& size_key) {
     // The extent along u and v, as the detector grid will see it.
-    double width = 0, height = 0;
-    std::string key;
-    if (const auto* disc = dynamic_cast<const Disc*>(&shape)) {
-        width = height = 2 * disc->radius();
-        key = "radius";
-    } else if (const auto* rect = dynamic_cast<const Rectangle*>(&shape)) {
-        width = rect->width();
-        height = rect->height();
-        key = "size";
-    } else if (const auto* t = dynamic_cast<const Triangle*>(&shape)) {
-        const Vec3 u = normalize(t->vertex(1) - t->vertex(0));
-        const Vec3 v = cross(t->normal(), u);
-        double u_lo = 0, u_hi = 0, v_lo = 0, v_hi = 0;
-        for (int i = 1; i < 3; ++i) {
-            const Vec3 e = t->vertex(i) - t->vertex(0);
-            u_lo = std::min(u_lo, dot(e, u));
-            u_hi = std::max(u_hi, dot(e, u));
-            v_lo = std::min(v_lo, dot(e, v));
-            v_hi = std::max(v_hi, dot(e, v));
-        }
-        width = u_hi - u_lo;
-        height = v_hi - v_lo;
-        key = "vertices";
-    } else {
-        return;  // not a detector shape: check_detector_allowed refuses it
-    }
+    const std::optional<FlatPatch> patch = shape.flat_patch();
+    if (!patch) return;  // not a detector shape: check_detector_allowed refuses it
+    const double width = patch->u1 - patch->u0, height = patch->v1 - patch->v0;
     int nu = 1, nv = 1;
     detector_cells(d, width, height, nu, nv);
     const double cell = std::min(width / nu, height / nv);
     if (!(cell >= kMinDetectorCell)) {
-        throw SceneError(path + "." + key,
+        throw SceneError(path + "." + size_key,
                          "too small for a detector: its cells would be " + format_number(cell) +
                              " across, and each must be at least " +
                              format_number(kMinDetectorCell) +

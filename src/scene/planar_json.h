@@ -37,9 +37,10 @@ const ElementSpec& detector_spec();
 // The object's `detector` key: nothing when absent or false.
 std::optional<DetectorSettings> read_detector(JsonObjectReader& r);
 
-// Refuses a detector so small that its cells' areas underflow, naming the object's size key
-// (`path` is the object's own path).
-void check_detector_size(const Shape& shape, const DetectorSettings& d, const std::string& path);
+// Refuses a detector so small that its cells' areas underflow, naming the object's key that
+// sets its size, `size_key` (`path` is the object's own path).
+void check_detector_size(const Shape& shape, const DetectorSettings& d, const std::string& path,
+                         const std::string& size_key);
 
 // Refuses `detector` on an object that is not flat (`type` names it in the message).
 void check_detector_allowed(const nlohmann::json& object, const std::string& path,

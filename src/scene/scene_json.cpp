@@ -243,14 +243,14 @@ SceneObject read_object(const json& j, const std::string& path,
     if (!kind || !kind->read) throw SceneError(path + ".type", unknown_object_type_message(type));
     SceneObject o;
     o.type = kind->type;
-    if (!kind->may_detect) check_detector_allowed(j, path, type);
+    if (!kind->detector_size_key) check_detector_allowed(j, path, type);
     // Every kind reads through its declaration.
     SpecReader r(j, path, kind->spec());
     o.name = r.string("name", path);
     o.photon_target = r.boolean("photon_target");
     o.shape = kind->read(r, base_dir);
-    if (kind->may_detect) o.detector = read_detector(r);
-    if (o.detector) check_detector_size(*o.shape, *o.detector, path);
+    if (kind->detector_size_key) o.detector = read_detector(r);
+    if (o.detector) check_detector_size(*o.shape, *o.detector, path, kind->detector_size_key);
     if (const json* m = r.find("medium")) {
         if (!o.shape->is_closed()) {
             throw SceneError(r.child_path("medium"),

@@ -5,9 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "geometry/disc.h"
-#include "geometry/rectangle.h"
-#include "geometry/triangle.h"
+#include "geometry/shape.h"
 
 namespace lenslab {
 
@@ -79,41 +77,29 @@ DetectorGrid DetectorGrid::for_object(const SceneObject& object) {
     if (!object.detector) throw std::invalid_argument(object.name + " is not a detector");
     const DetectorSettings& d = *object.detector;
     DetectorGrid g;
-    double tri[3][2] = {};
-    const Shape* shape = object.shape.get();
-    if (const auto* disc = dynamic_cast<const Disc*>(shape)) {
-        g.m_frame = disc->frame();
-        g.m_u0 = g.m_v0 = -disc->radius();
-        g.m_u1 = g.m_v1 = disc->radius();
-    } else if (const auto* rect = dynamic_cast<const Rectangle*>(shape)) {
-        g.m_frame = rect->frame();
-        g.m_u0 = -0.5 * rect->width();
-        g.m_u1 = 0.5 * rect->width();
-        g.m_v0 = -0.5 * rect->height();
-        g.m_v1 = 0.5 * rect->height();
-    } else if (const auto* t = dynamic_cast<const Triangle*>(shape)) {
-        const Vec3 u = normalize(t->vertex(1) - t->vertex(0));
-        g.m_frame = {t->vertex(0), u, cross(t->normal(), u), t->normal()};
-        for (int i = 0; i < 3; ++i) {
-            tri[i][0] = g.m_frame.u_of(t->vertex(i));
-            tri[i][1] = g.m_frame.v_of(t->vertex(i));
-        }
-        g.m_u0 = std::min({tri[0][0], tri[1][0], tri[2][0]});
-        g.m_u1 = std::max({tri[0][0], tri[1][0], tri[2][0]});
-        g.m_v0 = std::min({tri[0][1], tri[1][1], tri[2][1]});
-        g.m_v1 = std::max({tri[0][1], tri[1][1], tri[2][1]});
-    } else {
+    const std::optional<FlatPatch> patch = object.shape->flat_patch();
+    if (!patch) {
         throw std::invalid_argument(object.name +
                                     ": only a triangle, disc or rectangle can be a detector");
     }
+    g.m_frame = patch->frame;
+    g.m_u0 = patch->u0;
+    g.m_u1 = patch->u1;
+    g.m_v0 = patch->v0;
+    g.m_v1 = patch->v1;
+    // A triangle's corners in (u, v), for the cells it covers in part.
+    double tri[3][2] = {};
+    const bool is_triangle = patch->corners.size() == 3;
+    for (size_t i = 0; is_triangle && i < 3; ++i) {
+        tri[i][0] = g.m_frame.u_of(patch->corners[i]);
+        tri[i][1] = g.m_frame.v_of(patch->corners[i]);
+    }
     detector_cells(d, g.m_u1 - g.m_u0, g.m_v1 - g.m_v0, g.m_nu, g.m_nv);
     g.m_area.resize(static_cast<size_t>(g.cell_count()));
-    const bool is_disc = dynamic_cast<const Disc*>(shape) != nullptr;
-    const bool is_triangle = dynamic_cast<const Triangle*>(shape) != nullptr;
     for (int c = 0; c < g.cell_count(); ++c) {
         const double a0 = g.m_u0 + (c % g.m_nu) * g.cell_width(), a1 = a0 + g.cell_width();
         const double b0 = g.m_v0 + (c / g.m_nu) * g.cell_height(), b1 = b0 + g.cell_height();
-        if (is_disc) {
+        if (patch->is_disc()) {
             g.m_area[static_cast<size_t>(c)] = rectangle_disc_overlap(a0, a1, b0, b1, g.m_u1);
         } else if (is_triangle) {
             g.m_area[static_cast<size_t>(c)] = rectangle_triangle_overlap(a0, a1, b0, b1, tri);

@@ -4,11 +4,8 @@
 #include <cmath>
 #include <unordered_map>
 
-#include "geometry/disc.h"
 #include "geometry/lens/lens_solid.h"
 #include "geometry/lens/mirror_surface.h"
-#include "geometry/rectangle.h"
-#include "geometry/triangle.h"
 #include "geometry/triangle_mesh.h"
 
 namespace lenslab {
@@ -55,16 +52,17 @@ void section_cut_mirror(const MirrorSurface& m, const SectionPlane& plane,
     }
 }
 
-void section_cut_disc(const Disc& disc, const SectionPlane& plane, std::vector<SectionCurve>& out) {
-    const Vec3 n = plane.normal();
-    const Vec3 along = cross(disc.normal(), n);  // the chord's direction
-    if (length(along) < 1e-12) return;           // parallel planes
+void section_cut_disc(const FlatPatch& disc, const SectionPlane& plane,
+                      std::vector<SectionCurve>& out) {
+    const Vec3 n = plane.normal(), normal = disc.frame.n, centre = disc.frame.origin;
+    const Vec3 along = cross(normal, n);  // the chord's direction
+    if (length(along) < 1e-12) return;    // parallel planes
     // Towards the plane, within the disc's plane.
-    const Vec3 across = normalize(n - disc.normal() * dot(n, disc.normal()));
-    const double s = -plane.distance(disc.centre()) / dot(across, n);
-    const double half = disc.radius() * disc.radius() - s * s;
+    const Vec3 across = normalize(n - normal * dot(n, normal));
+    const double s = -plane.distance(centre) / dot(across, n);
+    const double half = disc.radius * disc.radius - s * s;
     if (half <= 0) return;
-    const Vec3 mid = disc.centre() + across * s;
+    const Vec3 mid = centre + across * s;
     const Vec3 d = normalize(along) * std::sqrt(half);
     out.push_back({{plane.of(mid - d), plane.of(mid + d)}, false});
 }
@@ -233,16 +231,11 @@ private:
 std::vector<SectionCurve> section_outline(const Shape& shape, const SectionPlane& plane,
                                           const SectionOutlineOptions& options) {
     std::vector<SectionCurve> out;
-    if (const auto* t = dynamic_cast<const Triangle*>(&shape)) {
-        const Vec3 corners[3] = {t->vertex(0), t->vertex(1), t->vertex(2)};
-        section_cut_polygon(corners, 3, plane, out);
-    } else if (const auto* r = dynamic_cast<const Rectangle*>(&shape)) {
-        const PlaneFrame& f = r->frame();
-        const double w = 0.5 * r->width(), h = 0.5 * r->height();
-        const Vec3 corners[4] = {f.at(-w, -h), f.at(w, -h), f.at(w, h), f.at(-w, h)};
-        section_cut_polygon(corners, 4, plane, out);
-    } else if (const auto* disc = dynamic_cast<const Disc*>(&shape)) {
-        section_cut_disc(*disc, plane, out);
+    if (const std::optional<FlatPatch> flat = shape.flat_patch(); flat && flat->is_disc()) {
+        section_cut_disc(*flat, plane, out);
+    } else if (flat) {
+        section_cut_polygon(flat->corners.data(), static_cast<int>(flat->corners.size()), plane,
+                            out);
     } else if (const auto* mirror = dynamic_cast<const MirrorSurface*>(&shape)) {
         section_cut_mirror(*mirror, plane, out);
     } else if (const auto* mesh = dynamic_cast<const TriangleMesh*>(&shape)) {
