@@ -9,8 +9,9 @@
 #      compile and run time and checked nothing more (`ctest --preset release-ci` still runs
 #      them all unsanitized);
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: the library at
-#      -O1, tests and apps at -O0; the editor included, no benchmarks) + every test but the
-#      20M-photon convergence test, each GoogleTest suite as 4 shards.
+#      -O1, tests and apps at -O0, the tests' own code with ASan but not UBSan; the editor
+#      included, no benchmarks) + every test but the 20M-photon convergence test, each
+#      GoogleTest suite as 4 shards.
 #      The editor is built and its QTest suites run here only: compiling Qt's headers twice
 #      was about a quarter of stage 1's build (docs/performance.md, "Test suite time");
 #   3. ThreadSanitizer build (tsan preset: oneTBB built instrumented by scripts/tsan-tbb.sh,
