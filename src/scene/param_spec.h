@@ -111,7 +111,8 @@ struct ElementSpec {
     std::string phrase;  // "a sphere", for "not a property of a sphere"
     std::vector<ParamSpec> params;
     // What a new element of this type starts as, around the origin: the editor's "Add" moves
-    // it (moved_element) to where it is put. Null for parts of an element (a surface).
+    // it (moved_element) to where it is put. For a lens surface shape, a valid surface of it
+    // (the docs test reads it); null for other parts of an element.
     nlohmann::json example;
 
     const ParamSpec& param(const std::string& key) const;  // throws std::logic_error
