@@ -20,6 +20,7 @@
 #include "child_process.h"
 #include "commands.h"
 #include "image/bitmap_font.h"
+#include "image/colour_speckle.h"
 #include "image/image_io.h"
 #include "render/integrator_names.h"
 #include "scene/limits.h"
@@ -57,6 +58,8 @@ public:
 struct Side {
     std::vector<double> seconds;
     std::optional<int64_t> caustic_stored, shot, direct_stored;
+    // Colour-speckle index (image/colour_speckle.h) inside the glass sphere and in its caustic.
+    double speckle_glass = 0, speckle_caustic = 0;
     std::string version;
     std::string last_output;
     std::vector<std::string> command;
@@ -169,6 +172,21 @@ void paste_crop(const Image8& src, int cx, int cy, int w, int h, Image8& dst, in
     }
 }
 
+// Where the colour-speckle index is measured, as fractions of the picture in lenslab's
+// orientation (POV-Ray's comes in mirrored), placed for the report scene's camera at 900 x 900:
+// a disc well inside the glass sphere's image (centre (646, 432), radius 109 there), and one
+// around the sphere's caustic on the floor and its fringe, clear of the sphere above it.
+PixelDisc report_disc(double cx, double cy, double r, const Image8& image) {
+    return {cx / 900 * image.width, cy / 900 * image.height, r / 900 * image.width};
+}
+PixelDisc glass_disc(const Image8& image) { return report_disc(646, 432, 80, image); }
+PixelDisc caustic_disc(const Image8& image) { return report_disc(672, 550, 18, image); }
+
+void measure_speckle(Side& side, const Image8& image) {
+    side.speckle_glass = colour_speckle(image, glass_disc(image));
+    side.speckle_caustic = colour_speckle(image, caustic_disc(image));
+}
+
 // One row per renderer: a label bar above the crops of the lens caustic and of the glass
 // sphere's caustic. The windows are fractions of the image, placed for the report scene's
 // camera in lenslab's (right-handed) orientation; POV-Ray's picture comes in mirrored.
@@ -235,6 +253,12 @@ std::string markdown(const PovrayBenchArgs& a, const Side& pov, const Side& ll,
                                                            static_cast<double>(*pov.caustic_stored))
                                                    : "")
        << " |\n";
+    md << "| colour speckle inside the glass sphere | " << fixed(pov.speckle_glass, 4) << " | "
+       << fixed(ll.speckle_glass, 4) << " | " << ratio(ll.speckle_glass, pov.speckle_glass)
+       << " |\n";
+    md << "| colour speckle in the sphere's caustic | " << fixed(pov.speckle_caustic, 4) << " | "
+       << fixed(ll.speckle_caustic, 4) << " | " << ratio(ll.speckle_caustic, pov.speckle_caustic)
+       << " |\n";
     md << "| direct photons stored | - (ray traced) | " << count(ll.direct_stored) << " | |\n";
     md << "| photons shot (POV-Ray) / emitted (lenslab) | " << count(pov.shot) << " | "
        << count(ll.shot) << " | |\n\n";
@@ -244,7 +268,12 @@ std::string markdown(const PovrayBenchArgs& a, const Side& pov, const Side& ll,
     for (double s : ll.seconds) md << " " << fixed(s, 2);
     md << ".\n\nSettings: " << a.width << "x" << a.height << ", 1 sample per pixel, " << a.threads
        << " threads, " << grouped(a.photons) << " photons requested, gather radius " << a.radius
-       << ", at most " << a.gather_max << " photons per estimate.\n\nCommands (run alternately, "
+       << ", at most " << a.gather_max
+       << " photons per estimate. Colour speckle: each pixel's chroma (R - G, G - B) against "
+          "its 5 x 5 neighbourhood's mean, averaged in a disc (image/colour_speckle.h; on the "
+          "900 x 900 picture, radius 80 about (646, 432) in the glass, radius 18 about "
+          "(672, 550) in the caustic, POV-Ray's picture mirrored first).\n\nCommands (run "
+          "alternately, "
        << a.repeats << (a.repeats == 1 ? " run" : " runs")
        << " of each, in the output folder):\n\n```\n"
        << shell_command_line(pov.command) << "\n"
@@ -372,6 +401,8 @@ int run_bench(const PovrayBenchArgs& a) {
                          "x" + std::to_string(pov_img.height) + ", lenslab " +
                          std::to_string(ll_img.width) + "x" + std::to_string(ll_img.height));
     }
+    measure_speckle(pov, mirrored(pov_img));
+    measure_speckle(ll, ll_img);
     const std::string amount = photons_short(a.photons) + " photons, r " + number(a.radius);
     const std::string pov_label =
         "POV-Ray, mirrored: " + amount + ", " + fixed(median(pov.seconds), 2) + " s";
