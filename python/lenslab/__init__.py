@@ -10,7 +10,7 @@ See docs/python.md.
 from ._lenslab import Error, Glass, SceneError, glass
 from ._detect import Detection, Detector, detect
 from ._optics import Analysis, analyze, analyze_many, analyze_options, trace
-from ._render import render, write_image
+from ._render import colour_speckle, render, write_image
 from ._scene import Scene, types
 
 # Named as the package exposes them, not after the compiled module that defines them.
@@ -19,5 +19,5 @@ for _exported in (Error, Glass, SceneError):
 del _exported
 
 __all__ = ["Analysis", "Detection", "Detector", "Error", "Glass", "Scene", "SceneError",
-           "analyze", "analyze_many", "analyze_options", "detect", "glass", "render", "trace",
-           "types", "write_image"]
+           "analyze", "analyze_many", "analyze_options", "colour_speckle", "detect", "glass",
+           "render", "trace", "types", "write_image"]

@@ -69,6 +69,9 @@ def render(
     **settings: Any,
 ) -> npt.NDArray[np.float32]: ...
 def write_image(image: npt.ArrayLike, path: _PathLike, exposure: float = ...) -> None: ...
+def colour_speckle(
+    picture: Union[_PathLike, npt.NDArray[np.uint8]], cx: float, cy: float, radius: float
+) -> float: ...
 def trace(
     scene: _SceneSource,
     origin: Sequence[float],

@@ -1,11 +1,12 @@
-"""lenslab.render and lenslab.write_image."""
+"""lenslab.render, lenslab.write_image and lenslab.colour_speckle."""
 
 from __future__ import annotations
 
 import copy
+import math
 import numbers
 import os
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Optional, Union
 
 import numpy as np
 
@@ -60,3 +61,24 @@ def write_image(image: np.ndarray, path: PathLike, exposure: float = 0.0,
         raise ValueError(f"path '{path}': unknown image type (use a .png or .exr file name)")
     _lenslab.write_image(np.asarray(image, dtype=np.float32), path, exposure, tone_map,
                          highlight_stops)
+
+
+def colour_speckle(picture: Union[PathLike, np.ndarray], cx: float, cy: float,
+                   radius: float) -> float:
+    """The colour-speckle index of a PNG file or an (H, W, 3) 8-bit sRGB picture in the disc of
+    `radius` pixels about (cx, cy) (x right, y down): each pixel's chroma (R - G, G - B), read
+    as 0 to 1, against its 5 x 5 neighbourhood's mean, averaged over the disc. Near 0 for a
+    smooth picture, near 1 for one random colour per pixel; `lenslab bench povray` reports it
+    inside the report scene's glass sphere and its caustic."""
+    for name, value in (("cx", cx), ("cy", cy), ("radius", radius)):
+        if isinstance(value, bool) or not isinstance(value, numbers.Real) \
+                or not math.isfinite(value):
+            raise ValueError(f"{name}: must be a finite number, got {value!r}")
+    if radius < 0:
+        raise ValueError(f"radius: must be >= 0, got {radius!r}")
+    if isinstance(picture, (str, os.PathLike)):
+        return _lenslab.colour_speckle_png(os.fspath(picture), cx, cy, radius)
+    array = np.asarray(picture)
+    if array.dtype != np.uint8:
+        raise ValueError(f"picture: must be 8-bit (dtype uint8), got {array.dtype}")
+    return _lenslab.colour_speckle_rgb8(array, cx, cy, radius)

@@ -1,9 +1,11 @@
 // lenslab.write_image: an array from lenslab.render written by the library's own writer, so
-// a file saved from Python is the file `lenslab render -o` writes (PNG sRGB or linear EXR).
+// a file saved from Python is the file `lenslab render -o` writes (PNG sRGB or linear EXR);
+// lenslab.colour_speckle: the colour-speckle index of a PNG or an 8-bit picture.
 
 #include <pybind11/numpy.h>
 
 #include "bindings.h"
+#include "image/colour_speckle.h"
 #include "image/image_io.h"
 #include "scene/render_settings_spec.h"
 #include "scene/render_tone_map.h"
@@ -40,9 +42,28 @@ void write_image_file(const ImageArray& image, const std::string& path, double e
     write_image(film, path, tone_map_for(settings, exposure));
 }
 
+using Rgb8Array = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>;
+
+double speckle_of_rgb8(const Rgb8Array& rgb, double cx, double cy, double radius) {
+    if (rgb.ndim() != 3 || rgb.shape(2) != 3) {
+        throw py::value_error("picture: must be an array of shape (height, width, 3)");
+    }
+    Image8 image{static_cast<int>(rgb.shape(1)), static_cast<int>(rgb.shape(0)), {}};
+    image.rgb.assign(rgb.data(), rgb.data() + rgb.size());
+    return colour_speckle(image, {cx, cy, radius});
+}
+
+double speckle_of_png(const std::string& path, double cx, double cy, double radius) {
+    return colour_speckle(read_png(path), {cx, cy, radius});
+}
+
 }  // namespace
 
 void bind_image(py::module_& m) {
+    m.def("colour_speckle_rgb8", &speckle_of_rgb8, py::arg("rgb"), py::arg("cx"), py::arg("cy"),
+          py::arg("radius"));
+    m.def("colour_speckle_png", &speckle_of_png, py::arg("path"), py::arg("cx"), py::arg("cy"),
+          py::arg("radius"));
     m.def("write_image", &write_image_file, py::arg("image"), py::arg("path"),
           py::arg("exposure") = 0.0, py::arg("tone_map") = "clip", py::arg("highlight_stops") = 8.0,
           "Writes an (H, W, 3) linear image as .png (sRGB through the tone map) or .exr (linear "

@@ -118,3 +118,25 @@ def test_write_image_refuses_an_unknown_tone_map(tmp_path):
         lenslab.write_image(image, tmp_path / "x.png", tone_map="filmic")
     with pytest.raises(ValueError, match="highlight_stops"):
         lenslab.write_image(image, tmp_path / "x.png", tone_map="log", highlight_stops=0)
+
+
+def test_colour_speckle_of_an_array_and_of_the_png_written_from_it(tmp_path):
+    # Columns of pure red and pure green in turn: every inner pixel's 5 x 5 window holds three
+    # of its own colour and two of the other, so each scores |1 - 0.2| + |0 - 0.4| = 1.2.
+    rgb = np.zeros((40, 40, 3), dtype=np.uint8)
+    rgb[:, 0::2, 0] = 255
+    rgb[:, 1::2, 1] = 255
+    assert lenslab.colour_speckle(rgb, 20, 20, 10) == pytest.approx(1.2, abs=1e-12)
+    # The same picture as linear radiance, written as sRGB (0 and 1 stay 0 and 255).
+    path = tmp_path / "columns.png"
+    lenslab.write_image(rgb.astype(np.float32) / 255, path)
+    assert lenslab.colour_speckle(path, 20, 20, 10) == pytest.approx(1.2, abs=1e-12)
+    assert lenslab.colour_speckle(np.full((9, 9, 3), 77, np.uint8), 4, 4, 4) == \
+        pytest.approx(0, abs=1e-12)
+    with pytest.raises(ValueError, match="radius: must be >= 0"):
+        lenslab.colour_speckle(rgb, 20, 20, -1)
+    with pytest.raises(ValueError, match="uint8"):
+        lenslab.colour_speckle(rgb.astype(np.float32), 20, 20, 5)
+    with pytest.raises(lenslab.Error):
+        lenslab.colour_speckle(tmp_path / "missing.png", 1, 1, 1)
+
