@@ -9,7 +9,7 @@ See docs/python.md.
 
 from ._lenslab import Error, Glass, SceneError, glass
 from ._detect import Detection, Detector, detect
-from ._optics import Analysis, analyze, analyze_many, analyze_options, trace
+from ._optics import Analysis, analyze, analyze_many, analyze_options, spectral_data, trace
 from ._render import colour_speckle, render, write_image
 from ._scene import Scene, types
 
@@ -20,4 +20,4 @@ del _exported
 
 __all__ = ["Analysis", "Detection", "Detector", "Error", "Glass", "Scene", "SceneError",
            "analyze", "analyze_many", "analyze_options", "colour_speckle", "detect", "glass",
-           "render", "trace", "types", "write_image"]
+           "render", "spectral_data", "trace", "types", "write_image"]

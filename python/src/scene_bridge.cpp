@@ -2,7 +2,10 @@
 
 #include "scene_bridge.h"
 
+#include <pybind11/stl.h>
+
 #include "bindings.h"
+#include "optics/spectral_table.h"
 #include "scene/json_reader.h"
 #include "scene/type_listing.h"
 
@@ -34,6 +37,13 @@ void bind_scene(py::module_& m) {
         py::arg("json_text"), py::arg("path"), py::arg("require_camera"),
         "Builds the scene and throws it away: SceneError if it is not a valid scene");
     m.def("default_scene_text", &default_scene_text, "The built-in default scene's JSON");
+    m.def(
+        "spectral_data_json",
+        [](const std::vector<double>& nm, double blackbody) {
+            // std::invalid_argument (a value out of range) reaches Python as ValueError.
+            return spectral_columns(spectral_rows(nm, blackbody), blackbody != 0).dump();
+        },
+        py::arg("nm"), py::arg("blackbody"), "The columns of `lenslab spectra --json`");
     m.def(
         "types_json", [] { return scene_types_json().dump(); },
         "The object and light types and their keys, as `lenslab types --json`");

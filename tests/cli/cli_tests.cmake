@@ -786,6 +786,16 @@ lenslab_cli_test(NAME sweep.bad.last_frame
            "-DSTDERR_LINE=lenslab: error: frame 3/3 (/objects/1/thickness = -1): scenes/lens_caustic.json: objects[1].thickness: must be > 0, got -1"
            -DOUTPUT=${sweep_bad}/frames/00000.png -DOUTPUT_CREATED=OFF)
 
+# `lenslab spectra` prints the CIE tables' values (CIE 1931 at 550 nm: 0.433450 0.994950
+# 0.008750) and refuses a wavelength outside them.
+lenslab_cli_test(NAME spectra.cie_row ARGS spectra --wavelengths 550
+    CHECKS -DEXPECT_EXIT=0 "-DSTDOUT_CONTAINS= 550.000  0.433450  0.994950  0.008750  1.040460")
+lenslab_cli_test(NAME spectra.json ARGS spectra --wavelengths 400:440:20 --blackbody 3000 --json
+    CHECKS -DEXPECT_EXIT=0 -DSTDOUT_JSON=ON "-DSTDOUT_CONTAINS=\"blackbody\"")
+lenslab_cli_test(NAME spectra.out_of_range ARGS spectra --wavelengths 900
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: --wavelengths: wavelength 900 nm: outside 360 to 830 nm, the range of the CIE tables")
+
 # `lenslab types` lists every type from the tables, the area lights among them.
 lenslab_cli_test(NAME types.lists_area_lights ARGS types
     CHECKS -DEXPECT_EXIT=0 "-DSTDOUT_CONTAINS=disc_light      center, normal, radius, power, color, spectrum")

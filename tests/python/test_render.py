@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import lenslab
-from conftest import run_cli
+from conftest import cli_json, run_cli
 
 SCENE = "scenes/default.json"
 # Tiny, and with 20 000 photons instead of the scene's million: the photon map's work is most
@@ -139,4 +139,20 @@ def test_colour_speckle_of_an_array_and_of_the_png_written_from_it(tmp_path):
         lenslab.colour_speckle(rgb.astype(np.float32), 20, 20, 5)
     with pytest.raises(lenslab.Error):
         lenslab.colour_speckle(tmp_path / "missing.png", 1, 1, 1)
+
+
+def test_spectral_data_holds_the_cie_tables_as_the_cli_prints_them():
+    data = lenslab.spectral_data([500, 550], blackbody=2856)
+    # CIE 1931 at 550 nm: 0.433450 0.994950 0.008750; D65 relative: 104.046 / 100.
+    assert data["x_bar"][1] == pytest.approx(0.43345, abs=5e-7)
+    assert data["y_bar"][1] == pytest.approx(0.99495, abs=5e-7)
+    assert data["d65"][1] == pytest.approx(1.04046, abs=1e-6)
+    assert list(data) == ["nm", "x_bar", "y_bar", "z_bar", "d65", "blackbody", "air_index"]
+    expected = cli_json("spectra", "--wavelengths", "500,550", "--blackbody", "2856", "--json")
+    for key, values in expected.items():
+        assert list(data[key]) == values
+    with pytest.raises(ValueError, match="outside 360 to 830 nm"):
+        lenslab.spectral_data([900])
+    with pytest.raises(ValueError, match="between 500 and 100000 K"):
+        lenslab.spectral_data([550], blackbody=10)
 

@@ -1,0 +1,101 @@
+#include "optics/spectral_table.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "optics/air_index.h"
+#include "optics/spectrum.h"
+#include "util/format_number.h"
+
+namespace lenslab {
+
+std::vector<SpectralRow> spectral_rows(const std::vector<double>& nm, double blackbody_k) {
+    for (double l : nm) {
+        if (!(l >= kLambdaMinNm && l <= kLambdaMaxNm)) {
+            throw std::invalid_argument(
+                "wavelength " + format_number(l) + " nm: outside " + format_number(kLambdaMinNm) +
+                " to " + format_number(kLambdaMaxNm) + " nm, the range of the CIE tables");
+        }
+    }
+    if (blackbody_k != 0 && !(blackbody_k >= kBlackbodyMinK && blackbody_k <= kBlackbodyMaxK)) {
+        throw std::invalid_argument("blackbody " + format_number(blackbody_k) +
+                                    " K: must be between " + format_number(kBlackbodyMinK) +
+                                    " and " + format_number(kBlackbodyMaxK) + " K");
+    }
+    const SpectrumPtr white = d65_spectrum();
+    const SpectrumPtr hot = blackbody_k != 0 ? blackbody_spectrum(blackbody_k) : nullptr;
+    std::vector<SpectralRow> rows;
+    for (double l : nm) {
+        SpectralRow r;
+        r.nm = l;
+        r.cmf = cie_xyz_bar(l);
+        r.d65 = white->eval(l) / white->eval(560);
+        if (hot) r.blackbody = hot->eval(l) / hot->eval(560);
+        r.air_index = standard_air_index(l);
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+nlohmann::ordered_json spectral_columns(const std::vector<SpectralRow>& rows, bool blackbody) {
+    nlohmann::ordered_json out;
+    const auto column = [&rows, &out](const char* key, auto value) {
+        out[key] = nlohmann::ordered_json::array();
+        for (const SpectralRow& r : rows) out[key].push_back(value(r));
+    };
+    column("nm", [](const SpectralRow& r) { return r.nm; });
+    column("x_bar", [](const SpectralRow& r) { return r.cmf.x; });
+    column("y_bar", [](const SpectralRow& r) { return r.cmf.y; });
+    column("z_bar", [](const SpectralRow& r) { return r.cmf.z; });
+    column("d65", [](const SpectralRow& r) { return r.d65; });
+    if (blackbody) column("blackbody", [](const SpectralRow& r) { return r.blackbody; });
+    column("air_index", [](const SpectralRow& r) { return r.air_index; });
+    return out;
+}
+
+std::vector<double> parse_wavelength_list(const std::string& text) {
+    const auto number = [&text](const std::string& part) {
+        size_t used = 0;
+        double v = 0;
+        try {
+            v = std::stod(part, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != part.size() || !std::isfinite(v)) {
+            throw std::invalid_argument("'" + text + "': '" + part +
+                                        "' is not a number (give A,B,C or START:END:STEP)");
+        }
+        return v;
+    };
+    std::vector<std::string> parts;
+    const char separator = text.find(':') != std::string::npos ? ':' : ',';
+    size_t from = 0;
+    while (true) {
+        const size_t at = text.find(separator, from);
+        parts.push_back(text.substr(from, at - from));
+        if (at == std::string::npos) break;
+        from = at + 1;
+    }
+    std::vector<double> out;
+    if (separator == ',') {
+        for (const std::string& p : parts) out.push_back(number(p));
+        return out;
+    }
+    if (parts.size() != 3) {
+        throw std::invalid_argument("'" + text + "': a range is START:END:STEP");
+    }
+    const double start = number(parts[0]), end = number(parts[1]), step = number(parts[2]);
+    if (!(step > 0) || end < start) {
+        throw std::invalid_argument("'" + text +
+                                    "': a range needs END >= START and a STEP above 0");
+    }
+    const double count = std::floor((end - start) / step + 1e-9) + 1;
+    if (count > 10000) {
+        throw std::invalid_argument("'" + text + "': more than 10000 wavelengths");
+    }
+    for (int i = 0; i < static_cast<int>(count); ++i) out.push_back(start + i * step);
+    return out;
+}
+
+}  // namespace lenslab
