@@ -38,16 +38,18 @@ int print_spectra(const SpectraArgs& a) {
         std::cout << spectral_columns(rows, a.blackbody != 0).dump(2) << "\n";
         return 0;
     }
-    std::printf("%8s %9s %9s %9s %9s%s %11s\n", "nm", "x_bar", "y_bar", "z_bar", "d65",
-                a.blackbody != 0 ? "  blackbody" : "", "air_index");
+    std::printf("%8s %9s %9s %9s %9s %12s%s %11s\n", "nm", "x_bar", "y_bar", "z_bar", "d65",
+                "illuminant_a", a.blackbody != 0 ? "  blackbody" : "", "air_index");
     for (const SpectralRow& r : rows) {
-        std::printf("%8.3f %9.6f %9.6f %9.6f %9.6f", r.nm, r.cmf.x, r.cmf.y, r.cmf.z, r.d65);
+        std::printf("%8.3f %9.6f %9.6f %9.6f %9.6f %12.6f", r.nm, r.cmf.x, r.cmf.y, r.cmf.z, r.d65,
+                    r.illuminant_a);
         if (a.blackbody != 0) std::printf(" %10.6f", r.blackbody);
         std::printf(" %11.8f\n", r.air_index);
     }
     std::printf(
         "(CIE 1931 2-degree colour-matching functions; d65: the renderer's white light, "
-        "and blackbody, relative to 560 nm; air_index: standard air, 20 degC, 101325 Pa, "
+        "illuminant_a (CIE A) and blackbody, relative to 560 nm; air_index: standard air, 20 degC, "
+        "101325 Pa, "
         "Birch and Downs 1993, at the wavelength in air)\n");
     return 0;
 }
@@ -59,7 +61,8 @@ Action add_spectra_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "spectra",
         "Print the spectral data the renderer uses: the CIE 1931 colour-matching functions, its "
-        "D65 white light, a blackbody and the index of standard air, at chosen wavelengths");
+        "D65 white light, illuminant A, a blackbody and the index of standard air, at chosen "
+        "wavelengths");
     cmd->add_option("--wavelengths", args->wavelengths,
                     "Wavelengths in nm: A,B,C or START:END:STEP, within 360 to 830")
         ->capture_default_str();

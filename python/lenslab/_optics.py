@@ -255,7 +255,7 @@ def spectral_data(wavelengths: Iterable[float], blackbody: Optional[float] = Non
                   ) -> dict[str, np.ndarray]:
     """The spectral data the renderer uses at `wavelengths` (nm, 360 to 830), as
     `lenslab spectra --json` prints it: {"nm", "x_bar", "y_bar", "z_bar" (CIE 1931 2-degree
-    colour-matching functions), "d65" (the renderer's white light, relative to 560 nm),
+    colour-matching functions), "d65" (the renderer's white light) and "illuminant_a" (CIE A), relative to 560 nm,
     "blackbody" (with `blackbody` in kelvin, 500 to 100000, relative to 560 nm),
     "air_index" (standard air, 20 degC, 101325 Pa, at the wavelength in air)}, each an array."""
     nm = [float(w) for w in wavelengths]

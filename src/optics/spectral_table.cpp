@@ -23,6 +23,7 @@ std::vector<SpectralRow> spectral_rows(const std::vector<double>& nm, double bla
                                     " and " + format_number(kBlackbodyMaxK) + " K");
     }
     const SpectrumPtr white = d65_spectrum();
+    const SpectrumPtr lamp = illuminant_a_spectrum();
     const SpectrumPtr hot = blackbody_k != 0 ? blackbody_spectrum(blackbody_k) : nullptr;
     std::vector<SpectralRow> rows;
     for (double l : nm) {
@@ -30,6 +31,7 @@ std::vector<SpectralRow> spectral_rows(const std::vector<double>& nm, double bla
         r.nm = l;
         r.cmf = cie_xyz_bar(l);
         r.d65 = white->eval(l) / white->eval(560);
+        r.illuminant_a = lamp->eval(l) / lamp->eval(560);
         if (hot) r.blackbody = hot->eval(l) / hot->eval(560);
         r.air_index = standard_air_index(l);
         rows.push_back(r);
@@ -48,6 +50,7 @@ nlohmann::ordered_json spectral_columns(const std::vector<SpectralRow>& rows, bo
     column("y_bar", [](const SpectralRow& r) { return r.cmf.y; });
     column("z_bar", [](const SpectralRow& r) { return r.cmf.z; });
     column("d65", [](const SpectralRow& r) { return r.d65; });
+    column("illuminant_a", [](const SpectralRow& r) { return r.illuminant_a; });
     if (blackbody) column("blackbody", [](const SpectralRow& r) { return r.blackbody; });
     column("air_index", [](const SpectralRow& r) { return r.air_index; });
     return out;

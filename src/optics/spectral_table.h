@@ -12,10 +12,11 @@ namespace lenslab {
 
 struct SpectralRow {
     double nm = 0;
-    Vec3 cmf;              // CIE 1931 2-degree colour-matching functions x, y, z bar
-    double d65 = 0;        // the renderer's white light (D65), relative to its value at 560 nm
-    double blackbody = 0;  // the asked blackbody's spectrum, relative to 560 nm; 0 if none
-    double air_index = 0;  // standard air's index (20 degC, 101 325 Pa) at this air wavelength
+    Vec3 cmf;                 // CIE 1931 2-degree colour-matching functions x, y, z bar
+    double d65 = 0;           // the renderer's white light (D65), relative to its value at 560 nm
+    double illuminant_a = 0;  // CIE illuminant A, relative to 560 nm
+    double blackbody = 0;     // the asked blackbody's spectrum, relative to 560 nm; 0 if none
+    double air_index = 0;     // standard air's index (20 degC, 101 325 Pa) at this air wavelength
 };
 
 // One row per wavelength (each from kLambdaMinNm to kLambdaMaxNm, the tables' range); with
@@ -24,7 +25,7 @@ struct SpectralRow {
 std::vector<SpectralRow> spectral_rows(const std::vector<double>& nm, double blackbody_k = 0);
 
 // The rows as columns, one array per quantity: {"nm": [...], "x_bar": [...], "y_bar",
-// "z_bar", "d65", "blackbody" (when asked for), "air_index"}.
+// "z_bar", "d65", "illuminant_a", "blackbody" (when asked for), "air_index"}.
 nlohmann::ordered_json spectral_columns(const std::vector<SpectralRow>& rows, bool blackbody);
 
 // "START:END:STEP" (END included when the steps land on it) or "A,B,C": the wavelengths

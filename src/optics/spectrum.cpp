@@ -303,6 +303,29 @@ SpectrumPtr blackbody_spectrum(double kelvin) {
     });
 }
 
+SpectrumPtr illuminant_a_spectrum() {
+    // CIE standard illuminant A by its defining formula (CIE 15:2004, eq. 3.1; ISO 11664-2):
+    // S(l) = 100 (560 / l)^5 (exp(1.435e7 / (2848 x 560)) - 1) / (exp(1.435e7 / (2848 l)) - 1),
+    // l in nm: a blackbody of about 2856 K with the c2 of the old temperature scale.
+    return make_normalised([](double nm) {
+        constexpr double c2 = 1.435e7, t = 2848.0;
+        return std::pow(560.0 / nm, 5) * std::expm1(c2 / (t * 560.0)) / std::expm1(c2 / (t * nm));
+    });
+}
+
+SpectrumPtr equal_energy_spectrum() {
+    return make_normalised([](double) { return 1.0; });
+}
+
+const std::vector<NamedSpectrum>& named_spectra() {
+    static const std::vector<NamedSpectrum> names{
+        {"d65", "CIE daylight D65 (the white of RGB colours)", d65_spectrum},
+        {"illuminant_a", "CIE illuminant A (a tungsten lamp, about 2856 K)", illuminant_a_spectrum},
+        {"equal_energy", "CIE illuminant E, flat in wavelength", equal_energy_spectrum},
+    };
+    return names;
+}
+
 SpectrumPtr line_spectrum(double centre_nm, double width_nm) {
     // Narrower lines are drawn 0.1 nm wide: the 0.1 nm integration grid then still measures
     // their power exactly, and no glass disperses 0.1 nm visibly.

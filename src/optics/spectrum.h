@@ -7,6 +7,7 @@
 #include <array>
 #include <memory>
 #include <mutex>
+#include <string>
 #include <vector>
 
 #include "math/vec3.h"
@@ -155,5 +156,15 @@ SpectrumPtr d65_spectrum();
 inline constexpr double kBlackbodyMinK = 500, kBlackbodyMaxK = 100000;
 SpectrumPtr blackbody_spectrum(double kelvin);
 SpectrumPtr line_spectrum(double nm, double width_nm = 1.0);
+SpectrumPtr illuminant_a_spectrum();
+SpectrumPtr equal_energy_spectrum();
+
+// The light spectra a scene may name (`"spectrum": "illuminant_a"`), in the order messages
+// list them.
+struct NamedSpectrum {
+    std::string name, description;
+    SpectrumPtr (*make)();
+};
+const std::vector<NamedSpectrum>& named_spectra();
 
 }  // namespace lenslab

@@ -91,9 +91,13 @@ const Glass& read_glass(const nlohmann::json& j, const std::string& path) {
 
 SpectrumPtr read_spectrum(const nlohmann::json& j, const std::string& path) {
     if (j.is_string()) {
-        if (j.get<std::string>() == "d65") return d65_spectrum();
-        throw SceneError(path, "unknown spectrum '" + j.get<std::string>() +
-                                   "' (use \"d65\", {\"blackbody\": K} or {\"line\": nm})");
+        std::string names;
+        for (const NamedSpectrum& named : named_spectra()) {
+            if (j.get<std::string>() == named.name) return named.make();
+            names += "\"" + named.name + "\", ";
+        }
+        throw SceneError(path, "unknown spectrum '" + j.get<std::string>() + "' (use " + names +
+                                   "{\"blackbody\": K} or {\"line\": nm})");
     }
     JsonObjectReader r(j, path, {"blackbody", "line", "width"}, "a spectrum");
     if (r.has("blackbody")) {

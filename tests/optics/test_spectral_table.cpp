@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "optics/air_index.h"
 #include "optics/spectral_table.h"
+#include "optics/spectrum.h"
 
 namespace lenslab {
 namespace {
@@ -35,6 +37,35 @@ TEST(SpectralTable, RowsHoldTheCieTablesAndTheAirIndex) {
     EXPECT_NEAR(rows[0].blackbody, expected, 1e-6 * expected);
     EXPECT_EQ(rows[1].air_index, standard_air_index(550));
     EXPECT_NEAR(rows[1].air_index, 1.000273, 2e-6);
+}
+
+// CIE illuminant A's published relative spectral power (CIE 15:2004 Table T.1, 100 at 560 nm).
+TEST(SpectralTable, IlluminantAMatchesTheCieTable) {
+    const std::vector<SpectralRow> rows = spectral_rows({400, 500, 600, 700});
+    const double published[] = {14.7080, 59.8611, 129.043, 198.261};
+    for (size_t i = 0; i < rows.size(); ++i)
+        EXPECT_NEAR(rows[i].illuminant_a * 100, published[i], 5e-5 * published[i]) << rows[i].nm;
+}
+
+// Each named light spectrum has its illuminant's chromaticity (CIE 15:2004 Table T.3, 2-degree
+// observer): A (0.44757, 0.40745), D65 (0.31272, 0.32903), E (1/3, 1/3); the sums over the
+// 1 nm grid of the 5 nm colour-matching tables agree to a few 1e-4.
+TEST(SpectralTable, NamedSpectraHaveTheirIlluminantsChromaticity) {
+    const std::map<std::string, std::pair<double, double>> published{
+        {"illuminant_a", {0.44757, 0.40745}},
+        {"d65", {0.31272, 0.32903}},
+        {"equal_energy", {1.0 / 3, 1.0 / 3}}};
+    ASSERT_EQ(named_spectra().size(), published.size());
+    for (const NamedSpectrum& named : named_spectra()) {
+        const SpectrumPtr s = named.make();
+        Vec3 xyz{0, 0, 0};
+        for (double nm = kLambdaMinNm; nm <= kLambdaMaxNm; nm += 1)
+            xyz += cie_xyz_bar(nm) * s->eval(nm);
+        const double sum = xyz.x + xyz.y + xyz.z;
+        const auto [x, y] = published.at(named.name);
+        EXPECT_NEAR(xyz.x / sum, x, 3e-4) << named.name;
+        EXPECT_NEAR(xyz.y / sum, y, 3e-4) << named.name;
+    }
 }
 
 TEST(SpectralTable, ValuesOutOfRangeAreRefused) {

@@ -147,7 +147,8 @@ def test_spectral_data_holds_the_cie_tables_as_the_cli_prints_them():
     assert data["x_bar"][1] == pytest.approx(0.43345, abs=5e-7)
     assert data["y_bar"][1] == pytest.approx(0.99495, abs=5e-7)
     assert data["d65"][1] == pytest.approx(1.04046, abs=1e-6)
-    assert list(data) == ["nm", "x_bar", "y_bar", "z_bar", "d65", "blackbody", "air_index"]
+    assert list(data) == ["nm", "x_bar", "y_bar", "z_bar", "d65", "illuminant_a", "blackbody",
+                          "air_index"]
     expected = cli_json("spectra", "--wavelengths", "500,550", "--blackbody", "2856", "--json")
     for key, values in expected.items():
         assert list(data[key]) == values
