@@ -197,19 +197,26 @@ void PropertyPanel::build_grin(const std::string& prefix) {
 }
 
 void PropertyPanel::build_spectrum(const std::string& prefix) {
-    // A colour (D65-based) or a named spectrum; switching rewrites the light's keys.
+    // A colour (D65-based), a named spectrum (optics/spectrum.h's table), a blackbody or a
+    // line; switching rewrites the light's keys.
     const json* spectrum = value_at(prefix + "spectrum");
     std::string kind = "colour";
-    if (spectrum && spectrum->is_string()) kind = "d65";
+    if (spectrum && spectrum->is_string()) kind = spectrum->get<std::string>();
     if (spectrum && spectrum->is_object())
         kind = spectrum->contains("blackbody") ? "blackbody" : "line";
+    QStringList kinds{"colour"};
+    for (const NamedSpectrum& named : named_spectra()) kinds << QString::fromStdString(named.name);
+    kinds << "blackbody"
+          << "line";
     const std::string owner = prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1);
-    add_choice(tr("Spectrum"), prefix + "spectrum", kind, {"colour", "d65", "blackbody", "line"},
+    add_choice(tr("Spectrum"), prefix + "spectrum", kind, kinds,
                [this, owner](const std::string& chosen) {
                    json element = *value_at(owner);
                    element.erase("color");
                    element.erase("spectrum");
-                   if (chosen == "d65") element["spectrum"] = "d65";
+                   for (const NamedSpectrum& named : named_spectra()) {
+                       if (chosen == named.name) element["spectrum"] = named.name;
+                   }
                    if (chosen == "blackbody") element["spectrum"] = {{"blackbody", 3000}};
                    if (chosen == "line") element["spectrum"] = {{"line", 532}};
                    commit(owner, element, tr("spectrum"));

@@ -525,6 +525,15 @@ private slots:
         type_value(field(w, "spectrum/blackbody"), 2700);
         QCOMPARE(w.document()->json()["lights"][0]["spectrum"]["blackbody"].get<double>(), 2700.0);
         QVERIFY(wait_for_fresh_frame(w));
+        // A named spectrum from the table: the choice shows it and the document names it.
+        spectrum = w.panel()->findChild<QComboBox*>("field:spectrum");
+        spectrum->setCurrentText("illuminant_a");
+        QCOMPARE(spectrum->currentText(), QString("illuminant_a"));
+        emit spectrum->activated(spectrum->currentIndex());
+        QCOMPARE(w.document()->json()["lights"][0]["spectrum"], json("illuminant_a"));
+        spectrum = w.panel()->findChild<QComboBox*>("field:spectrum");
+        QCOMPARE(spectrum->currentText(), QString("illuminant_a"));
+        QVERIFY(wait_for_fresh_frame(w));
     }
 
     // A lens face switched to a typed formula: a formula that does not parse shows why as it
