@@ -99,6 +99,9 @@ std::optional<ElementEdit> without_element(const json& scene, const std::string&
         index >= edit.scene[list].size())
         return std::nullopt;
     edit.scene[list].erase(index);
+    const size_t left = edit.scene[list].size();
+    if (left > 0)
+        edit.pointer = "/" + list + "/" + std::to_string(std::min<size_t>(index, left - 1));
     return edit;
 }
 

@@ -31,7 +31,10 @@ nlohmann::json placed_element(const nlohmann::json& scene, const std::string& li
 
 struct ElementEdit {
     nlohmann::json scene;  // the edited document
-    std::string pointer;   // the element it added ("/objects/3"), or "" when it removed one
+    // What to select after the edit: the element it added ("/objects/3"); after a removal,
+    // the one that took its place, or the one before it at the end of its list; "" when
+    // none is left (or the atmosphere went).
+    std::string pointer;
 };
 
 // `element` appended to `list` (the list made when the scene has none).

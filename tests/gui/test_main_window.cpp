@@ -381,10 +381,16 @@ private slots:
         w.duplicate_selected();
         QCOMPARE(w.document()->json()["objects"].size(), size_t(5));
         w.delete_selected();
-        w.tree()->select_pointer("/objects/3");
+        // The selection moves to the neighbour, not away to another part of the tree, and the
+        // panel shows it (the last object: the one before it).
+        QCOMPARE(w.tree()->selected_pointer(), QString("/objects/3"));
+        QCOMPARE(w.panel()->pointer(), QString("/objects/3"));
         w.delete_selected();
         QCOMPARE(w.document()->json()["objects"].size(), size_t(3));
-        // The ball is in the middle of the image.
+        QCOMPARE(w.tree()->selected_pointer(), QString("/objects/2"));
+        QCOMPARE(w.panel()->pointer(), QString("/objects/2"));
+        // The ball is in the middle of the image; with no object selected no handle is there.
+        w.tree()->select_pointer("/materials/red");
         w.resize(1000, 700);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));

@@ -87,15 +87,20 @@ TEST(ElementEdits, DeleteRemovesTheElementItNames) {
     const json scene = two_spheres_scene();
     const auto edit = without_element(scene, "/objects/0");
     ASSERT_TRUE(edit);
-    EXPECT_EQ(edit->pointer, "");
+    // The selection moves to the neighbour that took its place.
+    EXPECT_EQ(edit->pointer, "/objects/0");
     ASSERT_EQ(edit->scene["objects"].size(), 1u);
     EXPECT_EQ(edit->scene["objects"][0]["name"], "sphere");
+    // The last one removed: the one before it; the only one removed: nothing.
+    EXPECT_EQ(without_element(scene, "/objects/1")->pointer, "/objects/0");
+    EXPECT_EQ(without_element(edit->scene, "/objects/0")->pointer, "");
 
     json foggy = scene;
     foggy["atmosphere"] = json::object();
     const auto clear = without_element(foggy, "/atmosphere");
     ASSERT_TRUE(clear);
     EXPECT_FALSE(clear->scene.contains("atmosphere"));
+    EXPECT_EQ(clear->pointer, "");
 
     EXPECT_FALSE(without_element(scene, "/atmosphere"));  // it has none
     EXPECT_FALSE(without_element(scene, "/render"));
