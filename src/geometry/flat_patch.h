@@ -19,8 +19,6 @@ struct FlatPatch {
     std::vector<Vec3> corners;
 
     bool is_disc() const { return radius > 0; }
-    // Whether the patch fills its bounding box (a rectangle).
-    bool fills_its_box() const { return !is_disc() && corners.size() == 4; }
 };
 
 }  // namespace lenslab
