@@ -183,19 +183,25 @@ Rgb xyz_to_linear_srgb(const Vec3& xyz) {
 }
 
 Rgb sample_to_rgb(double value, double nm, double pdf) {
-    return calibration().balanced(cie_xyz_bar(nm) * (value / (pdf * cie_y_integral())));
+    return xyz_sample_to_rgb(cie_xyz_bar(nm) * (value / pdf));
+}
+
+Rgb xyz_sample_to_rgb(const Vec3& xyz) {
+    return calibration().balanced(xyz * (1.0 / cie_y_integral()));
 }
 
 double radiant_power(const Spectrum& s) {
     return integrate([&](double nm) { return s.eval(nm); });
 }
 
-Rgb spectrum_to_rgb(const Spectrum& s) {
+Vec3 spectrum_xyz(const Spectrum& s) {
     Vec3 xyz;
     for (int c = 0; c < 3; ++c)
         xyz[c] = integrate([&](double nm) { return s.eval(nm) * cie_xyz_bar(nm)[c]; });
-    return calibration().balanced(xyz * (1.0 / cie_y_integral()));
+    return xyz;
 }
+
+Rgb spectrum_to_rgb(const Spectrum& s) { return xyz_sample_to_rgb(spectrum_xyz(s)); }
 
 Rgb to_rgb(const SampledSpectrum& s, const SampledWavelengths& w) {
     Vec3 xyz;

@@ -68,8 +68,13 @@ Rgb xyz_to_linear_srgb(const Vec3& xyz);
 Rgb to_rgb(const SampledSpectrum& s, const SampledWavelengths& w);
 // Linear sRGB of a whole spectrum (summed over the 5 nm CIE grid).
 Rgb spectrum_to_rgb(const class Spectrum& s);
+// Its XYZ, unnormalised: the integrals of the spectrum times each colour matching function.
+Vec3 spectrum_xyz(const class Spectrum& s);
 // Linear sRGB of a single wavelength sample of value `value` drawn with density `pdf`.
 Rgb sample_to_rgb(double value, double nm, double pdf);
+// Linear sRGB of a wavelength sample given as the XYZ it adds, cie_xyz_bar(nm) * value / pdf
+// or any weighting of it (render/dispersion_split.h).
+Rgb xyz_sample_to_rgb(const Vec3& xyz);
 // Radiant power of a spectrum over the visible range (W for a light's flux spectrum): the
 // same integral spectrum_to_rgb takes, so one wavelength carrying it (sample_to_rgb with
 // pdf 1) has, on average, the spectrum's colour.

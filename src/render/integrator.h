@@ -48,8 +48,13 @@ protected:
     explicit PixelIntegrator(const Scene& scene) : m_scene(scene) {}
     // The linear sRGB of the radiance along `ray`. `w`: the camera sample's wavelengths, for
     // what depends on the wavelength (dispersion); light that does not may be coloured
-    // exactly (render/path_colour.h).
-    virtual Rgb radiance(const Ray& ray, const SampledWavelengths& w, class Rng& rng) const = 0;
+    // exactly (render/path_colour.h). `split`: the wavelengths a path splits into at
+    // dispersive glass, the same for every pixel's sample of this index; nullptr unless
+    // splits_at_dispersion().
+    virtual Rgb radiance(const Ray& ray, const SampledWavelengths& w,
+                         const class DispersionSplit* split, class Rng& rng) const = 0;
+    // Whether radiance() takes a split (render/dispersion_split.h).
+    virtual bool splits_at_dispersion() const { return false; }
     const Scene& m_scene;
 };
 

@@ -4,8 +4,9 @@ namespace lenslab {
 
 Rgb PathColour::hero_colour(double value) const {
     // The hero wavelength carries the weight of all the sample's wavelengths: its value over
-    // the density it was drawn with (uniform: what to_rgb of SampledSpectrum::hero_only gives).
-    return sample_to_rgb(m_beta[band_of(m_hero_nm)] * value, m_hero_nm, m_hero_pdf);
+    // the density it was drawn with (uniform: what to_rgb of SampledSpectrum::hero_only gives),
+    // or its share of a split.
+    return xyz_sample_to_rgb(m_hero_xyz * (m_beta[band_of(m_hero_nm)] * value));
 }
 
 Rgb PathColour::of(const Spectrum& s) const {

@@ -7,9 +7,12 @@
 // band-constant albedos) x (a light's spectrum), whose colour is exact from the light's band
 // colours (Spectrum::band_colour): the path carries the whole spectrum, and a white light on
 // a grey floor is grey in every pixel. At a dispersive refraction only the camera sample's
-// hero wavelength goes on, and the colour becomes that wavelength's Monte Carlo estimate.
+// hero wavelength goes on, and the colour becomes that wavelength's Monte Carlo estimate;
+// or, where the render splits paths at dispersive glass (render/dispersion_split.h), each of
+// the split's wavelengths goes on in a copy of the path.
 
 #include "optics/spectrum.h"
+#include "render/dispersion_split.h"
 
 namespace lenslab {
 
@@ -20,15 +23,32 @@ class LightSum;
 // three numbers, one per band, hold it exactly.
 class PathColour {
 public:
-    explicit PathColour(const SampledWavelengths& w) : m_hero_nm(w.nm[0]) {}
+    // `split`: the wavelengths the path splits into at its first dispersive refraction, or
+    // nullptr to follow the hero wavelength alone.
+    explicit PathColour(const SampledWavelengths& w, const DispersionSplit* split = nullptr)
+        : PathColour(w.nm[0], SampledWavelengths::pdf()) {
+        m_split = split;
+    }
     // A path that, once dispersed, follows `hero_nm` drawn with density `hero_pdf` (sppm's
     // pass wavelength).
-    PathColour(double hero_nm, double hero_pdf) : m_hero_nm(hero_nm), m_hero_pdf(hero_pdf) {}
+    PathColour(double hero_nm, double hero_pdf)
+        : m_hero_nm(hero_nm), m_hero_xyz(cie_xyz_bar(hero_nm) * (1.0 / hero_pdf)) {}
 
     double hero_nm() const { return m_hero_nm; }
     bool dispersed() const { return m_dispersed; }
     // A dispersive refraction: from here on only the hero wavelength follows the path.
     void disperse() { m_dispersed = true; }
+    // The wavelengths to split into at a dispersive refraction, or nullptr (none given, or
+    // already dispersed).
+    const DispersionSplit* split() const { return m_dispersed ? nullptr : m_split; }
+    // The copy of this path that follows the split's wavelength `s`.
+    PathColour split_to(const SplitWavelength& s) const {
+        PathColour c = *this;
+        c.m_hero_nm = s.nm;
+        c.m_hero_xyz = s.xyz_weight;
+        c.m_dispersed = true;
+        return c;
+    }
 
     PathColour& operator*=(double s) {
         for (double& b : m_beta) b *= s;
@@ -49,7 +69,8 @@ private:
     Rgb hero_colour(double value) const;
 
     double m_hero_nm;
-    double m_hero_pdf = SampledWavelengths::pdf();
+    Vec3 m_hero_xyz;  // the XYZ a unit of light at the hero wavelength adds to the pixel
+    const DispersionSplit* m_split = nullptr;
     bool m_dispersed = false;
     BandWeights m_beta{1.0, 1.0, 1.0};
 };

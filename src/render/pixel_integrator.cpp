@@ -7,6 +7,7 @@
 #include "cluster/dealt_parts.h"
 #include "cluster/rank_order_sum.h"
 #include "math/rng.h"
+#include "render/dispersion_split.h"
 #include "render/integrator.h"
 
 namespace lenslab {
@@ -67,6 +68,10 @@ bool PixelIntegrator::render_window(const Scene& scene, const Camera& camera, Fi
     // Stratify the pixel samples on a sqrt(spp) grid when spp is square, else jitter.
     const int strata = static_cast<int>(std::lround(std::sqrt(spp)));
     const bool stratified = strata * strata == spp;
+    const std::vector<DispersionSplit> splits =
+        splits_at_dispersion()
+            ? dispersion_splits(dispersion_samples(scene), spp, scene.render.seed)
+            : std::vector<DispersionSplit>{};
     std::atomic<int> done{0};
     // In a job of several ranks each renders the tiles dealt to it.
     Communicator& comm = control.cluster();
@@ -102,8 +107,10 @@ bool PixelIntegrator::render_window(const Scene& scene, const Camera& camera, Fi
                             // scrambled order so they do not follow the sample positions.
                             const double u_lambda = ((s * 7919 + 13) % spp + rng.uniform()) / spp;
                             const SampledWavelengths lambdas = SampledWavelengths::sample(u_lambda);
+                            const DispersionSplit* split =
+                                splits.empty() ? nullptr : &splits[s % splits.size()];
                             const Rgb l =
-                                radiance(camera.generate_ray(x + jx, y + jy), lambdas, rng);
+                                radiance(camera.generate_ray(x + jx, y + jy), lambdas, split, rng);
                             // A non-finite sample would poison the pixel; it is a bug, but the
                             // picture must stay usable (no NaN may reach a pixel), and
                             // the count tells the user.

@@ -15,6 +15,7 @@ inline constexpr int kMaxImageSide = 16384;                       // render.widt
 inline constexpr int64_t kMaxImagePixels = int64_t{1} << 26;      // width x height (8192 x 8192)
 inline constexpr int kMaxSpp = 1 << 20;                           // render.spp
 inline constexpr int kMaxDepth = 1000;                            // render.max_depth
+inline constexpr int kMaxDispersionSamples = 256;                 // render.dispersion_samples
 inline constexpr int64_t kMaxPhotonsPerLight = int64_t{1} << 40;  // also checked against memory
 inline constexpr size_t kMaxObjects = 1000000;                    // objects[]
 inline constexpr size_t kMaxLights = 10000;                       // lights[]

@@ -33,6 +33,9 @@ struct RenderSettings {
     // pixel (the bench traces at 1e-9, scene/grin_ray.h).
     double grin_tolerance = 1e-7;
     std::string integrator = "whitted";  // whitted | photon_map | sppm | path
+    // Wavelengths a camera path splits into at dispersive glass (whitted, photon_map;
+    // render/dispersion_split.h); 0 = auto: 7 when a material disperses.
+    int dispersion_samples = 0;
 
     // Photon mapping (integrator photon_map).
     int64_t photons = 200000;            // photons emitted per light

@@ -57,6 +57,12 @@ ElementSpec declare_render_settings() {
             .describe("Rendering algorithm: whitted, photon_map, sppm or path")
             .in_editor("Integrator")
             .on_command_line(),
+        whole_param("dispersion_samples", d.dispersion_samples, 0, kMaxDispersionSamples)
+            .meaning_auto("auto: 7 when a material disperses")
+            .describe("whitted, photon_map: wavelengths a camera path splits into at dispersive "
+                      "glass (0: auto)")
+            .in_editor("Dispersion samples (0 = auto)")
+            .on_command_line(),
         whole_param("photons", d.photons, 1, kMaxPhotonsPerLight)
             .describe("photon_map: photons emitted per light")
             .in_editor("Photons per light")

@@ -81,6 +81,7 @@ void read_render(const json& j, RenderSettings& s) {
     s.min_weight = r.real("min_weight");
     s.grin_tolerance = r.real("grin_tolerance");
     s.integrator = r.text("integrator");
+    s.dispersion_samples = static_cast<int>(r.whole("dispersion_samples"));
     s.photons = r.whole("photons");
     s.radius = r.real("radius");
     s.filter = r.text("filter");

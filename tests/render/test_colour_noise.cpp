@@ -75,7 +75,8 @@ INSTANTIATE_TEST_SUITE_P(Integrators, ColourNoise,
                          ::testing::Values("whitted", "photon_map", "path", "sppm"));
 
 // The floor through a glass ball: with a constant index it stays grey, with a dispersive
-// glass (N-SF11) each camera sample keeps one wavelength there and the pixels are coloured.
+// glass (N-SF11) each camera sample keeps one wavelength there (dispersion_samples 1: no
+// split, test_dispersion_split.cpp has the split) and the pixels are coloured.
 TEST(ColourNoiseThroughGlass, DispersiveGlassStillSplitsTheColours) {
     auto ball = [](const std::string& glass) {
         return grey_floor_scene(
@@ -84,8 +85,14 @@ TEST(ColourNoiseThroughGlass, DispersiveGlassStillSplitsTheColours) {
                 glass + "}}",
             R"({"type": "point", "position": [0, 2, 0.5], "power": 100})");
     };
-    const Film plain = render_json(ball(R"("ior": 1.5)"));
-    const Film dispersive = render_json(ball(R"("glass": "N-SF11")"));
+    auto unsplit = [](const std::string& json) {
+        Scene scene = parse_scene(json);
+        scene.render.dispersion_samples = 1;
+        RenderControl control;
+        return render_scene(scene, control).film;
+    };
+    const Film plain = unsplit(ball(R"("ior": 1.5)"));
+    const Film dispersive = unsplit(ball(R"("glass": "N-SF11")"));
     // Pixels that see the ball: they differ between the two renders.
     int through = 0, coloured = 0;
     double worst_plain = 1.0;

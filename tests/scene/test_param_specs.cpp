@@ -456,6 +456,7 @@ TEST(RenderOptions, AreTheDeclaredKeysWithTheirRangesInTheHelp) {
                                       "--max-depth",
                                       "--seed",
                                       "--integrator",
+                                      "--dispersion-samples",
                                       "--photons",
                                       "--caustic-photons",
                                       "--aim-photons",

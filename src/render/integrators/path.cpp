@@ -27,7 +27,9 @@ PathIntegrator::PathIntegrator(const Scene& scene) : PixelIntegrator(scene) {
     }
 }
 
-Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w, Rng& rng) const {
+// Paths follow the hero wavelength (no split: a path tracer's one path per sample).
+Rgb PathIntegrator::radiance(const Ray& camera_ray, const SampledWavelengths& w,
+                             const DispersionSplit* /*split*/, Rng& rng) const {
     const Scene& scene = m_scene;
     Rgb l;
     PathColour path(w);  // the throughput, and what the path still carries

@@ -29,7 +29,8 @@ public:
     explicit PathIntegrator(const Scene& scene);
 
 protected:
-    Rgb radiance(const Ray& ray, const SampledWavelengths& w, Rng& rng) const override;
+    Rgb radiance(const Ray& ray, const SampledWavelengths& w, const DispersionSplit* split,
+                 Rng& rng) const override;
 
 private:
     SpectrumPtr m_ambient, m_background;  // null when black

@@ -1,6 +1,7 @@
 #include "render/integrators/photon_map.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "render/direct_light.h"
@@ -74,15 +75,19 @@ RenderStats PhotonMapIntegrator::stats(double /*seconds*/) const {
 }
 
 void PhotonMapIntegrator::add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n,
-                                                 Rng& rng) const {
+                                                 double share, Rng& rng) const {
     thread_local std::vector<PhotonNeighbour> scratch;
+    GatherSettings g = m_gather;
+    const double wanted = std::ceil(static_cast<double>(g.max_photons) * share);
+    if (wanted < static_cast<double>(g.max_photons))
+        g.max_photons = std::max(kFewestPhotonsPerEstimate, static_cast<size_t>(wanted));
     // Photons store colours; the estimate is lit as an RGB illuminant (D65 times bands), whose
     // band colours are exact.
-    Rgb from_maps = PhotonMap::irradiance(m_map->caustic(), p, n, m_gather, scratch);
+    Rgb from_maps = PhotonMap::irradiance(m_map->caustic(), p, n, g, scratch);
     if (m_scene.render.direct == kDirectFromPhotonMap) {
-        from_maps += PhotonMap::irradiance(m_map->direct(), p, n, m_gather, scratch);
+        from_maps += PhotonMap::irradiance(m_map->direct(), p, n, g, scratch);
     } else {
-        WhittedIntegrator::add_diffuse_irradiance(e, p, n, rng);
+        WhittedIntegrator::add_diffuse_irradiance(e, p, n, share, rng);
     }
     e.add_illuminant(from_maps);
 }

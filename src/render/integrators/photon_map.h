@@ -34,13 +34,21 @@ public:
     void set_photon_map(std::shared_ptr<const PhotonMap> map) { m_map = std::move(map); }
 
 protected:
-    void add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n, Rng& rng) const override;
+    // The photon-map estimate gathers at most max_photons_per_estimate times `share` photons
+    // (at least kFewestPhotonsPerEstimate): the wavelengths of a split, each a few, gather
+    // about as many as one unsplit path, and a faint reflection's estimate costs little.
+    void add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n, double share,
+                                Rng& rng) const override;
 
 private:
     GatherSettings m_gather;
     std::shared_ptr<const PhotonMap> m_map;
     PhotonTracingStats m_stats;
 };
+
+// The fewest photons an estimate gathers, however small its share of a pixel (see
+// PhotonMapIntegrator::add_diffuse_irradiance).
+inline constexpr size_t kFewestPhotonsPerEstimate = 8;
 
 // Gather radius when the scene gives none: 0.5% of the diagonal of the scene's bounds
 // (0.046 for the default scene, inside the report's range 0.025 to 0.1).

@@ -14,12 +14,13 @@ WhittedIntegrator::WhittedIntegrator(const Scene& scene) : PixelIntegrator(scene
         m_background = illuminant_from_rgb(scene.render.background);
 }
 
-Rgb WhittedIntegrator::radiance(const Ray& ray, const SampledWavelengths& w, Rng& rng) const {
-    return trace(ray, 0, 1.0, PathColour(w), rng);
+Rgb WhittedIntegrator::radiance(const Ray& ray, const SampledWavelengths& w,
+                                const DispersionSplit* split, Rng& rng) const {
+    return trace(ray, 0, 1.0, PathColour(w, split), rng);
 }
 
 void WhittedIntegrator::add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n,
-                                               Rng& rng) const {
+                                               double /*share*/, Rng& rng) const {
     for_each_direct_light(m_scene, p, n, m_scene.render.light_samples, rng,
                           [&](const Spectrum& s, double factor) { e.add(s, factor); });
 }
@@ -49,7 +50,7 @@ Rgb WhittedIntegrator::trace(const Ray& ray, int depth, double weight, const Pat
     const Scattering& s = it.scattering;
     if (s.diffuse > 0.0) {
         LightSum e(path);
-        add_diffuse_irradiance(e, p, front_side ? n : -n, rng);
+        add_diffuse_irradiance(e, p, front_side ? n : -n, weight, rng);
         e *= 1.0 / std::numbers::pi;
         if (m_ambient) e.add(*m_ambient, 1.0);
         PathColour reflected = path;
@@ -57,12 +58,38 @@ Rgb WhittedIntegrator::trace(const Ray& ray, int depth, double weight, const Pat
         l += reflected.of(e) * s.diffuse;
     }
     if (depth >= scene.render.max_depth) return l;
+    const bool split = s.dispersive && path.split();
+    if (split) l += trace_split(it, ray.direction, depth, weight, path, rng);
     for (int i = 0; i < s.count; ++i) {
         const Branch& b = s.branches[i];
         if (weight * b.weight < scene.render.min_weight) continue;
         PathColour next = path;
-        if (s.dispersive && b.event == Event::Refract) next.disperse();
+        if (s.dispersive && b.event == Event::Refract) {
+            if (split) continue;
+            next.disperse();
+        }
         l += trace({p, b.direction}, depth + 1, weight * b.weight, next, rng) * b.weight;
+    }
+    return l;
+}
+
+Rgb WhittedIntegrator::trace_split(const Interaction& it, const Vec3& d, int depth, double weight,
+                                   const PathColour& path, Rng& rng) const {
+    Rgb l;
+    const auto& split = path.split()->wavelengths();
+    // Each wavelength carries its share of the colour (the split's weights are in the colour,
+    // the branch weight multiplies the light).
+    const double share = weight / static_cast<double>(split.size());
+    for (const SplitWavelength& w : split) {
+        // Each wavelength refracts with its own index.
+        const Scattering s = scatter_at(it, d, w.nm);
+        for (int i = 0; i < s.count; ++i) {
+            const Branch& b = s.branches[i];
+            if (b.event != Event::Refract || share * b.weight < m_scene.render.min_weight) continue;
+            l += trace({it.point(), b.direction}, depth + 1, share * b.weight, path.split_to(w),
+                       rng) *
+                 b.weight;
+        }
     }
     return l;
 }

@@ -18,15 +18,24 @@ public:
     explicit WhittedIntegrator(const Scene& scene);
 
 protected:
-    Rgb radiance(const Ray& ray, const SampledWavelengths& w, Rng& rng) const override;
+    Rgb radiance(const Ray& ray, const SampledWavelengths& w, const DispersionSplit* split,
+                 Rng& rng) const override;
+    bool splits_at_dispersion() const override { return true; }
     // Adds the irradiance reaching a diffuse point `p` whose normal `n` faces the viewer: here
-    // the direct light through shadow rays. The photon-map integrator adds caustics.
-    virtual void add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n, Rng& rng) const;
+    // the direct light through shadow rays. The photon-map integrator adds caustics. `share`:
+    // the part of the camera sample's colour this point's light makes (the branch weights
+    // along the way, over the wavelengths of a split).
+    virtual void add_diffuse_irradiance(LightSum& e, const Vec3& p, const Vec3& n, double share,
+                                        Rng& rng) const;
 
 private:
     // `path`: what the branch still carries (the hero wavelength alone once a dispersive
-    // refraction upstream split the wavelengths).
+    // refraction upstream split the wavelengths); `weight`: its share of the sample's colour.
     Rgb trace(const Ray& ray, int depth, double weight, const PathColour& path, Rng& rng) const;
+    // The refracted branches of a dispersive interaction `it` for each of the split's
+    // wavelengths, the path arriving along `d` undispersed.
+    Rgb trace_split(const struct Interaction& it, const Vec3& d, int depth, double weight,
+                    const PathColour& path, Rng& rng) const;
 
     SpectrumPtr m_ambient, m_background;  // null when black
 };
