@@ -44,13 +44,19 @@ CommandLine::CommandLine()
     : m_app("lenslab: physically based rendering of light through lenses, and an optical bench") {
     m_app.require_subcommand(1);
     m_app.set_version_flag("--version", "lenslab 0.1.0");
-    m_commands = {
-        {"render", add_render_command(m_app)},     {"trace", add_trace_command(m_app)},
-        {"bench", add_bench_command(m_app)},       {"glass", add_glass_command(m_app)},
-        {"analyze", add_analyze_command(m_app)},   {"detect", add_detect_command(m_app)},
-        {"import", add_import_command(m_app)},     {"export", add_export_command(m_app)},
-        {"optimize", add_optimize_command(m_app)}, {"sweep", add_sweep_command(m_app)},
-        {"types", add_types_command(m_app)},       {"spectra", add_spectra_command(m_app)}};
+    m_commands = {{"render", add_render_command(m_app)},
+                  {"trace", add_trace_command(m_app)},
+                  {"bench", add_bench_command(m_app)},
+                  {"glass", add_glass_command(m_app)},
+                  {"analyze", add_analyze_command(m_app)},
+                  {"detect", add_detect_command(m_app)},
+                  {"import", add_import_command(m_app)},
+                  {"export", add_export_command(m_app)},
+                  {"optimize", add_optimize_command(m_app)},
+                  {"sweep", add_sweep_command(m_app)},
+                  {"types", add_types_command(m_app)},
+                  {"spectra", add_spectra_command(m_app)},
+                  {"colour-speckle", add_colour_speckle_command(m_app)}};
     // A user's AGF glass catalogue for every command that reads a scene or looks up a glass.
     for (const char* name : {"render", "trace", "glass", "analyze", "detect", "import", "export",
                              "optimize", "sweep"}) {

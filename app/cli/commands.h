@@ -39,5 +39,6 @@ Action add_optimize_command(CLI::App& app);
 Action add_sweep_command(CLI::App& app);
 Action add_types_command(CLI::App& app);
 Action add_spectra_command(CLI::App& app);
+Action add_colour_speckle_command(CLI::App& app);
 
 }  // namespace lenslab::cli

@@ -796,6 +796,13 @@ lenslab_cli_test(NAME spectra.out_of_range ARGS spectra --wavelengths 900
     CHECKS -DEXPECT_EXIT=1
            "-DSTDERR_LINE=lenslab: error: --wavelengths: wavelength 900 nm: outside 360 to 830 nm, the range of the CIE tables")
 
+# `lenslab colour-speckle` measures a disc of a PNG: the default render's floor, lit by
+# white light through no glass, has no colour speckle; a disc off the picture is refused.
+lenslab_cli_test(NAME colour_speckle.grey_floor ARGS colour-speckle docs/images/default.png 320 450 20
+    CHECKS -DEXPECT_EXIT=0 "-DSTDOUT_CONTAINS=0.00")
+lenslab_cli_test(NAME colour_speckle.off_picture ARGS colour-speckle docs/images/default.png 5000 10 20
+    CHECKS -DEXPECT_EXIT=1 "-DSTDERR_CONTAINS=lies outside the")
+
 # `lenslab types` lists every type from the tables, the area lights among them.
 lenslab_cli_test(NAME types.lists_area_lights ARGS types
     CHECKS -DEXPECT_EXIT=0 "-DSTDOUT_CONTAINS=disc_light      center, normal, radius, power, color, spectrum")
