@@ -9,7 +9,7 @@
 
 namespace lenslab {
 
-inline constexpr int kHaltonDimensions = 5;
+inline constexpr int kHaltonDimensions = 6;
 
 // The radical inverse of `index` in base `Base`. The base is a constant so that the digit
 // divisions compile to multiplications (a 64-bit division by a run-time value costs tens of
@@ -26,7 +26,7 @@ double radical_inverse_in_base(uint64_t index) {
     return result;
 }
 
-// The radical inverse of `index` in the `dimension`-th prime (2, 3, 5, 7, 11).
+// The radical inverse of `index` in the `dimension`-th prime (2, 3, 5, 7, 11, 13).
 inline double radical_inverse(int dimension, uint64_t index) {
     switch (dimension) {
         case 0:
@@ -37,8 +37,10 @@ inline double radical_inverse(int dimension, uint64_t index) {
             return radical_inverse_in_base<5>(index);
         case 3:
             return radical_inverse_in_base<7>(index);
-        default:
+        case 4:
             return radical_inverse_in_base<11>(index);
+        default:
+            return radical_inverse_in_base<13>(index);
     }
 }
 

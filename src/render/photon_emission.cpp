@@ -71,12 +71,18 @@ PhotonPlan::Photon PhotonPlan::start(const Scene& scene, int64_t index, Rng& rng
                                      [](int64_t i, const Range& r) { return i < r.first; });
     const Range& r = *(it - 1);
     const Light& light = *scene.lights()[static_cast<size_t>(r.light)];
-    // Aimed photons from consecutive Halton points: they spread evenly over the caustic.
-    Photon p{r.light, r.aimed,
-             r.aimed ? light.sample_le_towards(
-                           scene.photon_targets(),
-                           halton_point(static_cast<uint64_t>(index - r.first), r.rotation))
-                     : light.sample_le(rng)};
+    // Aimed photons from consecutive Halton points: they spread evenly over the caustic. The
+    // light takes the first coordinates, the wavelength the last.
+    Photon p{r.light, r.aimed, {}};
+    if (r.aimed) {
+        const auto u = halton_point(static_cast<uint64_t>(index - r.first), r.rotation);
+        AimSample aim;
+        std::copy_n(u.begin(), aim.size(), aim.begin());
+        p.start = light.sample_le_towards(scene.photon_targets(), aim);
+        p.wavelength_u = u[kHaltonDimensions - 1];
+    } else {
+        p.start = light.sample_le(rng);
+    }
     p.start.scale /= static_cast<double>(r.count);
     return p;
 }

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "math/halton.h"
 #include "math/rng.h"
 #include "scene/light_source.h"
 #include "scene/scene.h"
@@ -44,6 +45,10 @@ public:
         int light = 0;
         bool aimed = false;
         PhotonStart start;  // scale already divided by the photons its light sends in its stream
+        // Aimed: where its wavelength lies in its light's spectrum, should it disperse (the
+        // Halton point's last coordinate, so photons that land close together, coming from
+        // nearby points, have wavelengths spread evenly over the spectrum); < 0: at random.
+        double wavelength_u = -1;
     };
     // Samples photon `index` with `rng` (the caller seeds one stream per photon).
     Photon start(const Scene& scene, int64_t index, Rng& rng) const;
@@ -58,7 +63,7 @@ private:
         int64_t first, count;
         int light;
         bool aimed;
-        AimSample rotation;  // of the Halton points its aimed photons take
+        std::array<double, kHaltonDimensions> rotation;  // of the Halton points aimed photons take
     };
     std::vector<Range> m_ranges;     // in photon order: emitted stream light by light, then aimed
     std::vector<char> m_light_aims;  // per light: it sends an aimed stream

@@ -64,6 +64,7 @@ struct MapDeposit {
     std::vector<Photon>* direct;  // where photons go, or nullptr (a detector's walk)
     std::vector<Photon>* caustic;
     double lambda_nm = 0;  // 0 until a dispersive refraction picks one
+    double wavelength_u;   // where in the spectrum it picks it, or < 0: at random
 
     MapDeposit(const PhotonPlan::Photon& p, const LightSpectrum& ls, const PhotonArrivalFn* arrival,
                std::vector<Photon>* direct_list = nullptr,
@@ -76,7 +77,8 @@ struct MapDeposit {
           aimed(p.aimed),
           on_arrival(arrival),
           direct(direct_list),
-          caustic(caustic_list) {}
+          caustic(caustic_list),
+          wavelength_u(p.wavelength_u) {}
 
     void arrive(const Interaction& it, const Vec3& direction, int depth) const {
         if (on_arrival) {
@@ -90,7 +92,8 @@ struct MapDeposit {
     // by the spectrum's value at the drawn wavelength over the histogram's density instead
     // made photons of a line narrower than a bin up to 15 times brighter than their light.)
     void disperse(Rng& rng) {
-        (void)spectrum->sample_wavelength(rng.uniform(), lambda_nm);
+        (void)spectrum->sample_wavelength(wavelength_u >= 0 ? wavelength_u : rng.uniform(),
+                                          lambda_nm);
         power = sample_to_rgb(radiant_power, lambda_nm, 1.0);
     }
 

@@ -26,13 +26,14 @@ TEST(Halton, TheFirstPointsOfBaseTwoHalveEveryInterval) {
 }
 
 TEST(Halton, RotationWrapsAroundOne) {
-    const std::array<double, kHaltonDimensions> rotation = {0.75, 0.0, 0.5, 0.25, 0.95};
-    const auto u = halton_point(1, rotation);  // (1/2, 1/3, 1/5, 1/7, 1/11) before rotation
+    const std::array<double, kHaltonDimensions> rotation = {0.75, 0.0, 0.5, 0.25, 0.95, 0.9};
+    const auto u = halton_point(1, rotation);  // (1/2, 1/3, 1/5, 1/7, 1/11, 1/13) before rotation
     EXPECT_DOUBLE_EQ(u[0], 0.25);
     EXPECT_DOUBLE_EQ(u[1], 1.0 / 3.0);
     EXPECT_DOUBLE_EQ(u[2], 0.7);
     EXPECT_DOUBLE_EQ(u[3], 1.0 / 7.0 + 0.25);
     EXPECT_NEAR(u[4], 1.0 / 11.0 + 0.95 - 1.0, 1e-15);
+    EXPECT_NEAR(u[5], 1.0 / 13.0 + 0.9, 1e-15);
     for (double x : u) {
         EXPECT_GE(x, 0.0);
         EXPECT_LT(x, 1.0);
