@@ -1,5 +1,7 @@
 #include "scene/material.h"
 
+#include "optics/smooth_spectrum.h"
+
 namespace lenslab {
 
 namespace {
@@ -20,7 +22,7 @@ void Material::finish() {
     albedo = reflectance_from_rgb(color);
     albedo_bands = reflectance_bands(color);
     const SpectrumPtr shape =
-        emission_spectrum ? emission_spectrum : illuminant_from_rgb(emission_color);
+        emission_spectrum ? emission_spectrum : smooth_illuminant_from_rgb(emission_color);
     emission = emission_intensity > 0.0
                    ? std::make_shared<ScaledSpectrum>(shape, emission_intensity)
                    : nullptr;

@@ -2,6 +2,7 @@
 
 #include "optics/glass_catalogue_file.h"
 #include "optics/glass_library.h"
+#include "optics/smooth_spectrum.h"
 #include "scene/material.h"
 
 namespace lenslab {
@@ -128,7 +129,7 @@ SpectrumPtr light_spectrum(JsonObjectReader& r, Rgb& color, double power) {
         return scaled_spectrum(read_spectrum(*s, r.child_path("spectrum")), power);
     }
     color = r.color("color", color);
-    return scaled_spectrum(illuminant_from_rgb(color), power);
+    return scaled_spectrum(smooth_illuminant_from_rgb(color), power);
 }
 
 SpectrumPtr laser_spectrum(JsonObjectReader& r, double wavelength_nm, double power) {
