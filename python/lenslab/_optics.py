@@ -251,17 +251,20 @@ def analyze_many(scenes: Iterable[SceneSource], *, threads: Optional[int] = None
     return [Analysis(run) for run in batch.runs()]
 
 
-def spectral_data(wavelengths: Iterable[float], blackbody: Optional[float] = None
-                  ) -> dict[str, np.ndarray]:
+def spectral_data(wavelengths: Iterable[float], blackbody: Optional[float] = None,
+                  rgb: Optional[Iterable[float]] = None) -> dict[str, np.ndarray]:
     """The spectral data the renderer uses at `wavelengths` (nm, 360 to 830), as
     `lenslab spectra --json` prints it: {"nm", "x_bar", "y_bar", "z_bar" (CIE 1931 2-degree
     colour-matching functions), "d65" (the renderer's white light) and "illuminant_a" (CIE A), relative to 560 nm,
     "blackbody" (with `blackbody` in kelvin, 500 to 100000, relative to 560 nm),
-    "air_index" (standard air, 20 degC, 101325 Pa, at the wavelength in air)}, each an array."""
+"rgb_light" (with `rgb`, a light's linear RGB colour: the smooth spectrum such a light gets,
+    relative to D65 at 560 nm), "air_index" (standard air, 20 degC, 101325 Pa, at the
+    wavelength in air)}, each an array."""
     nm = [float(w) for w in wavelengths]
     if blackbody is not None and (isinstance(blackbody, bool)
                                   or not isinstance(blackbody, numbers.Real)):
         raise ValueError(f"blackbody: must be a temperature in kelvin, got {blackbody!r}")
-    columns = json.loads(_lenslab.spectral_data_json(nm, float(blackbody or 0)))
+    channels = [] if rgb is None else [float(c) for c in rgb]
+    columns = json.loads(_lenslab.spectral_data_json(nm, float(blackbody or 0), channels))
     return {key: np.asarray(values, dtype=np.float64) for key, values in columns.items()}
 

@@ -39,11 +39,18 @@ void bind_scene(py::module_& m) {
     m.def("default_scene_text", &default_scene_text, "The built-in default scene's JSON");
     m.def(
         "spectral_data_json",
-        [](const std::vector<double>& nm, double blackbody) {
+        [](const std::vector<double>& nm, double blackbody, const std::vector<double>& rgb) {
             // std::invalid_argument (a value out of range) reaches Python as ValueError.
-            return spectral_columns(spectral_rows(nm, blackbody), blackbody != 0).dump();
+            if (!rgb.empty() && rgb.size() != 3)
+                throw std::invalid_argument("rgb: give three channels (R, G, B)");
+            const std::optional<Rgb> light =
+                rgb.empty() ? std::nullopt : std::optional<Rgb>(Rgb{rgb[0], rgb[1], rgb[2]});
+            return spectral_columns(spectral_rows(nm, blackbody, light), blackbody != 0,
+                                    light.has_value())
+                .dump();
         },
-        py::arg("nm"), py::arg("blackbody"), "The columns of `lenslab spectra --json`");
+        py::arg("nm"), py::arg("blackbody"), py::arg("rgb"),
+        "The columns of `lenslab spectra --json` (rgb: empty or three channels)");
     m.def(
         "types_json", [] { return scene_types_json().dump(); },
         "The object and light types and their keys, as `lenslab types --json`");

@@ -1,15 +1,18 @@
 #include "optics/spectral_table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "optics/air_index.h"
+#include "optics/smooth_spectrum.h"
 #include "optics/spectrum.h"
 #include "util/format_number.h"
 
 namespace lenslab {
 
-std::vector<SpectralRow> spectral_rows(const std::vector<double>& nm, double blackbody_k) {
+std::vector<SpectralRow> spectral_rows(const std::vector<double>& nm, double blackbody_k,
+                                       const std::optional<Rgb>& light_rgb) {
     for (double l : nm) {
         if (!(l >= kLambdaMinNm && l <= kLambdaMaxNm)) {
             throw std::invalid_argument(
@@ -22,7 +25,14 @@ std::vector<SpectralRow> spectral_rows(const std::vector<double>& nm, double bla
                                     " K: must be between " + format_number(kBlackbodyMinK) +
                                     " and " + format_number(kBlackbodyMaxK) + " K");
     }
+    if (light_rgb && (!(std::min({light_rgb->r, light_rgb->g, light_rgb->b}) >= 0) ||
+                      light_rgb->is_black() || !light_rgb->is_finite())) {
+        throw std::invalid_argument(
+            "rgb " + format_number(light_rgb->r) + "," + format_number(light_rgb->g) + "," +
+            format_number(light_rgb->b) + ": a light's colour needs channels >= 0, not all 0");
+    }
     const SpectrumPtr white = d65_spectrum();
+    const SpectrumPtr coloured = light_rgb ? smooth_illuminant_from_rgb(*light_rgb) : nullptr;
     const SpectrumPtr lamp = illuminant_a_spectrum();
     const SpectrumPtr hot = blackbody_k != 0 ? blackbody_spectrum(blackbody_k) : nullptr;
     std::vector<SpectralRow> rows;
@@ -33,13 +43,15 @@ std::vector<SpectralRow> spectral_rows(const std::vector<double>& nm, double bla
         r.d65 = white->eval(l) / white->eval(560);
         r.illuminant_a = lamp->eval(l) / lamp->eval(560);
         if (hot) r.blackbody = hot->eval(l) / hot->eval(560);
+        if (coloured) r.rgb_light = coloured->eval(l) / white->eval(560);
         r.air_index = standard_air_index(l);
         rows.push_back(r);
     }
     return rows;
 }
 
-nlohmann::ordered_json spectral_columns(const std::vector<SpectralRow>& rows, bool blackbody) {
+nlohmann::ordered_json spectral_columns(const std::vector<SpectralRow>& rows, bool blackbody,
+                                        bool rgb_light) {
     nlohmann::ordered_json out;
     const auto column = [&rows, &out](const char* key, auto value) {
         out[key] = nlohmann::ordered_json::array();
@@ -52,6 +64,7 @@ nlohmann::ordered_json spectral_columns(const std::vector<SpectralRow>& rows, bo
     column("d65", [](const SpectralRow& r) { return r.d65; });
     column("illuminant_a", [](const SpectralRow& r) { return r.illuminant_a; });
     if (blackbody) column("blackbody", [](const SpectralRow& r) { return r.blackbody; });
+    if (rgb_light) column("rgb_light", [](const SpectralRow& r) { return r.rgb_light; });
     column("air_index", [](const SpectralRow& r) { return r.air_index; });
     return out;
 }

@@ -802,6 +802,11 @@ lenslab_cli_test(NAME colour_speckle.grey_floor ARGS colour-speckle docs/images/
     CHECKS -DEXPECT_EXIT=0 "-DSTDOUT_CONTAINS=0.00")
 lenslab_cli_test(NAME colour_speckle.off_picture ARGS colour-speckle docs/images/default.png 5000 10 20
     CHECKS -DEXPECT_EXIT=1 "-DSTDERR_CONTAINS=lies outside the")
+# `--rgb` adds the smooth spectrum a light of that colour gets: white is D65 itself.
+lenslab_cli_test(NAME spectra.rgb_white ARGS spectra --wavelengths 550 --rgb 1,1,1
+    CHECKS -DEXPECT_EXIT=0 "-DSTDOUT_CONTAINS=0.929120   1.040460")
+lenslab_cli_test(NAME spectra.rgb_negative ARGS spectra --rgb=-1,0,0
+    CHECKS -DEXPECT_EXIT=1 "-DSTDERR_LINE=lenslab: error: --rgb -1,0,0: a light's colour needs channels >= 0, not all 0")
 
 # `lenslab types` lists every type from the tables, the area lights among them.
 lenslab_cli_test(NAME types.lists_area_lights ARGS types

@@ -157,3 +157,17 @@ def test_spectral_data_holds_the_cie_tables_as_the_cli_prints_them():
     with pytest.raises(ValueError, match="between 500 and 100000 K"):
         lenslab.spectral_data([550], blackbody=10)
 
+
+def test_spectral_data_gives_the_smooth_spectrum_of_a_light_colour():
+    # White is D65 itself; a red light is smooth, small in the blue and large in the red.
+    white = lenslab.spectral_data([450, 550, 650], rgb=(1, 1, 1))
+    assert list(white["rgb_light"]) == pytest.approx(list(white["d65"]), rel=1e-9)
+    red = lenslab.spectral_data(range(450, 651, 10), rgb=(1, 0, 0))["rgb_light"]
+    assert red[0] < 0.05 * red[-1]
+    assert all(b >= a for a, b in zip(red[8:], red[9:]))  # rising through the red
+    expected = cli_json("spectra", "--wavelengths", "600", "--rgb", "1,0.5,0.2", "--json")
+    assert lenslab.spectral_data([600], rgb=(1, 0.5, 0.2))["rgb_light"][0] == \
+        expected["rgb_light"][0]
+    with pytest.raises(ValueError, match="channels >= 0"):
+        lenslab.spectral_data([550], rgb=(-1, 0, 0))
+
