@@ -88,7 +88,8 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "lenslab-gui: error: %s\n", e.what());
             return 1;
         }
-        const auto grab = [&] {
+        // The handlers run in app.exec(), after this block: they hold copies of its locals.
+        const auto grab = [file, &window] {
             // Atomic, like every file lenslab writes.
             QSaveFile out(file);
             const bool saved = out.open(QIODevice::WriteOnly) &&
@@ -105,7 +106,7 @@ int main(int argc, char** argv) {
             QTimer::singleShot(200, &window, grab);
         } else {
             QObject::connect(window.renderer(), &lenslab::gui::RenderController::frame_ready,
-                             &window, [&](const QImage&, int done) {
+                             &window, [wanted, grab, &measuring, &window](const QImage&, int done) {
                                  if (done < wanted || measuring) return;
                                  // Let the frame reach the viewport and the status bar first.
                                  QTimer::singleShot(50, &window, grab);

@@ -153,8 +153,7 @@ MainWindow::MainWindow(QWidget* parent)
     // A refused render keeps its reason in the status line until the next frame (a message
     // there would time out and bring the old status back, as if nothing had failed).
     connect(m_renderer, &RenderController::render_failed, this, [this](const QString& message) {
-        m_status->setText(tr("render failed: %1").arg(message));
-        m_status->setStyleSheet("color: #c0392b;");
+        set_render_status(tr("render failed: %1").arg(message), true);
         m_progress->hide();
     });
 
@@ -346,14 +345,35 @@ void MainWindow::export_section_svg() {
         QMessageBox::warning(this, tr("Cannot export"), error);
 }
 
-void MainWindow::show_message(const QString& text) { statusBar()->showMessage(text, 10000); }
+namespace {
+
+// How long a message holds the status line before the render status comes back.
+constexpr int kMessageMs = 5000;
+
+}  // namespace
+
+void MainWindow::show_message(const QString& text) {
+    m_message_shown = QDeadlineTimer(kMessageMs);
+    m_status->setStyleSheet({});
+    m_status->setText(text);
+    QTimer::singleShot(kMessageMs, this, [this] {
+        if (m_message_shown.hasExpired()) set_render_status(m_render_status, m_render_status_error);
+    });
+}
+
+void MainWindow::set_render_status(const QString& text, bool error) {
+    m_render_status = text;
+    m_render_status_error = error;
+    if (!m_message_shown.hasExpired()) return;
+    m_status->setStyleSheet(error ? "color: #c0392b;" : "");
+    m_status->setText(text);
+}
 
 void MainWindow::show_frame(int passes, qint64 photons, double seconds, const QString& integrator) {
     const int limit = m_renderer->max_passes();
     m_integrator = integrator;
     m_frame_figures = tr("photons %1 · %2 s").arg(photons).arg(seconds, 0, 'f', 1);
-    m_status->setStyleSheet({});
-    m_status->setText(tr("%1 · rendering (pass %2 of %3) · %4")
+    set_render_status(tr("%1 · rendering (pass %2 of %3) · %4")
                           .arg(integrator)
                           .arg(passes)
                           .arg(limit)
@@ -371,7 +391,7 @@ void MainWindow::show_render_end(RenderEnd end, int passes) {
         end == RenderEnd::Converged
             ? tr("converged (%1 passes)").arg(passes)
             : tr("stopped at pass %1 of %2").arg(passes).arg(m_renderer->max_passes());
-    m_status->setText(tr("%1 · %2 · %3").arg(m_integrator, state, m_frame_figures));
+    set_render_status(tr("%1 · %2 · %3").arg(m_integrator, state, m_frame_figures));
 }
 
 OptimiseDialog* MainWindow::optimise_selected_lens() {

@@ -4,6 +4,7 @@
 // bar: the render's state (its pass of the limit, converged, stopped or why it failed),
 // photons and time, and a progress bar.
 
+#include <QDeadlineTimer>
 #include <QLabel>
 #include <QMainWindow>
 #include <QProgressBar>
@@ -95,7 +96,12 @@ private:
     void export_image();
     void export_section_svg();
     void build_section_tab();
+    // A message in the status line (the one line: render status and messages share it),
+    // for kMessageMs; then the render status comes back.
     void show_message(const QString& text);
+    // The render's status ("sppm · rendering (pass 3 of 256) · ..."), shown at once unless a
+    // message is up, then when it ends. `error`: in red.
+    void set_render_status(const QString& text, bool error = false);
     // Applies an edit of the scene's elements (scene/element_edits.h) as one undo step and
     // selects what it added (nothing, after a removal); false, with the reason shown, if the
     // document refused it.
@@ -116,6 +122,9 @@ private:
     RayDiagramDock* m_ray_diagram;
     DetectorDock* m_detector_dock;
     QLabel* m_status;
+    QString m_render_status;
+    bool m_render_status_error = false;
+    QDeadlineTimer m_message_shown;  // until when a message holds the status line
     QProgressBar* m_progress;
     QString m_integrator, m_frame_figures;  // of the last frame: "sppm", "photons N · 3.4 s"
     QMenu* m_recent_menu = nullptr;

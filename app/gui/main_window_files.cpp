@@ -52,6 +52,18 @@ bool MainWindow::open_file(const QString& path, QString* error, bool as_copy) {
     }
     if (!as_copy) remember_recent(path);
     m_tree->select_pointer("/camera");
+    if (m_document->camera_made()) {
+        // A lens file: the section shows its lenses at once; the 3-D view has a camera made
+        // for it, and is dark when the file has no light.
+        const bool lit = !m_document->scene().lights().empty() ||
+                         !m_document->scene().render.background.is_black();
+        show_message(
+            tr("%1 has no camera: one was made to show the whole scene (Save keeps "
+               "it)%2")
+                .arg(QFileInfo(path).fileName(),
+                     lit ? QString() : tr("; no lights either: add one to see it in 3-D")));
+        show_view("section");
+    }
     return true;
 }
 

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "edit_scene_command.h"
+#include "scene/framing_camera.h"
 #include "scene/json_reader.h"
 #include "scene/medium.h"
 #include "scene/render_settings_json.h"
@@ -98,10 +99,16 @@ bool SceneDocument::open(const QString& path, QString* error, bool as_copy) {
     const std::string text = file.readAll().toStdString();
     nlohmann::json j;
     Scene scene;
+    bool made = false;
     try {
         j = parse_json_strict(text, path.toStdString());
         if (!j.is_object())
             throw SceneError(path.toStdString(), "the top level must be a JSON object { ... }");
+        made = !j.contains("camera");
+        if (made) {
+            j["camera"] =
+                framing_camera_json(scene_from_json(j, folder_of(path), {.require_camera = false}));
+        }
         scene = scene_from_json(j, folder_of(path));
     } catch (const SceneError& e) {
         if (error) {
@@ -114,6 +121,7 @@ bool SceneDocument::open(const QString& path, QString* error, bool as_copy) {
     }
     m_json = std::move(j);
     m_scene = std::move(scene);
+    m_camera_made = made;
     m_path = as_copy ? QString() : path;
     m_copied_from = as_copy ? path : QString();
     m_folder = folder_of(path);

@@ -48,8 +48,11 @@ public:
     void load_default();
     // Opens a scene file. On failure the current scene is kept and `error` says why. As a
     // copy (the examples): untitled, so Save asks where instead of overwriting the file;
-    // relative file names in it (OBJ meshes) still read from its folder.
+    // relative file names in it (OBJ meshes) still read from its folder. A file with no
+    // camera (a lens file for `lenslab analyze`) gets one that shows the whole scene
+    // (scene/framing_camera.h), and camera_made() says so.
     bool open(const QString& path, QString* error, bool as_copy = false);
+    bool camera_made() const { return m_camera_made; }
     // Writes the document atomically (a temporary file renamed over the target).
     bool save(const QString& path, QString* error);
 
@@ -89,6 +92,7 @@ private:
     Scene m_scene;
     QString m_path;
     QString m_copied_from;
+    bool m_camera_made = false;
     std::string m_folder;  // where relative file names in the scene are read from
     QUndoStack m_undo;
 };

@@ -12,6 +12,7 @@
 #include <QScreen>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <algorithm>
@@ -181,6 +182,28 @@ private slots:
         QVERIFY2(box->text().contains("broken.json"), qPrintable(box->text()));
         QCOMPARE(w.document()->scene().objects.size(), objects);
         box->close();
+    }
+
+    // A lens file with no camera (the optimiser's examples, for `lenslab analyze`) opens
+    // with a camera made to show it, and the status bar says so (it was refused with
+    // "camera: missing (required)").
+    void a_file_without_a_camera_opens_with_one_made() {
+        MainWindow w;
+        w.show();
+        QString error;
+        QVERIFY2(w.open_file(LENSLAB_SOURCE_DIR "/examples/optimize/triplet_start.json", &error),
+                 qPrintable(error));
+        QVERIFY(w.document()->json().contains("camera"));
+        QVERIFY(w.document()->camera_made());
+        QCOMPARE(w.document()->scene().objects.size(), size_t{3});
+        QVERIFY2(w.status_text().contains("no camera"), qPrintable(w.status_text()));
+        QVERIFY2(w.status_text().contains("no lights"), qPrintable(w.status_text()));
+        // One status line: the message held it (it was printed over the render status), and
+        // the render status comes back after it.
+        QCOMPARE(w.statusBar()->currentMessage(), QString());
+        QTRY_VERIFY_WITH_TIMEOUT(w.status_text().contains("pass"), 15000);
+        QVERIFY(w.open_file(kSmallScene));
+        QVERIFY(!w.document()->camera_made());
     }
 
     // A new object rests on what the view's centre looks at, on the camera's side, instead
