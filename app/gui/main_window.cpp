@@ -6,6 +6,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
@@ -61,6 +62,15 @@ QString add_label(const ElementSpec& spec) {
         if (noun.rfind(article, 0) == 0) noun = noun.substr(std::strlen(article));
     }
     return QObject::tr("Add %1").arg(QString::fromStdString(noun));
+}
+
+// A scene file's `description`, or empty (unreadable, or none): the examples' tooltips.
+QString scene_description(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) return {};
+    const json j = json::parse(file.readAll().toStdString(), nullptr, false);
+    if (!j.is_object() || !j.contains("description") || !j["description"].is_string()) return {};
+    return QString::fromStdString(j["description"].get<std::string>());
 }
 
 }  // namespace
@@ -197,7 +207,11 @@ void MainWindow::build_menus() {
                 if (maybe_save()) open_file(path, nullptr, true);
             });
         example->setObjectName("example:" + info.baseName());
+        // Rich text, so a long description wraps.
+        const QString about = scene_description(info.absoluteFilePath());
+        if (!about.isEmpty()) example->setToolTip("<p>" + about.toHtmlEscaped() + "</p>");
     }
+    examples->setToolTipsVisible(true);
     m_recent_menu = file->addMenu(tr("Open &recent"));
     update_recent_menu();
     file->addSeparator();

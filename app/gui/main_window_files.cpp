@@ -51,7 +51,8 @@ bool MainWindow::open_file(const QString& path, QString* error, bool as_copy) {
         return false;
     }
     if (!as_copy) remember_recent(path);
-    m_tree->select_pointer("/camera");
+    // What the scene is about first, where the file says.
+    m_tree->select_pointer(m_document->json().contains("description") ? "/description" : "/camera");
     if (m_document->camera_made()) {
         // A lens file: the section shows its lenses at once; the 3-D view has a camera made
         // for it, and is dark when the file has no light.

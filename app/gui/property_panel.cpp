@@ -120,7 +120,9 @@ void PropertyPanel::build_form() {
     static_cast<QVBoxLayout*>(layout())->insertWidget(0, m_form_widget);
     const json& doc = m_document->json();
     if (m_pointer.isEmpty() || !doc.contains(json::json_pointer(m_pointer.toStdString()))) return;
-    if (m_pointer == "/camera")
+    if (m_pointer == "/description")
+        build_description();
+    else if (m_pointer == "/camera")
         build_camera();
     else if (m_pointer == "/render")
         build_render();
@@ -138,6 +140,17 @@ void PropertyPanel::build_camera() {
     add_heading(tr("Camera"));
     // The camera takes look_at or direction; the form edits the one the file gives.
     build_declared(camera_spec(), {value_at("look_at") ? "direction" : "look_at"});
+}
+
+void PropertyPanel::build_description() {
+    add_heading(tr("About this scene"));
+    // The file's own words: what it shows, the numbers it reproduces, what to try.
+    auto* text = new QLabel(m_form_widget);
+    text->setObjectName("scene_description");
+    text->setWordWrap(true);
+    text->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    text->setText(QString::fromStdString(m_document->json()["description"].get<std::string>()));
+    m_form->addRow(text);
 }
 
 void PropertyPanel::build_render() {

@@ -95,6 +95,7 @@ private:
                         const std::string& prefix = "");
 
     void build_camera();
+    void build_description();
     void build_render();
     void build_atmosphere();
     // A medium object's fields (scene/medium.h) at `prefix`: "" for the atmosphere itself,

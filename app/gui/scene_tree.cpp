@@ -53,6 +53,8 @@ void SceneTree::rebuild() {
     const QSignalBlocker block(this);
     clear();
     const auto& j = m_document->json();
+    if (j.contains("description") && j["description"].is_string())
+        add_item(invisibleRootItem(), tr("About this scene"), "/description");
     add_item(invisibleRootItem(), tr("Camera"), "/camera");
     add_item(invisibleRootItem(), tr("Render settings"), "/render");
     if (j.contains("atmosphere")) add_item(invisibleRootItem(), tr("Atmosphere"), "/atmosphere");

@@ -184,6 +184,23 @@ private slots:
         box->close();
     }
 
+    // A scene's description is shown: the file opens on it ("About this scene", first in
+    // the tree), and each example in File > Open example has it as its tooltip (a scene
+    // opened as a flat grey square with nothing saying what it was).
+    void the_scene_description_is_shown() {
+        MainWindow w;
+        w.show();
+        QVERIFY(w.open_file(kSmallScene));
+        QCOMPARE(w.tree()->selected_pointer(), QString("/description"));
+        auto* text = w.findChild<QLabel*>("scene_description");
+        QVERIFY(text);
+        QVERIFY2(text->text().contains("a red sphere on a floor"), qPrintable(text->text()));
+        auto* example = w.findChild<QAction*>("example:solar_concentrator");
+        QVERIFY(example);
+        QVERIFY2(example->toolTip().contains("<p>") && example->toolTip().size() > 40,
+                 qPrintable(example->toolTip()));
+    }
+
     // A lens file with no camera (the optimiser's examples, for `lenslab analyze`) opens
     // with a camera made to show it, and the status bar says so (it was refused with
     // "camera: missing (required)").
