@@ -10,6 +10,7 @@
 #include <QSaveFile>
 #include <QTimer>
 #include <cstdio>
+#include <memory>
 
 #include "detector_dock.h"
 #include "main_window.h"
@@ -89,7 +90,11 @@ int main(int argc, char** argv) {
             return 1;
         }
         // The handlers run in app.exec(), after this block: they hold copies of its locals.
-        const auto grab = [file, &window] {
+        // Once: frames queued before the exit must not write the file again.
+        const auto grabbed = std::make_shared<bool>(false);
+        const auto grab = [file, grabbed, &window] {
+            if (*grabbed) return;
+            *grabbed = true;
             // Atomic, like every file lenslab writes.
             QSaveFile out(file);
             const bool saved = out.open(QIODevice::WriteOnly) &&

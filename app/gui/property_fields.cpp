@@ -5,6 +5,7 @@
 #include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QSlider>
 #include <QToolButton>
@@ -170,11 +171,21 @@ void PropertyPanel::add_vec3(const QString& label, const std::string& key, const
     const json value = as_triple(v ? *v : fallback);
     ParamSpec component = number_param(key, 0.0).at_least(min).at_most(max).describe(doc);
     std::array<NumberField*, 3> fields{};
+    // A colour's boxes are its red, green and blue bands (typing in one tints it): labelled.
+    static const char* const kBands[3] = {"R", "G", "B"};
+    static const char* const kBandRanges[3] = {
+        "red band, 585 nm and above", "green band, 490 to 585 nm", "blue band, below 490 nm"};
     for (int i = 0; i < 3; ++i) {
         fields[i] = add_number_field(row, component, key + "." + "xyz"[i], label);
         fields[i]->setValue(value.is_array() && value.size() == 3 && value[i].is_number()
                                 ? value[i].get<double>()
                                 : 0.0);
+        if (colour) {
+            auto* band = new QLabel(QString::fromLatin1(kBands[i]), row);
+            band->setObjectName(QString::fromStdString("band:" + key + "." + kBands[i]));
+            band->setToolTip(tr(kBandRanges[i]));
+            h->addWidget(band);
+        }
         h->addWidget(fields[i]);
     }
     for (int i = 0; i < 3; ++i) {

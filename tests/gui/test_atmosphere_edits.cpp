@@ -4,6 +4,7 @@
 // BVH; and the view renders it with its usual integrator.
 
 #include <QAction>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QTreeWidgetItemIterator>
@@ -86,7 +87,13 @@ private slots:
             QCOMPARE(box->value(), first);
         }
 
-        // The green band's scattering: a grey number becomes a triple.
+        // The green band's scattering: a grey number becomes a triple. The three boxes are
+        // labelled with their bands (typing in an unlabelled one tinted the fog unawares).
+        for (const char* band : {"R", "G", "B"}) {
+            auto* label = w.panel()->findChild<QLabel*>(QString("band:scattering.") + band);
+            QVERIFY2(label, band);
+            QCOMPARE(label->text(), QString(band));
+        }
         NumberField* green = field(w, "scattering.y");
         QVERIFY(green);
         green->setText("0.2");
