@@ -283,8 +283,10 @@ void MainWindow::build_menus() {
         ->setObjectName("optimise_lenses");
 
     QMenu* render = menuBar()->addMenu(tr("&Render"));
-    QAction* start = render->addAction(tr("&Start"), QKeySequence(tr("F5")), this,
-                                       [this] { m_renderer->restart(m_document->scene(), 0); });
+    // Start goes on from where Stop left the same scene; a changed scene starts afresh.
+    QAction* start = render->addAction(tr("&Start"), QKeySequence(tr("F5")), this, [this] {
+        if (!m_renderer->resume()) m_renderer->restart(m_document->scene(), 0);
+    });
     start->setObjectName("render_start");
     QAction* stop = render->addAction(tr("S&top"), QKeySequence(tr("Shift+F5")), this,
                                       [this] { m_renderer->stop_rendering(); });

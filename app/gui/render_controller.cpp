@@ -115,6 +115,28 @@ void RenderController::render_preview(Scene& scene) {
     s.height = height;
 }
 
+bool RenderController::resume() {
+    const std::lock_guard lock(m_mutex);
+    if (!m_stopped_resumable || m_job) return false;
+    m_resume = true;
+    m_wake.notify_all();
+    return true;
+}
+
+bool RenderController::wait_for_resume() {
+    std::unique_lock lock(m_mutex);
+    if (!m_stop || m_job || m_quit) return false;
+    m_stopped_resumable = true;
+    m_busy = false;
+    m_wake.wait(lock, [this] { return m_resume || m_quit || m_job; });
+    m_stopped_resumable = false;
+    const bool resumed = m_resume && !m_quit && !m_job;
+    m_resume = false;
+    m_busy = true;
+    if (resumed) m_stop = false;
+    return resumed;
+}
+
 bool RenderController::begin_pass(RenderControl& control) {
     std::unique_lock lock(m_mutex);
     m_wake.wait(lock, [this] { return !m_paused || m_quit || m_stop || m_job; });
@@ -144,17 +166,41 @@ void RenderController::run() {
         clock.start();
         RenderEnd end = RenderEnd::Restarted;
         int passes = 0;
+        // Stopped (not replaced, not closing): report it, keep the render and wait; true when
+        // resume() asks for more passes.
+        const auto stopped_and_resumed = [this](int done) {
+            {
+                const std::lock_guard lock(m_mutex);
+                if (!m_stop || m_job || m_quit) return false;
+            }
+            emit rendering_changed(false);
+            emit render_ended(RenderEnd::Stopped, done);
+            if (!wait_for_resume()) return false;
+            emit rendering_changed(true);
+            return true;
+        };
         try {
             render_preview(scene);
             ProgressiveRender render(scene);
-            for (int pass = 0; pass < m_max_passes; ++pass) {
+            while (render.passes() < m_max_passes) {
                 RenderControl control;
-                if (!begin_pass(control)) break;
-                // Forgotten before `control` goes, also when the pass throws (a refused render):
-                // restart() would otherwise cancel a dead stack object (ASan caught it).
-                const ForgetControl forget{this};
-                const bool finished = render.add_pass(control);
-                if (!finished) break;
+                if (!begin_pass(control)) {
+                    if (!stopped_and_resumed(passes)) break;
+                    continue;
+                }
+                bool finished = false;
+                {
+                    // Forgotten before `control` goes, also when the pass throws (a refused
+                    // render): restart() would otherwise cancel a dead stack object (ASan
+                    // caught it).
+                    const ForgetControl forget{this};
+                    finished = render.add_pass(control);
+                }
+                // A pass cut short by Stop leaves the sums as they were: resumable.
+                if (!finished) {
+                    if (!stopped_and_resumed(passes)) break;
+                    continue;
+                }
                 const Film film = render.image();
                 {
                     const std::lock_guard lock(m_mutex);

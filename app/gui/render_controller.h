@@ -44,8 +44,12 @@ public:
     // Schedules a render of `scene` (debounced by `delay_ms`; 0 starts at once).
     void restart(const Scene& scene, int delay_ms = 120,
                  RenderQuality quality = RenderQuality::Full);
-    // Stops after cancelling the pass in flight; the last frame stays.
+    // Stops after cancelling the pass in flight; the last frame stays, and so does what the
+    // passes summed, for resume().
     void stop_rendering();
+    // Goes on from where Stop left the render (its passes kept) and returns true; false when
+    // there is nothing to resume (no render was stopped, or a newer scene replaced it).
+    bool resume();
     bool is_rendering() const;
     // Paused, the worker finishes the pass in flight and waits, keeping what it has summed;
     // resumed, it goes on from there (an export renders meanwhile on all the cores). Stop and
@@ -81,6 +85,9 @@ private:
     // Makes `control` the pass in flight (waiting while paused), unless the render is to end:
     // the editor closes, Stop, or a newer scene waits.
     bool begin_pass(RenderControl& control);
+    // After Stop: waits, the render kept, until resume() (true) or a newer scene or the
+    // editor closing (false).
+    bool wait_for_resume();
     // Renders and emits the restart's draft preview of `scene` (the worker's own copy, its
     // size restored after); skipped where a pass costs as much at any size.
     void render_preview(Scene& scene);
@@ -104,6 +111,8 @@ private:
     std::optional<Scene> m_job;          // handed to the worker
     RenderControl* m_control = nullptr;  // the pass in flight, to cancel it
     bool m_quit = false, m_stop = false, m_busy = false, m_paused = false;
+    bool m_stopped_resumable = false;  // the worker keeps a stopped render, waiting
+    bool m_resume = false;             // asked to go on with it
     Film m_last;
 };
 

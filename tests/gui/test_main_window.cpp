@@ -82,6 +82,21 @@ private slots:
         stop->trigger();
         QTRY_VERIFY_WITH_TIMEOUT(w.status_text().contains("stopped at pass"), 30000);
         QVERIFY(!w.progress()->isVisible());
+
+        // Start (F5) goes on from there instead of from pass 0; an edit starts afresh.
+        const QRegularExpression stopped_at("stopped at pass (\\d+)");
+        const int at = stopped_at.match(w.status_text()).captured(1).toInt();
+        QVERIFY2(at >= 1, qPrintable(w.status_text()));
+        QSignalSpy frames(w.renderer(), &RenderController::frame_ready);
+        w.findChild<QAction*>("render_start")->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(!frames.isEmpty(), 30000);
+        QCOMPARE(frames.first().at(1).toInt(), at + 1);
+        stop->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(w.status_text().contains("stopped at pass"), 30000);
+        frames.clear();
+        w.renderer()->restart(w.document()->scene(), 0);
+        QTRY_VERIFY_WITH_TIMEOUT(!frames.isEmpty(), 30000);
+        QCOMPARE(frames.first().at(1).toInt(), 1);
     }
 
     // A render the integrator refuses (a pass's photons beyond the memory budget) says so
