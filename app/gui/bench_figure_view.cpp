@@ -1,6 +1,18 @@
 #include "bench_figure_view.h"
 
+#include <QContextMenuEvent>
+#include <QFileDialog>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSaveFile>
+#include <QVBoxLayout>
+#include <string>
+
+#include "analysis/figures/ray_diagram_image.h"
+#include "analysis/figures/ray_diagram_svg.h"
+#include "image/image_io.h"
 #include "qpainter_canvas.h"
+#include "util/file_write_error.h"
 
 namespace lenslab::gui {
 
@@ -11,7 +23,10 @@ constexpr double kBenchFigureMinHeight = 300;
 
 }  // namespace
 
-BenchFigureView::BenchFigureView(QWidget* parent) : QWidget(parent) { setMinimumSize(320, 200); }
+BenchFigureView::BenchFigureView(QWidget* parent) : QWidget(parent) {
+    setMinimumSize(320, 200);
+    setToolTip(tr("Double-click: open in a window of its own; right-click: export"));
+}
 
 void BenchFigureView::set_figure(std::optional<RayDiagram> figure, double layout_width) {
     m_figure = std::move(figure);
@@ -26,6 +41,65 @@ void BenchFigureView::paintEvent(QPaintEvent*) {
         paint_bench_figure(painter, *m_figure, QRectF(rect()), m_layout_width,
                            kBenchFigureMinHeight);
     }
+}
+
+QWidget* BenchFigureView::open_window() {
+    if (!m_figure) return nullptr;
+    auto* window = new QWidget(this, Qt::Window);
+    window->setObjectName("bench_figure_window");
+    window->setAttribute(Qt::WA_DeleteOnClose);
+    window->setWindowTitle(QString::fromStdString(m_figure->title));
+    auto* view = new BenchFigureView(window);
+    view->set_figure(m_figure, m_layout_width);
+    auto* layout = new QVBoxLayout(window);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(view);
+    // The command line's size, so its text is at full size (smaller screens: what fits).
+    const Image8 sized = ray_diagram_image(*m_figure, m_layout_width, kBenchFigureMinHeight);
+    window->resize(std::min(sized.width, 1600), std::min(sized.height, 1000));
+    window->show();
+    return window;
+}
+
+bool BenchFigureView::export_to(const QString& path, QString* error) const {
+    if (!m_figure) {
+        if (error) *error = tr("No figure to export");
+        return false;
+    }
+    try {
+        if (path.endsWith(".svg", Qt::CaseInsensitive)) {
+            const std::string svg =
+                ray_diagram_svg(*m_figure, m_layout_width, kBenchFigureMinHeight);
+            QSaveFile out(path);
+            if (!out.open(QIODevice::WriteOnly) ||
+                out.write(svg.data(), qint64(svg.size())) != qint64(svg.size()) || !out.commit())
+                throw FileWriteError(path.toStdString() +
+                                     ": cannot write: " + out.errorString().toStdString());
+        } else {
+            write_png_image(ray_diagram_image(*m_figure, m_layout_width, kBenchFigureMinHeight),
+                            path.toStdString());
+        }
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromStdString(e.what());
+        return false;
+    }
+    return true;
+}
+
+void BenchFigureView::mouseDoubleClickEvent(QMouseEvent*) { open_window(); }
+
+void BenchFigureView::contextMenuEvent(QContextMenuEvent* event) {
+    if (!m_figure) return;
+    QMenu menu(this);
+    menu.addAction(tr("Open in a window"), this, [this] { open_window(); });
+    menu.addAction(tr("Export..."), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export figure"), QString(),
+                                                          tr("SVG (*.svg);;PNG (*.png)"));
+        QString error;
+        if (!path.isEmpty() && !export_to(path, &error))
+            QMessageBox::warning(this, tr("Cannot export"), error);
+    });
+    menu.exec(event->globalPos());
 }
 
 }  // namespace lenslab::gui

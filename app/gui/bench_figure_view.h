@@ -1,6 +1,9 @@
 #pragma once
 // A widget showing one figure of the bench (spot diagrams, fans, curves, MTF), drawn by the
-// library's layout through a QPainter canvas (qpainter_canvas.h).
+// library's layout through a QPainter canvas (qpainter_canvas.h). The dock shows it small:
+// a double-click opens it in a window of its own at the size the command line lays it out
+// (its text at full size, the window free to resize), and the context menu exports it as the
+// command line writes it (SVG or PNG).
 
 #include <QWidget>
 #include <optional>
@@ -18,8 +21,16 @@ public:
     void set_figure(std::optional<RayDiagram> figure, double layout_width = 600);
     const std::optional<RayDiagram>& figure() const { return m_figure; }
 
+    // The figure in a window of its own (objectName "bench_figure_window"), or nullptr when
+    // there is none to show.
+    QWidget* open_window();
+    // Writes the figure as `path`'s suffix says (.svg, else PNG); false with `error` set.
+    bool export_to(const QString& path, QString* error) const;
+
 protected:
     void paintEvent(QPaintEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void contextMenuEvent(QContextMenuEvent* event) override;
 
 private:
     std::optional<RayDiagram> m_figure;

@@ -3,8 +3,11 @@
 // tabs draw their figures; the PSF and wavefront tabs compute theirs only while shown.
 
 #include <QComboBox>
+#include <QFile>
+#include <QFileInfo>
 #include <QLineEdit>
 #include <QTabWidget>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include "analysis/aberrations/spot_diagrams.h"
@@ -93,6 +96,30 @@ private slots:
         const QString screenshot = qEnvironmentVariable("LENSLAB_BENCH_SCREENSHOT");
         if (!screenshot.isEmpty()) QVERIFY(dock->grab().save(screenshot));
         QVERIFY(dock->bench().fans && dock->bench().curves && dock->bench().diffraction);
+
+        // A double-click opens the figure in a window of its own, at the command line's size
+        // (its text at full size: the dock showed it about 5 pixels high); it exports as the
+        // command line writes it.
+        QTest::mouseDClick(dock->spot_view(), Qt::LeftButton);
+        auto* window = dock->spot_view()->findChild<QWidget*>("bench_figure_window");
+        QVERIFY(window);
+        QVERIFY(window->isVisible());
+        QVERIFY2(window->width() >= 600, qPrintable(QString::number(window->width())));
+        auto* big = window->findChild<lenslab::gui::BenchFigureView*>();
+        QVERIFY(big && big->figure().has_value());
+        QCOMPARE(big->figure()->title, dock->spot_view()->figure()->title);
+        window->close();
+        QTemporaryDir dir;
+        QVERIFY2(dock->spot_view()->export_to(dir.filePath("spots.svg"), &error),
+                 qPrintable(error));
+        QVERIFY2(dock->spot_view()->export_to(dir.filePath("spots.png"), &error),
+                 qPrintable(error));
+        QFile svg(dir.filePath("spots.svg"));
+        QVERIFY(svg.open(QIODevice::ReadOnly));
+        QVERIFY(svg.readAll().contains("<svg"));
+        QVERIFY(QFileInfo(dir.filePath("spots.png")).size() > 1000);
+        QVERIFY(!dock->spot_view()->export_to(dir.filePath("missing/spots.png"), &error));
+        QVERIFY2(error.contains("missing"), qPrintable(error));
     }
 
     // The PSF and wavefront tabs: computed only while shown (they cost the most), drawn as the
