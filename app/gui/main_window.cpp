@@ -64,6 +64,15 @@ QString add_label(const ElementSpec& spec) {
     return QObject::tr("Add %1").arg(QString::fromStdString(noun));
 }
 
+// The example scenes: the source tree's in a build, else where `cmake --install` put them
+// (the source path was compiled in, and an installed editor had no examples without it).
+QString examples_folder() {
+    for (const char* dir : {LENSLAB_SCENES_SOURCE, LENSLAB_SCENES_INSTALL}) {
+        if (QDir(dir).exists("default.json")) return dir;
+    }
+    return LENSLAB_SCENES_INSTALL;
+}
+
 // A scene file's `description`, or empty (unreadable, or none): the examples' tooltips.
 QString scene_description(const QString& path) {
     QFile file(path);
@@ -200,7 +209,7 @@ void MainWindow::build_menus() {
     });
     QMenu* examples = file->addMenu(tr("Open &example"));
     for (const QFileInfo& info :
-         QDir(LENSLAB_SCENES_DIR).entryInfoList({"*.json"}, QDir::Files, QDir::Name)) {
+         QDir(examples_folder()).entryInfoList({"*.json"}, QDir::Files, QDir::Name)) {
         // Opened as untitled copies: Save must not overwrite the installed example.
         QAction* example =
             examples->addAction(info.baseName(), this, [this, path = info.absoluteFilePath()] {
