@@ -14,16 +14,13 @@ namespace lenslab {
 std::vector<SpectralRow> spectral_rows(const std::vector<double>& nm, double blackbody_k,
                                        const std::optional<Rgb>& light_rgb) {
     for (double l : nm) {
-        if (!(l >= kLambdaMinNm && l <= kLambdaMaxNm)) {
-            throw std::invalid_argument(
-                "wavelength " + format_number(l) + " nm: outside " + format_number(kLambdaMinNm) +
-                " to " + format_number(kLambdaMaxNm) + " nm, the range of the CIE tables");
-        }
+        if (const auto problem = wavelength_problem(l))
+            throw std::invalid_argument("wavelength " + format_number(l) + " nm: " + *problem);
     }
-    if (blackbody_k != 0 && !(blackbody_k >= kBlackbodyMinK && blackbody_k <= kBlackbodyMaxK)) {
-        throw std::invalid_argument("blackbody " + format_number(blackbody_k) +
-                                    " K: must be between " + format_number(kBlackbodyMinK) +
-                                    " and " + format_number(kBlackbodyMaxK) + " K");
+    if (blackbody_k != 0) {
+        if (const auto problem = blackbody_problem(blackbody_k))
+            throw std::invalid_argument("blackbody " + format_number(blackbody_k) +
+                                        " K: " + *problem);
     }
     if (light_rgb && (!(std::min({light_rgb->r, light_rgb->g, light_rgb->b}) >= 0) ||
                       light_rgb->is_black() || !light_rgb->is_finite())) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "optics/cie_tables.h"
+#include "util/format_number.h"
 
 namespace lenslab {
 
@@ -299,6 +300,18 @@ SampledSpectrum illuminant_from_rgb(const Rgb& rgb, const SampledWavelengths& w)
 }
 
 SpectrumPtr d65_spectrum() { return illuminant_from_rgb(Rgb{1, 1, 1}); }
+
+std::optional<std::string> blackbody_problem(double kelvin) {
+    if (kelvin >= kBlackbodyMinK && kelvin <= kBlackbodyMaxK) return std::nullopt;
+    return "must be between " + format_number(kBlackbodyMinK) + " and " +
+           format_number(kBlackbodyMaxK) + " K";
+}
+
+std::optional<std::string> wavelength_problem(double nm) {
+    if (nm >= kLambdaMinNm && nm <= kLambdaMaxNm) return std::nullopt;
+    return "outside " + format_number(kLambdaMinNm) + " to " + format_number(kLambdaMaxNm) +
+           " nm, the range of the CIE tables";
+}
 
 SpectrumPtr blackbody_spectrum(double kelvin) {
     // Planck's law, B(l, T) = 2 h c^2 / l^5 / (exp(h c / (l k T)) - 1) (CODATA constants).

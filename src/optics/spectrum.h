@@ -7,6 +7,7 @@
 #include <array>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -159,6 +160,12 @@ double radiant_watts(const Spectrum& s, double lo_nm = kLambdaMinNm, double hi_n
 SpectrumPtr d65_spectrum();
 // A blackbody's temperatures the scene accepts: from a candle's glow to a hot star's blue.
 inline constexpr double kBlackbodyMinK = 500, kBlackbodyMaxK = 100000;
+// Why `kelvin` is no blackbody temperature the scene accepts ("must be between 500 and
+// 100000 K"), or nothing; every reader says it the same way.
+std::optional<std::string> blackbody_problem(double kelvin);
+// Why `nm` is no wavelength the renderer transports ("outside 360 to 830 nm, the range of the
+// CIE tables"), or nothing.
+std::optional<std::string> wavelength_problem(double nm);
 SpectrumPtr blackbody_spectrum(double kelvin);
 SpectrumPtr line_spectrum(double nm, double width_nm = 1.0);
 SpectrumPtr illuminant_a_spectrum();

@@ -50,11 +50,8 @@ void read_bands(const json& v, const std::string& path, DetectorSettings& d) {
         for (size_t i = 0; i < v.size(); ++i) {
             const std::string at = path + "[" + std::to_string(i) + "]";
             const double nm = JsonObjectReader::as_number(v[i], at);
-            if (nm < kLambdaMinNm || nm > kLambdaMaxNm) {
-                throw SceneError(
-                    at, "must be a wavelength from 360 to 830 nm (the range transported), got " +
-                            format_number(nm));
-            }
+            if (const auto problem = wavelength_problem(nm))
+                throw SceneError(at, format_number(nm) + " nm: " + *problem);
             if (i > 0 && !(nm > d.band_edges.back())) {
                 throw SceneError(at, "band edges must increase, got " + format_number(nm) +
                                          " after " + format_number(d.band_edges.back()));

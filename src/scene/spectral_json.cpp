@@ -103,20 +103,14 @@ SpectrumPtr read_spectrum(const nlohmann::json& j, const std::string& path) {
     JsonObjectReader r(j, path, {"blackbody", "line", "width"}, "a spectrum");
     if (r.has("blackbody")) {
         const double k = r.positive("blackbody");
-        if (k < kBlackbodyMinK || k > kBlackbodyMaxK) {
-            throw SceneError(r.child_path("blackbody"),
-                             "must be between " + format_number(kBlackbodyMinK) + " and " +
-                                 format_number(kBlackbodyMaxK) + " K, got " + format_number(k));
-        }
+        if (const auto problem = blackbody_problem(k))
+            throw SceneError(r.child_path("blackbody"), *problem + ", got " + format_number(k));
         return blackbody_spectrum(k);
     }
     if (r.has("line")) {
         const double nm = r.number("line");
-        if (nm < kLambdaMinNm || nm > kLambdaMaxNm) {
-            throw SceneError(
-                r.child_path("line"),
-                "must be within the visible range 360-830 nm, got " + format_number(nm));
-        }
+        if (const auto problem = wavelength_problem(nm))
+            throw SceneError(r.child_path("line"), format_number(nm) + " nm: " + *problem);
         return line_spectrum(nm, r.positive("width", 1.0));
     }
     throw SceneError(path, "give \"blackbody\" (kelvin) or \"line\" (nm)");

@@ -123,7 +123,7 @@ const BadScene kBadScenes[] = {
     {"detector_bands_not_increasing.json", "objects[0].detector.bands[2]",
      "band edges must increase, got 500 after 600"},
     {"detector_bands_out_of_range.json", "objects[0].detector.bands[0]",
-     "must be a wavelength from 360 to 830 nm (the range transported), got 300"},
+     "300 nm: outside 360 to 830 nm, the range of the CIE tables"},
     {"detector_bands_too_many.json", "objects[0].detector.bands",
      "must be a whole number of bands from 1 to 16 (or an array of band edges in nm), got 17"},
     {"detector_unknown_key.json", "objects[0].detector.resolutoin", "unknown key (did you mean 'resolution'?)"},
