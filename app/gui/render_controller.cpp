@@ -184,19 +184,15 @@ void RenderController::run() {
             ProgressiveRender render(scene);
             while (render.passes() < m_max_passes) {
                 RenderControl control;
-                if (!begin_pass(control)) {
-                    if (!stopped_and_resumed(passes)) break;
-                    continue;
-                }
                 bool finished = false;
-                {
+                if (begin_pass(control)) {
                     // Forgotten before `control` goes, also when the pass throws (a refused
                     // render): restart() would otherwise cancel a dead stack object (ASan
                     // caught it).
                     const ForgetControl forget{this};
                     finished = render.add_pass(control);
                 }
-                // A pass cut short by Stop leaves the sums as they were: resumable.
+                // Not begun, or cut short (its sums left as they were): after Stop, resumable.
                 if (!finished) {
                     if (!stopped_and_resumed(passes)) break;
                     continue;
