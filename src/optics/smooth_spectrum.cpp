@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "math/cholesky.h"
+
 namespace lenslab {
 
 namespace {
@@ -52,36 +54,21 @@ void colour_and_jacobian(const std::array<double, 3>& c, Rgb& colour, Rgb jacobi
 
 double channel(const Rgb& c, int i) { return i == 0 ? c.r : (i == 1 ? c.g : c.b); }
 
-// Solves (J^T J + mu I) delta = -J^T r for the damped Gauss-Newton step.
+// The damped Gauss-Newton step: (J^T J + mu I) delta = -J^T r, symmetric positive definite;
+// no step when it is numerically not.
 std::array<double, 3> step(const Rgb jacobian[3], const Rgb& residual, double mu) {
-    double a[3][4];
+    std::vector<double> a(9), b(3);
     for (int p = 0; p < 3; ++p) {
         for (int q = 0; q < 3; ++q) {
-            a[p][q] = (p == q ? mu : 0.0);
+            a[3 * p + q] = (p == q ? mu : 0.0);
             for (int i = 0; i < 3; ++i)
-                a[p][q] += channel(jacobian[p], i) * channel(jacobian[q], i);
+                a[3 * p + q] += channel(jacobian[p], i) * channel(jacobian[q], i);
         }
-        a[p][3] = 0;
-        for (int i = 0; i < 3; ++i) a[p][3] -= channel(jacobian[p], i) * channel(residual, i);
+        for (int i = 0; i < 3; ++i) b[p] -= channel(jacobian[p], i) * channel(residual, i);
     }
-    for (int p = 0; p < 3; ++p) {  // Gaussian elimination with partial pivoting
-        int pivot = p;
-        for (int q = p + 1; q < 3; ++q)
-            if (std::abs(a[q][p]) > std::abs(a[pivot][p])) pivot = q;
-        std::swap(a[p], a[pivot]);
-        if (a[p][p] == 0) return {0, 0, 0};
-        for (int q = p + 1; q < 3; ++q) {
-            const double f = a[q][p] / a[p][p];
-            for (int k = p; k < 4; ++k) a[q][k] -= f * a[p][k];
-        }
-    }
-    std::array<double, 3> d{};
-    for (int p = 2; p >= 0; --p) {
-        double s = a[p][3];
-        for (int k = p + 1; k < 3; ++k) s -= a[p][k] * d[k];
-        d[p] = s / a[p][p];
-    }
-    return d;
+    const auto d = solve_cholesky(std::move(a), std::move(b));
+    if (!d) return {0, 0, 0};
+    return {(*d)[0], (*d)[1], (*d)[2]};
 }
 
 double error_of(const Rgb& colour, const Rgb& target) {
