@@ -106,6 +106,13 @@ double index_of_solid(const SceneObject& object, const Material& m, const Vec3& 
 
 }  // namespace
 
+SurfaceIndices indices_at(const Interaction& it, double lambda_nm) {
+    const double outside =
+        it.beyond ? index_of_solid(*it.beyond_object, *it.beyond, it.point(), lambda_nm)
+                  : kOutsideIor;
+    return {index_of_solid(*it.object, *it.material, it.point(), lambda_nm), outside};
+}
+
 Scattering scatter_at(const Interaction& it, const Vec3& d, double lambda_nm) {
     const Material& m = *it.material;
     if (m.surfaceless) {
@@ -118,11 +125,8 @@ Scattering scatter_at(const Interaction& it, const Vec3& d, double lambda_nm) {
     const bool closed = it.object->shape->is_closed();
     // Either side may be a gradient index (a GRIN lens cemented to glass): each is taken where
     // the ray meets the surface.
-    const double n_beyond =
-        it.beyond ? index_of_solid(*it.beyond_object, *it.beyond, it.point(), lambda_nm)
-                  : kOutsideIor;
-    return scatter_with_index(m, index_of_solid(*it.object, m, it.point(), lambda_nm), closed, d,
-                              it.normal(), lambda_nm, it.beyond, n_beyond);
+    const SurfaceIndices n = indices_at(it, lambda_nm);
+    return scatter_with_index(m, n.inside, closed, d, it.normal(), lambda_nm, it.beyond, n.outside);
 }
 
 }  // namespace lenslab

@@ -36,6 +36,14 @@ const Absorption* absorption_before(const Interaction& it, const Vec3& d);
 // `lambda_nm`: 1 through a medium that does not absorb.
 double segment_transmittance(const Interaction& it, const Vec3& d, double lambda_nm);
 
+// The refractive indices on either side of the interaction's surface at `lambda_nm`: its
+// solid's (a GRIN solid's at the hit point) and what lies outside (the cemented neighbour's,
+// else air's kOutsideIor).
+struct SurfaceIndices {
+    double inside = 1, outside = 1;
+};
+SurfaceIndices indices_at(const Interaction& it, double lambda_nm);
+
 // How the interaction's surface splits light arriving along `d` at `lambda_nm`. A GRIN
 // solid's index is taken at the hit point.
 Scattering scatter_at(const Interaction& it, const Vec3& d, double lambda_nm);

@@ -47,11 +47,12 @@ bool direction_in_section_plane(const Vec3& direction, const SectionPlane& plane
 
 class PathFlattener {
 public:
-    PathFlattener(double wavelength_nm, double escape_length, std::vector<SectionRayPath>& out)
-        : m_wavelength(wavelength_nm), m_escape(escape_length), m_out(out) {}
+    PathFlattener(const SectionWavelength& wavelength, double escape_length,
+                  std::vector<SectionRayPath>& out)
+        : m_wavelength(wavelength), m_escape(escape_length), m_out(out) {}
 
     void start(const RayTreeNode& root) {
-        m_out.push_back({{root.from}, m_wavelength, root.weight, false});
+        m_out.push_back(path_from(root.from, root.weight));
         follow(root, m_out.size() - 1);
     }
 
@@ -67,11 +68,15 @@ private:
         for (const RayTreeNode& c : node.children) {
             if (continues(c) && (!strongest || c.weight > strongest->weight)) strongest = &c;
         }
+        // What the path did at its new point: its own branch, or how it ended there.
+        const RayTreeNode& own = strongest ? *strongest : first;
+        m_out[path].hits.push_back({own.object, own.event.value_or(Event::Escape), own.normal,
+                                    own.n_inside, own.n_outside});
         for (const RayTreeNode& c : node.children) {
             if (!continues(c)) continue;
             size_t branch = path;
             if (&c != strongest) {
-                m_out.push_back({{hit}, m_wavelength, c.weight, false});
+                m_out.push_back(path_from(hit, c.weight));
                 branch = m_out.size() - 1;
             }
             if (c.event == Event::Tir) m_out[branch].tir = true;
@@ -83,27 +88,86 @@ private:
         return n.event == Event::Refract || n.event == Event::Reflect || n.event == Event::Tir;
     }
 
-    double m_wavelength, m_escape;
+    SectionRayPath path_from(const Vec3& start, double weight) const {
+        SectionRayPath path;
+        path.points = {start};
+        path.wavelength_nm = m_wavelength.nm;
+        path.weight = weight * m_wavelength.weight;
+        path.colour = m_wavelength.colour;
+        path.whole_spectrum = m_wavelength.whole_spectrum;
+        return path;
+    }
+
+    SectionWavelength m_wavelength;
+    double m_escape;
     std::vector<SectionRayPath>& m_out;
 };
 
 }  // namespace
 
-std::vector<Ray> section_start_rays(const Scene& scene, const SectionPlane& plane,
-                                    const SectionRayOptions& options) {
-    std::vector<Ray> rays;
-    if (options.beam) add_section_beam(*options.beam, plane, rays);
+Rgb wavelength_rgb(double nm) {
+    Rgb c = xyz_to_linear_srgb(cie_xyz_bar(nm));
+    c = {std::max(c.r, 0.0), std::max(c.g, 0.0), std::max(c.b, 0.0)};
+    const double peak = std::max({c.r, c.g, c.b});
+    return peak > 0 ? c * (1 / peak) : Rgb{1, 1, 1};
+}
+
+std::vector<SectionWavelength> section_wavelengths(const Spectrum& s,
+                                                   const std::vector<double>& spread,
+                                                   bool disperses) {
+    // The spectrum's quantiles (sample_wavelength draws in proportion to its power).
+    const auto quantile = [&](double u) {
+        double nm = kLineD;
+        s.sample_wavelength(u, nm);
+        return nm;
+    };
+    if (quantile(0.975) - quantile(0.025) <= 6.0) {  // a line: traced at its centre
+        constexpr int kSteps = 64;
+        double nm = 0;
+        for (int i = 0; i < kSteps; ++i) nm += quantile((i + 0.5) / kSteps) / kSteps;
+        return {{nm, 1, wavelength_rgb(nm), false}};
+    }
+    if (spread.empty()) return {};
+    if (!disperses) {
+        Rgb c = spectrum_to_rgb(s);
+        c = {std::max(c.r, 0.0), std::max(c.g, 0.0), std::max(c.b, 0.0)};
+        const double peak = std::max({c.r, c.g, c.b});
+        return {{spread[spread.size() / 2], 1, peak > 0 ? c * (1 / peak) : Rgb{1, 1, 1}, true}};
+    }
+    std::vector<SectionWavelength> out;
+    double strongest = 0;
+    for (double nm : spread) strongest = std::max(strongest, s.eval(nm));
+    for (double nm : spread) {
+        const double weight = strongest > 0 ? s.eval(nm) / strongest : 1.0;
+        if (weight > 0) out.push_back({nm, weight, wavelength_rgb(nm), false});
+    }
+    return out;
+}
+
+std::vector<SectionSource> section_sources(const Scene& scene, const SectionPlane& plane,
+                                           const SectionRayOptions& options) {
+    std::vector<SectionSource> sources;
+    if (options.beam) {
+        sources.push_back({{}, options.beam_spectrum ? options.beam_spectrum : d65_spectrum()});
+        add_section_beam(*options.beam, plane, sources.back().rays);
+    }
     const int fan = options.rays_per_light;
-    if (fan <= 0) return rays;
+    if (fan <= 0) return sources;
+    // The rays of a light the plane cuts are added to a new source of its spectrum.
+    const auto rays_of = [&](const SpectrumPtr& spectrum) -> std::vector<Ray>& {
+        sources.push_back({{}, spectrum});
+        return sources.back().rays;
+    };
     for (const PointLight& light : scene.point_lights) {
         if (std::abs(plane.distance(light.position)) < 1e-9)
-            add_section_fan(light.position, 0.0, fan, plane, rays);
+            add_section_fan(light.position, 0.0, fan, plane, rays_of(light.spectrum));
     }
     for (const SpotLight& light : scene.spots) {
         if (std::abs(plane.distance(light.position)) < 1e-9 &&
             direction_in_section_plane(light.direction, plane)) {
             add_section_cone(light.position, light.direction,
-                             light.cone_angle * std::numbers::pi / 180, fan, plane, rays);
+                             light.cone_angle * std::numbers::pi / 180, fan, plane,
+                             rays_of(light.spectrum));
         }
     }
     for (const BeamLight& light : scene.beams) {
@@ -115,7 +179,7 @@ std::vector<Ray> section_start_rays(const Scene& scene, const SectionPlane& plan
             // A fan shows as the rays of its sheet when the sheet lies in the plane.
             if (direction_in_section_plane(light.fan_axis, plane)) {
                 add_section_cone(centre, light.direction, light.fan_angle * std::numbers::pi / 360,
-                                 fan, plane, rays);
+                                 fan, plane, rays_of(light.spectrum));
             }
             continue;
         }
@@ -137,7 +201,7 @@ std::vector<Ray> section_start_rays(const Scene& scene, const SectionPlane& plan
             if (!(s1 > s0)) continue;
         }
         add_section_beam({centre + across * (0.5 * (s0 + s1)), light.direction, s1 - s0, fan},
-                         plane, rays);
+                         plane, rays_of(light.spectrum));
     }
     for (const SphereEmitter& e : scene.emitters()) {
         const double d = plane.distance(e.sphere->centre());
@@ -145,15 +209,23 @@ std::vector<Ray> section_start_rays(const Scene& scene, const SectionPlane& plan
         if (std::abs(d) >= r) continue;
         // Just outside the sphere's section, so the rays leave the lamp rather than hit it.
         add_section_fan(e.sphere->centre() - plane.normal() * d,
-                        std::sqrt(r * r - d * d) * (1 + 1e-6), fan, plane, rays);
+                        std::sqrt(r * r - d * d) * (1 + 1e-6), fan, plane, rays_of(e.radiance));
     }
+    return sources;
+}
+
+std::vector<Ray> section_start_rays(const Scene& scene, const SectionPlane& plane,
+                                    const SectionRayOptions& options) {
+    std::vector<Ray> rays;
+    for (const SectionSource& source : section_sources(scene, plane, options))
+        rays.insert(rays.end(), source.rays.begin(), source.rays.end());
     return rays;
 }
 
-void append_ray_paths(const RayTree& tree, double wavelength_nm, double escape_length,
-                      std::vector<SectionRayPath>& out) {
+void append_ray_paths(const RayTree& tree, const SectionWavelength& wavelength,
+                      double escape_length, std::vector<SectionRayPath>& out) {
     const size_t first = out.size();
-    PathFlattener(wavelength_nm, escape_length, out).start(tree.root);
+    PathFlattener(wavelength, escape_length, out).start(tree.root);
     // A branch dropped at once (below the weight limit) leaves a single point.
     const auto single = std::remove_if(out.begin() + std::ptrdiff_t(first), out.end(),
                                        [](const SectionRayPath& p) { return p.points.size() < 2; });

@@ -56,6 +56,22 @@ bool section_scene_disperses(const Scene& scene) {
     return false;
 }
 
+// A ray's colour on the white page: a wavelength's or a coloured light's own hue, brightest
+// channel 0.8 after the sRGB-like curve; white light (a neutral colour) dark grey.
+DiagramColour section_ray_colour(const SectionRayPath& r) {
+    const Rgb& c = r.colour;
+    const double low = std::min({c.r, c.g, c.b});
+    if (r.whole_spectrum && low > 0.85) return {90, 90, 90};
+    const auto encode = [](double v) { return 0.8 * std::pow(std::max(v, 0.0), 1 / 2.2); };
+    return section_rgb_colour({encode(c.r), encode(c.g), encode(c.b)});
+}
+
+std::string section_legend_label(const SectionRayPath& r) {
+    if (!r.whole_spectrum) return section_format("%.1f nm", r.wavelength_nm);
+    return std::min({r.colour.r, r.colour.g, r.colour.b}) > 0.85 ? "white light"
+                                                                 : "the light's colour";
+}
+
 }  // namespace
 
 DiagramColour wavelength_colour(double nm) {
@@ -91,8 +107,10 @@ SectionView make_section_view(const Scene& scene, const SectionPlane& plane,
         }
         view.objects.push_back(std::move(object));
     }
-    const std::vector<Ray> starts = section_start_rays(scene, plane, options.rays);
-    for (const Ray& r : starts) extend(plane.of(r.origin));
+    const std::vector<SectionSource> sources = section_sources(scene, plane, options.rays);
+    for (const SectionSource& source : sources) {
+        for (const Ray& r : source.rays) extend(plane.of(r.origin));
+    }
     if (a0 > a1) a0 = b0 = -1, a1 = b1 = 1;  // nothing in the plane
     const double margin = 0.05 * std::max(a1 - a0, b1 - b0) + 1e-9;
     view.extent = {a0 - margin, a1 + margin, b0 - margin, b1 + margin};
@@ -102,13 +120,14 @@ SectionView make_section_view(const Scene& scene, const SectionPlane& plane,
     tree.min_weight = options.rays.min_weight;
     const double reach =
         std::max(options.rays.escape_length, std::hypot(a1 - a0, b1 - b0) + 2 * margin);
-    std::vector<double> wavelengths = options.rays.wavelengths_nm;
-    if (wavelengths.size() > 1 && !section_scene_disperses(scene))
-        wavelengths = {wavelengths[wavelengths.size() / 2]};
-    for (double nm : wavelengths) {
-        tree.wavelength_nm = nm;
-        for (const Ray& r : starts)
-            append_ray_paths(trace_ray_tree(scene, r, tree), nm, reach, view.rays);
+    const bool disperses = section_scene_disperses(scene);
+    for (const SectionSource& source : sources) {
+        for (const SectionWavelength& w :
+             section_wavelengths(*source.spectrum, options.rays.wavelengths_nm, disperses)) {
+            tree.wavelength_nm = w.nm;
+            for (const Ray& r : source.rays)
+                append_ray_paths(trace_ray_tree(scene, r, tree), w, reach, view.rays);
+        }
     }
     return view;
 }
@@ -151,7 +170,7 @@ RayDiagram section_diagram(const Scene& scene, const SectionView& view, int sele
     for (const SectionRayPath& r : view.rays) {
         DiagramPath path;
         for (const Vec3& p : r.points) path.points.push_back(view.plane.of(p));
-        path.stroke = wavelength_colour(r.wavelength_nm);
+        path.stroke = section_ray_colour(r);
         path.width = 1.2;
         path.stroke_opacity = std::clamp(0.15 + 0.85 * r.weight, 0.15, 1.0);
         d.paths.push_back(std::move(path));
@@ -166,12 +185,10 @@ RayDiagram section_diagram(const Scene& scene, const SectionView& view, int sele
             d.paths.push_back(std::move(path));
         }
     }
-    std::vector<double> seen;
     for (const SectionRayPath& r : view.rays) {
-        if (std::find(seen.begin(), seen.end(), r.wavelength_nm) != seen.end()) continue;
-        seen.push_back(r.wavelength_nm);
-        d.legend.push_back(
-            {wavelength_colour(r.wavelength_nm), section_format("%.1f nm", r.wavelength_nm)});
+        const LegendEntry entry{section_ray_colour(r), section_legend_label(r)};
+        const auto same = [&](const LegendEntry& e) { return e.text == entry.text; };
+        if (std::none_of(d.legend.begin(), d.legend.end(), same)) d.legend.push_back(entry);
     }
     d.scale_bar = section_scale_bar_length(d.z_max - d.z_min);
     d.scale_bar_label = section_format("%g (scene units)", d.scale_bar);

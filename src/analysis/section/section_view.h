@@ -43,7 +43,8 @@ SectionView make_section_view(const Scene& scene, const SectionPlane& plane,
 SectionExtent focus_extent(const SectionView& view, int object);
 
 // The drawing: cross-sections filled by material (glass, mirror, lamp, opaque), the
-// `selected` object's outlined in orange, rays coloured by wavelength and faded by weight.
+// `selected` object's outlined in orange, rays in their true colours (a laser's line, white
+// light's F, d and C lines where glass disperses) and faded by weight.
 RayDiagram section_diagram(const Scene& scene, const SectionView& view, int selected = -1);
 
 // A colour of a wavelength: the ray diagram's for the F, d and C lines, else its CIE 1931

@@ -6,6 +6,18 @@ namespace lenslab {
 
 namespace {
 
+RayTreeNode tree_node(const Vec3& from, const std::optional<Vec3>& to, int object, Event event,
+                      const Vec3& direction, double weight) {
+    RayTreeNode node;
+    node.from = from;
+    node.to = to;
+    node.object = object;
+    node.event = event;
+    node.direction = direction;
+    node.weight = weight;
+    return node;
+}
+
 class TreeBuilder {
 public:
     TreeBuilder(const Scene& scene, const RayTreeOptions& options, RayTree& tree)
@@ -22,7 +34,7 @@ public:
         std::vector<Vec3> curved;
         if (!next_interaction(m_scene, ray, m_options.wavelength_nm, it, &curved)) {
             parent.children.push_back(
-                {origin, std::nullopt, -1, Event::Escape, ray.direction, w, false, {}, {}, 0});
+                tree_node(origin, std::nullopt, -1, Event::Escape, ray.direction, w));
             m_tree.escaped += w;
             return;
         }
@@ -33,17 +45,19 @@ public:
         const Vec3& p = it.point();
         const int object = it.hit.object;
         const Scattering& s = it.scattering;
+        const SurfaceIndices n = indices_at(it, m_options.wavelength_nm);
+        // Each child of this hit records the surface it met there.
+        const auto at_surface = [&](RayTreeNode& child) {
+            child.path = curved;
+            child.steps = it.grin_steps;
+            child.normal = it.normal();
+            child.n_inside = n.inside;
+            child.n_outside = n.outside;
+        };
         if (s.diffuse > 0.0) {
-            parent.children.push_back({origin,
-                                       p,
-                                       object,
-                                       Event::Absorb,
-                                       it.direction,
-                                       w * s.diffuse,
-                                       false,
-                                       {},
-                                       curved,
-                                       it.grin_steps});
+            parent.children.push_back(
+                tree_node(origin, p, object, Event::Absorb, it.direction, w * s.diffuse));
+            at_surface(parent.children.back());
             m_tree.absorbed += w * s.diffuse;
         }
         for (int i = 0; i < s.count; ++i) {
@@ -53,9 +67,9 @@ public:
                 m_tree.truncated += bw;
                 continue;
             }
-            parent.children.push_back(
-                {origin, p, object, b.event, b.direction, bw, false, {}, curved, it.grin_steps});
+            parent.children.push_back(tree_node(origin, p, object, b.event, b.direction, bw));
             RayTreeNode& child = parent.children.back();
+            at_surface(child);
             if (depth >= m_options.max_depth) {
                 child.truncated = true;
                 m_tree.truncated += bw;

@@ -30,6 +30,10 @@ struct RayTreeNode {
     // (printed as "path"); empty for a straight segment.
     std::vector<Vec3> path;
     int steps = 0;  // the integrator's steps along `path` (printed as "steps")
+    // At a hit: the surface's outward unit normal at `to` and the indices inside its solid
+    // and outside it at the traced wavelength (what Snell's law used there).
+    Vec3 normal;
+    double n_inside = 1, n_outside = 1;
 };
 
 struct RayTreeOptions {

@@ -333,9 +333,11 @@ TEST(SectionView, TheDrawingHasTheOutlinesAndTheRays) {
     // The lens (filled, then outlined as selected), the lamp; the spheres off the plane not.
     EXPECT_GE(closed, 3u);
     EXPECT_GT(d.paths.size(), view.rays.size());
-    // The default glass has one index (1.5): one wavelength, the d line, tells it all.
+    // The default glass has one index (1.5): one path per ray, at the d line, tells it all,
+    // drawn in the white light's own colour (a dark grey on the page).
     ASSERT_EQ(d.legend.size(), 1u);
-    EXPECT_EQ(d.legend[0].text, "587.6 nm");
+    EXPECT_EQ(d.legend[0].text, "white light");
+    for (const SectionRayPath& r : view.rays) EXPECT_EQ(r.wavelength_nm, kLineD);
     EXPECT_LT(d.z_min, d.z_max);
 }
 
