@@ -46,6 +46,7 @@
 #include "scene/scene_json.h"
 #include "scene_document.h"
 #include "scene_tree.h"
+#include "section_tab.h"
 #include "section_widget.h"
 #include "viewport.h"
 
@@ -91,8 +92,8 @@ MainWindow::MainWindow(QWidget* parent)
       m_tree(new SceneTree(m_document, this)),
       m_panel(new PropertyPanel(m_document, this)),
       m_viewport(new Viewport(m_document, this)),
-      m_section(new SectionWidget(m_document, this)),
-      m_section_tab(new QWidget(this)),
+      m_section_tab(new SectionTab(m_document, this)),
+      m_section(m_section_tab->view()),
       m_views(new QTabWidget(this)),
       m_ray_diagram(new RayDiagramDock(m_document, this)),
       m_detector_dock(new DetectorDock(m_document, this)),
@@ -101,7 +102,6 @@ MainWindow::MainWindow(QWidget* parent)
     setObjectName("main_window");
     m_views->setObjectName("views");
     m_views->addTab(m_viewport, tr("3-D view"));
-    build_section_tab();
     m_views->addTab(m_section_tab, tr("Section"));
     setCentralWidget(m_views);
 
@@ -139,6 +139,7 @@ MainWindow::MainWindow(QWidget* parent)
         m_tree->select_pointer(entry >= 0 ? join_pointer("/objects", entry) : QString());
     });
     connect(m_section, &SectionWidget::edit_refused, this, &MainWindow::show_message);
+    connect(m_section_tab, &SectionTab::message, this, &MainWindow::show_message);
     connect(m_viewport, &Viewport::object_picked, this, [this](int object) {
         m_tree->select_pointer(object >= 0 ? join_pointer("/objects", object) : QString());
     });
@@ -240,8 +241,8 @@ void MainWindow::build_menus() {
     file->addAction(tr("&Export image..."), QKeySequence(tr("Ctrl+E")), this,
                     &MainWindow::export_image)
         ->setObjectName("export_image");
-    file->addAction(tr("Export &section as SVG..."), this, &MainWindow::export_section_svg)
-        ->setObjectName("export_section_svg");
+    file->addAction(tr("Export &section..."), m_section_tab, &SectionTab::export_view)
+        ->setObjectName("export_section");
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -325,30 +326,6 @@ void MainWindow::update_title() {
     setWindowTitle(QString("%1%2 — lenslab").arg(name, m_document->is_modified() ? " *" : ""));
 }
 
-void MainWindow::build_section_tab() {
-    auto* plane = new QComboBox(m_section_tab);
-    plane->setObjectName("section_plane");
-    plane->addItem(tr("Default: the lens's axis, vertical"), int(SectionPlaneChoice::Default));
-    plane->addItem(tr("x-y plane"), int(SectionPlaneChoice::XY));
-    plane->addItem(tr("y-z plane"), int(SectionPlaneChoice::YZ));
-    plane->addItem(tr("z-x plane (seen from above)"), int(SectionPlaneChoice::ZX));
-    connect(plane, &QComboBox::currentIndexChanged, this, [this, plane](int index) {
-        m_section->set_plane_choice(SectionPlaneChoice(plane->itemData(index).toInt()));
-    });
-    auto* export_svg = new QPushButton(tr("Export SVG..."), m_section_tab);
-    export_svg->setObjectName("section_export_svg");
-    connect(export_svg, &QPushButton::clicked, this, &MainWindow::export_section_svg);
-    auto* bar = new QHBoxLayout;
-    bar->addWidget(new QLabel(tr("Plane:"), m_section_tab));
-    bar->addWidget(plane);
-    bar->addStretch(1);
-    bar->addWidget(export_svg);
-    auto* layout = new QVBoxLayout(m_section_tab);
-    layout->setContentsMargins(4, 4, 4, 4);
-    layout->addLayout(bar);
-    layout->addWidget(m_section, 1);
-}
-
 bool MainWindow::show_view(const QString& name) {
     if (name == "3d") {
         m_views->setCurrentWidget(m_viewport);
@@ -358,16 +335,6 @@ bool MainWindow::show_view(const QString& name) {
         return false;
     }
     return true;
-}
-
-void MainWindow::export_section_svg() {
-    QString path = QFileDialog::getSaveFileName(this, tr("Export section"), QString(),
-                                                tr("SVG pictures (*.svg)"));
-    if (path.isEmpty()) return;
-    if (QFileInfo(path).suffix().isEmpty()) path += ".svg";
-    QString error;
-    if (!m_section->export_svg(path, &error))
-        QMessageBox::warning(this, tr("Cannot export"), error);
 }
 
 namespace {

@@ -23,6 +23,7 @@ class RayDiagramDock;
 class RenderController;
 class SceneDocument;
 class SceneTree;
+class SectionTab;
 class SectionWidget;
 class Viewport;
 enum class RenderEnd;  // render_controller.h
@@ -94,8 +95,6 @@ private:
     bool save();
     bool save_as();
     void export_image();
-    void export_section_svg();
-    void build_section_tab();
     // A message in the status line (the one line: render status and messages share it),
     // for kMessageMs; then the render status comes back.
     void show_message(const QString& text);
@@ -116,8 +115,8 @@ private:
     SceneTree* m_tree;
     PropertyPanel* m_panel;
     Viewport* m_viewport;
+    SectionTab* m_section_tab;  // the section view under its tool bar
     SectionWidget* m_section;
-    QWidget* m_section_tab;  // the section view under its plane chooser and export button
     QTabWidget* m_views;
     RayDiagramDock* m_ray_diagram;
     DetectorDock* m_detector_dock;

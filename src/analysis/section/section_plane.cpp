@@ -45,6 +45,11 @@ SectionPlane default_section_plane(const Scene& scene, int object) {
     return plane;
 }
 
+bool section_plane_follows_axis(const Scene& scene, int object) {
+    return object >= 0 && object < int(scene.objects.size()) &&
+           dynamic_cast<const LensSolid*>(scene.objects[size_t(object)].shape.get());
+}
+
 SectionPlane section_plane(const Scene& scene, int object, SectionPlaneChoice choice) {
     SectionPlane plane = default_section_plane(scene, object);
     switch (choice) {

@@ -29,6 +29,10 @@ struct SectionPlane {
 // the camera, v up and u to the camera's right.
 SectionPlane default_section_plane(const Scene& scene, int object);
 
+// Whether default_section_plane follows `object`'s own axis (a lens's), rather than only
+// passing through it.
+bool section_plane_follows_axis(const Scene& scene, int object);
+
 // The planes a user can choose: the default above, or a plane of the scene's axes through
 // the same point (x-y seen from +z, y-z seen from +x, z-x seen from above, +y).
 enum class SectionPlaneChoice { Default, XY, YZ, ZX };

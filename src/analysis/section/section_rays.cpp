@@ -235,6 +235,9 @@ void append_ray_paths(const RayTree& tree, const SectionWavelength& wavelength,
 std::optional<SectionBeam> default_section_beam(const Scene& scene, int object,
                                                 const SectionPlane& plane, int rays) {
     if (object < 0 || object >= int(scene.objects.size())) return std::nullopt;
+    // A beam shows what glass or a mirror does; an opaque screen would only swallow it.
+    const Material& m = scene.material_of(object);
+    if (m.transparency <= 0 && m.specular <= 0) return std::nullopt;
     const auto* lens = dynamic_cast<const LensSolid*>(scene.objects[object].shape.get());
     // A lens cut across its axis gets the beam of any other object.
     if (lens && std::abs(dot(lens->prescription().axis, plane.normal())) > 1e-9) lens = nullptr;

@@ -132,7 +132,7 @@ SectionView make_section_view(const Scene& scene, const SectionPlane& plane,
     return view;
 }
 
-SectionExtent focus_extent(const SectionView& view, int object) {
+SectionExtent focus_extent(const SectionView& view, int object, double room_fraction) {
     double a0 = INFINITY, a1 = -INFINITY, b0 = INFINITY, b1 = -INFINITY;
     for (const SectionObject& o : view.objects) {
         if (o.object != object) continue;
@@ -143,8 +143,9 @@ SectionExtent focus_extent(const SectionView& view, int object) {
             }
         }
     }
-    const double room = std::max(a1 - a0, b1 - b0);
-    if (!(room > 0)) return view.extent;  // missed by the plane, or cut in a single point
+    const double size = std::max(a1 - a0, b1 - b0);
+    if (!(size > 0)) return view.extent;  // missed by the plane, or cut in a single point
+    const double room = room_fraction * size;
     return {a0 - room, a1 + room, b0 - room, b1 + room};
 }
 

@@ -37,10 +37,10 @@ struct SectionViewOptions {
 SectionView make_section_view(const Scene& scene, const SectionPlane& plane,
                               const SectionViewOptions& options = {});
 
-// The extent worth showing for `object`: its cross-section with room of its own size on
-// every side, so it and the rays near it are drawn large; all of `view` for an object the
-// plane misses (or -1).
-SectionExtent focus_extent(const SectionView& view, int object);
+// The extent worth showing for `object`: its cross-section with room of `room` times its
+// size on every side, so it and the rays near it are drawn large; all of `view` for an
+// object the plane misses (or -1).
+SectionExtent focus_extent(const SectionView& view, int object, double room = 1.0);
 
 // The drawing: cross-sections filled by material (glass, mirror, lamp, opaque), the
 // `selected` object's outlined in orange, rays in their true colours (a laser's line, white

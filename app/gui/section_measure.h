@@ -1,0 +1,39 @@
+#pragma once
+// The section view's measuring tools, in the plane's own coordinates: a ruler (a length and
+// its slope) and a protractor whose two arms lie along pieces of the drawing (a ray's
+// segment, as the light goes, or an edge of a cross-section), so an angle reads exactly what
+// the tracer computed; and their painting over the drawing.
+
+#include <QPainter>
+#include <QString>
+#include <optional>
+
+#include "analysis/figures/ray_diagram.h"
+
+namespace lenslab::gui {
+
+// A straight piece of the drawing from a to b.
+struct SectionArm {
+    DiagramPoint a, b;
+    bool directed = true;  // a ray's segment (a to b as the light goes); false: a surface's edge
+};
+
+// The protractor's reading in degrees: between two rays' directions, how far the light
+// turned (0-180); with a surface's edge, the smaller angle between the lines (0-90).
+double protractor_degrees(const SectionArm& first, const SectionArm& second);
+
+// Where the two arms' lines cross; nothing for parallel lines.
+std::optional<DiagramPoint> arms_crossing(const SectionArm& first, const SectionArm& second);
+
+// The ruler's text: its length in the scene's units and its angle from the horizontal.
+QString ruler_text(const DiagramPoint& a, const DiagramPoint& b);
+
+// Paints the ruler from a to b, placed by `view`.
+void paint_ruler(QPainter& painter, const DiagramView& view, const DiagramPoint& a,
+                 const DiagramPoint& b);
+// Paints the protractor's arms (the second may be missing while it waits for a click), their
+// lines extended to where they cross, the arc between them there and the reading.
+void paint_protractor(QPainter& painter, const DiagramView& view, const SectionArm& first,
+                      const std::optional<SectionArm>& second);
+
+}  // namespace lenslab::gui
