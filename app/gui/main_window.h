@@ -66,11 +66,16 @@ public:
     // Adds an object or light of `kind` (sphere, triangle, disc, rectangle, lens, implicit,
     // point, beam) and selects it.
     void add_element(const QString& kind);
-    // File ▸ Import lens…: a Zemax .zmx or CODE V .seq file added as a lens_group (in mm),
-    // resting where the view's centre looks, selected; one undo step. A file that cannot be
-    // read leaves the scene as it is; its "FILE:LINE: why" is returned in `error` if given,
-    // else shown. The file's warnings (lines passed over) go to the status line.
-    bool import_lens(const QString& path, QString* error = nullptr);
+    // File ▸ Import lens…: a Zemax .zmx or CODE V .seq file added as a lens_group, resting
+    // where the view's centre looks, selected; one undo step. Its millimetres become the
+    // scene's units by the scene's `length_unit_mm`; in a scene that declares no unit, a
+    // lens larger than the whole scene is offered scaled to fit (`lengths` says what to do
+    // without asking). A file that cannot be read leaves the scene as it is; its
+    // "FILE:LINE: why" is returned in `error` if given, else shown. The file's warnings (lines
+    // passed over) and the scale go to the status line.
+    enum class ImportLengths { Ask, Millimetres, FitScene };
+    bool import_lens(const QString& path, QString* error = nullptr,
+                     ImportLengths lengths = ImportLengths::Ask);
     // A box floor under the scene's objects (Edit ▸ Add floor), selected.
     void add_floor();
     // Edit ▸ Add atmosphere: fog filling the space outside the objects, the declaration's

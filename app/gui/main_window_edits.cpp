@@ -4,12 +4,15 @@
 
 #include <QFileInfo>
 #include <QMessageBox>
+#include <QPushButton>
 
+#include "analysis/figures/ray_diagram.h"
 #include "detector_dock.h"
 #include "image/image_io.h"
 #include "image_export.h"
 #include "json_pointer.h"
 #include "main_window.h"
+#include "number_field.h"
 #include "optimise_dialog.h"
 #include "placement.h"
 #include "property_panel.h"
@@ -32,6 +35,37 @@ namespace lenslab::gui {
 using nlohmann::json;
 
 namespace {
+
+// Scene units per millimetre that make a lens `diameter_mm` across a quarter of the scene's
+// size (a 1, 2 or 5 times a power of ten), when the lens in millimetres would be larger than
+// the whole scene; 0 when it fits as it is (or the scene is empty).
+double import_fit_scale(const Scene& scene, double diameter_mm) {
+    if (scene.objects.empty() || !(diameter_mm > 0)) return 0;
+    const Vec3 size = scene.bounds().extent();
+    const double scene_size = std::max({size.x, size.y, size.z});
+    if (!(scene_size > 0) || diameter_mm <= scene_size) return 0;
+    return diagram_round_length(0.25 * scene_size / diameter_mm);
+}
+
+// Asks how to bring the lens in; Ask back for Cancel.
+MainWindow::ImportLengths ask_import_lengths(QWidget* parent, double diameter_mm, double fit) {
+    QMessageBox box(QMessageBox::Question, QObject::tr("Import lens"),
+                    QObject::tr("The lens is %1 mm across, larger than this whole scene, which "
+                                "declares no length unit. Scale it to fit (1 mm becomes %2 "
+                                "scene units), or keep 1 unit = 1 mm?")
+                        .arg(format_shown(diameter_mm), format_shown(fit)),
+                    QMessageBox::Cancel, parent);
+    box.setObjectName("import_scale_question");
+    QPushButton* scaled = box.addButton(QObject::tr("Scale to fit"), QMessageBox::AcceptRole);
+    scaled->setObjectName("import_scale_fit");
+    QPushButton* mm = box.addButton(QObject::tr("Keep millimetres"), QMessageBox::AcceptRole);
+    mm->setObjectName("import_scale_mm");
+    box.setDefaultButton(scaled);
+    box.exec();
+    if (box.clickedButton() == scaled) return MainWindow::ImportLengths::FitScene;
+    if (box.clickedButton() == mm) return MainWindow::ImportLengths::Millimetres;
+    return MainWindow::ImportLengths::Ask;
+}
 
 // How far `example` (an object as its declaration gives it, or a light) must move so that it
 // rests on the surface the view's centre looks at, on the camera's side, touching it with
@@ -88,11 +122,29 @@ bool MainWindow::apply_element_edit(const ElementEdit& edit, const QString& labe
     return true;
 }
 
-bool MainWindow::import_lens(const QString& path, QString* error) {
+bool MainWindow::import_lens(const QString& path, QString* error, ImportLengths lengths) {
     const std::string file = path.toStdString();
+    const std::string name = QFileInfo(path).completeBaseName().toStdString();
+    // Scene units per millimetre: the scene's declared unit, else millimetres.
+    const json& scene_json = m_document->json();
+    double scale = 1.0 / scene_json.value("length_unit_mm", 1.0);
     ImportedLens lens;
     try {
-        lens = import_lens_file(file, QFileInfo(path).completeBaseName().toStdString());
+        lens = import_lens_file(file, name, scale);
+        // A lens that would dwarf a scene of no declared unit (lengths of about 1) is
+        // offered scaled to a quarter of the scene's size.
+        const double fit =
+            scene_json.contains("length_unit_mm")
+                ? 0.0
+                : import_fit_scale(m_document->scene(), lens.group.value("diameter", 0.0));
+        if (fit > 0 && lengths == ImportLengths::Ask && !error) {
+            lengths = ask_import_lengths(this, lens.group.value("diameter", 0.0), fit);
+            if (lengths == ImportLengths::Ask) return false;  // cancelled
+        }
+        if (fit > 0 && lengths == ImportLengths::FitScene) {
+            scale = fit;
+            lens = import_lens_file(file, name, scale);
+        }
     } catch (const std::exception& e) {
         if (error) {
             *error = QString::fromStdString(e.what());
@@ -117,11 +169,11 @@ bool MainWindow::import_lens(const QString& path, QString* error) {
         return false;
     }
     m_tree->select_pointer(QString::fromStdString(edit.pointer));
-    QString note = tr("Imported %1: %2 element(s), lengths in mm")
+    QString note = tr("Imported %1: %2 element(s), ")
                        .arg(QFileInfo(path).fileName())
                        .arg(lens.element_lines.size());
-    const double unit_mm = edit.scene.value("length_unit_mm", 1.0);
-    if (unit_mm != 1.0) note += tr(" (the scene's unit is %1 mm)").arg(unit_mm);
+    note += scale == 1.0 ? tr("lengths in mm")
+                         : tr("1 mm made %1 scene units").arg(format_shown(scale));
     if (!lens.warnings.empty())
         note += tr("; %1 line(s) passed over: %2")
                     .arg(lens.warnings.size())

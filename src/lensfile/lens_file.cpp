@@ -37,7 +37,7 @@ bool is_lens_file_path(const std::string& path) {
     return extension == ".ZMX" || extension == ".SEQ" || extension == ".ZAR";
 }
 
-ImportedLens read_lens_file(const std::string& path, const std::string& name) {
+ImportedLens read_lens_file(const std::string& path, const std::string& name, double scale) {
     const std::string extension = lens_file_upper(std::filesystem::path(path).extension().string());
     if (!is_lens_file_path(path)) {
         throw LensFileError(path, 0,
@@ -51,8 +51,8 @@ ImportedLens read_lens_file(const std::string& path, const std::string& name) {
         bytes = read_lens_file_bytes(path);
     }
     const std::vector<std::string> lines = decode_lens_file_lines(bytes, file);
-    const LensFilePrescription p =
-        extension == ".SEQ" ? read_seq(lines, file) : read_zmx(lines, file);
+    LensFilePrescription p = extension == ".SEQ" ? read_seq(lines, file) : read_zmx(lines, file);
+    p.unit_mm *= scale;  // every length of the lens_group is the file's times unit_mm
     ImportedLens lens = lens_group_from_prescription(p, name);
     lens.file = file;
     return lens;

@@ -14,8 +14,9 @@ bool is_lens_file_path(const std::string& path);
 
 // Reads the lens file at `path` (.zmx, .zar or .seq, any case) into a lens_group named
 // `name`, not yet checked as the scene reader checks one (scene/lens_file_import.h does).
-// Throws LensFileError.
-ImportedLens read_lens_file(const std::string& path, const std::string& name);
+// Its lengths are in millimetres times `scale` (the editor's import into a scene of another
+// unit; the messages of a file refused then count in those units too). Throws LensFileError.
+ImportedLens read_lens_file(const std::string& path, const std::string& name, double scale = 1.0);
 
 // The scene fragment `lenslab import` writes: the lens_group at the origin along +z, and the
 // file's system data under "bench".

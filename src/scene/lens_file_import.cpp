@@ -33,8 +33,8 @@ void check_imported_lens(const ImportedLens& lens, const std::string& path) {
 
 }  // namespace
 
-ImportedLens import_lens_file(const std::string& path, const std::string& name) {
-    ImportedLens lens = read_lens_file(path, name);
+ImportedLens import_lens_file(const std::string& path, const std::string& name, double scale) {
+    ImportedLens lens = read_lens_file(path, name, scale);
     check_imported_lens(lens, lens.file);
     return lens;
 }

@@ -9,7 +9,7 @@
 
 namespace lenslab {
 
-// Throws LensFileError.
-ImportedLens import_lens_file(const std::string& path, const std::string& name);
+// Its lengths are millimetres times `scale` (read_lens_file). Throws LensFileError.
+ImportedLens import_lens_file(const std::string& path, const std::string& name, double scale = 1.0);
 
 }  // namespace lenslab

@@ -172,7 +172,7 @@ RayDiagram section_diagram(const Scene& scene, const SectionView& view, int sele
         DiagramPath path;
         for (const Vec3& p : r.points) path.points.push_back(view.plane.of(p));
         path.stroke = section_ray_colour(r);
-        path.width = 1.2;
+        path.width = 1.0;  // a hairline: a thousand rays redraw at 60 frames per second
         path.stroke_opacity = std::clamp(0.15 + 0.85 * r.weight, 0.15, 1.0);
         d.paths.push_back(std::move(path));
     }
