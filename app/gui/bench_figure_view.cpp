@@ -24,7 +24,7 @@ constexpr double kBenchFigureMinHeight = 300;
 }  // namespace
 
 BenchFigureView::BenchFigureView(QWidget* parent) : QWidget(parent) {
-    setMinimumSize(320, 200);
+    setMinimumSize(240, 80);
     setToolTip(tr("Double-click: open in a window of its own; right-click: export"));
 }
 

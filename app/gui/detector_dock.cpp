@@ -34,20 +34,22 @@ DetectorDock::DetectorDock(SceneDocument* document, QWidget* parent)
     m_photons->setSuffix(tr(" photons/light"));
     m_measure->setObjectName("detector_measure");
     m_log->setObjectName("detector_log");
-    controls->addWidget(m_photons, 1);
+    // Two rows, so the dock stays narrow enough for a small or scaled screen.
     controls->addWidget(m_log);
+    controls->addStretch(1);
     controls->addWidget(m_measure);
     m_title->setObjectName("detector_title");
     m_title->setWordWrap(true);
     m_picture->setObjectName("detector_picture");
     m_picture->setAlignment(Qt::AlignCenter);
-    m_picture->setMinimumSize(160, 120);
+    m_picture->setMinimumSize(160, 60);
     m_picture->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
     m_picture->setScaledContents(false);
     m_summary->setObjectName("detector_summary");
     m_summary->setWordWrap(true);
     m_summary->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    v->addWidget(m_photons);
     v->addLayout(controls);
     v->addWidget(m_title);
     v->addWidget(m_picture, 1);

@@ -59,7 +59,7 @@ QString default_wavelengths_text() {
 }  // namespace
 
 RayDiagramView::RayDiagramView(QWidget* parent) : QWidget(parent) {
-    setMinimumSize(360, 180);
+    setMinimumSize(240, 80);
     setObjectName("ray_diagram_view");
 }
 

@@ -4,11 +4,9 @@
 #include <QComboBox>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QHBoxLayout>
-#include <QLabel>
 #include <QPlainTextEdit>
-#include <QPushButton>
 #include <QSpinBox>
+#include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -23,7 +21,7 @@ namespace {
 constexpr int kMostSectionRays = 1000;
 // Lines of the read-out shown at once (a ray's path through a lens onto a screen); longer
 // ones scroll.
-constexpr int kReadoutLines = 5;
+constexpr int kReadoutLines = 3;
 
 }  // namespace
 
@@ -33,10 +31,13 @@ SectionTab::SectionTab(SceneDocument* document, QWidget* parent)
       m_readout(new QPlainTextEdit(this)) {
     auto* plane = new QComboBox(this);
     plane->setObjectName("section_plane");
-    plane->addItem(tr("Default: the lens's axis, vertical"), int(SectionPlaneChoice::Default));
+    plane->setToolTip(
+        tr("The plane shown: through the selected lens's axis (upright), or a "
+           "plane of the scene's axes through the selection"));
+    plane->addItem(tr("Lens's axis"), int(SectionPlaneChoice::Default));
     plane->addItem(tr("x-y plane"), int(SectionPlaneChoice::XY));
     plane->addItem(tr("y-z plane"), int(SectionPlaneChoice::YZ));
-    plane->addItem(tr("z-x plane (seen from above)"), int(SectionPlaneChoice::ZX));
+    plane->addItem(tr("z-x (from above)"), int(SectionPlaneChoice::ZX));
     connect(plane, &QComboBox::currentIndexChanged, this, [this, plane](int index) {
         m_view->set_plane_choice(SectionPlaneChoice(plane->itemData(index).toInt()));
     });
@@ -47,12 +48,15 @@ SectionTab::SectionTab(SceneDocument* document, QWidget* parent)
     rays->setToolTip(tr("Rays across the selection's beam and in each light's fan"));
     connect(rays, &QSpinBox::valueChanged, m_view, &SectionWidget::set_rays);
 
-    auto* fit_all = new QPushButton(tr("Fit all"), this);
+    rays->setPrefix(tr("Rays: "));
+    auto* fit_all = new QToolButton(this);
+    fit_all->setText(tr("Fit all"));
     fit_all->setObjectName("section_fit_all");
-    connect(fit_all, &QPushButton::clicked, m_view, &SectionWidget::fit_all);
-    auto* fit_selection = new QPushButton(tr("Fit selection"), this);
+    connect(fit_all, &QToolButton::clicked, m_view, &SectionWidget::fit_all);
+    auto* fit_selection = new QToolButton(this);
+    fit_selection->setText(tr("Fit selection"));
     fit_selection->setObjectName("section_fit_selection");
-    connect(fit_selection, &QPushButton::clicked, m_view, &SectionWidget::fit_selection);
+    connect(fit_selection, &QToolButton::clicked, m_view, &SectionWidget::fit_selection);
 
     // The tools, one checked at a time.
     auto* tools = new QButtonGroup(this);
@@ -67,10 +71,11 @@ SectionTab::SectionTab(SceneDocument* document, QWidget* parent)
         {SectionTool::Protractor, "section_tool_protractor", "Protractor",
          "Click two rays or surfaces: the angle between them"},
     };
-    auto* bar = new QHBoxLayout;
-    bar->addWidget(new QLabel(tr("Plane:"), this));
+    // A tool bar: what does not fit a narrow window folds into its extension menu, so the
+    // window still fits a small or scaled screen.
+    auto* bar = new QToolBar(this);
+    bar->setObjectName("section_tool_bar");
     bar->addWidget(plane);
-    bar->addWidget(new QLabel(tr("Rays:"), this));
     bar->addWidget(rays);
     bar->addWidget(fit_all);
     bar->addWidget(fit_selection);
@@ -88,11 +93,11 @@ SectionTab::SectionTab(SceneDocument* document, QWidget* parent)
         m_view->set_tool(SectionTool(id));
         m_readout->clear();
     });
-    bar->addStretch(1);
-    auto* export_button = new QPushButton(tr("Export..."), this);
+    auto* export_button = new QToolButton(this);
+    export_button->setText(tr("Export..."));
     export_button->setObjectName("section_export");
     export_button->setToolTip(tr("The drawing as SVG, or the view as it shows as PNG"));
-    connect(export_button, &QPushButton::clicked, this, &SectionTab::export_view);
+    connect(export_button, &QToolButton::clicked, this, &SectionTab::export_view);
     bar->addWidget(export_button);
 
     // Read-only text (to copy into notes) of a fixed height: the view keeps its size, and so
@@ -108,7 +113,7 @@ SectionTab::SectionTab(SceneDocument* document, QWidget* parent)
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
-    layout->addLayout(bar);
+    layout->addWidget(bar);
     layout->addWidget(m_view, 1);
     layout->addWidget(m_readout);
 }

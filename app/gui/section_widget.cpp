@@ -54,7 +54,7 @@ DiagramPoint section_centre(const SectionView& view, int object) {
 SectionWidget::SectionWidget(SceneDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document) {
     setObjectName("section_view");
-    setMinimumSize(320, 240);
+    setMinimumSize(200, 100);
     connect(m_document, &SceneDocument::changed, this, &SectionWidget::refresh);
     refresh();
 }
@@ -137,7 +137,7 @@ void SectionWidget::refresh() {
         m_refit = false;
         show_extent(m_section.extent);
     } else {
-        show_extent(m_extent);
+        show_extent(m_wanted);
     }
     if (m_inspected >= int(m_section.rays.size())) m_inspected = -1;
     inspect(m_inspected);  // the read-out follows the edit
@@ -145,6 +145,7 @@ void SectionWidget::refresh() {
 
 void SectionWidget::show_extent(const SectionExtent& wanted) {
     // Widened about its middle to the shape of the drawing's area, so the drawing fills it.
+    m_wanted = wanted;
     SectionExtent e = wanted;
     const double w = std::max(1.0, width() - 2 * kDiagramMargin);
     const double h = std::max(1.0, height() - kDiagramTop - kDiagramBottom);
@@ -372,7 +373,7 @@ void SectionWidget::mouseReleaseEvent(QMouseEvent* event) {
     }
 }
 
-void SectionWidget::resizeEvent(QResizeEvent*) { show_extent(m_extent); }
+void SectionWidget::resizeEvent(QResizeEvent*) { show_extent(m_wanted); }
 
 void SectionWidget::wheelEvent(QWheelEvent* event) {
     if (m_drag_object >= 0) return;

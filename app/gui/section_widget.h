@@ -102,7 +102,8 @@ private:
     SectionPlane m_plane;
     SectionView m_section;
     RayDiagram m_diagram;
-    SectionExtent m_extent;     // what is shown; see refresh()
+    SectionExtent m_wanted;     // what was asked for: a fit, a zoom, a pan
+    SectionExtent m_extent;     // what is shown: m_wanted widened to the widget's shape
     bool m_refit = true;        // fit all at the next refresh (a new selection or plane)
     bool m_refit_plane = true;  // the plane chosen again: not kept for a new selection
     bool m_has_plane = false;

@@ -64,7 +64,7 @@ Vec3 unit_axis(int axis) {
 Viewport::Viewport(SceneDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document) {
     setObjectName("viewport");
-    setMinimumSize(320, 240);
+    setMinimumSize(200, 100);
     setMouseTracking(false);
     setFocusPolicy(Qt::StrongFocus);
     setToolTip(

@@ -6,7 +6,6 @@
 // set to a folder, each writes the window's picture there (docs/images/lesson_*.png).
 
 #include <QPlainTextEdit>
-#include <QPushButton>
 #include <QToolButton>
 #include <QtTest>
 #include <cmath>
@@ -95,7 +94,7 @@ private slots:
         open_section(w, "focal_length_bench.json");
         auto* view = w.section_view();
         w.tree()->select_pointer("/objects/0");  // the lens: the plane through its axis
-        w.findChild<QPushButton*>("section_fit_all")->click();
+        w.findChild<QToolButton*>("section_fit_all")->click();
         const double scale = view->placement().scale;  // pixels per mm
         QVERIFY(scale > 3);
         // Drag the screen's edge towards the lens a pixel at a time, watching the spot.
