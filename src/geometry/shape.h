@@ -22,6 +22,16 @@ struct BoundingSphere {
     double radius = 0;
 };
 
+// The axis of symmetry of a lens or a mirror: a section view cuts the shape through it and
+// sends its beam along it.
+struct OpticalAxis {
+    Vec3 centre;     // on the axis: a lens's middle, a mirror's vertex
+    Vec3 direction;  // unit: a lens's axis; the way a mirror's face looks
+    double diameter = 0;
+    double thickness = 0;   // along the axis (0: a mirror)
+    bool reflects = false;  // a mirror: light meets it travelling against `direction`
+};
+
 class Shape {
 public:
     virtual ~Shape() = default;
@@ -38,6 +48,8 @@ public:
     virtual BoundingSphere bounding_sphere() const;
     // A flat shape's frame and outline (a disc, rectangle or triangle); nothing for others.
     virtual std::optional<FlatPatch> flat_patch() const { return std::nullopt; }
+    // A lens's or mirror's axis; nothing for others.
+    virtual std::optional<OpticalAxis> optical_axis() const { return std::nullopt; }
 };
 
 }  // namespace lenslab

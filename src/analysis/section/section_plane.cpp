@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "geometry/lens/lens_solid.h"
-
 namespace lenslab {
 
 namespace {
@@ -29,10 +27,10 @@ SectionPlane default_section_plane(const Scene& scene, int object) {
     if (object < 0 || object >= int(scene.objects.size())) return plane;
     const Shape& shape = *scene.objects[object].shape;
     plane.origin = shape.bounding_sphere().centre;
-    const auto* lens = dynamic_cast<const LensSolid*>(&shape);
-    if (!lens) return plane;
-    const Vec3 axis = lens->prescription().axis;
-    plane.origin = lens->prescription().centre;
+    const std::optional<OpticalAxis> optical = shape.optical_axis();
+    if (!optical) return plane;
+    const Vec3 axis = optical->direction;
+    plane.origin = optical->centre;
     const Vec3 n = cross(axis, up);
     if (length(n) < 1e-9) {  // the axis is vertical: any vertical plane holds it
         plane.v = up;
@@ -47,7 +45,7 @@ SectionPlane default_section_plane(const Scene& scene, int object) {
 
 bool section_plane_follows_axis(const Scene& scene, int object) {
     return object >= 0 && object < int(scene.objects.size()) &&
-           dynamic_cast<const LensSolid*>(scene.objects[size_t(object)].shape.get());
+           scene.objects[size_t(object)].shape->optical_axis().has_value();
 }
 
 SectionPlane section_plane(const Scene& scene, int object, SectionPlaneChoice choice) {

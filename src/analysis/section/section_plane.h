@@ -23,14 +23,14 @@ struct SectionPlane {
 };
 
 // The plane a section view shows for `object` (an index into scene.objects, or -1):
-// for a lens, the plane through its axis containing the camera's up direction, with v the
-// up direction and u across it (the lens's axis when the lens lies on its side); for
-// anything else, the plane through the object's centre (the scene's centre for -1) facing
-// the camera, v up and u to the camera's right.
+// for a lens or a mirror, the plane through its axis containing the camera's up direction, with v
+// the up direction and u across it (the lens's axis when the lens lies on its side); for anything
+// else, the plane through the object's centre (the scene's centre for -1) facing the camera, v up
+// and u to the camera's right.
 SectionPlane default_section_plane(const Scene& scene, int object);
 
-// Whether default_section_plane follows `object`'s own axis (a lens's), rather than only
-// passing through it.
+// Whether default_section_plane follows `object`'s own axis (a lens's or a mirror's),
+// rather than only passing through it.
 bool section_plane_follows_axis(const Scene& scene, int object);
 
 // The planes a user can choose: the default above, or a plane of the scene's axes through

@@ -5,7 +5,6 @@
 #include <numbers>
 
 #include "analysis/section/section_outline.h"
-#include "geometry/lens/lens_solid.h"
 
 namespace lenslab {
 
@@ -238,10 +237,10 @@ std::optional<SectionBeam> default_section_beam(const Scene& scene, int object,
     // A beam shows what glass or a mirror does; an opaque screen would only swallow it.
     const Material& m = scene.material_of(object);
     if (m.transparency <= 0 && m.specular <= 0) return std::nullopt;
-    const auto* lens = dynamic_cast<const LensSolid*>(scene.objects[object].shape.get());
-    // A lens cut across its axis gets the beam of any other object.
-    if (lens && std::abs(dot(lens->prescription().axis, plane.normal())) > 1e-9) lens = nullptr;
-    if (!lens) {
+    std::optional<OpticalAxis> axis = scene.objects[object].shape->optical_axis();
+    // A lens or mirror cut across its axis gets the beam of any other object.
+    if (axis && std::abs(dot(axis->direction, plane.normal())) > 1e-9) axis.reset();
+    if (!axis) {
         double a0 = INFINITY, a1 = -INFINITY, b0 = INFINITY, b1 = -INFINITY;
         for (const SectionCurve& c : section_outline(*scene.objects[object].shape, plane)) {
             for (const DiagramPoint& p : c.points) {
@@ -253,14 +252,18 @@ std::optional<SectionBeam> default_section_beam(const Scene& scene, int object,
         const double size = std::max(a1 - a0, b1 - b0);
         return SectionBeam{plane.at(a0 - size, 0.5 * (b0 + b1)), plane.u, 0.8 * (b1 - b0), rays};
     }
-    const LensPrescription& p = lens->prescription();
-    Vec3 direction = p.axis;
+    const double width = 0.8 * axis->diameter;
+    if (axis->reflects) {  // onto the mirror's face, from as far in front as it is wide
+        const Vec3 start = axis->centre + axis->direction * (1.5 * axis->diameter);
+        return SectionBeam{start, -axis->direction, width, rays};
+    }
+    Vec3 direction = axis->direction;
     std::optional<Vec3> light;
     if (!scene.emitters().empty()) light = scene.emitters().front().sphere->centre();
     if (!light && !scene.point_lights.empty()) light = scene.point_lights.front().position;
-    if (light && dot(*light - p.centre, direction) > 0) direction = -direction;
-    const double distance = p.thickness + 1.0 * p.diameter;
-    return SectionBeam{p.centre - direction * distance, direction, 0.8 * p.diameter, rays};
+    if (light && dot(*light - axis->centre, direction) > 0) direction = -direction;
+    const double distance = axis->thickness + 1.0 * axis->diameter;
+    return SectionBeam{axis->centre - direction * distance, direction, width, rays};
 }
 
 }  // namespace lenslab

@@ -107,9 +107,10 @@ void append_ray_paths(const RayTree& tree, const SectionWavelength& wavelength,
 
 // The beam a section view shows for `object`: for a lens whose axis lies in the plane,
 // along its axis across 80% of its aperture, coming from the side of the scene's first
-// light (or from its front); for any other object the plane cuts, along the plane's u
-// across 80% of the height of its cross-section, from the -u side; nothing for -1, an
-// object the plane misses, or one neither transparent nor specular (a screen).
+// light (or from its front); for such a mirror, onto its face along its axis; for any other object
+// the plane cuts, along the plane's u across 80% of the height of its cross-section, from the -u
+// side; nothing for -1, an object the plane misses, or one neither transparent nor specular (a
+// screen).
 std::optional<SectionBeam> default_section_beam(const Scene& scene, int object,
                                                 const SectionPlane& plane, int rays = 15);
 

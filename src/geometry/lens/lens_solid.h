@@ -55,6 +55,10 @@ public:
     // True for points inside or on the solid.
     bool contains(const Vec3& p) const override;
 
+    std::optional<OpticalAxis> optical_axis() const override {
+        return OpticalAxis{m_p.centre, m_p.axis, m_p.diameter, m_p.thickness, false};
+    }
+
     const LensPrescription& prescription() const { return m_p; }
     const Frame& frame() const { return m_frame; }
     // Axial positions, in the local frame, of the front and back surfaces at radius r

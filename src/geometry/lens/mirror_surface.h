@@ -30,6 +30,9 @@ public:
     bool intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const override;
     Aabb bounds() const override { return m_bounds; }
     bool is_closed() const override { return false; }
+    std::optional<OpticalAxis> optical_axis() const override {
+        return OpticalAxis{m_p.vertex, m_p.axis, m_p.diameter, 0, true};
+    }
 
     const MirrorPrescription& prescription() const { return m_p; }
     const Frame& frame() const { return m_frame; }  // w: the axis
