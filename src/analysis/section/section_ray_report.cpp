@@ -1,18 +1,10 @@
 #include "analysis/section/section_ray_report.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <numbers>
 
 namespace lenslab {
 
 namespace {
-
-// The angle of a direction against the normal's line, 0-90 degrees.
-double angle_to_normal_deg(const Vec3& d, const Vec3& normal) {
-    return angle_between_deg(d, dot(d, normal) < 0 ? -normal : normal);
-}
 
 // What the light did, in the words of a lesson.
 const char* event_words(Event e) {
@@ -38,11 +30,6 @@ std::string report_line(const char* pattern, auto... values) {
 }
 
 }  // namespace
-
-double angle_between_deg(const Vec3& a, const Vec3& b) {
-    const double c = dot(normalize(a), normalize(b));
-    return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / std::numbers::pi;
-}
 
 SectionRayReport section_ray_report(const Scene& scene, const SectionRayPath& path) {
     SectionRayReport report;

@@ -36,7 +36,4 @@ SectionRayReport section_ray_report(const Scene& scene, const SectionRayPath& pa
 // n 1.0000 -> 1.5168, turned 18.60°", then the end and the total.
 std::string format_section_ray_report(const SectionRayReport& report);
 
-// The angle between two directions in degrees, 0-180.
-double angle_between_deg(const Vec3& a, const Vec3& b);
-
 }  // namespace lenslab

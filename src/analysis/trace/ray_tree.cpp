@@ -1,5 +1,9 @@
 #include "analysis/trace/ray_tree.h"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "scene/interaction.h"
 
 namespace lenslab {
@@ -89,7 +93,8 @@ using Json = nlohmann::ordered_json;
 
 Json vec_json(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
 
-Json node_json(const Scene& scene, const RayTreeNode& node) {
+// `arriving`: the direction the light came along to this node's hit (its parent's).
+Json node_json(const Scene& scene, const RayTreeNode& node, const Vec3* arriving) {
     Json j;
     j["from"] = vec_json(node.from);
     j["to"] = node.to ? vec_json(*node.to) : Json(nullptr);
@@ -103,13 +108,30 @@ Json node_json(const Scene& scene, const RayTreeNode& node) {
     j["event"] = node.event ? event_name(*node.event) : "start";
     j["weight"] = node.weight;
     j["direction"] = vec_json(node.direction);
+    if (arriving && node.to && node.object >= 0) {  // the surface met, as a lesson reads it
+        j["normal"] = vec_json(node.normal);
+        j["incidence_deg"] = angle_to_normal_deg(*arriving, node.normal);
+        j["leaving_deg"] = angle_to_normal_deg(node.direction, node.normal);
+        j["n_inside"] = node.n_inside;
+        j["n_outside"] = node.n_outside;
+    }
     if (node.truncated) j["truncated"] = true;
     j["children"] = Json::array();
-    for (const RayTreeNode& c : node.children) j["children"].push_back(node_json(scene, c));
+    for (const RayTreeNode& c : node.children)
+        j["children"].push_back(node_json(scene, c, &node.direction));
     return j;
 }
 
 }  // namespace
+
+double angle_between_deg(const Vec3& a, const Vec3& b) {
+    const double c = dot(normalize(a), normalize(b));
+    return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / std::numbers::pi;
+}
+
+double angle_to_normal_deg(const Vec3& d, const Vec3& normal) {
+    return angle_between_deg(d, dot(d, normal) < 0 ? -normal : normal);
+}
 
 RayTree trace_ray_tree(const Scene& scene, const Ray& ray, const RayTreeOptions& options) {
     RayTree tree;
@@ -123,7 +145,7 @@ RayTree trace_ray_tree(const Scene& scene, const Ray& ray, const RayTreeOptions&
 
 nlohmann::ordered_json to_json(const Scene& scene, const RayTree& tree) {
     Json j;
-    j["tree"] = node_json(scene, tree.root);
+    j["tree"] = node_json(scene, tree.root, nullptr);
     j["summary"] = {
         {"escaped", tree.escaped}, {"absorbed", tree.absorbed}, {"truncated", tree.truncated}};
     return j;

@@ -50,7 +50,15 @@ struct RayTree {
 
 RayTree trace_ray_tree(const Scene& scene, const Ray& ray, const RayTreeOptions& options);
 
-// Keys keep the documented order (from, to, object, event, weight, direction, children).
+// The angle between two directions in degrees, 0-180; of a direction to the line of a
+// surface's normal, 0-90 (an angle of incidence or refraction).
+double angle_between_deg(const Vec3& a, const Vec3& b);
+double angle_to_normal_deg(const Vec3& d, const Vec3& normal);
+
+// Keys keep the documented order (from, to, object, event, weight, direction, children); a
+// node that met a surface also has, before its children, the surface's `normal`, the angles
+// of the arriving and the leaving light to it (`incidence_deg`, `leaving_deg`) and the indices
+// `n_inside` its solid and `n_outside`.
 nlohmann::ordered_json to_json(const Scene& scene, const RayTree& tree);
 
 }  // namespace lenslab

@@ -84,6 +84,32 @@ TEST(RayTree, JsonHasTheDocumentedFields) {
     }
     EXPECT_EQ(first["object"], "ball");
     EXPECT_EQ(j["tree"]["event"], "start");
+    EXPECT_FALSE(j["tree"].contains("incidence_deg"));  // the start met no surface
+}
+
+// The angles at each surface: scenes/prism.json's beam through an equilateral prism of
+// n = 1.5 at minimum deviation (Hecht, Optics, 5.5.1) meets the first face at
+// asin(1.5 sin 30°) = 48.59° and refracts to 30°, then leaves the second face symmetrically.
+TEST(RayTree, JsonGivesTheAnglesAndIndicesAtEachSurface) {
+    const Scene scene = load_scene_file(LENSLAB_SOURCE_DIR "/scenes/prism.json");
+    const auto j =
+        to_json(scene, trace_ray_tree(scene, {{-2.6196, 0, -0.797}, {0.9478, 0, 0.3188}}, {}));
+    const double incidence = std::asin(0.75) * 180 / std::numbers::pi;
+    const auto refracted = [](const nlohmann::ordered_json& node) {
+        for (const auto& c : node["children"]) {
+            if (c["event"] == "refract") return c;
+        }
+        return nlohmann::ordered_json{};
+    };
+    const auto in = refracted(j["tree"]);
+    EXPECT_NEAR(in["incidence_deg"].get<double>(), incidence, 0.01);
+    EXPECT_NEAR(in["leaving_deg"].get<double>(), 30, 0.01);
+    EXPECT_EQ(in["n_inside"], 1.5);
+    EXPECT_EQ(in["n_outside"], 1.0);
+    const auto out = refracted(in);
+    EXPECT_NEAR(out["incidence_deg"].get<double>(), 30, 0.01);
+    EXPECT_NEAR(out["leaving_deg"].get<double>(), incidence, 0.01);
+    EXPECT_EQ(out["normal"].size(), 3u);
 }
 
 }  // namespace
