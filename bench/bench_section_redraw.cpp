@@ -17,6 +17,23 @@
 
 namespace {
 
+// A frame per benchmark iteration of a drag with the left button from `grip`, 10 to 30
+// pixels to its right, painted into an image of the widget's size.
+void drag_frames(benchmark::State& state, QWidget& view, const QPointF& grip) {
+    QImage image(view.size(), QImage::Format_ARGB32_Premultiplied);
+    QMouseEvent press(QEvent::MouseButtonPress, grip, grip, Qt::LeftButton, Qt::LeftButton, {});
+    QApplication::sendEvent(&view, &press);
+    int step = 0;
+    for (auto _ : state) {
+        const QPointF at = grip + QPointF(10 + (++step % 20), 0);
+        QMouseEvent move(QEvent::MouseMove, at, at, Qt::NoButton, Qt::LeftButton, {});
+        QApplication::sendEvent(&view, &move);
+        view.render(&image);
+    }
+    QMouseEvent release(QEvent::MouseButtonRelease, grip, grip, Qt::LeftButton, Qt::NoButton, {});
+    QApplication::sendEvent(&view, &release);
+}
+
 void BM_SectionWidgetRedraw(benchmark::State& state) {
     lenslab::gui::SceneDocument document;
     lenslab::gui::SectionWidget view(&document);
@@ -55,19 +72,7 @@ void BM_ViewportHandleDragFrame(benchmark::State& state) {
     lenslab::gui::Viewport view(&document);
     view.resize(614, 455);  // the 3-D tab of a 1280x800 window
     view.show_pointer("/objects/1");
-    QImage image(view.size(), QImage::Format_ARGB32_Premultiplied);
-    const QPointF grip = view.handles()->arrow_grip(0);
-    QMouseEvent press(QEvent::MouseButtonPress, grip, grip, Qt::LeftButton, Qt::LeftButton, {});
-    QApplication::sendEvent(&view, &press);
-    int step = 0;
-    for (auto _ : state) {
-        const QPointF at = grip + QPointF(10 + (++step % 20), 0);
-        QMouseEvent move(QEvent::MouseMove, at, at, Qt::NoButton, Qt::LeftButton, {});
-        QApplication::sendEvent(&view, &move);
-        view.render(&image);
-    }
-    QMouseEvent release(QEvent::MouseButtonRelease, grip, grip, Qt::LeftButton, Qt::NoButton, {});
-    QApplication::sendEvent(&view, &release);
+    drag_frames(state, view, view.handles()->arrow_grip(0));
     state.counters["outline_cells"] =
         double(view.outline().image.width()) * view.outline().image.height();
 }
@@ -90,19 +95,7 @@ void BM_SectionWidgetPan1000Rays(benchmark::State& state) {
     lenslab::gui::SceneDocument document;
     lenslab::gui::SectionWidget view(&document);
     section_view_of_1000_rays(document, view);
-    QImage image(view.size(), QImage::Format_ARGB32_Premultiplied);
-    const QPointF grip(8, 300);  // empty paper
-    QMouseEvent press(QEvent::MouseButtonPress, grip, grip, Qt::LeftButton, Qt::LeftButton, {});
-    QApplication::sendEvent(&view, &press);
-    int step = 0;
-    for (auto _ : state) {
-        const QPointF at = grip + QPointF(10 + (++step % 20), 0);
-        QMouseEvent move(QEvent::MouseMove, at, at, Qt::NoButton, Qt::LeftButton, {});
-        QApplication::sendEvent(&view, &move);
-        view.render(&image);
-    }
-    QMouseEvent release(QEvent::MouseButtonRelease, grip, grip, Qt::LeftButton, Qt::NoButton, {});
-    QApplication::sendEvent(&view, &release);
+    drag_frames(state, view, QPointF(8, 300));  // from empty paper: a pan
     state.counters["rays"] = double(view.section().rays.size());
 }
 

@@ -34,19 +34,11 @@ double distance_to_segment(const DiagramPoint& p, const DiagramPoint& a, const D
     return std::hypot(p.z - a.z - t * dz, p.y - a.y - t * dy);
 }
 
-// The middle of the bounding box of an object's cross-section.
+// The middle of the bounding box of an object's cross-section (the object is under the
+// mouse, so the plane cuts it).
 DiagramPoint section_centre(const SectionView& view, int object) {
-    double a0 = INFINITY, a1 = -INFINITY, b0 = INFINITY, b1 = -INFINITY;
-    for (const SectionObject& o : view.objects) {
-        if (o.object != object) continue;
-        for (const SectionCurve& c : o.curves) {
-            for (const DiagramPoint& p : c.points) {
-                a0 = std::min(a0, p.z), a1 = std::max(a1, p.z);
-                b0 = std::min(b0, p.y), b1 = std::max(b1, p.y);
-            }
-        }
-    }
-    return {0.5 * (a0 + a1), 0.5 * (b0 + b1)};
+    const SectionExtent box = section_bounds(view, object).value_or(SectionExtent{});
+    return {0.5 * (box.a_min + box.a_max), 0.5 * (box.b_min + box.b_max)};
 }
 
 }  // namespace

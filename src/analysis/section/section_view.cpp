@@ -132,7 +132,7 @@ SectionView make_section_view(const Scene& scene, const SectionPlane& plane,
     return view;
 }
 
-SectionExtent focus_extent(const SectionView& view, int object, double room_fraction) {
+std::optional<SectionExtent> section_bounds(const SectionView& view, int object) {
     double a0 = INFINITY, a1 = -INFINITY, b0 = INFINITY, b1 = -INFINITY;
     for (const SectionObject& o : view.objects) {
         if (o.object != object) continue;
@@ -143,10 +143,16 @@ SectionExtent focus_extent(const SectionView& view, int object, double room_frac
             }
         }
     }
-    const double size = std::max(a1 - a0, b1 - b0);
+    if (a0 > a1) return std::nullopt;
+    return SectionExtent{a0, a1, b0, b1};
+}
+
+SectionExtent focus_extent(const SectionView& view, int object, double room_fraction) {
+    const std::optional<SectionExtent> box = section_bounds(view, object);
+    const double size = box ? std::max(box->a_max - box->a_min, box->b_max - box->b_min) : 0.0;
     if (!(size > 0)) return view.extent;  // missed by the plane, or cut in a single point
     const double room = room_fraction * size;
-    return {a0 - room, a1 + room, b0 - room, b1 + room};
+    return {box->a_min - room, box->a_max + room, box->b_min - room, box->b_max + room};
 }
 
 RayDiagram section_diagram(const Scene& scene, const SectionView& view, int selected) {

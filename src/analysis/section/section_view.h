@@ -3,6 +3,7 @@
 // in that plane through all objects (section_outline.h, section_rays.h), drawn as a
 // RayDiagram so the editor and the SVG writer (ray_diagram_svg.h) show the same picture.
 
+#include <optional>
 #include <vector>
 
 #include "analysis/figures/ray_diagram.h"
@@ -36,6 +37,9 @@ struct SectionViewOptions {
 
 SectionView make_section_view(const Scene& scene, const SectionPlane& plane,
                               const SectionViewOptions& options = {});
+
+// The box of `object`'s cross-section in the plane; nothing when the plane misses it.
+std::optional<SectionExtent> section_bounds(const SectionView& view, int object);
 
 // The extent worth showing for `object`: its cross-section with room of `room` times its
 // size on every side, so it and the rays near it are drawn large; all of `view` for an
