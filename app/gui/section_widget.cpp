@@ -131,8 +131,8 @@ void SectionWidget::refresh() {
     } else {
         show_extent(m_wanted);
     }
-    if (m_inspected >= int(m_section.rays.size())) m_inspected = -1;
-    inspect(m_inspected);  // the read-out follows the edit
+    // A clicked ray's read-out follows the edit (a measurement's is left alone).
+    if (m_inspected >= 0) inspect(m_inspected < int(m_section.rays.size()) ? m_inspected : -1);
 }
 
 void SectionWidget::show_extent(const SectionExtent& wanted) {
