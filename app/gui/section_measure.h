@@ -16,6 +16,12 @@ namespace lenslab::gui {
 struct SectionArm {
     DiagramPoint a, b;
     bool directed = true;  // a ray's segment (a to b as the light goes); false: a surface's edge
+    // On a start ray's own path (SectionRayPath::start >= 0): which, so the arm follows the
+    // ray through edits (a prism turned under the protractor): the start index, the
+    // wavelength and the segment, counted from the path's start (>= 0) or end (< 0).
+    int ray = -1;
+    double nm = 0;
+    int segment = 0;
 };
 
 // The protractor's reading in degrees: between two rays' directions, how far the light

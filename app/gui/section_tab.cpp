@@ -91,7 +91,7 @@ SectionTab::SectionTab(SceneDocument* document, QWidget* parent)
     }
     connect(tools, &QButtonGroup::idClicked, this, [this](int id) {
         m_view->set_tool(SectionTool(id));
-        m_readout->clear();
+        if (SectionTool(id) != SectionTool::Move) m_readout->clear();
     });
     auto* export_button = new QToolButton(this);
     export_button->setText(tr("Export..."));

@@ -71,9 +71,12 @@ void SectionWidget::set_rays(int rays) {
 
 void SectionWidget::set_tool(SectionTool tool) {
     m_tool = tool;
-    m_ruler_from.reset();
-    m_ruler_to.reset();
-    m_arms.clear();
+    // A measuring tool starts afresh; Move keeps what was measured, to watch it through edits.
+    if (tool != SectionTool::Move) {
+        m_ruler_from.reset();
+        m_ruler_to.reset();
+        m_arms.clear();
+    }
     setCursor(tool == SectionTool::Move ? Qt::ArrowCursor : Qt::CrossCursor);
     update();
 }
@@ -131,8 +134,12 @@ void SectionWidget::refresh() {
     } else {
         show_extent(m_wanted);
     }
-    // A clicked ray's read-out follows the edit (a measurement's is left alone).
+    // A clicked ray's read-out follows the edit, and so does a protractor laid on rays.
     if (m_inspected >= 0) inspect(m_inspected < int(m_section.rays.size()) ? m_inspected : -1);
+    if (follow_rays(m_arms) && m_arms.size() == 2) {
+        emit measured(tr("Protractor: %1°").arg(*protractor_reading(), 0, 'f', 2));
+        update();
+    }
 }
 
 void SectionWidget::show_extent(const SectionExtent& wanted) {
@@ -167,6 +174,24 @@ void SectionWidget::inspect(int ray) {
     }
     emit ray_inspected(m_inspected_text);
     update();
+}
+
+bool SectionWidget::follow_rays(std::vector<SectionArm>& arms) const {
+    bool moved = false;
+    for (SectionArm& arm : arms) {
+        if (arm.ray < 0) continue;
+        for (const SectionRayPath& r : m_section.rays) {
+            if (r.start != arm.ray || r.wavelength_nm != arm.nm) continue;
+            const int segments = int(r.points.size()) - 1;
+            const int k = arm.segment < 0 ? segments + arm.segment : arm.segment;
+            if (k < 0 || k >= segments) break;
+            arm.a = m_plane.of(r.points[size_t(k)]);
+            arm.b = m_plane.of(r.points[size_t(k) + 1]);
+            moved = true;
+            break;
+        }
+    }
+    return moved;
 }
 
 std::optional<double> SectionWidget::protractor_reading() const {
@@ -230,18 +255,27 @@ std::optional<SectionArm> SectionWidget::arm_at(const QPointF& pixel) const {
     const DiagramPoint p = to_plane(pixel);
     double nearest = kSectionPickPixels / placement().scale;
     std::optional<SectionArm> arm;
-    const auto consider = [&](const DiagramPoint& a, const DiagramPoint& b, bool directed) {
-        const double d = distance_to_segment(p, a, b);
-        if (d < nearest) nearest = d, arm = SectionArm{a, b, directed};
+    const auto consider = [&](const SectionArm& candidate) {
+        const double d = distance_to_segment(p, candidate.a, candidate.b);
+        if (d < nearest) nearest = d, arm = candidate;
     };
     for (const SectionRayPath& r : m_section.rays) {
-        for (size_t i = 0; i + 1 < r.points.size(); ++i)
-            consider(m_plane.of(r.points[i]), m_plane.of(r.points[i + 1]), true);
+        const int segments = int(r.points.size()) - 1;
+        for (int i = 0; i < segments; ++i) {
+            SectionArm candidate{m_plane.of(r.points[size_t(i)]),
+                                 m_plane.of(r.points[size_t(i) + 1]), true};
+            if (r.start >= 0) {  // later segments counted from the end: the last leg stays last
+                candidate.ray = r.start;
+                candidate.nm = r.wavelength_nm;
+                candidate.segment = segments >= 2 && 2 * i >= segments ? i - segments : i;
+            }
+            consider(candidate);
+        }
     }
     for (const SectionObject& o : m_section.objects) {
         for (const SectionCurve& c : o.curves) {
             for (size_t i = 0; i + 1 < c.points.size(); ++i)
-                consider(c.points[i], c.points[i + 1], false);
+                consider({c.points[i], c.points[i + 1], false});
         }
     }
     return arm;

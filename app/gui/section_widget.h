@@ -92,6 +92,8 @@ private:
     int object_at(const QPointF& p) const;  // the object whose section is under p, or -1
     int ray_at(const QPointF& p) const;     // the ray drawn nearest p (within a few pixels), or -1
     std::optional<SectionArm> arm_at(const QPointF& p) const;
+    // Lays arms that lie on rays along the same rays as traced now; whether any moved.
+    bool follow_rays(std::vector<SectionArm>& arms) const;
 
     SceneDocument* m_document;
     QString m_pointer;

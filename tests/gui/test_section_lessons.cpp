@@ -87,6 +87,26 @@ private slots:
                  qPrintable(QString("%1 vs %2").arg(*reading).arg(traced)));
         QVERIFY(std::abs(traced - 37.18) < 0.02);  // Hecht's minimum deviation, the scene's
         save_lesson_picture(w, "lesson_prism.png");
+
+        // Step 4: with Move, turn the prism (Shift and drag): the protractor's arms follow the
+        // beam's first and last legs, and the deviation grows from its minimum.
+        w.findChild<QToolButton*>("section_tool_move")->click();
+        const QPoint grip = drawn_middle(*view, 0) + QPoint(0, -4);
+        QTest::mousePress(view, Qt::LeftButton, Qt::ShiftModifier, grip);
+        for (int i = 1; i <= 4; ++i) {
+            const QPointF at(grip + QPoint(2 * i, 0));
+            QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton,
+                             Qt::LeftButton, Qt::ShiftModifier);
+            QApplication::sendEvent(view, &move);
+        }
+        QTest::mouseRelease(view, Qt::LeftButton, Qt::ShiftModifier, grip + QPoint(8, 0));
+        QCOMPARE(w.document()->undo_stack()->count(), 1);
+        const std::optional<double> turned = view->protractor_reading();
+        QVERIFY(turned);
+        QVERIFY2(*turned > *reading + 0.01,
+                 qPrintable(QString("%1 after %2").arg(*turned).arg(*reading)));
+        const QString shown = w.findChild<QPlainTextEdit*>("section_readout")->toPlainText();
+        QCOMPARE(shown, QString("Protractor: %1°").arg(*turned, 0, 'f', 2));
     }
 
     void a_screen_dragged_to_the_smallest_spot_finds_the_back_focus() {

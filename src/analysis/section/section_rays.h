@@ -63,6 +63,9 @@ struct SectionRayPath {
     // the light's where one path stands for its whole spectrum).
     Rgb colour{1, 1, 1};
     bool whole_spectrum = false;  // the path stands for all the light's wavelengths
+    // A start ray's own path (along its strongest branches): the start ray's index among all
+    // the view's start rays, so the same ray is found again after an edit; -1 for a branch.
+    int start = -1;
 };
 
 // A wavelength a light's rays are traced at: its colour (linear sRGB, brightest channel 1)

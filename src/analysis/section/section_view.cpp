@@ -121,13 +121,21 @@ SectionView make_section_view(const Scene& scene, const SectionPlane& plane,
     const double reach =
         std::max(options.rays.escape_length, std::hypot(a1 - a0, b1 - b0) + 2 * margin);
     const bool disperses = section_scene_disperses(scene);
+    int base = 0;  // the index of the source's first start ray
     for (const SectionSource& source : sources) {
         for (const SectionWavelength& w :
              section_wavelengths(*source.spectrum, options.rays.wavelengths_nm, disperses)) {
             tree.wavelength_nm = w.nm;
-            for (const Ray& r : source.rays)
-                append_ray_paths(trace_ray_tree(scene, r, tree), w, reach, view.rays);
+            for (size_t i = 0; i < source.rays.size(); ++i) {
+                const size_t first = view.rays.size();
+                append_ray_paths(trace_ray_tree(scene, source.rays[i], tree), w, reach, view.rays);
+                // The tree's first path is the start ray's own (unless dropped at once).
+                if (first < view.rays.size() &&
+                    length(view.rays[first].points[0] - source.rays[i].origin) == 0.0)
+                    view.rays[first].start = base + int(i);
+            }
         }
+        base += int(source.rays.size());
     }
     return view;
 }
