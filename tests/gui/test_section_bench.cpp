@@ -24,6 +24,26 @@ using lenslab::gui::MainWindow;
 using lenslab::gui::SectionWidget;
 using namespace lenslab::gui::testing;
 
+namespace {
+
+// The first and last columns of `area` holding a green pixel (a 532 nm ray drawn on white);
+// (width, -1) for none.
+std::pair<int, int> green_columns(const QImage& image, const QRect& area) {
+    int first = image.width(), last = -1;
+    for (int x = area.left(); x <= area.right(); ++x) {
+        for (int y = area.top(); y <= area.bottom(); ++y) {
+            const QColor c = image.pixelColor(x, y);
+            if (c.green() > 100 && c.green() > 2 * c.red() && c.green() > 2 * c.blue()) {
+                first = std::min(first, x), last = std::max(last, x);
+                break;
+            }
+        }
+    }
+    return {first, last};
+}
+
+}  // namespace
+
 class TestSectionBench : public QObject {
     Q_OBJECT
 
@@ -38,16 +58,7 @@ private slots:
             QVERIFY(std::abs(r.wavelength_nm - 532) < 0.05);
         // On the picture: green pixels in columns across most of the view's width.
         const QImage image = view->grab().toImage();
-        int first = image.width(), last = -1;
-        for (int x = 0; x < image.width(); ++x) {
-            for (int y = 0; y < image.height(); ++y) {
-                const QColor c = image.pixelColor(x, y);
-                if (c.green() > 100 && c.green() > 2 * c.red() && c.green() > 2 * c.blue()) {
-                    first = std::min(first, x), last = std::max(last, x);
-                    break;
-                }
-            }
-        }
+        const auto [first, last] = green_columns(image, image.rect());
         QVERIFY2(last - first > 0.75 * image.width(),
                  qPrintable(QString("%1-%2 of %3").arg(first).arg(last).arg(image.width())));
         // The beams end on the screen (objects[1]), which is in view.
@@ -77,16 +88,7 @@ private slots:
         MainWindow w;
         open_section(w, "smoke_tank.json");
         const QRect view(w.section_view()->mapTo(&w, QPoint(0, 0)), w.section_view()->size());
-        int first = image.width(), last = -1;
-        for (int x = view.left(); x <= view.right(); ++x) {
-            for (int y = view.top(); y <= view.bottom(); ++y) {
-                const QColor c = image.pixelColor(x, y);
-                if (c.green() > 100 && c.green() > 2 * c.red() && c.green() > 2 * c.blue()) {
-                    first = std::min(first, x), last = std::max(last, x);
-                    break;
-                }
-            }
-        }
+        const auto [first, last] = green_columns(image, view);
         QVERIFY2(last - first > 0.75 * view.width(),
                  qPrintable(QString("%1-%2 of %3").arg(first).arg(last).arg(view.width())));
     }

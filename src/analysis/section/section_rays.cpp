@@ -104,12 +104,19 @@ private:
 
 }  // namespace
 
-Rgb wavelength_rgb(double nm) {
-    Rgb c = xyz_to_linear_srgb(cie_xyz_bar(nm));
+namespace {
+
+// A colour clipped to the gamut's positive side and scaled to brightest channel 1 (white
+// for black, which has no hue).
+Rgb brightest_channel_one(Rgb c) {
     c = {std::max(c.r, 0.0), std::max(c.g, 0.0), std::max(c.b, 0.0)};
     const double peak = std::max({c.r, c.g, c.b});
     return peak > 0 ? c * (1 / peak) : Rgb{1, 1, 1};
 }
+
+}  // namespace
+
+Rgb wavelength_rgb(double nm) { return brightest_channel_one(xyz_to_linear_srgb(cie_xyz_bar(nm))); }
 
 std::vector<SectionWavelength> section_wavelengths(const Spectrum& s,
                                                    const std::vector<double>& spread,
@@ -127,12 +134,8 @@ std::vector<SectionWavelength> section_wavelengths(const Spectrum& s,
         return {{nm, 1, wavelength_rgb(nm), false}};
     }
     if (spread.empty()) return {};
-    if (!disperses) {
-        Rgb c = spectrum_to_rgb(s);
-        c = {std::max(c.r, 0.0), std::max(c.g, 0.0), std::max(c.b, 0.0)};
-        const double peak = std::max({c.r, c.g, c.b});
-        return {{spread[spread.size() / 2], 1, peak > 0 ? c * (1 / peak) : Rgb{1, 1, 1}, true}};
-    }
+    if (!disperses)
+        return {{spread[spread.size() / 2], 1, brightest_channel_one(spectrum_to_rgb(s)), true}};
     std::vector<SectionWavelength> out;
     double strongest = 0;
     for (double nm : spread) strongest = std::max(strongest, s.eval(nm));

@@ -56,14 +56,20 @@ bool section_scene_disperses(const Scene& scene) {
     return false;
 }
 
+// A colour of brightest channel 1 on the white page: brightest channel 0.8 after an
+// sRGB-like curve.
+DiagramColour section_on_white(const Rgb& c) {
+    const auto encode = [](double v) { return 0.8 * std::pow(std::max(v, 0.0), 1 / 2.2); };
+    return section_rgb_colour({encode(c.r), encode(c.g), encode(c.b)});
+}
+
 // A ray's colour on the white page: a wavelength's or a coloured light's own hue, brightest
 // channel 0.8 after the sRGB-like curve; white light (a neutral colour) dark grey.
 DiagramColour section_ray_colour(const SectionRayPath& r) {
     const Rgb& c = r.colour;
     const double low = std::min({c.r, c.g, c.b});
     if (r.whole_spectrum && low > 0.85) return {90, 90, 90};
-    const auto encode = [](double v) { return 0.8 * std::pow(std::max(v, 0.0), 1 / 2.2); };
-    return section_rgb_colour({encode(c.r), encode(c.g), encode(c.b)});
+    return section_on_white(c);
 }
 
 std::string section_legend_label(const SectionRayPath& r) {
@@ -81,11 +87,7 @@ DiagramColour wavelength_colour(double nm) {
     for (const auto& [line, colour] : lines) {
         if (std::abs(nm - line) < 1e-3) return colour;
     }
-    Rgb c = xyz_to_linear_srgb(cie_xyz_bar(nm));
-    c = {std::max(c.r, 0.0), std::max(c.g, 0.0), std::max(c.b, 0.0)};
-    const double peak = std::max({c.r, c.g, c.b, 1e-12});
-    const auto encode = [&](double v) { return 0.8 * std::pow(v / peak, 1 / 2.2); };
-    return section_rgb_colour({encode(c.r), encode(c.g), encode(c.b)});
+    return section_on_white(wavelength_rgb(nm));
 }
 
 SectionView make_section_view(const Scene& scene, const SectionPlane& plane,
