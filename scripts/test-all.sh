@@ -4,13 +4,13 @@
 #   1. release build (release-unsanitized preset: build/release-unsanitized; the library at
 #      -O3 as released, the command line's own code at -O0, as in stage 2; the Python module,
 #      MPI and the benchmarks) + the tests stage 2 cannot run: the Python module's (pytest,
-#      the notebooks), the MPI ranks' and the 20M-photon convergence test (too slow
+#      the notebooks), the MPI ranks' and the statistical render checks (too slow
 #      sanitized). Every other test runs in stage 2 only: running it here too doubled its
 #      compile and run time and checked nothing more (`ctest --preset release-ci` still runs
 #      them all unsanitized);
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: the library at
 #      -O1, tests and apps at -O0, the tests' own code with ASan but not UBSan; the editor
-#      included, no benchmarks) + every test but the 20M-photon convergence test, each
+#      included, no benchmarks) + every test but the statistical render checks, each
 #      GoogleTest suite as 4 shards.
 #      The editor is built and its QTest suites run here only: compiling Qt's headers twice
 #      was about a quarter of stage 1's build (docs/performance.md, "Test suite time");
@@ -53,7 +53,7 @@ finished "stage 1/4: release build and the tests only it runs (Python, MPI, conv
 banner "stage 2/4: AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
 cmake --preset asan-ci
 cmake --build --preset asan-ci
-# The preset skips PhotonMap.CausticErrorShrinksAsPhotonsGrow (20 million photons: minutes
+# The preset skips the statistical render checks (LENSLAB_RELEASE_ONLY_TESTS: tens of seconds
 # under ASan).
 ctest --preset asan-ci
 finished "stage 2/4: AddressSanitizer + UndefinedBehaviorSanitizer build and tests"
