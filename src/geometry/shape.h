@@ -1,13 +1,19 @@
 #pragma once
 // Interface of every intersectable solid or surface in a scene.
 
+#include <functional>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "geometry/flat_patch.h"
 #include "math/aabb.h"
 #include "math/ray.h"
 
 namespace lenslab {
+
+struct LensPrescription;
+struct MirrorPrescription;
 
 struct SurfaceHit {
     double t = 0;
@@ -50,6 +56,25 @@ public:
     virtual std::optional<FlatPatch> flat_patch() const { return std::nullopt; }
     // A lens's or mirror's axis; nothing for others.
     virtual std::optional<OpticalAxis> optical_axis() const { return std::nullopt; }
+    // The prescription a lens or a mirror was built from, which the optical bench measures;
+    // nothing for other shapes.
+    virtual const LensPrescription* lens_prescription() const { return nullptr; }
+    virtual const MirrorPrescription* mirror_prescription() const { return nullptr; }
+    // The outline of a cut through the optical axis along unit `across` (square to the axis),
+    // in the scene, as a closed curve: a lens's front face across its diameter in `steps`,
+    // then its back face returning. Empty for shapes without one.
+    virtual std::vector<Vec3> axial_outline(const Vec3& /*across*/, int /*steps*/) const {
+        return {};
+    }
+    // For a surface a section view cuts facet by facet (a mesh's triangles, a mirror's face
+    // as small quads): calls `visit` with each flat facet's corners. Nothing for others.
+    using FacetVisitor = std::function<void(const Vec3* corners, int count)>;
+    virtual void for_each_facet(const FacetVisitor& /*visit*/) const {}
+    // An exact sphere's centre and radius (only spheres emit light); nothing for others.
+    virtual std::optional<BoundingSphere> exact_sphere() const { return std::nullopt; }
+    // Why a shape that could enclose a volume does not ("edge (4, 7) belongs to 1 face");
+    // empty when it does or cannot.
+    virtual std::string open_reason() const { return {}; }
 };
 
 }  // namespace lenslab

@@ -15,6 +15,7 @@ public:
         return length_squared(p - m_centre) <= m_radius * m_radius;
     }
     BoundingSphere bounding_sphere() const override { return {m_centre, m_radius}; }
+    std::optional<BoundingSphere> exact_sphere() const override { return bounding_sphere(); }
 
     const Vec3& centre() const { return m_centre; }
     double radius() const { return m_radius; }

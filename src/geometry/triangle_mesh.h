@@ -27,7 +27,10 @@ public:
     Aabb bounds() const override { return m_bounds; }
     bool is_closed() const override { return m_closed; }
     // Why the mesh is not closed ("edge (4, 7) belongs to 1 face ..."); empty when it is.
-    const std::string& open_reason() const { return m_open_reason; }
+    std::string open_reason() const override { return m_open_reason; }
+    void for_each_facet(const FacetVisitor& visit) const override {
+        for (const std::array<Vec3, 3>& t : m_triangles) visit(t.data(), 3);
+    }
 
     size_t triangle_count() const { return m_triangles.size(); }
     size_t vertex_count() const { return m_vertex_count; }

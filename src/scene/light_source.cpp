@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/sphere.h"
+#include "geometry/shape.h"
 #include "math/constants.h"
 #include "math/frame.h"
 #include "math/sampling.h"
@@ -31,8 +31,9 @@ private:
 // pi L 4 pi R^2 in all.
 class SphereLightSource final : public Light {
 public:
-    SphereLightSource(std::shared_ptr<const Sphere> sphere, SpectrumPtr radiance)
-        : Light(std::move(radiance)), m_sphere(std::move(sphere)) {}
+    SphereLightSource(std::shared_ptr<const Shape> shape, BoundingSphere sphere,
+                      SpectrumPtr radiance)
+        : Light(std::move(radiance)), m_shape(std::move(shape)), m_sphere(sphere) {}
 
     double power() const override { return kPi * area() * spectrum_watts(); }
 
@@ -60,9 +61,9 @@ public:
     }
 
     bool sample_li(const Vec3& p, Rng& rng, LightSample& out) const override {
-        const Vec3 to_centre = m_sphere->centre() - p;
+        const Vec3 to_centre = m_sphere.centre - p;
         const double d2 = length_squared(to_centre);
-        const double r2 = m_sphere->radius() * m_sphere->radius();
+        const double r2 = m_sphere.radius * m_sphere.radius;
         if (d2 <= r2) return false;  // inside the light
         const double cos_max = std::sqrt(1.0 - r2 / d2);
         // 1 - cos_max written without cancellation for small, distant lights.
@@ -71,36 +72,37 @@ public:
                      .to_world(sample_uniform_cone(rng.uniform(), rng.uniform(), cos_max));
         SurfaceHit h;
         // A direction grazing the silhouette can miss by rounding: it brings nothing.
-        if (!m_sphere->intersect({p, out.wi}, surface_epsilon(p), INFINITY, h)) return false;
+        if (!m_shape->intersect({p, out.wi}, surface_epsilon(p), INFINITY, h)) return false;
         out.distance = h.t;
         out.factor = 2.0 * kPi * one_minus_cos;  // radiance over the cone's uniform density
         return true;
     }
 
     bool is_delta() const override { return false; }
-    Aabb bounds() const override { return m_sphere->bounds(); }
+    Aabb bounds() const override { return m_shape->bounds(); }
 
     // Towards the centre: a small light seen from afar is all but a point, and a large one
     // still sends the most where the ray passes closest.
     bool samples_in_scattering() const override { return true; }
     bool sample_in_scattering(const Ray& ray, double t_max, double u, double& t,
                               double& pdf) const override {
-        return sample_equiangular(ray, t_max, m_sphere->centre(), u, t, pdf);
+        return sample_equiangular(ray, t_max, m_sphere.centre, u, t, pdf);
     }
 
     // Judged from the centre: each point of the surface sees the targets a little
     // differently, and falls back to cosine sampling where aiming does not pay.
     bool worth_aiming(const PhotonTargets& targets) const override {
-        return targets.solid_angle(m_sphere->centre()) < kPi;
+        return targets.solid_angle(m_sphere.centre) < kPi;
     }
 
 private:
-    double area() const { return 4.0 * kPi * m_sphere->radius() * m_sphere->radius(); }
+    double area() const { return 4.0 * kPi * m_sphere.radius * m_sphere.radius; }
     Vec3 surface_point(const Vec3& normal) const {
-        return m_sphere->centre() + normal * m_sphere->radius();
+        return m_sphere.centre + normal * m_sphere.radius;
     }
 
-    std::shared_ptr<const Sphere> m_sphere;
+    std::shared_ptr<const Shape> m_shape;
+    BoundingSphere m_sphere;
 };
 
 }  // namespace
@@ -159,8 +161,9 @@ bool sample_equiangular(const Ray& ray, double t_max, const Vec3& light, double 
 }
 
 LightPtr make_point_light(const PointLight& l) { return std::make_shared<PointLightSource>(l); }
-LightPtr make_sphere_light(std::shared_ptr<const Sphere> sphere, SpectrumPtr radiance) {
-    return std::make_shared<SphereLightSource>(std::move(sphere), std::move(radiance));
+LightPtr make_sphere_light(std::shared_ptr<const Shape> shape, BoundingSphere sphere,
+                           SpectrumPtr radiance) {
+    return std::make_shared<SphereLightSource>(std::move(shape), sphere, std::move(radiance));
 }
 
 }  // namespace lenslab

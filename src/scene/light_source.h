@@ -12,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "geometry/shape.h"
 #include "math/aabb.h"
 #include "math/ray.h"
 #include "math/rng.h"
@@ -133,7 +134,6 @@ using LightPtr = std::shared_ptr<const Light>;
 struct PointLight;
 struct BeamLight;
 struct SpotLight;
-class Sphere;
 LightPtr make_point_light(const PointLight& l);
 // A beam, with or without a slit (beam_light_source.cpp), or a line laser's fan.
 LightPtr make_beam_light(const BeamLight& b);
@@ -145,7 +145,8 @@ LightPtr make_spot_light(const SpotLight& s);  // spot_light_source.cpp
 // the light and delta where it passes closest. False when the ray runs through the light.
 bool sample_equiangular(const Ray& ray, double t_max, const Vec3& light, double u, double& t,
                         double& pdf);
-// A Lambertian sphere of spectral radiance `radiance`.
-LightPtr make_sphere_light(std::shared_ptr<const Sphere> sphere, SpectrumPtr radiance);
+// A Lambertian sphere of spectral radiance `radiance`: `shape`, which is the sphere `sphere`.
+LightPtr make_sphere_light(std::shared_ptr<const Shape> shape, BoundingSphere sphere,
+                           SpectrumPtr radiance);
 
 }  // namespace lenslab

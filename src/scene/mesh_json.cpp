@@ -339,10 +339,9 @@ std::shared_ptr<const Shape> read_prism(SpecReader& r) {
 }
 
 void check_mesh_material(JsonObjectReader& r, const Shape& shape, const Material& material) {
-    const auto* mesh = dynamic_cast<const TriangleMesh*>(&shape);
-    if (!mesh || mesh->is_closed() || material.transparency == 0.0) return;
+    if (shape.is_closed() || material.transparency == 0.0) return;
     throw SceneError(r.child_path(r.has("file") ? "file" : "faces"),
-                     "the mesh is not closed: " + mesh->open_reason() +
+                     "the mesh is not closed: " + shape.open_reason() +
                          "; only a closed mesh can be transparent (an open one would be a set "
                          "of thin panes, not a solid): close it, or give it an opaque material "
                          "(transparency 0)");

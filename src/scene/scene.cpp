@@ -12,9 +12,9 @@ void Scene::build() {
         shapes.push_back(objects[i].shape.get());
         const Material& m = materials[objects[i].material];
         // The scene reader lets only spheres emit; other emitting shapes are not lights.
-        const auto* sphere = dynamic_cast<const Sphere*>(objects[i].shape.get());
+        const std::optional<BoundingSphere> sphere = objects[i].shape->exact_sphere();
         if (m.is_emitter() && sphere) {
-            m_emitters.push_back({static_cast<int>(i), sphere, m.emission});
+            m_emitters.push_back({static_cast<int>(i), *sphere, m.emission});
         }
     }
     m_bvh = Bvh(std::move(shapes));
@@ -52,9 +52,8 @@ void Scene::set_lights(SceneLights lights) {
 void Scene::find_lights_and_targets() {
     m_lights.clear();
     for (const SphereEmitter& e : m_emitters) {
-        m_lights.push_back(make_sphere_light(
-            std::static_pointer_cast<const Sphere>(objects[static_cast<size_t>(e.object)].shape),
-            e.radiance));
+        m_lights.push_back(
+            make_sphere_light(objects[static_cast<size_t>(e.object)].shape, e.sphere, e.radiance));
     }
     for (const PointLight& l : point_lights) m_lights.push_back(make_point_light(l));
     for (const BeamLight& b : beams) m_lights.push_back(make_beam_light(b));

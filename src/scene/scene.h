@@ -55,9 +55,9 @@ struct SceneObject {
 
 // An emitting sphere: the report's light source.
 struct SphereEmitter {
-    int object;            // index into Scene::objects
-    const Sphere* sphere;  // its shape
-    SpectrumPtr radiance;  // emitted spectral radiance
+    int object;             // index into Scene::objects
+    BoundingSphere sphere;  // its shape's centre and radius
+    SpectrumPtr radiance;   // emitted spectral radiance
 };
 
 struct SceneHit {

@@ -41,7 +41,7 @@ std::vector<Rgb> emitted_per_photon(const Scene& scene, int64_t photons_per_ligh
         out.push_back(total * (1.0 / static_cast<double>(counts[light++])));
     };
     for (const SphereEmitter& e : scene.emitters()) {
-        const double r = e.sphere->radius();
+        const double r = e.sphere.radius;
         add(spectrum_to_rgb(*e.radiance) * (std::numbers::pi * 4 * std::numbers::pi * r * r));
     }
     for (const PointLight& l : scene.point_lights) add(spectrum_to_rgb(*l.spectrum));

@@ -5,8 +5,6 @@
 #include <unordered_map>
 
 #include "geometry/lens/lens_solid.h"
-#include "geometry/lens/mirror_surface.h"
-#include "geometry/triangle_mesh.h"
 
 namespace lenslab {
 
@@ -31,27 +29,6 @@ void section_cut_polygon(const Vec3* corners, int count, const SectionPlane& pla
 }
 
 // The chord a disc cuts from the plane.
-// A mirror's surface cut by the plane, as the cuts of a fine polar grid of flat quads over
-// its annulus (48 rings by 96 sectors: a chord error under 1e-3 of the radius for the
-// curvatures mirrors have).
-void section_cut_mirror(const MirrorSurface& m, const SectionPlane& plane,
-                        std::vector<SectionCurve>& out) {
-    constexpr int kRings = 48, kSectors = 96;
-    const double inner = 0.5 * m.prescription().hole_diameter;
-    const double outer = 0.5 * m.prescription().diameter;
-    const auto at = [&](int i, int j) {
-        const double r = inner + (outer - inner) * i / kRings;
-        const double phi = 2.0 * M_PI * j / kSectors;
-        return m.point_at(r * std::cos(phi), r * std::sin(phi));
-    };
-    for (int i = 0; i < kRings; ++i) {
-        for (int j = 0; j < kSectors; ++j) {
-            const Vec3 quad[4] = {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
-            section_cut_polygon(quad, 4, plane, out);
-        }
-    }
-}
-
 void section_cut_disc(const FlatPatch& disc, const SectionPlane& plane,
                       std::vector<SectionCurve>& out) {
     const Vec3 n = plane.normal(), normal = disc.frame.n, centre = disc.frame.origin;
@@ -67,29 +44,7 @@ void section_cut_disc(const FlatPatch& disc, const SectionPlane& plane,
     out.push_back({{plane.of(mid - d), plane.of(mid + d)}, false});
 }
 
-// A lens cut through its axis: the front profile across the diameter, then the back one
-// returning; the closing segments are the rim.
-SectionCurve section_lens_profile(const LensSolid& lens, const SectionPlane& plane) {
-    constexpr int kSteps = 128;
-    const LensPrescription& p = lens.prescription();
-    const Frame& frame = lens.frame();
-    const Vec3 across = normalize(cross(plane.normal(), p.axis));  // in the plane
-    const double cx = dot(across, frame.u), cy = dot(across, frame.v);
-    const double radius = 0.5 * p.diameter;
-    SectionCurve curve;
-    curve.closed = true;
-    const auto add = [&](double r, bool front) {
-        const double x = r * cx, y = r * cy;
-        const double z = front ? lens.front_z(x, y) : lens.back_z(x, y);
-        curve.points.push_back(plane.of(p.centre + frame.to_world({x, y, z})));
-    };
-    for (int i = 0; i <= kSteps; ++i) add(radius * (2.0 * i / kSteps - 1.0), true);
-    for (int i = kSteps; i >= 0; --i) add(radius * (2.0 * i / kSteps - 1.0), false);
-    return curve;
-}
-
-bool section_holds_lens_axis(const LensSolid& lens, const SectionPlane& plane) {
-    const LensPrescription& p = lens.prescription();
+bool section_holds_lens_axis(const LensPrescription& p, const SectionPlane& plane) {
     const double tolerance = 1e-9 * std::max(1.0, p.diameter);
     return std::abs(dot(p.axis, plane.normal())) < 1e-9 &&
            std::abs(plane.distance(p.centre)) < tolerance;
@@ -236,16 +191,26 @@ std::vector<SectionCurve> section_outline(const Shape& shape, const SectionPlane
     } else if (flat) {
         section_cut_polygon(flat->corners.data(), static_cast<int>(flat->corners.size()), plane,
                             out);
-    } else if (const auto* mirror = dynamic_cast<const MirrorSurface*>(&shape)) {
-        section_cut_mirror(*mirror, plane, out);
-    } else if (const auto* mesh = dynamic_cast<const TriangleMesh*>(&shape)) {
-        for (size_t i = 0; i < mesh->triangle_count(); ++i)
-            section_cut_polygon(mesh->triangle(i).data(), 3, plane, out);
-    } else if (const auto* lens = dynamic_cast<const LensSolid*>(&shape);
+    } else if (const LensPrescription* lens = shape.lens_prescription();
                lens && section_holds_lens_axis(*lens, plane)) {
-        out.push_back(section_lens_profile(*lens, plane));
-    } else if (shape.is_closed()) {
-        SolidContour(shape, plane, options.grid).run(out);
+        // A lens cut through its axis: its faces' exact profile.
+        constexpr int kSteps = 128;
+        SectionCurve curve;
+        curve.closed = true;
+        for (const Vec3& p :
+             shape.axial_outline(normalize(cross(plane.normal(), lens->axis)), kSteps)) {
+            curve.points.push_back(plane.of(p));
+        }
+        out.push_back(std::move(curve));
+    } else {
+        // A mesh's triangles or a mirror's quads (48 rings by 96 sectors: a chord error under
+        // 1e-3 of the radius for the curvatures mirrors have), else the solid's contour.
+        bool faceted = false;
+        shape.for_each_facet([&](const Vec3* corners, int count) {
+            faceted = true;
+            section_cut_polygon(corners, count, plane, out);
+        });
+        if (!faceted && shape.is_closed()) SolidContour(shape, plane, options.grid).run(out);
     }
     return out;
 }

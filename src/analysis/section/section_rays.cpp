@@ -206,12 +206,12 @@ std::vector<SectionSource> section_sources(const Scene& scene, const SectionPlan
                          plane, rays_of(light.spectrum));
     }
     for (const SphereEmitter& e : scene.emitters()) {
-        const double d = plane.distance(e.sphere->centre());
-        const double r = e.sphere->radius();
+        const double d = plane.distance(e.sphere.centre);
+        const double r = e.sphere.radius;
         if (std::abs(d) >= r) continue;
         // Just outside the sphere's section, so the rays leave the lamp rather than hit it.
-        add_section_fan(e.sphere->centre() - plane.normal() * d,
-                        std::sqrt(r * r - d * d) * (1 + 1e-6), fan, plane, rays_of(e.radiance));
+        add_section_fan(e.sphere.centre - plane.normal() * d, std::sqrt(r * r - d * d) * (1 + 1e-6),
+                        fan, plane, rays_of(e.radiance));
     }
     return sources;
 }
@@ -262,7 +262,7 @@ std::optional<SectionBeam> default_section_beam(const Scene& scene, int object,
     }
     Vec3 direction = axis->direction;
     std::optional<Vec3> light;
-    if (!scene.emitters().empty()) light = scene.emitters().front().sphere->centre();
+    if (!scene.emitters().empty()) light = scene.emitters().front().sphere.centre;
     if (!light && !scene.point_lights.empty()) light = scene.point_lights.front().position;
     if (light && dot(*light - axis->centre, direction) > 0) direction = -direction;
     const double distance = axis->thickness + 1.0 * axis->diameter;

@@ -107,18 +107,19 @@ OpticalSystem build_folded_system(const Scene& scene, int group) {
     Vec3 axis, start;
     double size = 0.0;
     for (int i : sequence) {
-        if (const auto* m = dynamic_cast<const MirrorSurface*>(scene.objects[i].shape.get())) {
-            size = std::max(size, m->prescription().diameter);
-        } else if (const auto* l = dynamic_cast<const LensSolid*>(scene.objects[i].shape.get())) {
-            size = std::max(size, l->prescription().diameter);
+        const Shape& shape = *scene.objects[i].shape;
+        if (const MirrorPrescription* m = shape.mirror_prescription()) {
+            size = std::max(size, m->diameter);
+        } else if (const LensPrescription* l = shape.lens_prescription()) {
+            size = std::max(size, l->diameter);
         }
     }
-    if (const auto* m = dynamic_cast<const MirrorSurface*>(first.shape.get())) {
+    if (const MirrorPrescription* m = first.shape->mirror_prescription()) {
         // A first mirror may be a fold, tilted from the axis the light comes in along.
-        axis = length(first.group_axis) > 0 ? first.group_axis : m->prescription().axis;
-        start = m->prescription().vertex;
+        axis = length(first.group_axis) > 0 ? first.group_axis : m->axis;
+        start = m->vertex;
     } else {
-        const LensPrescription& p = dynamic_cast<const LensSolid&>(*first.shape).prescription();
+        const LensPrescription& p = *first.shape->lens_prescription();
         axis = p.axis;
         start = p.centre - p.axis * (0.5 * p.thickness);
     }
@@ -128,8 +129,8 @@ OpticalSystem build_folded_system(const Scene& scene, int group) {
     Straightening straight;  // the scene as if every fold mirror faced the axis square on
     for (int i : sequence) {
         const SceneObject& o = scene.objects[i];
-        if (const auto* m = dynamic_cast<const MirrorSurface*>(o.shape.get())) {
-            const MirrorPrescription& p = m->prescription();
+        if (const MirrorPrescription* mirror = o.shape->mirror_prescription()) {
+            const MirrorPrescription& p = *mirror;
             const Vec3 vertex = straight.point(p.vertex);
             Vec3 facing = straight.direction(p.axis);
             if (length(cross(facing, axis)) > kAxisAngleTolerance) {
@@ -166,9 +167,9 @@ OpticalSystem build_folded_system(const Scene& scene, int group) {
             travel = -travel;
             continue;
         }
-        const auto* solid = dynamic_cast<const LensSolid*>(o.shape.get());
-        if (!solid) continue;  // a group holds lenses and mirrors only
-        LensPrescription p = solid->prescription();
+        const LensPrescription* lens = o.shape->lens_prescription();
+        if (!lens) continue;  // a group holds lenses and mirrors only
+        LensPrescription p = *lens;
         p.centre = straight.point(p.centre);
         p.axis = straight.direction(p.axis);
         check_on_axis(scene, i, p.axis, p.centre, axis, start, size);
@@ -190,7 +191,7 @@ OpticalSystem build_folded_system(const Scene& scene, int group) {
         const double z_back = zc + orientation * 0.5 * p.thickness;
         const bool forward = orientation * travel > 0;
         Placed placed{
-            i, solid, orientation, forward ? z_front : z_back, forward ? z_back : z_front, travel};
+            i, lens, orientation, forward ? z_front : z_back, forward ? z_back : z_front, travel};
         system.elements.push_back(make_element(scene, i));
         add_surfaces(placed, static_cast<int>(system.elements.size()) - 1, system);
     }

@@ -50,20 +50,19 @@ SurfaceSpan measure_aim_span(const LensSurface& shape, double semi_diameter) {
 }
 
 void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
-    const LensPrescription& pr = p.lens->prescription();
+    const LensPrescription& pr = *p.lens;
     const bool forward = p.orientation * p.travel > 0;  // the front face is met first
     const std::string path = system.elements[element].path;
     const double a = 0.5 * pr.diameter;
-    const Frame& lens_frame = p.lens->frame();
+    const Frame frame = lens_frame(pr);
     const auto make = [&](const std::shared_ptr<const LensSurface>& shape, double z,
                           const char* face) {
         SystemSurface s;
         if (p.posed) {
             const double side = face == std::string("front") ? -0.5 : 0.5;
             const Frame& f = system.frame;
-            s.pose = SurfacePose{
-                system.to_system(pr.centre + lens_frame.w * (side * pr.thickness)),
-                {f.to_local(lens_frame.u), f.to_local(lens_frame.v), f.to_local(lens_frame.w)}};
+            s.pose = SurfacePose{system.to_system(pr.centre + frame.w * (side * pr.thickness)),
+                                 {f.to_local(frame.u), f.to_local(frame.v), f.to_local(frame.w)}};
         }
         s.shape = shape;
         s.orientation = p.orientation;
@@ -138,7 +137,7 @@ void add_surfaces(const Placed& p, int element, OpticalSystem& system) {
 }
 
 SystemElement make_element(const Scene& scene, int object) {
-    const auto* solid = dynamic_cast<const LensSolid*>(scene.objects[object].shape.get());
+    const LensPrescription& lens = *scene.objects[object].shape->lens_prescription();
     SystemElement e;
     e.object = object;
     e.path = object_path(scene, object);
@@ -146,7 +145,7 @@ SystemElement make_element(const Scene& scene, int object) {
     const Material& m = scene.material_of(object);
     e.glass = m.glass.empty() ? m.index->describe() : m.glass;
     e.index = m.index;
-    e.semi_diameter = 0.5 * solid->prescription().diameter;
+    e.semi_diameter = 0.5 * lens.diameter;
     return e;
 }
 
@@ -212,7 +211,7 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
     std::vector<int> lenses;
     OpticalSystem system;
     for (int i = 0; i < static_cast<int>(scene.objects.size()); ++i) {
-        if (dynamic_cast<const LensSolid*>(scene.objects[i].shape.get())) {
+        if (scene.objects[i].shape->lens_prescription()) {
             lenses.push_back(i);
         } else {
             system.ignored.push_back(
@@ -229,31 +228,28 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
         throw SceneError(*lens >= 0 ? object_path(scene, *lens) : "objects", "is not a lens");
     }
     const int seed = lens ? *lens : lenses.front();
-    const auto* seed_solid = dynamic_cast<const LensSolid*>(scene.objects[seed].shape.get());
+    const LensPrescription& seed_lens = *scene.objects[seed].shape->lens_prescription();
     // A lens group's elements may be decentred or tilted from the group's axis: then the
     // system's axis is the group's, as designed.
     const SceneObject& seed_object = scene.objects[seed];
     const bool seed_in_group = seed_object.source >= 0 && length(seed_object.group_axis) > 0;
-    const Vec3 axis = seed_in_group ? seed_object.group_axis : seed_solid->prescription().axis;
-    Vec3 centre = seed_solid->prescription().centre;
+    const Vec3 axis = seed_in_group ? seed_object.group_axis : seed_lens.axis;
+    Vec3 centre = seed_lens.centre;
     if (seed_in_group) {
         const Vec3 offset = centre - seed_object.group_vertex;
-        if (length(cross(axis, seed_solid->prescription().axis)) > kAxisAngleTolerance ||
-            length(offset - axis * dot(offset, axis)) >
-                kAxisOffsetTolerance * seed_solid->prescription().diameter) {
+        if (length(cross(axis, seed_lens.axis)) > kAxisAngleTolerance ||
+            length(offset - axis * dot(offset, axis)) > kAxisOffsetTolerance * seed_lens.diameter) {
             centre = seed_object.group_vertex;
         }
     }
     double largest = 0.0;
     for (int i : lenses) {
-        const auto* solid = dynamic_cast<const LensSolid*>(scene.objects[i].shape.get());
-        largest = std::max(largest, solid->prescription().diameter);
+        largest = std::max(largest, scene.objects[i].shape->lens_prescription()->diameter);
     }
 
     std::vector<Placed> placed;
     for (int i : lenses) {
-        const auto* solid = dynamic_cast<const LensSolid*>(scene.objects[i].shape.get());
-        const LensPrescription& p = solid->prescription();
+        const LensPrescription& p = *scene.objects[i].shape->lens_prescription();
         const double sine = length(cross(axis, p.axis));
         const Vec3 offset = p.centre - centre;
         const double off_axis = length(offset - axis * dot(offset, axis));
@@ -270,7 +266,7 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
             }
             const double orientation = dot(p.axis, axis) > 0 ? 1.0 : -1.0;
             const double z_first = dot(vertices_met(p, orientation).first - centre, axis);
-            Placed moved{i, solid, orientation, z_first, z_first + p.thickness};
+            Placed moved{i, &p, orientation, z_first, z_first + p.thickness};
             moved.posed = true;
             placed.push_back(moved);
             continue;
@@ -294,7 +290,7 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
         check_lens_transparent(scene, i);
         const double orientation = dot(p.axis, axis) > 0 ? 1.0 : -1.0;
         const double zc = dot(offset, axis);
-        placed.push_back({i, solid, orientation, zc - 0.5 * p.thickness, zc + 0.5 * p.thickness});
+        placed.push_back({i, &p, orientation, zc - 0.5 * p.thickness, zc + 0.5 * p.thickness});
     }
     std::stable_sort(placed.begin(), placed.end(),
                      [](const Placed& a, const Placed& b) { return a.z_first < b.z_first; });
@@ -304,8 +300,8 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
         Placed& now = placed[k];
         const Placed& before = placed[k - 1];
         if (!now.posed || !before.posed) continue;
-        const Vec3 end = vertices_met(before.lens->prescription(), before.orientation).second;
-        const Vec3 start = vertices_met(now.lens->prescription(), now.orientation).first;
+        const Vec3 end = vertices_met(*before.lens, before.orientation).second;
+        const Vec3 start = vertices_met(*now.lens, now.orientation).first;
         if (length(end - start) > kCementTolerance * largest) continue;
         now.z_last = before.z_last + (now.z_last - now.z_first);
         now.z_first = before.z_last;

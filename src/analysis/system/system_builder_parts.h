@@ -29,7 +29,7 @@ std::string format(double v);
 
 struct Placed {
     int object;
-    const LensSolid* lens;
+    const LensPrescription* lens;
     double orientation;      // +1: lens axis along the system axis
     double z_first, z_last;  // the faces light meets first and last
     double travel = 1.0;     // the direction light crosses it (-1: after a mirror)

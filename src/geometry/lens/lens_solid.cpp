@@ -11,16 +11,14 @@
 
 namespace lenslab {
 
-namespace {
-
-// The lens's local frame: w along the axis, u along x_axis made perpendicular to it (or
-// Duff et al.'s choice when none is given), v = w x u so that (u, v, w) is right-handed.
 Frame lens_frame(const LensPrescription& p) {
     const Vec3 x = p.x_axis - p.axis * dot(p.x_axis, p.axis);
     if (!(length(x) > 1e-12)) return Frame::from_axis(p.axis);
     const Vec3 u = normalize(x);
     return {u, cross(p.axis, u), p.axis};
 }
+
+namespace {
 
 std::string where(const DiscPoint& q, bool symmetric) {
     if (symmetric) return "r = " + format_number(std::hypot(q.x, q.y));
@@ -229,6 +227,21 @@ Aabb LensSolid::bounds() const {
         box.expand(m_p.centre + m_frame.to_world(local));
     }
     return box;
+}
+
+std::vector<Vec3> LensSolid::axial_outline(const Vec3& across, int steps) const {
+    const double cx = dot(across, m_frame.u), cy = dot(across, m_frame.v);
+    const double radius = 0.5 * m_p.diameter;
+    std::vector<Vec3> outline;
+    outline.reserve(2 * (steps + 1));
+    const auto add = [&](double r, bool front) {
+        const double x = r * cx, y = r * cy;
+        const double z = front ? front_z(x, y) : back_z(x, y);
+        outline.push_back(m_p.centre + m_frame.to_world({x, y, z}));
+    };
+    for (int i = 0; i <= steps; ++i) add(radius * (2.0 * i / steps - 1.0), true);
+    for (int i = steps; i >= 0; --i) add(radius * (2.0 * i / steps - 1.0), false);
+    return outline;
 }
 
 }  // namespace lenslab

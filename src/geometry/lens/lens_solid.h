@@ -26,6 +26,10 @@ struct LensPrescription {
     Vec3 x_axis{};
 };
 
+// The lens's local frame: w along the axis, u along x_axis made perpendicular to it (or
+// Duff et al.'s choice when none is given), v = w x u so that (u, v, w) is right-handed.
+Frame lens_frame(const LensPrescription& p);
+
 class LensSolid final : public Shape {
 public:
     // The prescription must have passed `check_prescription`.
@@ -58,6 +62,9 @@ public:
     std::optional<OpticalAxis> optical_axis() const override {
         return OpticalAxis{m_p.centre, m_p.axis, m_p.diameter, m_p.thickness, false};
     }
+
+    const LensPrescription* lens_prescription() const override { return &m_p; }
+    std::vector<Vec3> axial_outline(const Vec3& across, int steps) const override;
 
     const LensPrescription& prescription() const { return m_p; }
     const Frame& frame() const { return m_frame; }

@@ -33,6 +33,22 @@ Vec3 MirrorSurface::point_at(double x, double y) const {
     return m_p.vertex + m_frame.to_world({x, y, m_p.surface->sag_xy(x, y)});
 }
 
+void MirrorSurface::for_each_facet(const FacetVisitor& visit) const {
+    constexpr int kRings = 48, kSectors = 96;
+    const double inner = 0.5 * m_p.hole_diameter, outer = 0.5 * m_p.diameter;
+    const auto at = [&](int i, int j) {
+        const double r = inner + (outer - inner) * i / kRings;
+        const double phi = 2.0 * M_PI * j / kSectors;
+        return point_at(r * std::cos(phi), r * std::sin(phi));
+    };
+    for (int i = 0; i < kRings; ++i) {
+        for (int j = 0; j < kSectors; ++j) {
+            const Vec3 quad[4] = {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+            visit(quad, 4);
+        }
+    }
+}
+
 bool MirrorSurface::intersect(const Ray& ray, double t_min, double t_max, SurfaceHit& hit) const {
     const Ray local{m_frame.to_local(ray.origin - m_p.vertex), m_frame.to_local(ray.direction)};
     const double hole = 0.5 * m_p.hole_diameter;

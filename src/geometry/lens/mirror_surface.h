@@ -34,6 +34,10 @@ public:
         return OpticalAxis{m_p.vertex, m_p.axis, m_p.diameter, 0, true};
     }
 
+    const MirrorPrescription* mirror_prescription() const override { return &m_p; }
+    // The face as rings x sectors quads between the hole and the rim.
+    void for_each_facet(const FacetVisitor& visit) const override;
+
     const MirrorPrescription& prescription() const { return m_p; }
     const Frame& frame() const { return m_frame; }  // w: the axis
     // The point of the surface at local (x, y), in the scene.
