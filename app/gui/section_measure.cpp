@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 namespace lenslab::gui {
 
@@ -51,60 +53,103 @@ QString ruler_text(const DiagramPoint& a, const DiagramPoint& b) {
     return QObject::tr("%1 units, %2°").arg(length, 0, 'g', 5).arg(angle, 0, 'f', 2);
 }
 
-void paint_ruler(QPainter& painter, const DiagramView& view, const DiagramPoint& a,
-                 const DiagramPoint& b) {
-    const QPointF p = on_screen(view, a), q = on_screen(view, b);
-    painter.setPen(QPen(kMeasureInk, 1.5));
-    painter.drawLine(p, q);
-    const QPointF along = q - p;
-    const double n = std::hypot(along.x(), along.y());
-    if (n > 0) {
-        const QPointF tick = QPointF(-along.y(), along.x()) * (5 / n);
-        painter.drawLine(p - tick, p + tick);
-        painter.drawLine(q - tick, q + tick);
-    }
-    draw_reading(painter, q + QPointF(8, -6), ruler_text(a, b));
+namespace {
+
+DiagramColour measure_colour() {
+    return {kMeasureInk.red(), kMeasureInk.green(), kMeasureInk.blue()};
 }
 
-void paint_protractor(QPainter& painter, const DiagramView& view, const SectionArm& first,
-                      const std::optional<SectionArm>& second) {
-    painter.setPen(QPen(kMeasureInk, 3));
-    painter.drawLine(on_screen(view, first.a), on_screen(view, first.b));
-    if (!second) return;
-    painter.drawLine(on_screen(view, second->a), on_screen(view, second->b));
+void add_line(MeasureDrawing& d, std::vector<DiagramPoint> points, double width, double dash = 0) {
+    DiagramPath path;
+    path.points = std::move(points);
+    path.stroke = measure_colour();
+    path.width = width;
+    path.dash = dash;
+    d.paths.push_back(std::move(path));
+}
+
+void add_reading(MeasureDrawing& d, const DiagramPoint& at, double dx, double dy,
+                 const QString& text) {
+    DiagramText label;
+    label.at = at;
+    label.text = text.toStdString();
+    label.colour = measure_colour();
+    label.dx = dx;
+    label.dy = dy;
+    label.anchor = DiagramText::Anchor::Start;
+    d.labels.push_back(std::move(label));
+}
+
+}  // namespace
+
+MeasureDrawing ruler_drawing(const DiagramPoint& a, const DiagramPoint& b, double pixel) {
+    MeasureDrawing d;
+    add_line(d, {a, b}, 1.5);
+    const double n = std::hypot(b.z - a.z, b.y - a.y);
+    if (n > 0) {  // 5-pixel ticks across each end
+        const DiagramPoint tick{-(b.y - a.y) * (5 * pixel / n), (b.z - a.z) * (5 * pixel / n)};
+        for (const DiagramPoint& end : {a, b}) {
+            add_line(d, {{end.z - tick.z, end.y - tick.y}, {end.z + tick.z, end.y + tick.y}}, 1.5);
+        }
+    }
+    add_reading(d, b, 8, -6, ruler_text(a, b));
+    return d;
+}
+
+MeasureDrawing protractor_drawing(const SectionArm& first, const std::optional<SectionArm>& second,
+                                  double pixel) {
+    MeasureDrawing d;
+    add_line(d, {first.a, first.b}, 3);
+    if (!second) return d;
+    add_line(d, {second->a, second->b}, 3);
     const std::optional<DiagramPoint> vertex = arms_crossing(first, *second);
-    const double degrees = protractor_degrees(first, *second);
-    const QString reading = QString("%1°").arg(degrees, 0, 'f', 2);
+    const QString reading = QString("%1°").arg(protractor_degrees(first, *second), 0, 'f', 2);
     if (!vertex) {
-        draw_reading(painter, on_screen(view, second->b) + QPointF(8, -6), reading);
-        return;
+        add_reading(d, second->b, 8, -6, reading);
+        return d;
     }
     // Each arm's line extended (dashed) to the vertex, from its nearer end.
-    QPen dashed(kMeasureInk, 1, Qt::DashLine);
-    painter.setPen(dashed);
-    const QPointF at = on_screen(view, *vertex);
     for (const SectionArm* arm : {&first, &*second}) {
-        const QPointF a = on_screen(view, arm->a), b = on_screen(view, arm->b);
-        const auto gap = [&](const QPointF& p) {
-            return std::hypot(p.x() - at.x(), p.y() - at.y());
+        const auto gap = [&](const DiagramPoint& p) {
+            return std::hypot(p.z - vertex->z, p.y - vertex->y);
         };
-        painter.drawLine(at, gap(a) < gap(b) ? a : b);
+        add_line(d, {*vertex, gap(arm->a) < gap(arm->b) ? arm->a : arm->b}, 1, 4);
     }
     // The arc from the first arm's direction (continued past the vertex for a ray, so it
-    // shows the turn) to the second's, the short way round.
-    const double radius = 36;
-    const double from = arm_angle(first) * kRadiansToDegrees;
-    double span = arm_angle(*second) * kRadiansToDegrees - from;
-    span = std::remainder(span, 360.0);
+    // shows the turn) to the second's, the short way round, 36 pixels out.
+    const double radius_px = 36;
+    const double from = arm_angle(first);
+    double span = std::remainder(arm_angle(*second) - from, 2 * std::numbers::pi);
     if (!first.directed || !second->directed) {
-        if (span > 90) span -= 180;
-        if (span < -90) span += 180;
+        if (span > std::numbers::pi / 2) span -= std::numbers::pi;
+        if (span < -std::numbers::pi / 2) span += std::numbers::pi;
     }
-    painter.setPen(QPen(kMeasureInk, 1.5));
-    const QRectF circle(at - QPointF(radius, radius), QSizeF(2 * radius, 2 * radius));
-    // Qt's angles run counter-clockwise on screen, as the plane's do with v up.
-    painter.drawArc(circle, int(std::lround(from * 16)), int(std::lround(span * 16)));
-    draw_reading(painter, at + QPointF(radius + 6, -radius / 2), reading);
+    constexpr int kArcSteps = 48;
+    std::vector<DiagramPoint> arc;
+    for (int i = 0; i <= kArcSteps; ++i) {
+        const double angle = from + span * i / kArcSteps;
+        arc.push_back({vertex->z + radius_px * pixel * std::cos(angle),
+                       vertex->y + radius_px * pixel * std::sin(angle)});
+    }
+    add_line(d, std::move(arc), 1.5);
+    add_reading(d, *vertex, radius_px + 6, -radius_px / 2, reading);
+    return d;
+}
+
+void paint_measure(QPainter& painter, const DiagramView& view, const MeasureDrawing& drawing) {
+    painter.setBrush(Qt::NoBrush);
+    for (const DiagramPath& path : drawing.paths) {
+        QPen pen(kMeasureInk, path.width);
+        if (path.dash > 0) pen.setDashPattern({path.dash / path.width, path.dash / path.width});
+        painter.setPen(pen);
+        QPolygonF line;
+        for (const DiagramPoint& p : path.points) line << on_screen(view, p);
+        painter.drawPolyline(line);
+    }
+    for (const DiagramText& label : drawing.labels) {
+        draw_reading(painter, on_screen(view, label.at) + QPointF(label.dx, label.dy),
+                     QString::fromStdString(label.text));
+    }
 }
 
 }  // namespace lenslab::gui

@@ -7,6 +7,7 @@
 #include <QPainter>
 #include <QString>
 #include <optional>
+#include <vector>
 
 #include "analysis/figures/ray_diagram.h"
 
@@ -34,12 +35,20 @@ std::optional<DiagramPoint> arms_crossing(const SectionArm& first, const Section
 // The ruler's text: its length in the scene's units and its angle from the horizontal.
 QString ruler_text(const DiagramPoint& a, const DiagramPoint& b);
 
-// Paints the ruler from a to b, placed by `view`.
-void paint_ruler(QPainter& painter, const DiagramView& view, const DiagramPoint& a,
-                 const DiagramPoint& b);
-// Paints the protractor's arms (the second may be missing while it waits for a click), their
-// lines extended to where they cross, the arc between them there and the reading.
-void paint_protractor(QPainter& painter, const DiagramView& view, const SectionArm& first,
-                      const std::optional<SectionArm>& second);
+// The measurements as a drawing in the plane, which the view paints and the SVG export
+// writes: `pixel` is one pixel's length in the plane (ticks, the arc and the readings' offsets
+// keep their size on screen).
+struct MeasureDrawing {
+    std::vector<DiagramPath> paths;
+    std::vector<DiagramText> labels;
+};
+// The ruler from a to b: its line, a tick across each end and the reading.
+MeasureDrawing ruler_drawing(const DiagramPoint& a, const DiagramPoint& b, double pixel);
+// The protractor's arms (the second may be missing while it waits for a click), their lines
+// extended to where they cross, the arc between them there and the reading.
+MeasureDrawing protractor_drawing(const SectionArm& first, const std::optional<SectionArm>& second,
+                                  double pixel);
+// Paints a drawing placed by `view`, the readings on white boxes so they read over rays.
+void paint_measure(QPainter& painter, const DiagramView& view, const MeasureDrawing& drawing);
 
 }  // namespace lenslab::gui

@@ -292,11 +292,22 @@ void SectionWidget::paintEvent(QPaintEvent*) {
         painter.setPen(QPen(QColor(255, 140, 0, 110), 7, Qt::SolidLine, Qt::RoundCap));
         painter.drawPolyline(line);
     }
-    if (m_ruler_from && m_ruler_to) paint_ruler(painter, view, *m_ruler_from, *m_ruler_to);
+    paint_measure(painter, view, measurements());
+}
+
+MeasureDrawing SectionWidget::measurements() const {
+    const double pixel = 1 / placement().scale;
+    MeasureDrawing all;
+    const auto add = [&all](MeasureDrawing d) {
+        all.paths.insert(all.paths.end(), d.paths.begin(), d.paths.end());
+        all.labels.insert(all.labels.end(), d.labels.begin(), d.labels.end());
+    };
+    if (m_ruler_from && m_ruler_to) add(ruler_drawing(*m_ruler_from, *m_ruler_to, pixel));
     if (!m_arms.empty()) {
-        paint_protractor(painter, view, m_arms[0],
-                         m_arms.size() > 1 ? std::optional(m_arms[1]) : std::nullopt);
+        add(protractor_drawing(m_arms[0],
+                               m_arms.size() > 1 ? std::optional(m_arms[1]) : std::nullopt, pixel));
     }
+    return all;
 }
 
 void SectionWidget::mousePressEvent(QMouseEvent* event) {
@@ -411,7 +422,11 @@ void SectionWidget::wheelEvent(QWheelEvent* event) {
 }
 
 bool SectionWidget::export_svg(const QString& path, QString* error) const {
-    const std::string svg = ray_diagram_svg(m_diagram);
+    RayDiagram drawing = m_diagram;  // with the ruler and protractor laid on it
+    const MeasureDrawing measures = measurements();
+    drawing.paths.insert(drawing.paths.end(), measures.paths.begin(), measures.paths.end());
+    drawing.labels.insert(drawing.labels.end(), measures.labels.begin(), measures.labels.end());
+    const std::string svg = ray_diagram_svg(drawing);
     QSaveFile out(path);
     if (out.open(QIODevice::WriteOnly) &&
         out.write(svg.data(), qint64(svg.size())) == qint64(svg.size()) && out.commit())

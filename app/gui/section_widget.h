@@ -52,6 +52,8 @@ public:
     // Where the drawing is placed now (kept from the press while dragging), and where a
     // point of the plane is drawn, in widget pixels.
     DiagramView placement() const;
+    // The ruler and protractor as laid, as drawing in the plane.
+    MeasureDrawing measurements() const;
     QPointF to_widget(const DiagramPoint& p) const;
 
     // The ray last clicked (an index into section().rays, -1 for none) and its read-out.

@@ -6,35 +6,25 @@
 
 #include <pybind11/pybind11.h>
 
-#include <atomic>
 #include <chrono>
 #include <functional>
-#include <future>
 
-#include "render/render_control.h"
+#include "render/background_work.h"
 
 namespace lenslab::python {
 
 // How often the calling thread looks at the work: Ctrl-C answers within about this.
 constexpr auto kPollInterval = std::chrono::milliseconds(20);
 
-// Work running on its own thread. Destroying it while the work runs (an exception in the
-// caller) cancels the work and waits for it, so it never outlives what it reads.
+// Work running on its own thread (render/background_work.h). Destroying it while the work
+// runs (an exception in the caller) cancels the work and waits for it, the GIL released.
 template <class Result>
 class BackgroundJob {
 public:
-    // `work` is called on the new thread with the job's RenderControl; it must keep what it
-    // reads alive until the job ends (the job's owner holds it).
-    explicit BackgroundJob(std::function<Result(RenderControl&)> work)
-        : m_work(std::move(work)),
-          m_control([this](double fraction) { m_progress.store(fraction); }) {
-        m_result = std::async(std::launch::async, [this] { return m_work(m_control); });
-    }
+    explicit BackgroundJob(std::function<Result(RenderControl&)> work) : m_work(std::move(work)) {}
     ~BackgroundJob() {
-        if (!m_result.valid()) return;
-        m_control.cancel();
         pybind11::gil_scoped_release unlocked;
-        m_result.wait();
+        m_work.stop();
     }
     BackgroundJob(const BackgroundJob&) = delete;
     BackgroundJob& operator=(const BackgroundJob&) = delete;
@@ -48,9 +38,9 @@ public:
         for (bool done = false; !done;) {
             {
                 pybind11::gil_scoped_release unlocked;
-                done = m_result.wait_for(kPollInterval) == std::future_status::ready;
+                done = m_work.wait_for(kPollInterval);
             }
-            const double fraction = m_progress.load();
+            const double fraction = m_work.progress();
             if (!progress.is_none() && fraction != reported) {
                 reported = fraction;
                 progress(fraction);
@@ -58,15 +48,12 @@ public:
             // Runs Python's SIGINT handler on the main thread: KeyboardInterrupt on Ctrl-C.
             if (!done && PyErr_CheckSignals() != 0) throw pybind11::error_already_set();
         }
-        return m_result.get();
+        return m_work.get();
     }
-    const RenderControl& control() const { return m_control; }
+    const RenderControl& control() const { return m_work.control(); }
 
 private:
-    std::function<Result(RenderControl&)> m_work;
-    std::atomic<double> m_progress{-1.0};
-    RenderControl m_control;
-    std::future<Result> m_result;
+    BackgroundWork<Result> m_work;
 };
 
 }  // namespace lenslab::python

@@ -5,7 +5,9 @@
 // reflection in a light pipe (beyond asin(1/1.5) = 41.81°). With LENSLAB_LESSON_SCREENSHOTS
 // set to a folder, each writes the window's picture there (docs/images/lesson_*.png).
 
+#include <QFile>
 #include <QPlainTextEdit>
+#include <QTemporaryDir>
 #include <QToolButton>
 #include <QtTest>
 #include <cmath>
@@ -87,6 +89,16 @@ private slots:
                  qPrintable(QString("%1 vs %2").arg(*reading).arg(traced)));
         QVERIFY(std::abs(traced - 37.18) < 0.02);  // Hecht's minimum deviation, the scene's
         save_lesson_picture(w, "lesson_prism.png");
+        // The exported drawing carries the protractor: its arms, arc and reading.
+        QTemporaryDir dir;
+        QString error;
+        QVERIFY2(view->export_svg(dir.filePath("prism.svg"), &error), qPrintable(error));
+        QFile svg(dir.filePath("prism.svg"));
+        QVERIFY(svg.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(svg.readAll());
+        QVERIFY2(text.contains(QString("%1°").arg(*reading, 0, 'f', 2)),
+                 qPrintable(text.right(600)));
+        QVERIFY(text.contains("#7828a0"));  // the measuring ink
 
         // Step 4: with Move, turn the prism (Shift and drag): the protractor's arms follow the
         // beam's first and last legs, and the deviation grows from its minimum.
