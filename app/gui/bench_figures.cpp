@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "analysis/report/lens_report.h"
 #include "optics/glass.h"
 #include "util/error.h"
+#include "util/number_list.h"
 
 namespace lenslab::gui {
 
@@ -93,21 +93,12 @@ BenchFigures compute_bench_figures(const OpticalSystem& system, const BenchSetti
     return out;
 }
 
-std::optional<std::vector<double>> parse_number_list(const std::string& text) {
-    std::vector<double> values;
-    std::stringstream parts(text);
-    std::string part;
-    while (std::getline(parts, part, ',')) {
-        if (part.find_first_not_of(" \t") == std::string::npos) continue;
-        std::size_t used = 0;
-        try {
-            values.push_back(std::stod(part, &used));
-        } catch (const std::exception&) {
-            return std::nullopt;
-        }
-        if (part.find_first_not_of(" \t", used) != std::string::npos) return std::nullopt;
+std::optional<std::vector<double>> number_list(const std::string& text) {
+    try {
+        return parse_number_list(text);
+    } catch (const std::invalid_argument&) {
+        return std::nullopt;
     }
-    return values;
 }
 
 }  // namespace lenslab::gui

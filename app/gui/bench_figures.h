@@ -50,7 +50,7 @@ struct BenchFigures {
 // Throws lenslab::Error when the first-order block cannot be set up (a bad stop, say).
 BenchFigures compute_bench_figures(const OpticalSystem& system, const BenchSettings& settings);
 
-// "0, 10.5, 14" → {0, 10.5, 14}; none when a part is not a number.
-std::optional<std::vector<double>> parse_number_list(const std::string& text);
+// "0, 10.5, 14" → {0, 10.5, 14} (util/number_list.h); none when a part is not a number.
+std::optional<std::vector<double>> number_list(const std::string& text);
 
 }  // namespace lenslab::gui

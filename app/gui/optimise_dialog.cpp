@@ -98,9 +98,9 @@ OptimiseDialog::~OptimiseDialog() {
 OptimiseChoices OptimiseDialog::choices() const {
     OptimiseChoices c;
     c.efl_target = m_efl->value();
-    c.fields = parse_number_list(m_fields->text().toStdString()).value_or(std::vector<double>{});
+    c.fields = number_list(m_fields->text().toStdString()).value_or(std::vector<double>{});
     c.wavelengths =
-        parse_number_list(m_wavelengths->text().toStdString()).value_or(std::vector<double>{});
+        number_list(m_wavelengths->text().toStdString()).value_or(std::vector<double>{});
     c.epd = m_epd->value();
     c.stop = m_stop->value();
     c.vary_curvatures = m_curvatures->isChecked();

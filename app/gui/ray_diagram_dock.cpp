@@ -182,8 +182,8 @@ OptimiseChoices RayDiagramDock::optimise_defaults() const {
     c.efl_target = m_efl;
     c.epd = m_epd->value() > 0 ? m_epd->value() : m_pupil;
     c.stop = m_stop->value();
-    c.fields = parse_number_list(m_fields->text().toStdString()).value_or(c.fields);
-    c.wavelengths = parse_number_list(m_wavelengths->text().toStdString()).value_or(c.wavelengths);
+    c.fields = number_list(m_fields->text().toStdString()).value_or(c.fields);
+    c.wavelengths = number_list(m_wavelengths->text().toStdString()).value_or(c.wavelengths);
     return c;
 }
 
@@ -193,8 +193,8 @@ void RayDiagramDock::schedule_bench() {
 }
 
 bool RayDiagramDock::read_settings(QString& error) {
-    const auto fields = parse_number_list(m_fields->text().toStdString());
-    const auto wavelengths = parse_number_list(m_wavelengths->text().toStdString());
+    const auto fields = number_list(m_fields->text().toStdString());
+    const auto wavelengths = number_list(m_wavelengths->text().toStdString());
     if (!fields) {
         error = tr("Fields: numbers in degrees, comma-separated");
         return false;

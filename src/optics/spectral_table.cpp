@@ -8,6 +8,7 @@
 #include "optics/smooth_spectrum.h"
 #include "optics/spectrum.h"
 #include "util/format_number.h"
+#include "util/number_list.h"
 
 namespace lenslab {
 
@@ -67,38 +68,22 @@ nlohmann::ordered_json spectral_columns(const std::vector<SpectralRow>& rows, bo
 }
 
 std::vector<double> parse_wavelength_list(const std::string& text) {
-    const auto number = [&text](const std::string& part) {
-        size_t used = 0;
-        double v = 0;
-        try {
-            v = std::stod(part, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used == 0 || used != part.size() || !std::isfinite(v)) {
-            throw std::invalid_argument("'" + text + "': '" + part +
-                                        "' is not a number (give A,B,C or START:END:STEP)");
-        }
-        return v;
-    };
-    std::vector<std::string> parts;
     const char separator = text.find(':') != std::string::npos ? ':' : ',';
-    size_t from = 0;
-    while (true) {
-        const size_t at = text.find(separator, from);
-        parts.push_back(text.substr(from, at - from));
-        if (at == std::string::npos) break;
-        from = at + 1;
+    std::vector<double> parts;
+    try {
+        parts = parse_number_list(text, separator);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string(e.what()) + " (give A,B,C or START:END:STEP)");
     }
-    std::vector<double> out;
-    if (separator == ',') {
-        for (const std::string& p : parts) out.push_back(number(p));
-        return out;
+    if (parts.empty()) {
+        throw std::invalid_argument("'" + text +
+                                    "': no wavelength given (give A,B,C or START:END:STEP)");
     }
+    if (separator == ',') return parts;
     if (parts.size() != 3) {
         throw std::invalid_argument("'" + text + "': a range is START:END:STEP");
     }
-    const double start = number(parts[0]), end = number(parts[1]), step = number(parts[2]);
+    const double start = parts[0], end = parts[1], step = parts[2];
     if (!(step > 0) || end < start) {
         throw std::invalid_argument("'" + text +
                                     "': a range needs END >= START and a STEP above 0");
@@ -107,6 +92,7 @@ std::vector<double> parse_wavelength_list(const std::string& text) {
     if (count > 10000) {
         throw std::invalid_argument("'" + text + "': more than 10000 wavelengths");
     }
+    std::vector<double> out;
     for (int i = 0; i < static_cast<int>(count); ++i) out.push_back(start + i * step);
     return out;
 }

@@ -20,6 +20,7 @@ using namespace std::chrono_literals;
 
 TEST(BackgroundWork, ARenderRunsToTheEndWhileThePollerReadsItsProgress) {
     Scene scene = default_scene();
+    scene.render.integrator = "whitted";  // no photon pass: seconds under ThreadSanitizer
     scene.render.width = 48;
     scene.render.height = 32;
     scene.render.spp = 2;
@@ -39,6 +40,7 @@ TEST(BackgroundWork, ARenderRunsToTheEndWhileThePollerReadsItsProgress) {
 
 TEST(BackgroundWork, DestroyedPartWayItCancelsTheRenderAndWaitsForIt) {
     Scene scene = default_scene();
+    scene.render.integrator = "whitted";
     scene.render.width = 640;
     scene.render.height = 480;
     scene.render.spp = 64;  // far more than the test waits for

@@ -1,0 +1,15 @@
+#pragma once
+// A list of numbers as a person types it ("0, 5, 10"): the editor's field and wavelength
+// boxes, `lenslab spectra --wavelengths`.
+
+#include <string>
+#include <vector>
+
+namespace lenslab {
+
+// The numbers of `text` split at `separator`, spaces around each ignored and blank parts
+// skipped ("0, 5," is 0 and 5; "" is none). Throws std::invalid_argument
+// "'TEXT': 'PART' is not a number" for a part that is not one finite number.
+std::vector<double> parse_number_list(const std::string& text, char separator = ',');
+
+}  // namespace lenslab
