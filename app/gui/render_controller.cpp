@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "image/image_io.h"
+#include "render/dispersion_split.h"
 #include "render/integrator_names.h"
 #include "render/progressive_render.h"
 #include "scene/render_tone_map.h"
@@ -93,15 +94,17 @@ Film RenderController::last_film() const {
     return m_last;
 }
 
-void RenderController::render_preview(Scene& scene) {
+void RenderController::render_preview(Scene& scene, bool spectrum_held) {
     RenderSettings& s = scene.render;
     const int limit = std::max(1, m_preview_size / kDraftDivisor);
     // photon_map traces its photons whatever the size, as does sppm given its photon count.
     const bool scales = s.integrator != integrators::kPhotonMap &&
                         !(s.integrator == integrators::kSppm && s.pass_photons > 0);
-    if (!scales || std::max(s.width, s.height) <= limit) return;
+    if (!spectrum_held && (!scales || std::max(s.width, s.height) <= limit)) return;
     const int width = s.width, height = s.height;
-    const double scale = double(limit) / std::max(width, height);
+    const std::string integrator = s.integrator;
+    if (spectrum_held) s.integrator = integrators::kWhitted;
+    const double scale = std::min(1.0, double(limit) / std::max(width, height));
     s.width = std::max(1, int(std::lround(width * scale)));
     s.height = std::max(1, int(std::lround(height * scale)));
     RenderControl control;
@@ -113,6 +116,7 @@ void RenderController::render_preview(Scene& scene) {
     }
     s.width = width;
     s.height = height;
+    s.integrator = integrator;
 }
 
 bool RenderController::resume() {
@@ -166,22 +170,33 @@ void RenderController::run() {
         clock.start();
         RenderEnd end = RenderEnd::Restarted;
         int passes = 0;
-        // Stopped (not replaced, not closing): report it, keep the render and wait; true when
-        // resume() asks for more passes.
-        const auto stopped_and_resumed = [this](int done) {
-            {
-                const std::lock_guard lock(m_mutex);
-                if (!m_stop || m_job || m_quit) return false;
-            }
+        // Stop was asked for (not a newer scene, not the editor closing).
+        const auto stop_asked = [this] {
+            const std::lock_guard lock(m_mutex);
+            return m_stop && !m_job && !m_quit;
+        };
+        // Stopped: report it, keep the render and wait; true when resume() asks for more
+        // passes.
+        const auto stopped_and_resumed = [&](int done) {
+            if (!stop_asked()) return false;
             emit rendering_changed(false);
             emit render_ended(RenderEnd::Stopped, done);
             if (!wait_for_resume()) return false;
             emit rendering_changed(true);
             return true;
         };
+        const bool spectrum_held =
+            scene.render.integrator == integrators::kSppm && dispersion_samples(scene) > 1;
+        const int first_shown = spectrum_held ? kSpectrumPasses : 1;
         try {
-            render_preview(scene);
+            render_preview(scene, spectrum_held);
             ProgressiveRender render(scene);
+            const auto show = [&](const Film& film) {
+                const double seconds = clock.elapsed() / 1000.0;
+                emit frame_ready(to_qimage(film, tone_map_for(scene.render)), render.passes(),
+                                 qint64(render.stats(seconds).photons), seconds,
+                                 QString::fromStdString(scene.render.integrator));
+            };
             while (render.passes() < m_max_passes) {
                 RenderControl control;
                 bool finished = false;
@@ -192,8 +207,12 @@ void RenderController::run() {
                     const ForgetControl forget{this};
                     finished = render.add_pass(control);
                 }
-                // Not begun, or cut short (its sums left as they were): after Stop, resumable.
+                // Not begun, or cut short (its sums left as they were): after Stop, resumable,
+                // showing what a held-back render has.
                 if (!finished) {
+                    if (render.passes() > 0 && render.passes() < first_shown && stop_asked()) {
+                        show(render.image());
+                    }
                     if (!stopped_and_resumed(passes)) break;
                     continue;
                 }
@@ -202,11 +221,8 @@ void RenderController::run() {
                     const std::lock_guard lock(m_mutex);
                     m_last = film;
                 }
-                const double seconds = clock.elapsed() / 1000.0;
                 passes = render.passes();
-                emit frame_ready(to_qimage(film, tone_map_for(scene.render)), passes,
-                                 qint64(render.stats(seconds).photons), seconds,
-                                 QString::fromStdString(scene.render.integrator));
+                if (passes >= first_shown || passes >= m_max_passes) show(film);
             }
             if (passes >= m_max_passes) end = RenderEnd::Converged;
         } catch (const std::exception& e) {

@@ -89,8 +89,10 @@ private:
     // editor closing (false).
     bool wait_for_resume();
     // Renders and emits the restart's draft preview of `scene` (the worker's own copy, its
-    // size restored after); skipped where a pass costs as much at any size.
-    void render_preview(Scene& scene);
+    // size and integrator restored after); skipped where a pass costs as much at any size.
+    // `spectrum_held`: sppm's first frames are held back (kSpectrumPasses), so the preview
+    // is whitted's, at any size.
+    void render_preview(Scene& scene, bool spectrum_held);
     // Clears m_control when the pass it points to ends, however it ends.
     struct ForgetControl {
         RenderController* owner;
@@ -101,6 +103,11 @@ private:
     std::optional<Scene> m_next;  // GUI thread only: the scene waiting for the debounce
     int m_preview_size;
     static constexpr int kDraftDivisor = 4;
+    // sppm follows one wavelength a pass where glass disperses (render/pass_wavelength.h, van
+    // der Corput over the passes), so one pass shows a dispersive lens purple or cyan: such a
+    // render's frames are shown from this many passes on, spread over the spectrum, after a
+    // colour-clean preview (whitted, its paths split over the spectrum).
+    static constexpr int kSpectrumPasses = 8;
     int m_max_passes = 256;
     bool m_use_scene_integrator = false;
 

@@ -23,7 +23,9 @@
 #include "main_window.h"
 #include "number_field.h"
 #include "property_panel.h"
+#include "render/progressive_render.h"
 #include "render_controller.h"
+#include "scene/scene_json.h"
 #include "scene_document.h"
 #include "scene_tree.h"
 #include "viewport.h"
@@ -85,6 +87,39 @@ struct FrameWidths {
         return false;
     }
 };
+
+// A ball of dense flint (N-SF11) filling the middle of the view, a grey floor seen through
+// it under a white light: in true colours, nearly grey.
+lenslab::Scene flint_ball_scene() {
+    return lenslab::parse_scene(R"({
+      "camera": {"position": [0, 0.6, -2.5], "look_at": [0, 0.6, -0.5], "fov": 30},
+      "render": {"width": 48, "height": 48, "spp": 1, "integrator": "sppm", "pass_photons": 20000},
+      "objects": [
+        {"type": "triangle", "vertices": [[-50, 0, -50], [-50, 0, 50], [50, 0, 50]], "material": {"color": 0.5}},
+        {"type": "triangle", "vertices": [[-50, 0, -50], [50, 0, 50], [50, 0, -50]], "material": {"color": 0.5}},
+        {"type": "sphere", "center": [0, 0.6, -0.5], "radius": 0.5,
+         "material": {"color": 1, "transparency": 1, "glass": "N-SF11"}}],
+      "lights": [{"type": "point", "position": [0, 2, 0.5], "power": 100}]})");
+}
+
+// How far a mean colour is from grey: the spread of its channels over their mean (0: grey;
+// 3: one channel alone).
+double tint(double r, double g, double b) {
+    return (std::max({r, g, b}) - std::min({r, g, b})) / ((r + g + b) / 3);
+}
+// The middle third's tint, where the floor is seen through the ball.
+double middle_tint(const QImage& image) {
+    double r = 0, g = 0, b = 0;
+    for (int y = image.height() / 3; y < 2 * image.height() / 3; ++y) {
+        for (int x = image.width() / 3; x < 2 * image.width() / 3; ++x) {
+            const QColor c = image.pixelColor(x, y);
+            r += c.redF();
+            g += c.greenF();
+            b += c.blueF();
+        }
+    }
+    return tint(r, g, b);
+}
 
 struct ShownWindow {
     MainWindow w;
@@ -365,6 +400,46 @@ private slots:
         const QPointF grip = s.v->handles()->arrow_grip(0);
         drag(s.v, grip, grip + QPointF(30, 0));
         QVERIFY(s.w.panel()->error_text().isEmpty());
+    }
+
+    // Finding of issue 41: sppm follows one wavelength a pass where glass disperses, so its
+    // first frames showed a dispersive lens purple or cyan. The view now shows a whitted preview
+    // (its paths split over the spectrum) and sppm's frames from its 8th pass on.
+    void a_dispersive_lens_first_shows_in_true_colours() {
+        const lenslab::Scene scene = flint_ball_scene();
+        {  // what one pass alone looks like: strongly tinted
+            lenslab::ProgressiveRender one(scene);
+            lenslab::RenderControl control;
+            QVERIFY(one.add_pass(control));
+            const lenslab::Film& film = one.image();
+            double r = 0, g = 0, b = 0;
+            for (int y = 16; y < 32; ++y) {
+                for (int x = 16; x < 32; ++x) {
+                    r += film.at(x, y).r;
+                    g += film.at(x, y).g;
+                    b += film.at(x, y).b;
+                }
+            }
+            QVERIFY2(tint(r, g, b) > 1, qPrintable(QString::number(tint(r, g, b))));
+        }
+        lenslab::gui::RenderController renderer(nullptr, 48);
+        renderer.set_use_scene_integrator(true);
+        renderer.set_max_passes(8);
+        std::vector<std::pair<int, QImage>> frames;
+        QImage preview;
+        QObject::connect(&renderer, &lenslab::gui::RenderController::preview_ready, &renderer,
+                         [&](const QImage& image) { preview = image; });
+        QObject::connect(
+            &renderer, &lenslab::gui::RenderController::frame_ready, &renderer,
+            [&](const QImage& image, int passes) { frames.emplace_back(passes, image); });
+        renderer.restart(scene, 0);
+        QTRY_VERIFY_WITH_TIMEOUT(!frames.empty(), 60000);
+        QCOMPARE(frames.front().first, 8);  // no frame before the 8th pass
+        QVERIFY(!preview.isNull());
+        QVERIFY2(middle_tint(preview) < 0.1, qPrintable(QString::number(middle_tint(preview))));
+        // 0.12 measured (one pass alone: 2 or more, one channel nearly alone)
+        QVERIFY2(middle_tint(frames.front().second) < 0.2,
+                 qPrintable(QString::number(middle_tint(frames.front().second))));
     }
 };
 
