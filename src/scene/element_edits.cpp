@@ -122,7 +122,13 @@ json floor_under(const Scene& built, const json& scene) {
 
 json with_atmosphere(const json& scene) {
     json edited = scene;
-    if (!edited.contains("atmosphere")) edited["atmosphere"] = medium_spec().example;
+    if (edited.contains("atmosphere")) return edited;
+    edited["atmosphere"] = medium_spec().example;
+    json& render = edited["render"];
+    if (render.is_null()) render = json::object();
+    if (render.value("volume_neighbours", 0) == 0) {
+        render["volume_neighbours"] = kAtmosphereVolumeNeighbours;
+    }
     return edited;
 }
 

@@ -136,6 +136,10 @@ TEST(ElementEdits, AnAtmosphereIsAddedOnce) {
     const json foggy = with_atmosphere(scene);
     ASSERT_TRUE(foggy.contains("atmosphere"));
     EXPECT_NO_THROW(scene_from_json(foggy));
+    EXPECT_EQ(foggy["render"]["volume_neighbours"], kAtmosphereVolumeNeighbours);
+    json chosen = scene;
+    chosen["render"]["volume_neighbours"] = 4;
+    EXPECT_EQ(with_atmosphere(chosen)["render"]["volume_neighbours"], 4);
     json own = scene;
     own["atmosphere"] = {{"scattering", 0.5}};
     EXPECT_EQ(with_atmosphere(own)["atmosphere"], own["atmosphere"]);
