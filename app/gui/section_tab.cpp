@@ -37,7 +37,7 @@ SectionTab::SectionTab(SceneDocument* document, QWidget* parent)
     plane->addItem(tr("Lens's axis"), int(SectionPlaneChoice::Default));
     plane->addItem(tr("x-y plane"), int(SectionPlaneChoice::XY));
     plane->addItem(tr("y-z plane"), int(SectionPlaneChoice::YZ));
-    plane->addItem(tr("z-x (from above)"), int(SectionPlaneChoice::ZX));
+    plane->addItem(tr("z-x (top)"), int(SectionPlaneChoice::ZX));
     connect(plane, &QComboBox::currentIndexChanged, this, [this, plane](int index) {
         m_view->set_plane_choice(SectionPlaneChoice(plane->itemData(index).toInt()));
     });
@@ -75,6 +75,7 @@ SectionTab::SectionTab(SceneDocument* document, QWidget* parent)
     // window still fits a small or scaled screen.
     auto* bar = new QToolBar(this);
     bar->setObjectName("section_tool_bar");
+    bar->setMovable(false);  // in the tab's layout, not a main window's: no handle to drag
     bar->addWidget(plane);
     bar->addWidget(rays);
     bar->addWidget(fit_all);

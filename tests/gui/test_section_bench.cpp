@@ -8,6 +8,7 @@
 #include <QProcess>
 #include <QSpinBox>
 #include <QTemporaryDir>
+#include <QToolBar>
 #include <QToolButton>
 #include <QtTest>
 
@@ -204,6 +205,29 @@ private slots:
         QCOMPARE(image.size(), view->size());
         QVERIFY(!view->export_png(dir.filePath("missing/section.png"), &error));
         QVERIFY(error.contains("missing/section.png"));
+    }
+
+    // At the default window's size every control of the section's tool bar shows; none is
+    // folded into the bar's extension menu (Export... was, in the last trial).
+    void the_whole_tool_bar_shows_at_the_default_size() {
+        MainWindow w;
+        open_section(w, "prism.json");
+        auto* bar = w.findChild<QToolBar*>("section_tool_bar");
+        QVERIFY(bar);
+        QString widths;
+        for (QWidget* child : bar->findChildren<QWidget*>(Qt::FindDirectChildrenOnly)) {
+            if (child->objectName().startsWith("section_")) {
+                widths += QString(" %1 %2").arg(child->objectName()).arg(child->width());
+            }
+        }
+        widths += QString("; bar %1").arg(bar->width());
+        for (const char* name : {"section_plane", "section_rays", "section_fit_all",
+                                 "section_fit_selection", "section_tool_move", "section_tool_ruler",
+                                 "section_tool_protractor", "section_export"}) {
+            auto* control = bar->findChild<QWidget*>(name);
+            QVERIFY2(control, name);
+            QVERIFY2(control->isVisible(), qPrintable(name + widths));
+        }
     }
 };
 
