@@ -17,6 +17,7 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -134,6 +135,14 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_tree, &SceneTree::pointer_selected, m_detector_dock, &DetectorDock::show_pointer);
     connect(m_tree, &SceneTree::pointer_selected, m_section, &SectionWidget::show_pointer);
     connect(m_tree, &SceneTree::pointer_selected, m_viewport, &Viewport::show_pointer);
+    // The first figure asked for (spots, fans, ...) gets the room to show at a readable size:
+    // the dock grows to 45% of the window once; later sizes are the user's.
+    connect(m_ray_diagram->tabs(), &QTabWidget::currentChanged, this, [this](int tab) {
+        const int room = height() * 45 / 100;
+        if (tab == 0 || m_bench_grown || m_ray_diagram->height() >= room) return;
+        m_bench_grown = true;
+        resizeDocks({m_ray_diagram}, {room}, Qt::Vertical);
+    });
     connect(m_section, &SectionWidget::object_picked, this, [this](int object) {
         const int entry = object >= 0 ? m_document->scene().objects[object].source : -1;
         m_tree->select_pointer(entry >= 0 ? join_pointer("/objects", entry) : QString());

@@ -128,6 +128,7 @@ private:
     QLabel* m_status;
     QString m_render_status;
     bool m_render_status_error = false;
+    bool m_bench_grown = false;      // the bench dock grown once for its figures
     QDeadlineTimer m_message_shown;  // until when a message holds the status line
     QProgressBar* m_progress;
     QString m_integrator, m_frame_figures;  // of the last frame: "sppm", "photons N · 3.4 s"

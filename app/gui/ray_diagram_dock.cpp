@@ -4,6 +4,7 @@
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLineEdit>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTimer>
@@ -32,6 +33,15 @@ constexpr int kSpotRings = 8;
 // recomputes once, not per key.
 constexpr int kBenchDelayMs = 150;
 constexpr int kLayoutTab = 0;
+
+// `figure` in a scroll area: a dock too small for it at a readable size scrolls it.
+QScrollArea* scrolled(BenchFigureView* figure) {
+    auto* area = new QScrollArea(figure->parentWidget());
+    area->setWidgetResizable(true);  // filled when larger than the figure's least size
+    area->setFrameShape(QFrame::NoFrame);
+    area->setWidget(figure);
+    return area;
+}
 
 // The spot tab's table: one line a field, then one a wavelength.
 QString spot_numbers_text(const SpotDiagrams& spots) {
@@ -104,14 +114,14 @@ RayDiagramDock::RayDiagramDock(SceneDocument* document, QWidget* parent)
     auto* spots = new QWidget(this);
     auto* spot_layout = new QHBoxLayout(spots);
     spot_layout->setContentsMargins(0, 0, 0, 0);
-    spot_layout->addWidget(m_spot_view, 1);
+    spot_layout->addWidget(scrolled(m_spot_view), 1);
     spot_layout->addWidget(m_spot_numbers, 0, Qt::AlignTop);
     m_tabs->setObjectName("bench_tabs");
     m_tabs->addTab(m_view, tr("Layout"));
     m_tabs->addTab(spots, tr("Spots"));
-    m_tabs->addTab(m_fan_view, tr("Fans"));
-    m_tabs->addTab(m_curve_view, tr("Field curves"));
-    m_tabs->addTab(m_mtf_view, tr("MTF"));
+    m_tabs->addTab(scrolled(m_fan_view), tr("Fans"));
+    m_tabs->addTab(scrolled(m_curve_view), tr("Field curves"));
+    m_tabs->addTab(scrolled(m_mtf_view), tr("MTF"));
     m_tabs->addTab(m_psf_view, tr("PSF"));
     m_tabs->addTab(m_wavefront_view, tr("Wavefront"));
     m_psf_view->setObjectName("bench_psf");

@@ -2,13 +2,17 @@
 // diagrams (the numbers of `lenslab analyze --spots` for the same settings), and the other
 // tabs draw their figures; the PSF and wavefront tabs compute theirs only while shown.
 
+#include <QAbstractScrollArea>
+#include <QApplication>
 #include <QComboBox>
 #include <QFile>
 #include <QFileInfo>
 #include <QLineEdit>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QWheelEvent>
 #include <QtTest>
+#include <cmath>
 
 #include "analysis/aberrations/spot_diagrams.h"
 #include "analysis/report/lens_report.h"
@@ -120,6 +124,65 @@ private slots:
         QVERIFY(QFileInfo(dir.filePath("spots.png")).size() > 1000);
         QVERIFY(!dock->spot_view()->export_to(dir.filePath("missing/spots.png"), &error));
         QVERIFY2(error.contains("missing"), qPrintable(error));
+    }
+
+    // The trial's finding: at the default window size the dock drew the spot diagrams at a
+    // fifth of their size, text about 5 pixels high. Now each figure is drawn at least at
+    // BenchFigureView::kReadableZoom (the dock scrolls it), Ctrl+wheel zooms it, and a larger
+    // dock draws it larger.
+    void bench_figures_read_at_the_default_dock_size() {
+        using lenslab::gui::BenchFigureView;
+        MainWindow w;
+        QVERIFY(w.open_file(LENSLAB_SOURCE_DIR "/scenes/achromat_doublet.json"));
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* dock = w.ray_diagram();
+        w.tree()->select_pointer("/objects/1");
+        for (const int tab : {1, 2, 3, 4}) {  // Spots, Fans, Field curves, MTF
+            dock->tabs()->setCurrentIndex(tab);
+            QTRY_VERIFY(dock->bench().spots && dock->bench().fans && dock->bench().curves &&
+                        dock->bench().diffraction);
+        }
+        dock->tabs()->setCurrentIndex(1);
+        BenchFigureView* spots = dock->spot_view();
+        QTRY_VERIFY(spots->isVisible() && spots->figure().has_value());
+        // The first figure tab shown grew the dock to 45% of the window.
+        QVERIFY2(dock->height() >= w.height() * 45 / 100 - 2,
+                 qPrintable(QString("%1 of %2").arg(dock->height()).arg(w.height())));
+        if (qEnvironmentVariableIsSet("LENSLAB_BENCH_WINDOW")) {
+            QVERIFY(w.grab().save(qEnvironmentVariable("LENSLAB_BENCH_WINDOW")));
+        }
+        const auto* area = qobject_cast<QAbstractScrollArea*>(
+            spots->parentWidget() ? spots->parentWidget()->parentWidget() : nullptr);
+        QVERIFY(area);
+        // The dock shows part of the figure (it is taller than the dock) at a readable zoom.
+        QVERIFY2(spots->drawn_zoom() >= BenchFigureView::kReadableZoom - 1e-9,
+                 qPrintable(QString::number(spots->drawn_zoom())));
+        QVERIFY2(
+            area->viewport()->height() < spots->height(),
+            qPrintable(QString("%1 < %2").arg(area->viewport()->height()).arg(spots->height())));
+
+        // Ctrl+wheel: one notch in zooms by 1.25; out again, back.
+        const double before = spots->drawn_zoom();
+        const QPointF at(10, 10);
+        QWheelEvent in(at, spots->mapToGlobal(at), {}, {0, 120}, Qt::NoButton, Qt::ControlModifier,
+                       Qt::NoScrollPhase, false);
+        QApplication::sendEvent(spots, &in);
+        QTRY_VERIFY2(std::abs(spots->drawn_zoom() - 1.25 * before) < 0.01,
+                     qPrintable(QString::number(spots->drawn_zoom())));
+        QWheelEvent out(at, spots->mapToGlobal(at), {}, {0, -120}, Qt::NoButton,
+                        Qt::ControlModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(spots, &out);
+        QTRY_VERIFY2(std::abs(spots->drawn_zoom() - before) < 0.01,
+                     qPrintable(QString::number(spots->drawn_zoom())));
+
+        // Every figure tab at a readable zoom.
+        for (BenchFigureView* view : dock->findChildren<BenchFigureView*>()) {
+            if (!view->figure()) continue;
+            QVERIFY2(view->least_zoom() >= BenchFigureView::kReadableZoom,
+                     qPrintable(QString::fromStdString(view->figure()->title)));
+        }
     }
 
     // The PSF and wavefront tabs: computed only while shown (they cost the most), drawn as the

@@ -11,10 +11,14 @@ constexpr DiagramColour kCanvasInk{30, 30, 30};
 
 }  // namespace
 
-void draw_diagram(const RayDiagram& d, DiagramCanvas& canvas, double width, double min_height) {
-    // Height from the aspect at full width, so the drawing fills the picture's width.
+double diagram_height(const RayDiagram& d, double width, double min_height) {
+    // From the aspect at full width, so the drawing fills the picture's width.
     const double scale = (width - 2 * kMargin) / (d.z_max - d.z_min);
-    const double height = std::max(min_height, kTop + kBottom + (d.y_max - d.y_min) * scale);
+    return std::max(min_height, kTop + kBottom + (d.y_max - d.y_min) * scale);
+}
+
+void draw_diagram(const RayDiagram& d, DiagramCanvas& canvas, double width, double min_height) {
+    const double height = diagram_height(d, width, min_height);
     const DiagramView v = fit_diagram(d, width, height, kMargin, kTop, kBottom);
     canvas.begin(width, height);
     // Rays leaving a diverging lens run out of the frame: clip them to the diagram's box.

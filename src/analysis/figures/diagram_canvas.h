@@ -32,6 +32,9 @@ public:
     virtual void end() = 0;
 };
 
+// The height of the picture draw_diagram lays the diagram out in, `width` pixels wide.
+double diagram_height(const RayDiagram& diagram, double width, double min_height);
+
 // Lays the diagram out in a picture `width` pixels wide (its height from the diagram's
 // aspect, at least `min_height`) and draws it on `canvas`.
 void draw_diagram(const RayDiagram& diagram, DiagramCanvas& canvas, double width,
