@@ -185,8 +185,9 @@ void RenderController::run() {
             emit rendering_changed(true);
             return true;
         };
-        const bool spectrum_held =
-            scene.render.integrator == integrators::kSppm && dispersion_samples(scene) > 1;
+        // Held only where whitted can preview it: it renders no media.
+        const bool spectrum_held = scene.render.integrator == integrators::kSppm &&
+                                   dispersion_samples(scene) > 1 && !scene.has_media();
         const int first_shown = spectrum_held ? kSpectrumPasses : 1;
         try {
             render_preview(scene, spectrum_held);
