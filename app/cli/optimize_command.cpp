@@ -7,7 +7,9 @@
 #include <memory>
 
 #include "commands.h"
+#include "optimize/lens_design_spec.h"
 #include "optimize/optimize_report.h"
+#include "render_overrides.h"
 #include "util/atomic_file.h"
 #include "util/scene_error.h"
 
@@ -70,10 +72,11 @@ Action add_optimize_command(CLI::App& app) {
     cmd->add_option("-o,--output", args->output,
                     "Write the optimised system here (the scene file with the new values)")
         ->required();
+    const ParamSpec& iterations = lens_design_spec().param("iterations");
     cmd->add_option("--iterations", args->iterations,
-                    "Most iterations of the solver (default: the design's `iterations`, else 100)")
-        ->check(whole_number<int>())
-        ->check(CLI::NonNegativeNumber);
+                    "Most iterations of the solver (default: the design's `iterations`, else " +
+                        iterations.fallback.dump() + ")")
+        ->check(declared_check(iterations));
     cmd->add_flag("--json", args->json, "Print the before/after report as JSON");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
     return [args] { return run_optimize(*args); };

@@ -58,8 +58,8 @@ std::string help_range(const ParamSpec& p) {
     return text;
 }
 
-// The declared check, run by CLI11 as the option is parsed: the same range_problem the
-// scene reader uses, so the option and the file refuse the same values in the same words.
+}  // namespace
+
 CLI::Validator declared_check(const ParamSpec& p) {
     return CLI::Validator(
         [&p](std::string& text) -> std::string {
@@ -77,8 +77,6 @@ CLI::Validator declared_check(const ParamSpec& p) {
         },
         help_range(p));
 }
-
-}  // namespace
 
 RenderOverrides::RenderOverrides(CLI::App& cmd, const std::vector<std::string>& keys)
     : m_patch(std::make_shared<json>(json::object())) {

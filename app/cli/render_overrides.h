@@ -11,9 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "scene/param_spec.h"
 #include "scene/scene.h"
 
 namespace lenslab::cli {
+
+// The declared check of a parameter's option, run by CLI11 as the option is parsed: the same
+// range_problem the scene (or design) reader uses, so the option and the file refuse the same
+// values in the same words. `p` must outlive the option (a static declaration).
+CLI::Validator declared_check(const ParamSpec& p);
 
 class RenderOverrides {
 public:

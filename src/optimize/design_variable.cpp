@@ -1,8 +1,10 @@
 #include "optimize/design_variable.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "math/vec3.h"
+#include "optimize/lens_design_spec.h"
 #include "scene/json_reader.h"
 
 namespace lenslab {
@@ -194,36 +196,14 @@ int find_design_lens(const ojson& scene, const std::string& name, const std::str
 
 DesignVariable read_design_variable(const nlohmann::json& spec, const std::string& path,
                                     const ojson& scene) {
-    JsonObjectReader reader(spec, path, {"type", "lens", "surface", "order"}, "a variable");
+    JsonObjectReader reader(spec, path, entry_keys(variable_types()), "a variable");
+    const DesignEntryType<VariableKind>& type =
+        read_entry_type(spec, reader, variable_types(), "variable");
     DesignVariable v;
     v.path = path;
-    if (!reader.has("type")) throw_missing_key(spec, path, "type");
-    const std::string type = reader.choice(
-        "type", "", {"curvature", "conic", "aspheric", "thickness", "air_gap", "image_distance"});
-    const std::vector<std::pair<const char*, VariableKind>> kinds = {
-        {"curvature", VariableKind::Curvature}, {"conic", VariableKind::Conic},
-        {"aspheric", VariableKind::Aspheric},   {"thickness", VariableKind::Thickness},
-        {"air_gap", VariableKind::AirGap},      {"image_distance", VariableKind::ImageDistance}};
-    for (const auto& [name, kind] : kinds) {
-        if (type == name) v.kind = kind;
-    }
-    const bool needs_surface = v.kind == VariableKind::Curvature || v.kind == VariableKind::Conic ||
-                               v.kind == VariableKind::Aspheric;
-    if (v.kind == VariableKind::ImageDistance) {
-        for (const char* key : {"lens", "surface", "order"}) {
-            if (reader.has(key)) {
-                throw SceneError(reader.child_path(key),
-                                 "an image_distance variable takes no " + std::string(key));
-            }
-        }
-        return v;
-    }
-    if (!needs_surface && reader.has("surface")) {
-        throw SceneError(reader.child_path("surface"), "a " + type + " variable takes no surface");
-    }
-    if (v.kind != VariableKind::Aspheric && reader.has("order")) {
-        throw SceneError(reader.child_path("order"), "only an aspheric variable takes an order");
-    }
+    v.kind = type.kind;
+    if (type.keys.empty()) return v;  // the image distance: no lens
+    const bool needs_surface = std::count(type.keys.begin(), type.keys.end(), "surface") > 0;
     v.lens = reader.string("lens");
     v.object = find_design_lens(scene, v.lens, reader.child_path("lens"));
     const ojson& lens = scene["objects"][v.object];

@@ -7,8 +7,10 @@
 
 #include "analysis/system/optical_system.h"
 #include "optics/glass.h"
+#include "optimize/lens_design_spec.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
+#include "scene/spec_reader.h"
 
 namespace lenslab {
 
@@ -45,11 +47,7 @@ ojson ld_read_ordered(const std::string& file) {
 }  // namespace
 
 LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& base_dir) {
-    JsonObjectReader reader(root, "",
-                            {"description", "system", "stop", "epd", "f_number", "fields",
-                             "wavelengths", "weights", "rings", "image_distance", "variables",
-                             "operands", "iterations", "glass_choices", "glass_iterations"},
-                            "a design");
+    SpecReader reader(root, "", lens_design_spec());
     LensDesign d;
     const nlohmann::json& system = reader.require("system");
     if (system.is_string()) {
@@ -80,13 +78,18 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
                          d.system_file.empty() ? e.reason() : e.what());
     }
     const int surfaces = static_cast<int>(start.surfaces.size());
-    d.stop = static_cast<int>(reader.integer("stop", 1, 1, surfaces)) - 1;
+    const int64_t stop = reader.whole("stop");
+    if (stop > surfaces) {
+        throw SceneError("stop", "must be between 1 and " + std::to_string(surfaces) +
+                                     " (the system's surfaces), got " + std::to_string(stop));
+    }
+    d.stop = static_cast<int>(stop) - 1;
     if (reader.has("epd") && reader.has("f_number")) {
         throw SceneError("f_number", "give epd or f_number, not both");
     }
     if (!reader.has("epd") && !reader.has("f_number")) throw_missing_key(root, "", "epd");
-    d.epd = reader.positive("epd", 0.0);
-    d.f_number = reader.positive("f_number", 0.0);
+    d.epd = reader.real("epd");
+    d.f_number = reader.real("f_number");
     d.fields = ld_numbers(reader, "fields", [](double v) {
         return std::abs(v) < 90.0 ? "" : "not a field angle (between -90 and 90 degrees)";
     });
@@ -111,8 +114,8 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
                                  " wavelengths, " + std::to_string(d.weights.size()) + " weights");
         }
     }
-    d.rings = static_cast<int>(reader.integer("rings", 4, 1, 32));
-    d.iterations = static_cast<int>(reader.integer("iterations", 100, 0, 100000));
+    d.rings = static_cast<int>(reader.whole("rings"));
+    d.iterations = static_cast<int>(reader.whole("iterations"));
     if (const nlohmann::json* image = reader.find("image_distance")) {
         if (image->is_string()) {
             reader.choice("image_distance", "paraxial", {"paraxial"});
@@ -158,7 +161,7 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
                                                         d.scene, d.base_dir, d.wavelengths));
         }
     }
-    d.glass_iterations = static_cast<int>(reader.integer("glass_iterations", 20, 0, 100000));
+    d.glass_iterations = static_cast<int>(reader.whole("glass_iterations"));
     return d;
 }
 

@@ -3,27 +3,12 @@
 #include <algorithm>
 
 #include "optimize/design_variable.h"
+#include "optimize/lens_design_spec.h"
 #include "scene/json_reader.h"
 
 namespace lenslab {
 
 namespace {
-
-struct OperandName {
-    const char* name;
-    OperandKind kind;
-};
-
-constexpr OperandName kOperandNames[] = {
-    {"efl", OperandKind::Efl},
-    {"rms_spot", OperandKind::RmsSpot},
-    {"rms_wavefront", OperandKind::RmsWavefront},
-    {"mtf", OperandKind::Mtf},
-    {"min_center_thickness", OperandKind::MinCenterThickness},
-    {"max_center_thickness", OperandKind::MaxCenterThickness},
-    {"min_edge_thickness", OperandKind::MinEdgeThickness},
-    {"max_total_length", OperandKind::MaxTotalLength},
-};
 
 bool mo_is_minimum(OperandKind kind) {
     return kind == OperandKind::MinCenterThickness || kind == OperandKind::MinEdgeThickness;
@@ -43,8 +28,8 @@ bool is_constraint(const MeritOperand& op) {
 
 std::string operand_label(const MeritOperand& op) {
     std::string label;
-    for (const OperandName& n : kOperandNames) {
-        if (n.kind == op.kind) label = n.name;
+    for (const DesignEntryType<OperandKind>& t : operand_types()) {
+        if (t.kind == op.kind) label = t.type;
     }
     if (op.kind == OperandKind::Mtf)
         label += " " + format_number(op.frequency) + " " +
@@ -69,48 +54,26 @@ double operand_residual(const MeritOperand& op, double value) {
 std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const std::string& path,
                                               const nlohmann::ordered_json& scene,
                                               const std::vector<double>& fields) {
-    JsonObjectReader reader(
-        spec, path,
-        {"type", "target", "limit", "weight", "field", "lens", "frequency", "direction"},
-        "an operand");
-    if (!reader.has("type")) throw_missing_key(spec, path, "type");
-    std::vector<std::string> names;
-    for (const OperandName& n : kOperandNames) names.push_back(n.name);
-    const std::string type = reader.choice("type", "", names);
+    JsonObjectReader reader(spec, path, entry_keys(operand_types()), "an operand");
+    const DesignEntryType<OperandKind>& type =
+        read_entry_type(spec, reader, operand_types(), "operand");
     MeritOperand op;
     op.path = path;
-    for (const OperandName& n : kOperandNames) {
-        if (type == n.name) op.kind = n.kind;
-    }
+    op.kind = type.kind;
     op.weight = reader.number("weight", 1.0);
     if (!(op.weight >= 0)) {
         throw SceneError(reader.child_path("weight"),
                          "must be >= 0, got " + format_number(op.weight));
     }
-    const bool constraint = is_constraint(op);
-    const bool needs_lens = op.kind == OperandKind::MinCenterThickness ||
-                            op.kind == OperandKind::MaxCenterThickness ||
-                            op.kind == OperandKind::MinEdgeThickness;
-    if (constraint) {
-        if (reader.has("target")) {
-            throw SceneError(reader.child_path("target"),
-                             "a " + type + " constraint takes a limit, not a target");
-        }
+    const bool needs_lens = std::count(type.keys.begin(), type.keys.end(), "lens") > 0;
+    if (is_constraint(op)) {
         op.target = reader.number("limit");
     } else {
-        if (reader.has("limit")) {
-            throw SceneError(reader.child_path("limit"),
-                             "an " + type + " operand takes a target, not a limit");
-        }
         // The spot's and the wavefront's natural target is none at all, the MTF's a perfect 1;
         // the focal length has no default.
         op.target = op.kind == OperandKind::Efl   ? reader.number("target")
                     : op.kind == OperandKind::Mtf ? reader.number("target", 1.0)
                                                   : reader.number("target", 0.0);
-    }
-    if (!mo_takes_field(op.kind) && reader.has("field")) {
-        throw SceneError(reader.child_path("field"),
-                         "only an rms_spot, rms_wavefront or mtf operand takes a field");
     }
     if (op.kind == OperandKind::Mtf) {
         op.frequency = reader.number("frequency");
@@ -120,14 +83,6 @@ std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const 
                 "must be > 0 (cycles per unit length), got " + format_number(op.frequency));
         }
         op.direction = reader.choice("direction", "mean", {"tangential", "sagittal", "mean"});
-    } else {
-        for (const char* key : {"frequency", "direction"})
-            if (reader.has(key))
-                throw SceneError(reader.child_path(key),
-                                 std::string("only an mtf operand takes a ") + key);
-    }
-    if (!needs_lens && reader.has("lens")) {
-        throw SceneError(reader.child_path("lens"), "a " + type + " operand takes no lens");
     }
     if (needs_lens) {
         op.lens = reader.string("lens");

@@ -61,7 +61,8 @@ TEST(LensDesign, MistakesNameTheirJsonPath) {
               "operands[0].target: missing (required)");
     EXPECT_EQ(design_error(
                   {{"operands", {{{"type", "min_edge_thickness"}, {"lens", "A"}, {"target", 1}}}}}),
-              "operands[0].target: a min_edge_thickness constraint takes a limit, not a target");
+              "operands[0].target: a min_edge_thickness operand takes no target (it takes lens, "
+              "limit, weight)");
     EXPECT_EQ(design_error({{"operands", {{{"type", "efl"}, {"target", 50}, {"weight", -1}}}}}),
               "operands[0].weight: must be >= 0, got -1");
     EXPECT_EQ(design_error({{"operands", nlohmann::json::array()}}),

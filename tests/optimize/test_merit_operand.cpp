@@ -140,7 +140,8 @@ TEST(MeritOperand, MtfNeedsAFrequencyAndOthersTakeNone) {
               std::string::npos);
     EXPECT_NE(error_of({{"type", "mtf"}, {"frequency", 3}, {"direction", "diagonal"}}),
               std::string());
-    EXPECT_NE(error_of({{"type", "rms_spot"}, {"frequency", 3}}).find("only an mtf operand"),
+    EXPECT_NE(error_of({{"type", "rms_spot"}, {"frequency", 3}})
+                  .find("an rms_spot operand takes no frequency (it takes field, target, weight)"),
               std::string::npos);
 }
 

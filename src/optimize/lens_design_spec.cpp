@@ -1,0 +1,134 @@
+#include "optimize/lens_design_spec.h"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+namespace lenslab {
+
+namespace {
+
+// The most iterations a design (or --iterations) may ask for.
+constexpr int64_t kMostIterations = 100000;
+
+ElementSpec declare_design() {
+    ElementSpec s{"design", "a design", {}, {}};
+    s.params = {
+        string_param("description", "").describe("free text"),
+        nested_param(ParamKind::Object, "system")
+            .needed()
+            .as_written("string or object")
+            .describe("the lens system: a scene file (relative to the design file's folder) "
+                      "or a scene written inline"),
+        whole_param("stop", 1, 1, 1 << 20)
+            .describe("the aperture stop: a surface counted from 1 along the light"),
+        number_param("epd", 0).above(0).describe("entrance pupil diameter"),
+        number_param("f_number", 0)
+            .above(0)
+            .describe("instead of epd: the entrance pupil diameter is EFL / f_number"),
+        nested_param(ParamKind::Array, "fields")
+            .needed()
+            .as_written("array of angles")
+            .describe("field angles in degrees, the object at infinity"),
+        nested_param(ParamKind::Array, "wavelengths")
+            .as_written("array of nm")
+            .describe("the wavelengths in air (default: the F, d and C lines)"),
+        nested_param(ParamKind::Array, "weights")
+            .as_written("array of numbers >= 0")
+            .describe("one per wavelength, for the polychromatic spots (default: all equal)"),
+        whole_param("rings", 4, 1, 32).describe("rings of each spot's hexapolar grid"),
+        whole_param("iterations", 100, 0, kMostIterations)
+            .describe("the most iterations of the solver"),
+        nested_param(ParamKind::Number, "image_distance")
+            .as_written("number, or \"paraxial\"")
+            .describe("the image plane's distance from the last vertex, or the paraxial "
+                      "focus solved again at every step (the default)"),
+        nested_param(ParamKind::Array, "variables").needed().describe("what may change"),
+        nested_param(ParamKind::Array, "glass_choices")
+            .describe("glasses to choose among after the continuous optimisation"),
+        whole_param("glass_iterations", 20, 0, kMostIterations)
+            .describe("iterations of the brief re-optimisation with each glass tried"),
+        nested_param(ParamKind::Array, "operands").needed().describe("the merit function"),
+    };
+    return s;
+}
+
+}  // namespace
+
+const ElementSpec& lens_design_spec() {
+    static const ElementSpec spec = declare_design();
+    return spec;
+}
+
+const std::vector<DesignEntryType<VariableKind>>& variable_types() {
+    static const std::vector<DesignEntryType<VariableKind>> types = {
+        {"curvature", VariableKind::Curvature, {"lens", "surface"}},
+        {"conic", VariableKind::Conic, {"lens", "surface"}},
+        {"aspheric", VariableKind::Aspheric, {"lens", "surface", "order"}},
+        {"thickness", VariableKind::Thickness, {"lens"}},
+        {"air_gap", VariableKind::AirGap, {"lens"}},
+        {"image_distance", VariableKind::ImageDistance, {}},
+    };
+    return types;
+}
+
+const std::vector<DesignEntryType<OperandKind>>& operand_types() {
+    static const std::vector<DesignEntryType<OperandKind>> types = {
+        {"efl", OperandKind::Efl, {"target", "weight"}},
+        {"rms_spot", OperandKind::RmsSpot, {"field", "target", "weight"}},
+        {"rms_wavefront", OperandKind::RmsWavefront, {"field", "target", "weight"}},
+        {"mtf", OperandKind::Mtf, {"frequency", "direction", "field", "target", "weight"}},
+        {"min_center_thickness", OperandKind::MinCenterThickness, {"lens", "limit", "weight"}},
+        {"max_center_thickness", OperandKind::MaxCenterThickness, {"lens", "limit", "weight"}},
+        {"min_edge_thickness", OperandKind::MinEdgeThickness, {"lens", "limit", "weight"}},
+        {"max_total_length", OperandKind::MaxTotalLength, {"limit", "weight"}},
+    };
+    return types;
+}
+
+template <class Kind>
+std::vector<std::string> entry_keys(const std::vector<DesignEntryType<Kind>>& types) {
+    std::vector<std::string> keys = {"type"};
+    for (const DesignEntryType<Kind>& t : types) {
+        for (const std::string& k : t.keys) {
+            if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.push_back(k);
+        }
+    }
+    return keys;
+}
+
+template <class Kind>
+const DesignEntryType<Kind>& read_entry_type(const nlohmann::json& entry, JsonObjectReader& reader,
+                                             const std::vector<DesignEntryType<Kind>>& types,
+                                             const std::string& noun) {
+    std::vector<std::string> names;
+    for (const DesignEntryType<Kind>& t : types) names.push_back(t.type);
+    if (!reader.has("type")) throw_missing_key(entry, reader.path(), "type");
+    const std::string name = reader.choice("type", "", names);
+    const auto type = std::find_if(types.begin(), types.end(),
+                                   [&](const DesignEntryType<Kind>& t) { return t.type == name; });
+    for (const auto& item : entry.items()) {
+        const std::string& key = item.key();
+        if (key == "type" || std::count(type->keys.begin(), type->keys.end(), key)) continue;
+        std::string takes;
+        for (const std::string& k : type->keys) takes += (takes.empty() ? "" : ", ") + k;
+        // "an" before a vowel, and before rms and mtf as they are read (ar-em-es, em-tee-ef).
+        const bool an = std::string("aeiou").find(name[0]) != std::string::npos ||
+                        name.rfind("rms", 0) == 0 || name.rfind("mtf", 0) == 0;
+        throw SceneError(reader.child_path(key),
+                         (an ? "an " : "a ") + name + " " + noun + " takes no " + key +
+                             " (it takes " +
+                             (takes.empty() ? std::string("nothing but its type") : takes) + ")");
+    }
+    return *type;
+}
+
+template std::vector<std::string> entry_keys(const std::vector<DesignEntryType<VariableKind>>&);
+template std::vector<std::string> entry_keys(const std::vector<DesignEntryType<OperandKind>>&);
+template const DesignEntryType<VariableKind>& read_entry_type(
+    const nlohmann::json&, JsonObjectReader&, const std::vector<DesignEntryType<VariableKind>>&,
+    const std::string&);
+template const DesignEntryType<OperandKind>& read_entry_type(
+    const nlohmann::json&, JsonObjectReader&, const std::vector<DesignEntryType<OperandKind>>&,
+    const std::string&);
+
+}  // namespace lenslab
