@@ -8,4 +8,8 @@ namespace lenslab {
 
 std::string format_number(double v);
 
+// printf's formatting into a string of any length: the reports' aligned columns and the
+// figures' fixed-precision labels. The compiler checks the arguments against the format.
+std::string printf_text(const char* format, ...) __attribute__((format(printf, 1, 2)));
+
 }  // namespace lenslab

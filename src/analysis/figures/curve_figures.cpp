@@ -56,7 +56,7 @@ RayDiagram field_curves_figure(const FieldCurves& r, const std::string& unit,
     for (PlotPanel* p : {&focus, &distort}) {
         p->y_min = 0;
         p->y_max = max_field > 0 ? max_field : 1;
-        p->y_max_label = "field " + plot_text("%g ", max_field) + field_unit;
+        p->y_max_label = "field " + printf_text("%g ", max_field) + field_unit;
     }
     focus.x_min = -focus_range;
     focus.x_max = focus_range;
@@ -66,8 +66,8 @@ RayDiagram field_curves_figure(const FieldCurves& r, const std::string& unit,
     distort.x_min = -distortion_range;
     distort.x_max = distortion_range;
     distort.title = "distortion";
-    distort.x_min_label = plot_text("%.3g %%", -distortion_range);
-    distort.x_max_label = plot_text("%.3g %%", distortion_range);
+    distort.x_min_label = printf_text("%.3g %%", -distortion_range);
+    distort.x_max_label = printf_text("%.3g %%", distortion_range);
     for (const FieldCurve& c : r.curves) {
         PlotCurve tangential, sagittal, real;
         for (const FieldCurvePoint& p : c.points) {
@@ -88,7 +88,7 @@ RayDiagram field_curves_figure(const FieldCurves& r, const std::string& unit,
     draw_plot_panel(d, focus);
     draw_plot_panel(d, distort);
     d.legend = wavelength_legend(wavelengths);
-    d.title = "Field curves, image plane " + plot_text("%.4f", r.image_z) + " (system z)";
+    d.title = "Field curves, image plane " + printf_text("%.4f", r.image_z) + " (system z)";
     d.subtitle = "foci from the image plane along z, > 0 behind it";
     return d;
 }
@@ -103,14 +103,14 @@ RayDiagram focal_shift_figure(const FocalShift& s, const std::string& unit) {
     p.y_min = -range;
     p.y_max = range;
     p.title = "shift against wavelength";
-    p.x_min_label = plot_text("%g nm", p.x_min);
-    p.x_max_label = plot_text("%g nm", p.x_max);
+    p.x_min_label = printf_text("%g nm", p.x_min);
+    p.x_max_label = printf_text("%g nm", p.x_max);
     p.y_max_label = "+";
     p.y_max_label += plot_length(range, unit);
     p.curves.push_back({s.wavelengths, s.shift, kPlotInk, 0});
     draw_plot_panel(d, p);
     d.title = "Chromatic focal shift";
-    d.subtitle = "paraxial image position minus that at " + plot_text("%.2f nm", s.reference_nm);
+    d.subtitle = "paraxial image position minus that at " + printf_text("%.2f nm", s.reference_nm);
     return d;
 }
 
@@ -136,10 +136,10 @@ RayDiagram mtf_panel_figure(const std::vector<double>& frequencies,
     panel.y_min = 0;
     panel.y_max = 1;
     panel.title = std::move(title);
-    panel.x_min_label = plot_text("%g", 0.0);
+    panel.x_min_label = printf_text("%g", 0.0);
     panel.x_max_label =
-        plot_text("%.4g", panel.x_max) + " cycles/" + (unit.empty() ? "unit" : unit);
-    panel.y_max_label = plot_text("%g", 1.0);
+        printf_text("%.4g", panel.x_max) + " cycles/" + (unit.empty() ? "unit" : unit);
+    panel.y_max_label = printf_text("%g", 1.0);
     // Every MTF is 1 at frequency 0 (normalised): the curves start there.
     const auto from_zero = [](std::vector<double> v, double at_zero) {
         v.insert(v.begin(), at_zero);
@@ -175,8 +175,8 @@ RayDiagram mtf_figure(const DiffractionFigures& d, const std::string& unit) {
     return mtf_panel_figure(
         d.mtf.frequencies, d.mtf.diffraction_limit,
         {{kDiagramBlueF, "T solid, S dashed", d.mtf.tangential, d.mtf.sagittal}},
-        "MTF on axis, " + plot_text("%.1f nm", d.wavelength_nm) + ", Strehl " +
-            plot_text("%.3f", d.strehl),
+        "MTF on axis, " + printf_text("%.1f nm", d.wavelength_nm) + ", Strehl " +
+            printf_text("%.3f", d.strehl),
         unit);
 }
 
@@ -186,7 +186,7 @@ RayDiagram field_mtf_figure(const FieldMtfs& m, const std::string& unit,
     std::vector<MtfFigureCurves> fields;
     for (size_t k = 0; k < m.fields.size(); ++k) {
         const FieldMtf& f = m.fields[k];
-        fields.push_back({colours[k % std::size(colours)], plot_text("%g ", f.field) + field_unit,
+        fields.push_back({colours[k % std::size(colours)], printf_text("%g ", f.field) + field_unit,
                           f.tangential, f.sagittal});
     }
     // Short legend entries: one per field must fit the figure's width.

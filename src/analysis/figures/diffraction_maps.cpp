@@ -28,9 +28,9 @@ Image8 psf_map_image(const std::vector<FieldPsf>& psfs, ColourScale scale, const
             for (int j = 0; j < p.size; ++j)
                 panel.values[static_cast<size_t>(i) * p.size + j] =
                     p.at(p.size - 1 - i, j) / p.strehl;
-        panel.label = plot_text("%g ", f.field) + field_unit +
-                      plot_text(": Strehl %.3f", p.strehl) +
-                      plot_text(", %.3g ", p.size * p.spacing) + unit;
+        panel.label = printf_text("%g ", f.field) + field_unit +
+                      printf_text(": Strehl %.3f", p.strehl) +
+                      printf_text(", %.3g ", p.size * p.spacing) + unit;
         figure.panels.push_back(std::move(panel));
     }
     figure.footer = {
@@ -44,7 +44,7 @@ Image8 psf_map_image(const std::vector<FieldPsf>& psfs, ColourScale scale, const
 Image8 opd_map_image(const WavefrontFigures& figures, double wavelength_nm,
                      const std::string& field_unit) {
     MapFigure figure;
-    figure.title = plot_text("OPD at %.2f nm", wavelength_nm);
+    figure.title = printf_text("OPD at %.2f nm", wavelength_nm);
     figure.unit = "waves";
     for (const WavefrontFigure& f : figures.figures) {
         if (!f.wavefront || f.wavelength_nm != wavelength_nm) continue;
@@ -60,9 +60,9 @@ Image8 opd_map_image(const WavefrontFigures& figures, double wavelength_nm,
                 if (p.amplitude[cell] > 0)
                     panel.values[static_cast<size_t>(i) * p.samples + j] = p.opd_waves[cell];
             }
-        panel.label = plot_text("%g ", f.field) + field_unit +
-                      plot_text(": RMS %.3f", f.wavefront->rms_waves) +
-                      plot_text(" PV %.3f", f.wavefront->pv_waves);
+        panel.label = printf_text("%g ", f.field) + field_unit +
+                      printf_text(": RMS %.3f", f.wavefront->rms_waves) +
+                      printf_text(" PV %.3f", f.wavefront->pv_waves);
         figure.panels.push_back(std::move(panel));
     }
     figure.footer = {

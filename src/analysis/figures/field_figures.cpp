@@ -15,7 +15,7 @@ constexpr double kPanelGap = 0.3;  // between panels, in panel sizes
 constexpr double kPanelPixels = 320;
 
 std::string field_label(double field, const std::string& field_unit) {
-    return "field " + plot_text("%g ", field) + field_unit;
+    return "field " + printf_text("%g ", field) + field_unit;
 }
 
 // The largest distance of a field's hits, all wavelengths, from its polychromatic centroid.
@@ -81,9 +81,9 @@ RayDiagram spot_diagram_figure(const SpotDiagrams& spots, const std::string& uni
                        "centroid y " + plot_length(std::abs(y) < 1e-9 * half ? 0.0 : y, unit), 50));
     }
     d.legend = wavelength_legend(spots.wavelengths);
-    d.title = "Spot diagrams, image plane " + plot_text("%.4f", spots.image_z) +
-              " (system z); hexapolar " + plot_text("%g", spots.rings) + " rings, " +
-              plot_text("%g", spots.rays_per_beam) + " rays a beam";
+    d.title = "Spot diagrams, image plane " + printf_text("%.4f", spots.image_z) +
+              " (system z); hexapolar " + printf_text("%d", spots.rings) + " rings, " +
+              printf_text("%d", spots.rays_per_beam) + " rays a beam";
     d.subtitle = "about each field's polychromatic centroid; circle: Airy radius " +
                  plot_length(spots.fields.empty() ? 0 : spots.fields[0].airy_radius, unit);
     d.scale_bar = diagram_round_length(0.5 * half);
@@ -125,7 +125,8 @@ RayDiagram ray_fan_figure(const RayFans& fans, const std::string& unit,
                            : (col == 0 ? ": tangential e_y (py)" : ": sagittal e_x (px)"));
             p.x_min_label = col == 0 ? "py = -1" : "px = -1";
             p.x_max_label = col == 0 ? "py = 1" : "px = 1";
-            p.y_max_label = "+" + (opd ? plot_text("%.4g waves", scale) : plot_length(scale, unit));
+            p.y_max_label =
+                "+" + (opd ? printf_text("%.4g waves", scale) : plot_length(scale, unit));
             for (const RayFan& fan : f.fans) {
                 // A vignetted ray (NaN) breaks the curve.
                 p.curves.push_back({fans.pupil, col == 0 ? fan.tangential : fan.sagittal,
@@ -140,10 +141,10 @@ RayDiagram ray_fan_figure(const RayFans& fans, const std::string& unit,
     }
     d.legend = wavelength_legend(wavelengths);
     d.title = std::string(opd ? "OPD fans" : "Ray fans") + ", image plane " +
-              plot_text("%.4f", fans.image_z) + " (system z)";
+              printf_text("%.4f", fans.image_z) + " (system z)";
     // Short: the legend shares its line. The full scale is in every panel's corner.
     d.subtitle = opd ? std::string("waves, against each wavelength's chief ray")
-                     : "error from the chief ray at " + plot_text("%.2f nm", fans.primary_nm);
+                     : "error from the chief ray at " + printf_text("%.2f nm", fans.primary_nm);
     d.scale_bar = 0;
     return d;
 }

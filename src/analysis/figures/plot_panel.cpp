@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "analysis/section/section_view.h"
+#include "util/format_number.h"
 
 namespace lenslab {
 
@@ -39,20 +40,14 @@ DiagramText plot_label(DiagramPoint at, const std::string& text, double dy,
     return t;
 }
 
-std::string plot_text(const char* format, double v) {
-    char text[64];
-    std::snprintf(text, sizeof text, format, v);
-    return text;
-}
-
 std::string plot_length(double v, const std::string& unit) {
-    return plot_text("%.4g ", v) + (unit.empty() ? "units" : unit);
+    return printf_text("%.4g ", v) + (unit.empty() ? "units" : unit);
 }
 
 std::vector<LegendEntry> wavelength_legend(const std::vector<double>& wavelengths) {
     std::vector<LegendEntry> legend;
     for (double nm : wavelengths) {
-        legend.push_back({wavelength_colour(nm), plot_text("%.1f nm", nm)});
+        legend.push_back({wavelength_colour(nm), printf_text("%.1f nm", nm)});
     }
     return legend;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "analysis/figures/ray_diagram.h"
+#include "util/format_number.h"
 
 namespace lenslab {
 
@@ -35,8 +36,6 @@ DiagramPath plot_box(double z0, double y0, double z1, double y1, DiagramColour c
 // A label at `at`, moved `dy` pixels down the picture.
 DiagramText plot_label(DiagramPoint at, const std::string& text, double dy,
                        DiagramText::Anchor anchor = DiagramText::Anchor::Middle);
-// printf of one number.
-std::string plot_text(const char* format, double v);
 // "0.0125 mm", or "units" when the scene's unit is not known.
 std::string plot_length(double v, const std::string& unit);
 std::vector<LegendEntry> wavelength_legend(const std::vector<double>& wavelengths);

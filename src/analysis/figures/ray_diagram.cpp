@@ -224,16 +224,16 @@ RayDiagram make_ray_diagram(const OpticalSystem& system, const LensReport& repor
     const std::string unit = options.unit.empty() ? "units" : options.unit;
     d.subtitle = "rays from a point at infinity on the axis";
     d.title =
-        "EFL " + plot_text("%.2f", p.efl) + " " + unit + ", BFL " + plot_text("%.2f", p.bfl) + " " +
-        unit + " at " + plot_text("%.2f", p.wavelength_nm) + " nm" +
+        "EFL " + printf_text("%.2f", p.efl) + " " + unit + ", BFL " + printf_text("%.2f", p.bfl) +
+        " " + unit + " at " + printf_text("%.2f", p.wavelength_nm) + " nm" +
         (fraunhofer_name(p.wavelength_nm).empty() ? ""
                                                   : " (" + fraunhofer_name(p.wavelength_nm) + ")") +
-        "; beam diameter " + plot_text("%.2f", 2.0 * h) + " " + unit;
-    d.legend = {{kDiagramBlueF, plot_text("%.1f nm (F)", kLineF)},
-                {kDiagramYellowGreenD, plot_text("%.1f nm (d)", kLineD)},
-                {kDiagramRedC, plot_text("%.1f nm (C)", kLineC)}};
+        "; beam diameter " + printf_text("%.2f", 2.0 * h) + " " + unit;
+    d.legend = {{kDiagramBlueF, printf_text("%.1f nm (F)", kLineF)},
+                {kDiagramYellowGreenD, printf_text("%.1f nm (d)", kLineD)},
+                {kDiagramRedC, printf_text("%.1f nm (C)", kLineC)}};
     d.scale_bar = diagram_round_length(0.2 * (d.z_max - d.z_min));
-    d.scale_bar_label = plot_text("%g ", d.scale_bar) + unit;
+    d.scale_bar_label = printf_text("%g ", d.scale_bar) + unit;
     return d;
 }
 

@@ -2,18 +2,11 @@
 
 #include <cstdio>
 
+#include "util/format_number.h"
+
 namespace lenslab {
 
-namespace {
-
-template <class... Numbers>
-std::string diffraction_line(const char* format, Numbers... numbers) {
-    char text[160];
-    std::snprintf(text, sizeof text, format, numbers...);
-    return text;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 namespace {
 
@@ -98,65 +91,61 @@ std::string diffraction_table(const DiffractionFigures& figures, const std::vect
                               const FieldMtfs* mtf) {
     std::string out;
     if (psfs) {
-        out += diffraction_line(
+        out += printf_text(
             "\nDiffraction on the axis at %.2f nm, F/%.4g, best focus (%.4f behind the first "
             "vertex)\n",
             figures.wavelength_nm, figures.f_number, figures.image_z);
-        out += diffraction_line("  Strehl ratio %.4f   wavefront RMS %.4f waves\n", figures.strehl,
-                                figures.wavefront_rms);
-        out +=
-            diffraction_line("  Airy radius 1.22 lambda N = %.6f   encircled energy there %.4f\n",
-                             figures.airy_radius, figures.encircled_energy_at_airy_radius);
+        out += printf_text("  Strehl ratio %.4f   wavefront RMS %.4f waves\n", figures.strehl,
+                           figures.wavefront_rms);
+        out += printf_text("  Airy radius 1.22 lambda N = %.6f   encircled energy there %.4f\n",
+                           figures.airy_radius, figures.encircled_energy_at_airy_radius);
         out +=
             "  PSF per field, polychromatic: Strehl (per wavelength), centroid against the chief "
             "ray, 80% encircled energy radius\n";
         for (const FieldPsf& f : *psfs) {
             if (!f.error.empty()) {
-                out +=
-                    diffraction_line("  field %-8g not measured: %s\n", f.field, f.error.c_str());
+                out += printf_text("  field %-8g not measured: %s\n", f.field, f.error.c_str());
                 continue;
             }
             std::string each;
-            for (double s : f.strehl_per_wavelength) each += diffraction_line(" %.4f", s);
+            for (double s : f.strehl_per_wavelength) each += printf_text(" %.4f", s);
             // The first radius holding 80% of the energy (the curve's eighths, interpolated).
             std::string d80 = "beyond the grid";
             for (size_t k = 0; k < f.radii.size(); ++k) {
                 if (f.encircled[k] < 0.8) continue;
                 const double r0 = k == 0 ? 0.0 : f.radii[k - 1],
                              e0 = k == 0 ? 0.0 : f.encircled[k - 1];
-                d80 = diffraction_line("%.5g",
-                                       r0 + (f.radii[k] - r0) * (0.8 - e0) / (f.encircled[k] - e0));
+                d80 = printf_text("%.5g",
+                                  r0 + (f.radii[k] - r0) * (0.8 - e0) / (f.encircled[k] - e0));
                 break;
             }
-            out +=
-                diffraction_line("  field %-8g Strehl %.4f (%s)  centroid (%+.5g, %+.5g)  r80 %s\n",
-                                 f.field, f.psf.strehl, each.c_str() + 1, f.centroid_x - f.centre_x,
-                                 f.centroid_y - f.centre_y, d80.c_str());
+            out += printf_text("  field %-8g Strehl %.4f (%s)  centroid (%+.5g, %+.5g)  r80 %s\n",
+                               f.field, f.psf.strehl, each.c_str() + 1, f.centroid_x - f.centre_x,
+                               f.centroid_y - f.centre_y, d80.c_str());
             if (!f.warning.empty()) out += "    " + f.warning + "\n";
         }
     }
     if (mtf) {
-        out += diffraction_line(
+        out += printf_text(
             "\nMTF per field (tangential / sagittal), polychromatic, image plane at z = %.6g\n",
             mtf->image_z);
         out += "  cycles/mm  diffraction limit";
-        for (const FieldMtf& f : mtf->fields) out += diffraction_line("   field %-10g", f.field);
+        for (const FieldMtf& f : mtf->fields) out += printf_text("   field %-10g", f.field);
         out += "\n";
         for (size_t i = 0; i < mtf->frequencies.size(); ++i) {
-            out +=
-                diffraction_line("  %9.2f  %17.4f", mtf->frequencies[i], mtf->diffraction_limit[i]);
+            out += printf_text("  %9.2f  %17.4f", mtf->frequencies[i], mtf->diffraction_limit[i]);
             for (const FieldMtf& f : mtf->fields) {
                 out += f.error.empty()
-                           ? diffraction_line("   %.4f / %.4f", f.tangential[i], f.sagittal[i])
+                           ? printf_text("   %.4f / %.4f", f.tangential[i], f.sagittal[i])
                            : std::string("   not measured   ");
             }
             out += "\n";
         }
         for (const FieldMtf& f : mtf->fields) {
             if (!f.error.empty())
-                out += diffraction_line("  field %g not measured: %s\n", f.field, f.error.c_str());
+                out += printf_text("  field %g not measured: %s\n", f.field, f.error.c_str());
             if (!f.warning.empty())
-                out += diffraction_line("  field %g: %s\n", f.field, f.warning.c_str());
+                out += printf_text("  field %g: %s\n", f.field, f.warning.c_str());
         }
     }
     return out;
@@ -174,26 +163,24 @@ nlohmann::ordered_json through_focus_json(const ThroughFocusMtf& t) {
 }
 
 std::string through_focus_table(const ThroughFocusMtf& t) {
-    std::string out = diffraction_line(
-        "\nMTF at %g cycles/mm through focus (tangential / sagittal), about z = %.6g\n",
-        t.frequency, t.image_z);
+    std::string out =
+        printf_text("\nMTF at %g cycles/mm through focus (tangential / sagittal), about z = %.6g\n",
+                    t.frequency, t.image_z);
     out += "      shift";
-    for (const FieldMtf& f : t.fields) out += diffraction_line("   field %-10g", f.field);
+    for (const FieldMtf& f : t.fields) out += printf_text("   field %-10g", f.field);
     out += "\n";
     for (size_t n = 0; n < t.shifts.size(); ++n) {
-        out += diffraction_line("  %+9.5f", t.shifts[n]);
+        out += printf_text("  %+9.5f", t.shifts[n]);
         for (const FieldMtf& f : t.fields) {
-            out += f.error.empty()
-                       ? diffraction_line("   %.4f / %.4f", f.tangential[n], f.sagittal[n])
-                       : std::string("   not measured   ");
+            out += f.error.empty() ? printf_text("   %.4f / %.4f", f.tangential[n], f.sagittal[n])
+                                   : std::string("   not measured   ");
         }
         out += "\n";
     }
     for (const FieldMtf& f : t.fields) {
         if (!f.error.empty())
-            out += diffraction_line("  field %g not measured: %s\n", f.field, f.error.c_str());
-        if (!f.warning.empty())
-            out += diffraction_line("  field %g: %s\n", f.field, f.warning.c_str());
+            out += printf_text("  field %g not measured: %s\n", f.field, f.error.c_str());
+        if (!f.warning.empty()) out += printf_text("  field %g: %s\n", f.field, f.warning.c_str());
     }
     return out;
 }

@@ -8,22 +8,17 @@
 #include "analysis/report/first_order_report.h"
 #include "analysis/system/parabasal.h"
 #include "math/constants.h"
+#include "util/format_number.h"
 #include "util/scene_error.h"
 
 namespace lenslab {
 
 namespace {
 
-std::string fmt(const char* format, double v) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, format, v);
-    return buffer;
-}
-
 // A wavelength with its line name: "587.56 nm (d)".
 std::string wavelength_text(double nm) {
     const std::string name = fraunhofer_name(nm);
-    return fmt("%.2f nm", nm) + (name.empty() ? "" : " (" + name + ")");
+    return printf_text("%.2f nm", nm) + (name.empty() ? "" : " (" + name + ")");
 }
 
 std::string medium_name(const OpticalSystem& system, int element) {
@@ -37,8 +32,8 @@ std::string shape_kind(const SystemSurface& s) {
 
 // A length to 4 significant figures or so, in a fixed-width column.
 std::string length(double v) {
-    if (std::abs(v) >= 1e4 || (v != 0 && std::abs(v) < 1e-3)) return fmt("%.4g", v);
-    return fmt("%.4f", v);
+    if (std::abs(v) >= 1e4 || (v != 0 && std::abs(v) < 1e-3)) return printf_text("%.4g", v);
+    return printf_text("%.4f", v);
 }
 
 // A GRIN lens's profile and, for a radial one, its pitch: the period 2 pi / sqrt(A) of a
@@ -417,7 +412,7 @@ std::string report_table(const OpticalSystem& system, const LensReport& r, bool 
     out << "\n" << first_order_table(system, r.first_order);
     if (r.real_chief && r.first_order.field != 0.0) {
         row("real chief ray image height", r.real_chief->image_height,
-            "distortion " + fmt("%.6f", 100.0 * r.real_chief->distortion) + " %");
+            "distortion " + printf_text("%.6f", 100.0 * r.real_chief->distortion) + " %");
     }
     if (seidel && system.has_grin()) {
         out << "\nSeidel sums: not computed for gradient-index lenses (their transfer terms are "

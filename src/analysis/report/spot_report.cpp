@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "analysis/report/report_cells.h"
+#include "util/format_number.h"
 
 namespace lenslab {
 
@@ -12,13 +13,6 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 Json spot_xy(double x, double y) { return Json{{"x", x}, {"y", y}}; }
-
-template <class... Numbers>
-std::string spot_line(const char* format, Numbers... numbers) {
-    char text[200];
-    std::snprintf(text, sizeof text, format, numbers...);
-    return text;
-}
 
 }  // namespace
 
@@ -66,31 +60,32 @@ Json spots_json(const OpticalSystem& system, const SpotDiagrams& d) {
 }
 
 std::string spots_table(const OpticalSystem& system, const SpotDiagrams& d) {
-    std::string out = spot_line(
+    std::string out = printf_text(
         "\nSpot diagrams in the plane %.4f from the last vertex (z %.4f); hexapolar, %d rings "
         "(%d rays a beam); radii about the centroid; Airy radius 1.22 lambda N_w, N_w %.4g\n",
         d.image_z - system.last_vertex(), d.image_z, d.rings, d.rays_per_beam, d.working_f_number);
-    out += spot_line("  %10s %13s %11s %11s %11s %11s %11s %11s %6s %6s %11s\n", "field",
-                     "wavelength", "RMS radius", "geom radius", "centroid x", "centroid y",
-                     "chief x", "chief y", "rays", "vign.", "Airy radius");
+    out += printf_text("  %10s %13s %11s %11s %11s %11s %11s %11s %6s %6s %11s\n", "field",
+                       "wavelength", "RMS radius", "geom radius", "centroid x", "centroid y",
+                       "chief x", "chief y", "rays", "vign.", "Airy radius");
     for (const FieldSpots& f : d.fields) {
         for (const WavelengthSpot& s : f.spots) {
             const bool hit = !s.spot.points.empty();
-            out += spot_line("  %10.4g %10.2f nm", s.field, s.wavelength_nm) +
+            out += printf_text("  %10.4g %10.2f nm", s.field, s.wavelength_nm) +
                    table_cell(s.spot.rms_radius, 12) + table_cell(s.spot.geometric_radius, 12) +
                    table_cell(hit ? s.spot.centroid_x : NAN, 12) +
                    table_cell(hit ? s.spot.centroid_y : NAN, 12) +
                    table_cell(s.chief ? s.chief->x : NAN, 12) +
                    table_cell(s.chief ? s.chief->y : NAN, 12) +
-                   spot_line(" %6d %6d", s.rays, s.vignetted) + table_cell(s.airy_radius, 12) +
+                   printf_text(" %6d %6d", s.rays, s.vignetted) + table_cell(s.airy_radius, 12) +
                    "\n";
         }
         const PolychromaticSpot& p = f.polychromatic;
         const bool hit = !std::isnan(p.rms_radius);
-        out += spot_line("  %10.4g %13s", f.field, "polychromatic") + table_cell(p.rms_radius, 12) +
-               spot_line("%12s", "") + table_cell(hit ? p.centroid_x : NAN, 12) +
-               table_cell(hit ? p.centroid_y : NAN, 12) + spot_line("%24s", "") +
-               spot_line(" %6d %6d", p.rays, p.lost) + table_cell(f.airy_radius, 12) + "\n";
+        out += printf_text("  %10.4g %13s", f.field, "polychromatic") +
+               table_cell(p.rms_radius, 12) + printf_text("%12s", "") +
+               table_cell(hit ? p.centroid_x : NAN, 12) + table_cell(hit ? p.centroid_y : NAN, 12) +
+               printf_text("%24s", "") + printf_text(" %6d %6d", p.rays, p.lost) +
+               table_cell(f.airy_radius, 12) + "\n";
     }
     return out;
 }

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "util/format_number.h"
+
 namespace lenslab {
 
 namespace {
@@ -49,12 +51,6 @@ ordered_json figure_json(const WavefrontFigure& f) {
     return j;
 }
 
-std::string wavefront_line(const char* format, auto... numbers) {
-    char text[256];
-    std::snprintf(text, sizeof text, format, numbers...);
-    return text;
-}
-
 // Noll coefficient j, or 0 when fewer terms were fitted.
 double noll_term(const WavefrontFigure& f, size_t j) {
     return j <= f.noll.coefficients.size() ? f.noll.coefficients[j - 1] : 0.0;
@@ -79,7 +75,7 @@ ordered_json wavefront_json(const WavefrontFigures& figures) {
 }
 
 std::string wavefront_table(const WavefrontFigures& figures) {
-    std::string out = wavefront_line(
+    std::string out = printf_text(
         "\nWavefront against the reference sphere on the %s, image plane at z = %.6g (waves; "
         "Zernike: Noll)\n",
         figures.centroid_reference ? "PSF's centroid" : "chief ray's image point", figures.image_z);
@@ -88,11 +84,11 @@ std::string wavefront_table(const WavefrontFigures& figures) {
         "coma   Z8 coma  Z11 spherical\n";
     for (const WavefrontFigure& f : figures.figures) {
         if (!f.wavefront) {
-            out += wavefront_line("%8.4g  %10.2f  not measured: %s\n", f.field, f.wavelength_nm,
-                                  f.error.c_str());
+            out += printf_text("%8.4g  %10.2f  not measured: %s\n", f.field, f.wavelength_nm,
+                               f.error.c_str());
             continue;
         }
-        out += wavefront_line(
+        out += printf_text(
             "%8.4g  %10.2f  %7.4f  %7.4f  %7.4f  %11.4f  %8.4f  %8.4f  %8.4f  %8.4f  %13.4f\n",
             f.field, f.wavelength_nm, f.wavefront->rms_waves, f.wavefront->pv_waves, f.strehl,
             noll_term(f, 4), noll_term(f, 5), noll_term(f, 6), noll_term(f, 7), noll_term(f, 8),

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "util/format_number.h"
+
 namespace lenslab {
 
 namespace {
@@ -21,12 +23,6 @@ const char* event_words(Event e) {
             return "escaped";
     }
     return "";
-}
-
-std::string report_line(const char* pattern, auto... values) {
-    char buffer[256];
-    std::snprintf(buffer, sizeof buffer, pattern, values...);
-    return buffer;
 }
 
 }  // namespace
@@ -65,17 +61,17 @@ SectionRayReport section_ray_report(const Scene& scene, const SectionRayPath& pa
 }
 
 std::string format_section_ray_report(const SectionRayReport& r) {
-    std::string text = report_line("Ray at %.1f nm\n", r.wavelength_nm);
+    std::string text = printf_text("Ray at %.1f nm\n", r.wavelength_nm);
     int k = 0;
     for (const SectionRayStep& s : r.steps) {
         const bool refracted = s.event == Event::Refract;
-        text += report_line("%d. %s: %s, incidence %.2f°, %s %.2f°, n %.4f -> %.4f, turned %.2f°\n",
+        text += printf_text("%d. %s: %s, incidence %.2f°, %s %.2f°, n %.4f -> %.4f, turned %.2f°\n",
                             ++k, s.object_name.c_str(), event_words(s.event), s.incidence_deg,
                             refracted ? "refraction" : "reflection", s.leaving_deg, s.n_from,
                             s.n_to, s.deviation_deg);
     }
     if (!r.end.empty()) text += "Then " + r.end + ".\n";
-    text += report_line("Deviation from first to last direction: %.2f°", r.total_deviation_deg);
+    text += printf_text("Deviation from first to last direction: %.2f°", r.total_deviation_deg);
     return text;
 }
 

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "optics/spectrum.h"
+#include "util/format_number.h"
 
 namespace lenslab {
 
@@ -38,12 +39,6 @@ void section_material_style(const Material& m, DiagramPath& path) {
     }
 }
 
-std::string section_format(const char* pattern, double v) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, pattern, v);
-    return buffer;
-}
-
 // A 1, 2 or 5 times a power of ten near a fifth of `extent`.
 double section_scale_bar_length(double extent) { return diagram_round_length(extent / 5); }
 
@@ -73,7 +68,7 @@ DiagramColour section_ray_colour(const SectionRayPath& r) {
 }
 
 std::string section_legend_label(const SectionRayPath& r) {
-    if (!r.whole_spectrum) return section_format("%.1f nm", r.wavelength_nm);
+    if (!r.whole_spectrum) return printf_text("%.1f nm", r.wavelength_nm);
     return std::min({r.colour.r, r.colour.g, r.colour.b}) > 0.85 ? "white light"
                                                                  : "the light's colour";
 }
@@ -208,7 +203,7 @@ RayDiagram section_diagram(const Scene& scene, const SectionView& view, int sele
         if (std::none_of(d.legend.begin(), d.legend.end(), same)) d.legend.push_back(entry);
     }
     d.scale_bar = section_scale_bar_length(d.z_max - d.z_min);
-    d.scale_bar_label = section_format("%g (scene units)", d.scale_bar);
+    d.scale_bar_label = printf_text("%g (scene units)", d.scale_bar);
     return d;
 }
 
