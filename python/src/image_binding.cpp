@@ -21,12 +21,12 @@ using ImageArray = py::array_t<float, py::array::c_style | py::array::forcecast>
 void write_image_file(const ImageArray& image, const std::string& path, double exposure,
                       const std::string& tone_map, double highlight_stops) {
     RenderSettings settings;
-    settings.tone_map = tone_map;
     settings.highlight_stops = highlight_stops;
     // Checked against the render block's declarations, as a scene file's would be.
     const ElementSpec& spec = render_settings_spec();
     if (auto problem = choice_problem(spec.param("tone_map"), tone_map))
         throw py::value_error("tone_map: " + *problem);
+    settings.tone_map = choice_named<ToneMapCurve>(kToneMapNames, tone_map);
     if (auto problem = range_problem(spec.param("highlight_stops"), highlight_stops))
         throw py::value_error("highlight_stops: " + *problem);
     if (image.ndim() != 3 || image.shape(2) != 3) {

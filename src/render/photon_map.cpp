@@ -9,26 +9,6 @@
 
 namespace lenslab {
 
-PhotonFilter parse_photon_filter(const std::string& name) {
-    if (name == "cone") return PhotonFilter::Cone;
-    if (name == "gaussian") return PhotonFilter::Gaussian;
-    if (name == "box") return PhotonFilter::Box;
-    throw std::invalid_argument("unknown photon filter '" + name +
-                                "' (known: cone, gaussian, box)");
-}
-
-const char* photon_filter_name(PhotonFilter f) {
-    switch (f) {
-        case PhotonFilter::Cone:
-            return "cone";
-        case PhotonFilter::Gaussian:
-            return "gaussian";
-        case PhotonFilter::Box:
-            return "box";
-    }
-    return "cone";
-}
-
 PhotonMap::PhotonMap(std::unique_ptr<Photon[]> photons, size_t count, size_t direct)
     : m_storage(std::move(photons)), m_count(count) {
     Photon* base = m_storage.get();

@@ -7,14 +7,9 @@
 #include <vector>
 
 #include "accel/photon_kdtree.h"
+#include "scene/render_settings.h"  // PhotonFilter
 
 namespace lenslab {
-
-// Weighting of the photons inside the gather disc (Jensen 2001, section 7.2.2).
-enum class PhotonFilter { Box, Cone, Gaussian };
-
-PhotonFilter parse_photon_filter(const std::string& name);  // throws std::invalid_argument
-const char* photon_filter_name(PhotonFilter f);
 
 struct GatherSettings {
     double radius = 0.05;      // largest gather radius

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -12,11 +13,35 @@ namespace lenslab {
 // w number at most about 1/w, so this bounds the work per camera ray.
 inline constexpr double kMinBranchWeight = 1e-6;
 
-// The names the scene file and the command line accept, declared once for both.
+// The names the scene file and the command line accept, declared once for both. The
+// integrators are a registry (render/integrator_registry.h), open to more; the other choices
+// are closed, each an enum whose names are listed in its order.
 inline const std::vector<std::string> kIntegratorNames{"whitted", "photon_map", "sppm", "path"};
+
+// Weighting of the photons inside the gather disc (Jensen 2001, section 7.2.2).
+enum class PhotonFilter { Cone, Gaussian, Box };
 inline const std::vector<std::string> kPhotonFilterNames{"cone", "gaussian", "box"};
+// Where photon_map's direct light comes from.
+enum class DirectLight { ShadowRays, PhotonMap };
 inline const std::vector<std::string> kDirectLightNames{"shadow_rays", "photon_map"};
+// How light brighter than white is shown (image/tone_map.h).
+enum class ToneMapCurve { Clip, Log };
 inline const std::vector<std::string> kToneMapNames{"clip", "log"};
+
+// The value `name` stands for in `names` (the enum's names in its order); throws
+// std::invalid_argument for a name not there (the readers check names first).
+template <class Choice>
+Choice choice_named(const std::vector<std::string>& names, const std::string& name) {
+    for (size_t i = 0; i < names.size(); ++i) {
+        if (names[i] == name) return static_cast<Choice>(i);
+    }
+    throw std::invalid_argument("unknown choice '" + name + "'");
+}
+
+template <class Choice>
+const std::string& choice_name(const std::vector<std::string>& names, Choice value) {
+    return names.at(static_cast<size_t>(value));
+}
 
 // The scene file's `render` block; the command line may override any of it.
 struct RenderSettings {
@@ -38,12 +63,12 @@ struct RenderSettings {
     int dispersion_samples = 0;
 
     // Photon mapping (integrator photon_map).
-    int64_t photons = 200000;            // photons emitted per light
-    double radius = 0;                   // gather radius; 0 = auto (0.5% of the scene's diagonal)
-    std::string filter = "cone";         // cone | gaussian | box
+    int64_t photons = 200000;  // photons emitted per light
+    double radius = 0;         // gather radius; 0 = auto (0.5% of the scene's diagonal)
+    PhotonFilter filter = PhotonFilter::Cone;
     double filter_k = 1.1;               // cone filter constant k >= 1
     int max_photons_per_estimate = 500;  // cap on the photons one estimate gathers
-    std::string direct = "shadow_rays";  // shadow_rays | photon_map
+    DirectLight direct = DirectLight::ShadowRays;
     // Photons aimed at the photon targets (the glass and mirrors), per light: the caustic
     // budget, apart from `photons` (photon_map) or `pass_photons` (sppm, per pass);
     // 0 = auto, as many as those.
@@ -61,8 +86,7 @@ struct RenderSettings {
     // sparse photon's disc grows until about N neighbours share it (render/volume_photon_radii.h).
     int volume_neighbours = 0;
 
-    // How light brighter than white is shown (image/tone_map.h): clip | log.
-    std::string tone_map = "clip";
+    ToneMapCurve tone_map = ToneMapCurve::Clip;
     double highlight_stops = 8;  // log: stops above the knee that reach white
 };
 

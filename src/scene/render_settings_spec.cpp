@@ -75,7 +75,7 @@ ElementSpec declare_render_settings() {
             .in_editor("Gather radius (0 = auto)", 5)
             .under(photon_map)
             .on_command_line(),
-        choice_param("filter", d.filter, kPhotonFilterNames)
+        choice_param("filter", choice_name(kPhotonFilterNames, d.filter), kPhotonFilterNames)
             .describe("photon_map: photon filter: cone, gaussian or box")
             .in_editor("Filter")
             .under(photon_map)
@@ -92,7 +92,7 @@ ElementSpec declare_render_settings() {
             .in_editor("Max photons per estimate")
             .under(photon_map)
             .on_command_line(),
-        choice_param("direct", d.direct, kDirectLightNames)
+        choice_param("direct", choice_name(kDirectLightNames, d.direct), kDirectLightNames)
             .describe("photon_map: direct light from shadow_rays or the photon_map")
             .in_editor("Direct light")
             .under(photon_map)
@@ -145,7 +145,7 @@ ElementSpec declare_render_settings() {
             .in_editor("Volume neighbours")
             .under(sppm)
             .on_command_line(),
-        choice_param("tone_map", d.tone_map, kToneMapNames)
+        choice_param("tone_map", choice_name(kToneMapNames, d.tone_map), kToneMapNames)
             .describe("How light brighter than white is shown: clip, or log (highlights on a "
                       "log scale, their colour kept)")
             .in_editor("Tone map")

@@ -8,7 +8,7 @@
 namespace lenslab {
 
 inline ToneMap tone_map_for(const RenderSettings& render, double exposure_stops = 0) {
-    return {exposure_stops, render.tone_map == "log", render.highlight_stops};
+    return {exposure_stops, render.tone_map == ToneMapCurve::Log, render.highlight_stops};
 }
 
 }  // namespace lenslab

@@ -84,10 +84,10 @@ void read_render(const json& j, RenderSettings& s) {
     s.dispersion_samples = static_cast<int>(r.whole("dispersion_samples"));
     s.photons = r.whole("photons");
     s.radius = r.real("radius");
-    s.filter = r.text("filter");
+    s.filter = choice_named<PhotonFilter>(kPhotonFilterNames, r.text("filter"));
     s.filter_k = r.real("filter_k");
     s.max_photons_per_estimate = static_cast<int>(r.whole("max_photons_per_estimate"));
-    s.direct = r.text("direct");
+    s.direct = choice_named<DirectLight>(kDirectLightNames, r.text("direct"));
     s.passes = static_cast<int>(r.whole("passes"));
     s.time = r.real("time");
     if (s.passes == 0 && s.time == 0.0) {
@@ -100,7 +100,7 @@ void read_render(const json& j, RenderSettings& s) {
     s.initial_radius = r.real("initial_radius");
     s.alpha = r.real("alpha");
     s.volume_neighbours = static_cast<int>(r.whole("volume_neighbours"));
-    s.tone_map = r.text("tone_map");
+    s.tone_map = choice_named<ToneMapCurve>(kToneMapNames, r.text("tone_map"));
     s.highlight_stops = r.real("highlight_stops");
 }
 

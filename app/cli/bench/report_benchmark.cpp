@@ -76,7 +76,7 @@ ReportBenchmarkResult run_report_benchmark(const Scene& base, const ReportBenchm
     scene.render.height = s.height;
     scene.render.spp = s.spp;
     scene.render.integrator = integrators::kPhotonMap;
-    scene.render.direct = kDirectFromPhotonMap;
+    scene.render.direct = DirectLight::PhotonMap;
     const Camera camera(scene.camera, s.width, s.height);
 
     ReportBenchmarkResult result;

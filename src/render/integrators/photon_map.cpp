@@ -19,7 +19,7 @@ GatherSettings gather_settings(const Scene& scene) {
     GatherSettings g;
     g.radius = r.radius > 0 ? r.radius : default_gather_radius(scene);
     g.max_photons = static_cast<size_t>(r.max_photons_per_estimate);
-    g.filter = parse_photon_filter(r.filter);
+    g.filter = r.filter;
     g.cone_k = r.filter_k;
     return g;
 }
@@ -35,7 +35,7 @@ PhotonTracingSettings photon_tracing_settings(const Scene& scene) {
     const bool all_aimed = s.aim && !scene.photon_targets().empty() &&
                            !scene.has_specular_non_target() &&
                            std::all_of(scene.lights().begin(), scene.lights().end(), aims);
-    if (r.direct == kDirectFromShadowRays && all_aimed) s.photons_per_light = 0;
+    if (r.direct == DirectLight::ShadowRays && all_aimed) s.photons_per_light = 0;
     return s;
 }
 
@@ -84,7 +84,7 @@ void PhotonMapIntegrator::add_diffuse_irradiance(LightSum& e, const Vec3& p, con
     // Photons store colours; the estimate is lit as an RGB illuminant (D65 times bands), whose
     // band colours are exact.
     Rgb from_maps = PhotonMap::irradiance(m_map->caustic(), p, n, g, scratch);
-    if (m_scene.render.direct == kDirectFromPhotonMap) {
+    if (m_scene.render.direct == DirectLight::PhotonMap) {
         from_maps += PhotonMap::irradiance(m_map->direct(), p, n, g, scratch);
     } else {
         WhittedIntegrator::add_diffuse_irradiance(e, p, n, share, rng);

@@ -16,10 +16,6 @@
 
 namespace lenslab {
 
-// render.direct's values (kDirectLightNames): where the direct light comes from.
-inline constexpr std::string_view kDirectFromShadowRays = "shadow_rays";
-inline constexpr std::string_view kDirectFromPhotonMap = "photon_map";
-
 class PhotonMapIntegrator final : public WhittedIntegrator {
 public:
     explicit PhotonMapIntegrator(const Scene& scene);
