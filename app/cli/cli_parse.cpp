@@ -53,13 +53,14 @@ CommandLine::CommandLine()
                   {"import", add_import_command(m_app)},
                   {"export", add_export_command(m_app)},
                   {"optimize", add_optimize_command(m_app)},
+                  {"tolerance", add_tolerance_command(m_app)},
                   {"sweep", add_sweep_command(m_app)},
                   {"types", add_types_command(m_app)},
                   {"spectra", add_spectra_command(m_app)},
                   {"colour-speckle", add_colour_speckle_command(m_app)}};
     // A user's AGF glass catalogue for every command that reads a scene or looks up a glass.
     for (const char* name : {"render", "trace", "glass", "analyze", "detect", "import", "export",
-                             "optimize", "sweep"}) {
+                             "optimize", "tolerance", "sweep"}) {
         m_app.get_subcommand(name)
             ->add_option("--catalogue", m_catalogues,
                          "A Zemax AGF glass catalogue whose glasses scenes and lookups may name "

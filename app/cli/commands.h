@@ -36,6 +36,7 @@ Action add_detect_command(CLI::App& app);
 Action add_import_command(CLI::App& app);
 Action add_export_command(CLI::App& app);
 Action add_optimize_command(CLI::App& app);
+Action add_tolerance_command(CLI::App& app);
 Action add_sweep_command(CLI::App& app);
 Action add_types_command(CLI::App& app);
 Action add_spectra_command(CLI::App& app);

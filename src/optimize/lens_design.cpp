@@ -123,7 +123,10 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
             d.image_distance = reader.number("image_distance");
         }
     }
-    const nlohmann::json& variables = reader.require("variables");
+    // Both lists are lenslab optimize's (optimize_design checks they are there); lenslab
+    // tolerance reads a design without them.
+    const nlohmann::json variables =
+        reader.has("variables") ? reader.require("variables") : nlohmann::json::array();
     if (!variables.is_array()) throw SceneError("variables", "must be an array of variables");
     for (size_t i = 0; i < variables.size(); ++i) {
         const std::string path = "variables[" + std::to_string(i) + "]";
@@ -141,11 +144,12 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
                              "(a number, not the paraxial focus)");
         }
     }
-    const nlohmann::json& operands = reader.require("operands");
-    if (!operands.is_array() || operands.empty()) {
+    const nlohmann::json* operands_given = reader.find("operands");
+    const nlohmann::json operands = operands_given ? *operands_given : nlohmann::json();
+    if (operands_given && (!operands.is_array() || operands.empty())) {
         throw SceneError("operands", "must be a non-empty array of operands");
     }
-    for (size_t i = 0; i < operands.size(); ++i) {
+    for (size_t i = 0; operands_given && i < operands.size(); ++i) {
         for (MeritOperand& op : read_merit_operands(
                  operands[i], "operands[" + std::to_string(i) + "]", d.scene, d.fields)) {
             d.operands.push_back(std::move(op));
@@ -161,7 +165,17 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
                                                         d.scene, d.base_dir, d.wavelengths));
         }
     }
+    d.has_operands = operands_given != nullptr;
     d.glass_iterations = static_cast<int>(reader.whole("glass_iterations"));
+    if (const nlohmann::json* block = reader.find("tolerances")) {
+        SpecReader t(*block, "tolerances", tolerances_spec());
+        d.tolerances.radius = t.real("radius");
+        d.tolerances.thickness = t.real("thickness");
+        d.tolerances.air_gap = t.real("air_gap");
+        d.tolerances.trials = static_cast<int>(t.whole("trials"));
+        d.tolerances.seed = static_cast<uint64_t>(t.whole("seed"));
+        d.tolerances.refocus = t.flag("refocus");
+    }
     return d;
 }
 

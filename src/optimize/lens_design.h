@@ -4,6 +4,7 @@
 // wavelengths and their weights, the image plane), what may change (variables) and what is
 // wanted (operands of the merit function).
 
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -14,6 +15,17 @@
 #include "optimize/merit_operand.h"
 
 namespace lenslab {
+
+// The design file's `tolerances` block (`lenslab tolerance`, optimize/tolerance.h): ± errors
+// in mm applied to every lens of the system, and the Monte Carlo's size.
+struct ToleranceSettings {
+    double radius = 0;     // of every curved face's radius
+    double thickness = 0;  // of every lens's centre thickness
+    double air_gap = 0;    // of every air gap between lenses
+    int trials = 1000;
+    uint64_t seed = 1;
+    bool refocus = true;  // the back focus as compensator
+};
 
 struct LensDesign {
     std::string system_file;       // the scene file, relative to the working folder; "" inline
@@ -29,10 +41,12 @@ struct LensDesign {
     std::optional<double> image_distance;
     std::vector<DesignVariable> variables;
     std::vector<MeritOperand> operands;
+    bool has_operands = false;  // the file gave them (lenslab optimize needs them)
     int iterations = 100;
     // Glass choice after the continuous optimisation, each glass re-optimised this long.
     std::vector<GlassChoice> glass_choices;
     int glass_iterations = 20;
+    ToleranceSettings tolerances;
 
     double primary_wavelength() const { return wavelengths[(wavelengths.size() - 1) / 2]; }
 };

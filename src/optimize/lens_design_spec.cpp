@@ -42,12 +42,40 @@ ElementSpec declare_design() {
             .as_written("number, or \"paraxial\"")
             .describe("the image plane's distance from the last vertex, or the paraxial "
                       "focus solved again at every step (the default)"),
-        nested_param(ParamKind::Array, "variables").needed().describe("what may change"),
+        nested_param(ParamKind::Array, "variables")
+            .describe("what may change (lenslab optimize; default: nothing)"),
         nested_param(ParamKind::Array, "glass_choices")
             .describe("glasses to choose among after the continuous optimisation"),
         whole_param("glass_iterations", 20, 0, kMostIterations)
             .describe("iterations of the brief re-optimisation with each glass tried"),
-        nested_param(ParamKind::Array, "operands").needed().describe("the merit function"),
+        nested_param(ParamKind::Array, "operands")
+            .describe("the merit function (required by lenslab optimize)"),
+        nested_param(ParamKind::Object, "tolerances")
+            .as_written("object")
+            .describe("the errors `lenslab tolerance` tries (below)"),
+    };
+    return s;
+}
+
+ElementSpec declare_tolerances() {
+    const ToleranceSettings d;
+    ElementSpec s{"tolerances", "the tolerances", {}, {}};
+    s.params = {
+        number_param("radius", d.radius)
+            .at_least(0)
+            .describe("± error of every curved face's radius (flat faces keep theirs)"),
+        number_param("thickness", d.thickness)
+            .at_least(0)
+            .describe("± error of every lens's centre thickness"),
+        number_param("air_gap", d.air_gap)
+            .at_least(0)
+            .describe("± error of every air gap between lenses"),
+        whole_param("trials", d.trials, 1, 1000000).describe("made lenses of the Monte Carlo"),
+        whole_param("seed", int64_t(d.seed), 0, int64_t{1} << 53)
+            .describe("the Monte Carlo's random numbers"),
+        flag_param("refocus", d.refocus)
+            .describe("the back focus as compensator: each made lens refocused for the least "
+                      "criterion"),
     };
     return s;
 }
@@ -56,6 +84,11 @@ ElementSpec declare_design() {
 
 const ElementSpec& lens_design_spec() {
     static const ElementSpec spec = declare_design();
+    return spec;
+}
+
+const ElementSpec& tolerances_spec() {
+    static const ElementSpec spec = declare_tolerances();
     return spec;
 }
 

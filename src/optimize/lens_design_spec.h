@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "optimize/design_variable.h"
+#include "optimize/lens_design.h"
 #include "optimize/merit_operand.h"
 #include "scene/json_reader.h"
 #include "scene/param_spec.h"
@@ -17,6 +18,8 @@ namespace lenslab {
 // The file's top-level keys (the `system`, `variables`, `operands` and `glass_choices`
 // entries are read by their own code).
 const ElementSpec& lens_design_spec();
+// The `tolerances` block's keys.
+const ElementSpec& tolerances_spec();
 
 // A type of `variables` or `operands` entry: its `type` name and the keys it takes besides
 // `type`, in the docs' order.

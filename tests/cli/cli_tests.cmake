@@ -716,6 +716,23 @@ lenslab_cli_test(NAME optimize.glass_choice
     ARGS optimize ${optimize_data}/triplet_glass.design.json -o ${optimize_glass_out} --iterations 1
     CHECKS -DEXPECT_EXIT=zero "-DSTDERR_CONTAINS=glass L2 SF5: merit" "-DSTDOUT_CONTAINS=glass choice"
            -DOUTPUT=${optimize_glass_out} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS={")
+# `tolerance`: the triplet example's sensitivity table and a small Monte Carlo; a design
+# without tolerances and a bad --trials refused.
+lenslab_cli_test(NAME tolerance.table
+    ARGS tolerance examples/optimize/triplet.tolerance.json --trials 6
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=radius L2.back ± 0.05"
+           "-DSTDERR_CONTAINS=Monte Carlo: 6 of 6")
+lenslab_cli_test(NAME tolerance.json
+    ARGS tolerance examples/optimize/triplet.tolerance.json --trials 4 --seed 7 --json --quiet
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON
+           "-DJSON_KEYS=nominal,sensitivity,rss_change,predicted_mean,predicted_sd,monte_carlo")
+lenslab_cli_test(NAME tolerance.bad.none_given
+    ARGS tolerance ${optimize_data}/triplet_near.design.json
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: ${optimize_data}/triplet_near.design.json: tolerances: no tolerance to try (give radius, thickness or air_gap in mm)")
+lenslab_cli_test(NAME tolerance.bad.trials
+    ARGS tolerance examples/optimize/triplet.tolerance.json --trials 0
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--trials: must be")
 lenslab_cli_test(NAME bench.optimize
     ARGS bench optimize ${optimize_data}/triplet_near.design.json --threads 2
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=median" "-DSTDOUT_CONTAINS=rms_spot 20°")

@@ -21,7 +21,9 @@ using nlohmann::json;
 
 // The rows of the table whose header line is `header` in docs/optimizer.md: the first cell's
 // backticked word -> the row's other cells.
-std::map<std::string, std::vector<std::string>> docs_table(const std::string& header) {
+// `occurrence`: which table with that header (1: the first).
+std::map<std::string, std::vector<std::string>> docs_table(const std::string& header,
+                                                           int occurrence = 1) {
     std::ifstream in(std::string(LENSLAB_SOURCE_DIR) + "/docs/optimizer.md");
     std::map<std::string, std::vector<std::string>> rows;
     std::string line;
@@ -29,7 +31,7 @@ std::map<std::string, std::vector<std::string>> docs_table(const std::string& he
     static const std::regex row(R"(^\| `([a-z_]+)` \|(.*)\|$)");
     while (std::getline(in, line)) {
         if (line == header) {
-            inside = true;
+            inside = --occurrence == 0;
             continue;
         }
         if (!inside) continue;
@@ -85,6 +87,20 @@ TEST(LensDesignSpec, TheDocsTableListsEveryTopLevelKeyWithItsDefaultAndRange) {
     }
     for (const auto& [key, row] : rows)
         EXPECT_TRUE(declared.contains(key)) << key << " is documented, not declared";
+}
+
+TEST(LensDesignSpec, TheTolerancesTableListsItsKeysWithTheirDefaultsAndRanges) {
+    const auto rows = docs_table("| key | type | default | meaning |", 2);
+    ASSERT_EQ(rows.size(), tolerances_spec().params.size());
+    for (const ParamSpec& p : tolerances_spec().params) {
+        ASSERT_TRUE(rows.contains(p.key)) << p.key << " is not in the tolerances table";
+        EXPECT_EQ(rows.at(p.key).at(1), " " + default_text(p) + " ") << p.key;
+        if (p.kind == ParamKind::WholeNumber) {
+            const std::string range = std::to_string(int64_t(p.min->value)) + " – " +
+                                      std::to_string(int64_t(p.max->value));
+            EXPECT_NE(rows.at(p.key).at(0).find(range), std::string::npos) << p.key;
+        }
+    }
 }
 
 template <class Kind>

@@ -1,0 +1,259 @@
+#include "optimize/tolerance.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "math/rng.h"
+#include "optimize/design_evaluation.h"
+#include "util/format_number.h"
+#include "util/scene_error.h"
+
+namespace lenslab {
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+// Trials run in chunks of this many between progress reports.
+constexpr int kTrialChunk = 64;
+// Refocusing: rounds of the parabola through three image planes, each a quarter the last's
+// spacing, the first spacing this share of the image distance (at least kLeastFocusStep).
+constexpr int kRefocusRounds = 3;
+constexpr double kFocusStepShare = 0.002, kLeastFocusStep = 1e-4;
+
+std::string lens_name(const ojson& object, size_t index) {
+    if (object.contains("name") && object["name"].is_string()) return object["name"];
+    return "objects[" + std::to_string(index) + "]";
+}
+
+// The variable `spec` of the design's system, or none where the system refuses it (a flat or
+// formula face, no lens behind for an air gap).
+std::optional<DesignVariable> try_variable(const LensDesign& design, const nlohmann::json& spec) {
+    try {
+        return read_design_variable(spec, "tolerance", design.scene);
+    } catch (const SceneError&) {
+        return std::nullopt;
+    }
+}
+
+// The design with the criterion's operands (the RMS spot of every field) and no variables.
+LensDesign criterion_design(const LensDesign& design) {
+    LensDesign d = design;
+    d.variables.clear();
+    d.operands.clear();
+    for (size_t i = 0; i < design.fields.size(); ++i) {
+        MeritOperand op;
+        op.kind = OperandKind::RmsSpot;
+        op.field = design.fields[i];
+        op.path = "fields[" + std::to_string(i) + "]";
+        d.operands.push_back(op);
+    }
+    return d;
+}
+
+// The root mean square over the fields of an evaluation's RMS spots.
+double criterion_of(const DesignEvaluation& e) {
+    double sum = 0;
+    for (double v : e.values) sum += v * v;
+    return std::sqrt(sum / double(e.values.size()));
+}
+
+class Criterion {
+public:
+    Criterion(const DesignModel& model, bool refocus, double focus_step)
+        : m_model(model), m_refocus(refocus), m_step(focus_step) {}
+
+    // At `x` (the last coordinate the image distance); refocused when asked: the parabola
+    // through the squared criterion at three image planes, narrowed kRefocusRounds times.
+    std::optional<double> operator()(std::vector<double> x) const { return focused(x).first; }
+
+    // The criterion and the image distance it was found at.
+    std::pair<std::optional<double>, double> focused(std::vector<double> x) const {
+        std::optional<double> best = at(x);
+        if (!m_refocus || !best) return {best, x.back()};
+        double z = x.back(), h = m_step;
+        for (int round = 0; round < kRefocusRounds; ++round, h /= 4) {
+            x.back() = z - h;
+            const std::optional<double> before = at(x);
+            x.back() = z + h;
+            const std::optional<double> after = at(x);
+            if (!before || !after) break;
+            const double f0 = *best * *best, fm = *before * *before, fp = *after * *after;
+            double next = fm < fp ? z - h : z + h, next_value = std::min(*before, *after);
+            const double curvature = fp - 2 * f0 + fm;
+            if (curvature > 0) {
+                const double shift = std::clamp(-h * (fp - fm) / (2 * curvature), -4 * h, 4 * h);
+                x.back() = z + shift;
+                if (const std::optional<double> v = at(x); v && *v < next_value) {
+                    next = z + shift;
+                    next_value = *v;
+                }
+            }
+            if (next_value < *best) {
+                best = next_value;
+                z = next;
+            }
+        }
+        return {best, z};
+    }
+
+private:
+    std::optional<double> at(const std::vector<double>& x) const {
+        const std::optional<DesignEvaluation> e = m_model.evaluate(x);
+        if (!e) return std::nullopt;
+        return criterion_of(*e);
+    }
+
+    const DesignModel& m_model;
+    bool m_refocus;
+    double m_step;
+};
+
+// The nearest-rank percentile `p` (0-100) of sorted values.
+double percentile(const std::vector<double>& sorted, double p) {
+    const size_t rank = size_t(std::ceil(p / 100 * double(sorted.size())));
+    return sorted[std::clamp<size_t>(rank, 1, sorted.size()) - 1];
+}
+
+MonteCarloSummary summarise(const std::vector<std::optional<double>>& trials) {
+    MonteCarloSummary s;
+    s.trials = int(trials.size());
+    for (const std::optional<double>& t : trials) {
+        if (t) s.criteria.push_back(*t);
+    }
+    s.failed = s.trials - int(s.criteria.size());
+    if (s.criteria.empty()) return s;
+    double sum = 0, sum2 = 0;
+    for (double c : s.criteria) sum += c, sum2 += c * c;
+    const double n = double(s.criteria.size());
+    s.mean = sum / n;
+    s.sd = std::sqrt(std::max(0.0, sum2 / n - s.mean * s.mean));
+    std::vector<double> sorted = s.criteria;
+    std::sort(sorted.begin(), sorted.end());
+    s.min = sorted.front();
+    s.max = sorted.back();
+    s.p50 = percentile(sorted, 50);
+    s.p90 = percentile(sorted, 90);
+    s.p98 = percentile(sorted, 98);
+    return s;
+}
+
+}  // namespace
+
+double ToleranceItem::value_at(double e) const {
+    if (variable.kind == VariableKind::Curvature) return 1 / (1 / nominal + e);
+    return nominal + e;
+}
+
+std::vector<ToleranceItem> tolerance_items(const LensDesign& design) {
+    const ToleranceSettings& t = design.tolerances;
+    DesignState state{design.scene, design.image_distance.value_or(0)};
+    std::vector<ToleranceItem> items;
+    const auto add = [&](const nlohmann::json& spec, const std::string& label, double tolerance) {
+        if (tolerance <= 0) return;
+        const std::optional<DesignVariable> v = try_variable(design, spec);
+        if (!v) return;
+        const double nominal = variable_value(state, *v);
+        // A flat face (curvature 0) has no radius to be made wrong.
+        if (v->kind == VariableKind::Curvature && nominal == 0) return;
+        items.push_back({*v, label + " ± " + format_number(tolerance), nominal, tolerance});
+    };
+    const ojson& objects = design.scene["objects"];
+    for (size_t i = 0; i < objects.size(); ++i) {
+        const ojson& o = objects[i];
+        if (o.value("type", "") != "lens" || !o.contains("thickness")) continue;
+        const std::string name = lens_name(o, i);
+        for (const char* face : {"front", "back"}) {
+            add({{"type", "curvature"}, {"lens", name}, {"surface", face}},
+                "radius " + name + "." + face, t.radius);
+        }
+        add({{"type", "thickness"}, {"lens", name}}, "thickness " + name, t.thickness);
+        add({{"type", "air_gap"}, {"lens", name}}, "air gap after " + name, t.air_gap);
+    }
+    return items;
+}
+
+ToleranceReport tolerance_design(const LensDesign& design,
+                                 const std::function<void(int, int)>& progress) {
+    ToleranceReport report;
+    report.compensated = design.tolerances.refocus;
+    // The nominal image plane: the design's, or its paraxial focus.
+    LensDesign measured = criterion_design(design);
+    {
+        const DesignModel nominal(measured);
+        const std::optional<DesignEvaluation> e = nominal.evaluate(nominal.start());
+        if (!e) throw SceneError("system", "the nominal design cannot be evaluated");
+        report.image_distance = e->image_distance;
+    }
+    measured.image_distance = report.image_distance;
+    const std::vector<ToleranceItem> items = tolerance_items(design);
+    for (const ToleranceItem& item : items) measured.variables.push_back(item.variable);
+    DesignVariable image;
+    image.kind = VariableKind::ImageDistance;
+    image.path = "image_distance";
+    measured.variables.push_back(image);
+
+    const DesignModel model(measured);
+    const std::vector<double> x0 = model.start();
+    const Criterion criterion(
+        model, design.tolerances.refocus,
+        std::max(kLeastFocusStep, kFocusStepShare * std::abs(report.image_distance)));
+    {
+        // The nominal lens refocused as the made ones are, so they are compared alike.
+        std::vector<double> x = x0;
+        x.back() = criterion.focused(x0).second;
+        const std::optional<DesignEvaluation> e = model.evaluate(x);
+        report.nominal = criterion_of(*e);
+        report.nominal_fields = e->values;
+        report.image_distance = x.back();
+    }
+
+    // The sensitivity table: each error alone at both ends.
+    report.rows.resize(items.size());
+    tbb::parallel_for(size_t{0}, items.size(), [&](size_t i) {
+        SensitivityRow& row = report.rows[i];
+        row.label = items[i].label;
+        row.tolerance = items[i].tolerance;
+        for (const double sign : {-1.0, 1.0}) {
+            std::vector<double> x = x0;
+            x[i] = items[i].value_at(sign * items[i].tolerance);
+            (sign < 0 ? row.minus : row.plus) = criterion(x);
+        }
+    });
+    const double n2 = report.nominal * report.nominal;
+    double rss = 0, spread = 0, mean_square = n2;
+    for (const SensitivityRow& row : report.rows) {
+        if (!row.minus || !row.plus) continue;
+        const double worst =
+            std::max({*row.minus - report.nominal, *row.plus - report.nominal, 0.0});
+        rss += worst * worst;
+        spread += (*row.plus - *row.minus) * (*row.plus - *row.minus) / 4 / 3;
+        mean_square += ((*row.minus * *row.minus + *row.plus * *row.plus) / 2 - n2) / 3;
+    }
+    report.rss_change = std::sqrt(rss);
+    report.predicted_sd = std::sqrt(spread);
+    report.predicted_mean = std::sqrt(std::max(0.0, mean_square));
+
+    // The Monte Carlo: every error at once, uniform within its tolerance.
+    const int trials = design.tolerances.trials;
+    std::vector<std::optional<double>> results(static_cast<size_t>(trials));
+    for (int first = 0; first < trials; first += kTrialChunk) {
+        const int last = std::min(trials, first + kTrialChunk);
+        tbb::parallel_for(first, last, [&](int trial) {
+            Rng rng(design.tolerances.seed, uint64_t(trial));
+            std::vector<double> x = x0;
+            for (size_t i = 0; i < items.size(); ++i) {
+                x[i] = items[i].value_at((2 * rng.uniform() - 1) * items[i].tolerance);
+            }
+            results[size_t(trial)] = criterion(x);
+        });
+        if (progress) progress(last, trials);
+    }
+    report.monte_carlo = summarise(results);
+    return report;
+}
+
+}  // namespace lenslab
