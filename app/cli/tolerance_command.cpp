@@ -6,9 +6,11 @@
 #include <memory>
 #include <optional>
 
+#include "analysis/figures/analyze_figures.h"
 #include "commands.h"
 #include "optimize/lens_design_spec.h"
 #include "optimize/tolerance.h"
+#include "optimize/tolerance_figure.h"
 #include "render_overrides.h"
 #include "util/format_number.h"
 #include "util/scene_error.h"
@@ -17,9 +19,13 @@ namespace lenslab::cli {
 
 namespace {
 
+// The figure's size in pixels: two square panels side by side, as the bench's curves.
+constexpr double kFigureWidth = 900, kFigureHeight = 420;
+
 struct ToleranceArgs {
     std::string design;
     std::optional<int64_t> trials, seed;
+    std::string figure;  // the Monte Carlo's histogram and yield, SVG or PNG
     bool json = false;
     bool quiet = false;
 };
@@ -105,12 +111,17 @@ int run_tolerance(const ToleranceArgs& a) {
     } catch (const SceneError& e) {
         throw SceneError(a.design + ": " + e.path(), e.reason());
     }
+    if (!a.figure.empty()) {
+        const std::string unit = design.scene.value("length_unit_mm", 1.0) == 1.0 ? "mm" : "";
+        write_bench_figure(a.figure, {tolerance_figure(report, unit), kFigureWidth, kFigureHeight});
+    }
     if (a.json) {
         nlohmann::ordered_json j = tolerance_json(report);
         j["design"] = a.design;
         std::cout << j.dump(2) << "\n";
     } else {
         print_table(a.design, report);
+        if (!a.figure.empty()) std::cout << "Monte Carlo figure written to " << a.figure << "\n";
     }
     return 0;
 }
@@ -131,6 +142,9 @@ Action add_tolerance_command(CLI::App& app) {
         ->check(declared_check(trials));
     cmd->add_option("--seed", args->seed, "The Monte Carlo's seed (default: the design's)")
         ->check(declared_check(tolerances_spec().param("seed")));
+    cmd->add_option("--figure", args->figure,
+                    "Write the Monte Carlo's histogram and cumulative yield to this file: SVG, "
+                    "or PNG for a name ending in .png");
     cmd->add_flag("--json", args->json, "Print the report as JSON");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
     return [args] { return run_tolerance(*args); };

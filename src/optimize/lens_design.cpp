@@ -123,8 +123,8 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
             d.image_distance = reader.number("image_distance");
         }
     }
-    // Both lists are lenslab optimize's (optimize_design checks they are there); lenslab
-    // tolerance reads a design without them.
+    // Both lists are lenslab optimize's (optimize_design refuses a design without operands);
+    // lenslab tolerance reads a design without them.
     const nlohmann::json variables =
         reader.has("variables") ? reader.require("variables") : nlohmann::json::array();
     if (!variables.is_array()) throw SceneError("variables", "must be an array of variables");
@@ -165,7 +165,6 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
                                                         d.scene, d.base_dir, d.wavelengths));
         }
     }
-    d.has_operands = operands_given != nullptr;
     d.glass_iterations = static_cast<int>(reader.whole("glass_iterations"));
     if (const nlohmann::json* block = reader.find("tolerances")) {
         SpecReader t(*block, "tolerances", tolerances_spec());

@@ -41,7 +41,6 @@ struct LensDesign {
     std::optional<double> image_distance;
     std::vector<DesignVariable> variables;
     std::vector<MeritOperand> operands;
-    bool has_operands = false;  // the file gave them (lenslab optimize needs them)
     int iterations = 100;
     // Glass choice after the continuous optimisation, each glass re-optimised this long.
     std::vector<GlassChoice> glass_choices;

@@ -60,7 +60,7 @@ MeritTable merit_table(const LensDesign& design, const DesignEvaluation& evaluat
 OptimizeResult optimize_design(const LensDesign& design, int iterations,
                                const std::function<void(const LmProgress&)>& progress,
                                const std::function<void(const GlassTrial&)>& on_glass) {
-    if (!design.has_operands) {
+    if (design.operands.empty()) {
         throw SceneError("operands",
                          "missing (required: the merit function lenslab optimize "
                          "minimises)");

@@ -722,6 +722,11 @@ lenslab_cli_test(NAME tolerance.table
     ARGS tolerance examples/optimize/triplet.tolerance.json --trials 6
     CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=radius L2.back ± 0.05"
            "-DSTDERR_CONTAINS=Monte Carlo: 6 of 6")
+set(tolerance_figure ${LENSLAB_CLI_OUT}/tolerance.png)
+lenslab_cli_test(NAME tolerance.figure
+    ARGS tolerance examples/optimize/triplet.tolerance.json --trials 5 -q --figure ${tolerance_figure}
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=Monte Carlo figure written to"
+           -DOUTPUT=${tolerance_figure} -DOUTPUT_CREATED=ON)
 lenslab_cli_test(NAME tolerance.json
     ARGS tolerance examples/optimize/triplet.tolerance.json --trials 4 --seed 7 --json --quiet
     CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "optimize/lens_design.h"
+#include "optimize/optimize_design.h"
 #include "optimize_test_design.h"
 
 namespace lenslab {
@@ -25,6 +26,23 @@ std::string design_error(const nlohmann::json& edit) {
         return e.what();
     }
     return "(no error)";
+}
+
+// lenslab tolerance's designs need no variables or operands; lenslab optimize refuses a
+// design without operands.
+TEST(LensDesign, WithoutOperandsItReadsButIsNotOptimised) {
+    nlohmann::json root = design_of(kDesignLenses, nlohmann::json::object());
+    root.erase("operands");
+    root.erase("variables");
+    const LensDesign d = lens_design_from_json(root, "");
+    EXPECT_TRUE(d.operands.empty() && d.variables.empty());
+    try {
+        optimize_design(d);
+        ADD_FAILURE() << "optimised without operands";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "operands: missing (required: the merit function lenslab optimize minimises)");
+    }
 }
 
 TEST(LensDesign, MistakesNameTheirJsonPath) {

@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "optimize/tolerance.h"
+#include "optimize/tolerance_figure.h"
 
 namespace lenslab {
 namespace {
@@ -76,6 +77,28 @@ TEST(Tolerance, RefocusingFindsAPlaneAtLeastAsGood) {
     const ToleranceReport refocused = tolerance_design(triplet(4));
     EXPECT_LE(refocused.nominal, still.nominal);
     EXPECT_NEAR(still.image_distance, 40.27, 1e-12);  // the design's plane, kept
+}
+
+// The figure: the histogram holds every evaluated lens, the yield ends at the share that
+// could be evaluated, the nominal is marked; its title counts the lenses.
+TEST(Tolerance, TheFigureCountsEveryMadeLens) {
+    ToleranceReport r;
+    r.nominal = 0.02;
+    r.monte_carlo.trials = 5;
+    r.monte_carlo.failed = 1;
+    r.monte_carlo.criteria = {0.021, 0.019, 0.025, 0.022};
+    const RayDiagram d = tolerance_figure(r, "mm");
+    EXPECT_EQ(d.title, "Monte Carlo of 5 made lenses (1 could not be evaluated)");
+    EXPECT_NE(d.subtitle.find("0.02 mm"), std::string::npos) << d.subtitle;
+    // Two panels of two curves each (the data and the nominal's dashed line), in the
+    // diagram's coordinates: the yield's last point 0.8 of its panel's height (-1 to 1).
+    std::vector<const DiagramPath*> curves;
+    for (const DiagramPath& p : d.paths) {
+        if (p.points.size() >= 2 && !p.closed) curves.push_back(&p);
+    }
+    ASSERT_GE(curves.size(), 4u);
+    const DiagramPath& yield = *curves[curves.size() - 2];
+    EXPECT_NEAR(yield.points.back().y, -1 + 2 * 0.8, 1e-9);
 }
 
 }  // namespace

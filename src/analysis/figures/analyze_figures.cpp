@@ -2,7 +2,10 @@
 
 #include "analysis/figures/curve_figures.h"
 #include "analysis/figures/field_figures.h"
+#include "analysis/figures/ray_diagram_image.h"
 #include "analysis/figures/ray_diagram_svg.h"
+#include "image/image_io.h"
+#include "util/atomic_file.h"
 
 namespace lenslab {
 
@@ -65,6 +68,15 @@ BenchFigure bench_figure(const AnalyzeResults& r, const AnalyzeRequest& request,
     std::string known;
     for (const std::string& n : bench_figure_names()) known += (known.empty() ? "" : ", ") + n;
     throw AnalyzeRequestError("figure '" + name + "': unknown (known: " + known + ")");
+}
+
+void write_bench_figure(const std::string& file, const BenchFigure& f) {
+    const std::string png = ".png";
+    if (file.size() > png.size() && file.compare(file.size() - png.size(), png.size(), png) == 0) {
+        write_png_image(ray_diagram_image(f.diagram, f.width, f.min_height), file);
+    } else {
+        write_text_atomically(file, ray_diagram_svg(f.diagram, f.width, f.min_height));
+    }
 }
 
 std::string bench_figure_svg(const AnalyzeResults& results, const AnalyzeRequest& request,

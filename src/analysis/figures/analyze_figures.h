@@ -27,6 +27,10 @@ struct BenchFigure {
 BenchFigure bench_figure(const AnalyzeResults& results, const AnalyzeRequest& request,
                          const std::string& name);
 
+// Writes a figure as SVG, or as PNG when the file's name ends in ".png"; atomically either
+// way, so a failed write leaves no half file and says why it failed.
+void write_bench_figure(const std::string& file, const BenchFigure& figure);
+
 // The same as the SVG text `lenslab analyze` writes for it.
 std::string bench_figure_svg(const AnalyzeResults& results, const AnalyzeRequest& request,
                              const std::string& name);

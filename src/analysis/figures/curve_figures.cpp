@@ -10,7 +10,6 @@ namespace lenslab {
 
 namespace {
 
-constexpr double kCurvePanelGap = 0.6;  // between panels, in diagram units
 constexpr double kSagittalDash = 6;
 
 // The largest |v| over the values, or 1 when there is none (a flat chart).
@@ -20,16 +19,6 @@ double curve_half_range(const std::vector<double>& values) {
         if (!std::isnan(v)) largest = std::max(largest, std::abs(v));
     }
     return largest > 0 ? 1.05 * largest : 1.0;
-}
-
-// The frame every chart of this file shares: room above for titles, below for axis labels.
-void frame_panels(RayDiagram& d, int panels) {
-    // A hair wider than the panels, so the frame's clip keeps their outer edges.
-    d.z_min = -1.02;
-    d.z_max = 1.02 + (panels - 1) * (2 + kCurvePanelGap);
-    d.y_min = -1.25;
-    d.y_max = 1.2;
-    d.scale_bar = 0;
 }
 
 }  // namespace
@@ -52,7 +41,7 @@ RayDiagram field_curves_figure(const FieldCurves& r, const std::string& unit,
                  distortion_range = curve_half_range(distortion);
     PlotPanel focus, distort;
     focus.centre = {0, 0};
-    distort.centre = {2 + kCurvePanelGap, 0};
+    distort.centre = {2 + kPlotPanelGap, 0};
     for (PlotPanel* p : {&focus, &distort}) {
         p->y_min = 0;
         p->y_max = max_field > 0 ? max_field : 1;

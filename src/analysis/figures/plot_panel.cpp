@@ -52,6 +52,15 @@ std::vector<LegendEntry> wavelength_legend(const std::vector<double>& wavelength
     return legend;
 }
 
+void frame_panels(RayDiagram& d, int panels) {
+    // A hair wider than the panels, so the frame's clip keeps their outer edges.
+    d.z_min = -1.02;
+    d.z_max = 1.02 + (panels - 1) * (2 + kPlotPanelGap);
+    d.y_min = -1.25;
+    d.y_max = 1.2;
+    d.scale_bar = 0;
+}
+
 void draw_plot_panel(RayDiagram& d, const PlotPanel& p) {
     const double cz = p.centre.z, cy = p.centre.y;
     const auto to_z = [&](double x) { return cz - 1 + 2 * (x - p.x_min) / (p.x_max - p.x_min); };

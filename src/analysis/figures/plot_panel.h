@@ -32,6 +32,11 @@ struct PlotPanel {
 
 void draw_plot_panel(RayDiagram& diagram, const PlotPanel& panel);
 
+inline constexpr double kPlotPanelGap = 0.6;  // between panels side by side, in diagram units
+// The frame of `panels` panels side by side, the first centred on the origin, the next
+// 2 + kPlotPanelGap along: room above for titles, below for axis labels; no scale bar.
+void frame_panels(RayDiagram& diagram, int panels);
+
 DiagramPath plot_box(double z0, double y0, double z1, double y1, DiagramColour colour);
 // A label at `at`, moved `dy` pixels down the picture.
 DiagramText plot_label(DiagramPoint at, const std::string& text, double dy,

@@ -7,8 +7,6 @@
 #include "analysis/diffraction/opd_fans.h"
 #include "analysis/figures/analyze_figures.h"
 #include "analysis/figures/diffraction_maps.h"
-#include "analysis/figures/ray_diagram_image.h"
-#include "analysis/figures/ray_diagram_svg.h"
 #include "analysis/report/curve_report.h"
 #include "analysis/report/diffraction_report.h"
 #include "analysis/report/fan_report.h"
@@ -19,23 +17,11 @@
 #include "analysis/system/lens_lookup.h"
 #include "image/image_io.h"
 #include "scene/json_reader.h"
-#include "util/atomic_file.h"
 #include "util/scene_error.h"
 
 namespace lenslab {
 
 namespace {
-
-// A figure as SVG, or as PNG when the file's name ends in ".png"; atomically either way, so a
-// failed write leaves no half file and says why it failed.
-void write_bench_figure(const std::string& file, const BenchFigure& f) {
-    const std::string png = ".png";
-    if (file.size() > png.size() && file.compare(file.size() - png.size(), png.size(), png) == 0) {
-        write_png_image(ray_diagram_image(f.diagram, f.width, f.min_height), file);
-    } else {
-        write_text_atomically(file, ray_diagram_svg(f.diagram, f.width, f.min_height));
-    }
-}
 
 // The middle of the wavelengths as given (for an even count, the one before the middle).
 double middle_wavelength(const std::vector<double>& wavelengths) {
