@@ -59,7 +59,7 @@ TEST(Tolerance, SameReportAtOneAndTwoThreads) {
     const auto run = [](int threads) {
         const tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                                         size_t(threads));
-        return tolerance_design(triplet(24));
+        return tolerance_design(triplet(12));
     };
     const ToleranceReport one = run(1), two = run(2);
     EXPECT_EQ(one.monte_carlo.criteria, two.monte_carlo.criteria);
