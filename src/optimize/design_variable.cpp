@@ -174,20 +174,27 @@ double variable_step(const DesignVariable& v) {
     }
 }
 
-int find_design_lens(const ojson& scene, const std::string& name, const std::string& path) {
+std::vector<DesignLens> design_lenses(const ojson& scene) {
+    std::vector<DesignLens> lenses;
     const auto objects = scene.find("objects");
+    if (objects == scene.end() || !objects->is_array()) return lenses;
+    for (int i = 0; i < static_cast<int>(objects->size()); ++i) {
+        const ojson& o = (*objects)[i];
+        if (!o.is_object() || o.value("type", "") != "lens" || !o.contains("thickness")) continue;
+        const std::string index = "objects[" + std::to_string(i) + "]";
+        lenses.push_back({i, o.contains("name") && o["name"].is_string()
+                                 ? o["name"].get<std::string>()
+                                 : index});
+    }
+    return lenses;
+}
+
+int find_design_lens(const ojson& scene, const std::string& name, const std::string& path) {
     std::string known;
-    if (objects != scene.end() && objects->is_array()) {
-        for (int i = 0; i < static_cast<int>(objects->size()); ++i) {
-            const ojson& o = (*objects)[i];
-            if (!o.is_object() || o.value("type", "") != "lens" || !o.contains("thickness")) {
-                continue;
-            }
-            const std::string index = "objects[" + std::to_string(i) + "]";
-            const std::string own =
-                o.contains("name") && o["name"].is_string() ? o["name"].get<std::string>() : index;
-            known += (known.empty() ? "" : ", ") + own;
-            if (own == name || index == name) return i;
+    for (const DesignLens& lens : design_lenses(scene)) {
+        known += (known.empty() ? "" : ", ") + lens.name;
+        if (lens.name == name || "objects[" + std::to_string(lens.object) + "]" == name) {
+            return lens.object;
         }
     }
     throw SceneError(path, "no prescription lens named '" + name + "' in the system" +

@@ -49,6 +49,14 @@ double variable_step(const DesignVariable& v);
 DesignVariable read_design_variable(const nlohmann::json& spec, const std::string& path,
                                     const nlohmann::ordered_json& scene);
 
+// A prescription lens object (`lens` with `thickness`) of a scene JSON: its index in
+// `objects` and the name a design gives it (its `name`, else "objects[i]").
+struct DesignLens {
+    int object = -1;
+    std::string name;
+};
+std::vector<DesignLens> design_lenses(const nlohmann::ordered_json& scene);
+
 // The index of the lens object `name` names in the scene JSON (its `name`, or "objects[i]"),
 // a prescription lens (with `thickness`); throws SceneError at `path` naming the lenses
 // there are.

@@ -15,19 +15,12 @@ namespace lenslab {
 
 namespace {
 
-using ojson = nlohmann::ordered_json;
-
 // Trials run in chunks of this many between progress reports.
 constexpr int kTrialChunk = 64;
 // Refocusing: rounds of the parabola through three image planes, each a quarter the last's
 // spacing, the first spacing this share of the image distance (at least kLeastFocusStep).
 constexpr int kRefocusRounds = 3;
 constexpr double kFocusStepShare = 0.002, kLeastFocusStep = 1e-4;
-
-std::string lens_name(const ojson& object, size_t index) {
-    if (object.contains("name") && object["name"].is_string()) return object["name"];
-    return "objects[" + std::to_string(index) + "]";
-}
 
 // The variable `spec` of the design's system, or none where the system refuses it (a flat or
 // formula face, no lens behind for an air gap).
@@ -161,11 +154,8 @@ std::vector<ToleranceItem> tolerance_items(const LensDesign& design) {
         if (v->kind == VariableKind::Curvature && nominal == 0) return;
         items.push_back({*v, label + " ± " + format_number(tolerance), nominal, tolerance});
     };
-    const ojson& objects = design.scene["objects"];
-    for (size_t i = 0; i < objects.size(); ++i) {
-        const ojson& o = objects[i];
-        if (o.value("type", "") != "lens" || !o.contains("thickness")) continue;
-        const std::string name = lens_name(o, i);
+    for (const DesignLens& lens : design_lenses(design.scene)) {
+        const std::string& name = lens.name;
         for (const char* face : {"front", "back"}) {
             add({{"type", "curvature"}, {"lens", name}, {"surface", face}},
                 "radius " + name + "." + face, t.radius);
