@@ -50,4 +50,5 @@ function(lenslab_layer name)
     # Precompiled json + standard headers, only with -DLENSLAB_PCH=ON (cmake/build_speed.cmake).
     lenslab_precompile_core(lenslab_${name})
     lenslab_unity(lenslab_${name})
+    lenslab_fuzz_coverage(lenslab_${name} ${name})
 endfunction()

@@ -8,17 +8,21 @@
 #      sanitized). Every other test runs in stage 2 only: running it here too doubled its
 #      compile and run time and checked nothing more (`ctest --preset release-ci` still runs
 #      them all unsanitized);
-#   2. AddressSanitizer + UndefinedBehaviorSanitizer build (asan-ci preset: the library at
-#      -O1, tests and apps at -O0, the tests' own code with ASan but not UBSan; the editor
-#      included, no benchmarks) + every test but the statistical render checks, each
-#      GoogleTest suite as 4 shards.
+#   2. AddressSanitizer + UndefinedBehaviorSanitizer build, compiled by clang (asan-ci
+#      preset: the library at -O1, tests and apps at -O0, the tests' own code with ASan but
+#      not UBSan; the editor and the libFuzzer targets included, no benchmarks) + every test
+#      but the statistical render checks, each GoogleTest suite as 4 shards.
 #      The editor is built and its QTest suites run here only: compiling Qt's headers twice
 #      was about a quarter of stage 1's build (docs/performance.md, "Test suite time");
 #   3. ThreadSanitizer build (tsan preset: oneTBB built instrumented by scripts/tsan-tbb.sh,
 #      only the suites with threaded tests) + the threaded tests: renders at several thread
 #      counts and their cancellation, detectors, the optimiser, the editor's render
 #      controller, detector and optimiser threads (docs/reliability.md);
-#   4. the libFuzzer targets, all at once for 60 s (scripts/fuzz.sh).
+#   4. the libFuzzer targets stage 2 built, all at once for 60 s (scripts/fuzz.sh). They were
+#      a fourth build of the library (clang, coverage everywhere) until stage 2 moved to clang
+#      with coverage in the layers the targets read: one build of the library fewer.
+# Stages 1 and 3 compile with GCC and stage 2 with clang, so both compilers' warnings fail
+# the run (-Werror).
 # Each stage prints a banner and its time; the first failure stops the run.
 #
 #   scripts/test-all.sh [--fuzz-seconds N]
@@ -66,7 +70,7 @@ ctest --preset tsan
 finished "stage 3/4: ThreadSanitizer build and the threaded tests"
 
 banner "stage 4/4: libFuzzer runs, the four targets at once, ${fuzz_seconds} s"
-scripts/fuzz.sh "$fuzz_seconds"
+scripts/fuzz.sh "$fuzz_seconds" asan-ci
 finished "stage 4/4: libFuzzer runs, the four targets at once, ${fuzz_seconds} s"
 
 printf '\n==== all stages finished clean in %d s ====\n' $((SECONDS - start_all))

@@ -415,7 +415,6 @@ private:
     const LensFilePrescription& m_p;
     std::vector<LensFileSurface> m_s;  // the file's, its folds taken into the mirrors
     double m_mm;
-    size_t m_first_optical = 0;             // the first glass or mirror surface
     std::map<size_t, double> m_s_estimate;  // estimated semi-diameters, in the file's unit
 };
 

@@ -21,7 +21,7 @@
 
 namespace lenslab {
 
-struct Scene;
+class Scene;
 
 // Density (per nm) over [kLambdaMinNm, kLambdaMaxNm] that follows the eye's sensitivity:
 // proportional to 1 / cosh^2(0.0072 (nm - 538)), the shape pbrt-v4 samples visible

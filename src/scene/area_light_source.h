@@ -18,9 +18,10 @@ class AreaLightSource : public Light {
 public:
     // `flux`: the spectral radiant flux (W per nm); `half_size`: the patch's half extents
     // along the frame's u and v (its box).
-    AreaLightSource(SpectrumPtr flux, const PlaneFrame& frame, double area,
-                    std::array<double, 2> half_size)
-        : Light(std::move(flux)), m_frame(frame), m_area(area), m_half_size(half_size) {}
+    // The patch's area cancels from every estimate (L = Phi / (pi A), a point drawn with
+    // density 1 / A), so it is not kept.
+    AreaLightSource(SpectrumPtr flux, const PlaneFrame& frame, std::array<double, 2> half_size)
+        : Light(std::move(flux)), m_frame(frame), m_half_size(half_size) {}
 
     double power() const override { return spectrum_watts(); }
     PhotonStart sample_le(Rng& rng) const override;
@@ -43,7 +44,6 @@ private:
     Vec3 sample_point(double u1, double u2) const;
 
     PlaneFrame m_frame;
-    double m_area;
     std::array<double, 2> m_half_size;
 };
 

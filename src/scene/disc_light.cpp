@@ -16,8 +16,7 @@ namespace {
 class DiscLight final : public AreaLightSource {
 public:
     DiscLight(SpectrumPtr flux, const PlaneFrame& frame, double radius)
-        : AreaLightSource(std::move(flux), frame, kPi * radius * radius, {radius, radius}),
-          m_radius(radius) {}
+        : AreaLightSource(std::move(flux), frame, {radius, radius}), m_radius(radius) {}
 
 private:
     // Concentric: neighbouring strata stay neighbours on the disc.

@@ -16,7 +16,7 @@ namespace {
 class RectangleLight final : public AreaLightSource {
 public:
     RectangleLight(SpectrumPtr flux, const PlaneFrame& frame, double width, double height)
-        : AreaLightSource(std::move(flux), frame, width * height, {0.5 * width, 0.5 * height}),
+        : AreaLightSource(std::move(flux), frame, {0.5 * width, 0.5 * height}),
           m_width(width),
           m_height(height) {}
 
