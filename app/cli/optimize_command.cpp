@@ -20,14 +20,16 @@ namespace {
 struct OptimizeArgs {
     std::string design;
     std::string output;
-    int iterations = -1;  // -1: the design's
+    int iterations = -1;     // -1: the design's
+    int global_starts = -1;  // -1: the design's global_search block; 0: none
     bool json = false;
     bool quiet = false;
 };
 
 int run_optimize(const OptimizeArgs& a) {
     check_output_file(a.output);  // before the work, not after
-    const LensDesign design = load_lens_design(a.design);
+    LensDesign design = load_lens_design(a.design);
+    if (a.global_starts >= 0) design.global_search.starts = a.global_starts;
     const auto progress = [&a](const LmProgress& p) {
         if (a.quiet) return;
         char line[160];
@@ -77,6 +79,12 @@ Action add_optimize_command(CLI::App& app) {
                     "Most iterations of the solver (default: the design's `iterations`, else " +
                         iterations.fallback.dump() + ")")
         ->check(declared_check(iterations));
+    const ParamSpec& starts = global_search_spec().param("starts");
+    cmd->add_option("--global-starts", args->global_starts,
+                    "Start the solver from N points spread over the variables' region and keep "
+                    "the best (0: only the design's start; default: the design's global_search "
+                    "block, else 0)")
+        ->check(CLI::Range(0.0, starts.max->value));
     cmd->add_flag("--json", args->json, "Print the before/after report as JSON");
     cmd->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
     return [args] { return run_optimize(*args); };

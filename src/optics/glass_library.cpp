@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "optics/glass_catalogue_file.h"
@@ -20,11 +21,19 @@ std::string upper_glass_name(std::string s) {
 
 std::vector<const Glass*> glasses_named(const std::string& wanted_upper,
                                         const std::string& maker_upper) {
+    // The makers' glasses by upper-case name, in catalogue order: a scene names a glass per
+    // lens, and the optimiser reads its scene again at every step (a scan of the 1,600
+    // glasses was a tenth of an evaluation).
+    static const auto by_name = [] {
+        std::unordered_map<std::string, std::vector<const Glass*>> index;
+        for (const Glass& g : maker_glasses()) index[upper_glass_name(g.name)].push_back(&g);
+        return index;
+    }();
     std::vector<const Glass*> found;
-    for (const Glass& g : maker_glasses()) {
-        if (upper_glass_name(g.name) == wanted_upper &&
-            (maker_upper.empty() || upper_glass_name(g.maker) == maker_upper))
-            found.push_back(&g);
+    const auto it = by_name.find(wanted_upper);
+    if (it == by_name.end()) return found;
+    for (const Glass* g : it->second) {
+        if (maker_upper.empty() || upper_glass_name(g->maker) == maker_upper) found.push_back(g);
     }
     return found;
 }
@@ -72,11 +81,14 @@ const std::vector<Glass>& maker_glasses() {
     return glasses;
 }
 
-std::vector<std::string> glass_makers() {
-    std::vector<std::string> makers;
-    for (const Glass& g : maker_glasses()) {
-        if (makers.empty() || makers.back() != g.maker) makers.push_back(g.maker);
-    }
+const std::vector<std::string>& glass_makers() {
+    static const std::vector<std::string> makers = [] {
+        std::vector<std::string> list;
+        for (const Glass& g : maker_glasses()) {
+            if (list.empty() || list.back() != g.maker) list.push_back(g.maker);
+        }
+        return list;
+    }();
     return makers;
 }
 
@@ -85,15 +97,19 @@ std::string glass_label(const Glass& g) {
 }
 
 GlassLookup lookup_glass(const std::string& name) {
+    // The built-in glasses by upper-case name, the first of a name kept.
+    static const auto built_in = [] {
+        std::unordered_map<std::string, const Glass*> index;
+        for (const Glass& g : glass_catalogue()) index.emplace(upper_glass_name(g.name), &g);
+        return index;
+    }();
     const std::string wanted = upper_glass_name(name);
-    for (const Glass& g : glass_catalogue()) {
-        if (upper_glass_name(g.name) == wanted) return {&g, {}};
-    }
+    if (const auto it = built_in.find(wanted); it != built_in.end()) return {it->second, {}};
     if (const Glass* user = find_user_glass(wanted)) return {user, {}};
     const size_t colon = wanted.find(':');
     if (colon != std::string::npos) {
         const std::string maker = wanted.substr(0, colon), glass = wanted.substr(colon + 1);
-        const std::vector<std::string> makers = glass_makers();
+        const std::vector<std::string>& makers = glass_makers();
         if (std::find(makers.begin(), makers.end(), maker) == makers.end()) {
             std::string known;
             for (const std::string& m : makers) known += (known.empty() ? "" : ", ") + m;

@@ -14,7 +14,7 @@ namespace lenslab {
 const std::vector<Glass>& maker_glasses();
 
 // "SCHOTT", "OHARA", ...: the makers of maker_glasses(), in their order.
-std::vector<std::string> glass_makers();
+const std::vector<std::string>& glass_makers();
 
 // What lookup_glass found: the glass, or why there is none (glass is then nullptr).
 struct GlassLookup {

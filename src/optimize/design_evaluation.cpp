@@ -133,6 +133,7 @@ DesignEvaluation DesignModel::evaluate_state(const DesignState& state,
     options.epd = d.epd;
     options.f_number = d.f_number;
     options.fields = d.fields;
+    options.ray_aiming = d.ray_aiming;
     const FirstOrder first = first_order(system, paraxial, options);
     DesignEvaluation result;
     result.efl = paraxial.efl;

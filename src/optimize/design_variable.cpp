@@ -6,6 +6,7 @@
 #include "math/vec3.h"
 #include "optimize/lens_design_spec.h"
 #include "scene/json_reader.h"
+#include "util/format_number.h"
 
 namespace lenslab {
 
@@ -209,7 +210,18 @@ DesignVariable read_design_variable(const nlohmann::json& spec, const std::strin
     DesignVariable v;
     v.path = path;
     v.kind = type.kind;
-    if (type.keys.empty()) return v;  // the image distance: no lens
+    if (reader.has("min") || reader.has("max")) {
+        if (!reader.has("min")) throw_missing_key(spec, path, "min");
+        if (!reader.has("max")) throw_missing_key(spec, path, "max");
+        v.min = reader.number("min");
+        v.max = reader.number("max");
+        if (!(*v.min < *v.max)) {
+            throw SceneError(
+                reader.child_path("max"),
+                "must be above min (" + format_number(*v.min) + "), got " + format_number(*v.max));
+        }
+    }
+    if (v.kind == VariableKind::ImageDistance) return v;  // no lens
     const bool needs_surface = std::count(type.keys.begin(), type.keys.end(), "surface") > 0;
     v.lens = reader.string("lens");
     v.object = find_design_lens(scene, v.lens, reader.child_path("lens"));

@@ -7,6 +7,7 @@
 // from the last vertex to the image plane.
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,11 @@ struct DesignVariable {
     int order = 0;             // aspheric: the power of r, 4, 6, ... 16
     double semi_diameter = 0;  // the lens's, for the finite-difference step
     std::string path;          // "variables[2]", for messages
+    // Bounds the optimiser keeps the variable within (optimize/variable_bounds.h), both or
+    // neither; they are also the region the global search draws its starts from.
+    std::optional<double> min, max;
+
+    bool bounded() const { return min.has_value(); }
 };
 
 // The design as the optimiser changes it: the scene and the image plane behind it.

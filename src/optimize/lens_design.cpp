@@ -11,6 +11,7 @@
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
 #include "scene/spec_reader.h"
+#include "util/format_number.h"
 
 namespace lenslab {
 
@@ -115,6 +116,7 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
         }
     }
     d.rings = static_cast<int>(reader.whole("rings"));
+    d.ray_aiming = *ray_aiming_named(reader.text("ray_aiming"));
     d.iterations = static_cast<int>(reader.whole("iterations"));
     if (const nlohmann::json* image = reader.find("image_distance")) {
         if (image->is_string()) {
@@ -144,6 +146,15 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
                              "(a number, not the paraxial focus)");
         }
     }
+    const DesignState start_state{d.scene, d.image_distance.value_or(0.0)};
+    for (const DesignVariable& v : d.variables) {
+        const double value = variable_value(start_state, v);
+        if (v.bounded() && (value < *v.min || value > *v.max)) {
+            throw SceneError(v.path, "starts at " + format_number(value) +
+                                         ", outside its bounds [" + format_number(*v.min) + ", " +
+                                         format_number(*v.max) + "]");
+        }
+    }
     const nlohmann::json* operands_given = reader.find("operands");
     const nlohmann::json operands = operands_given ? *operands_given : nlohmann::json();
     if (operands_given && (!operands.is_array() || operands.empty())) {
@@ -166,6 +177,13 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
         }
     }
     d.glass_iterations = static_cast<int>(reader.whole("glass_iterations"));
+    if (const nlohmann::json* block = reader.find("global_search")) {
+        SpecReader g(*block, "global_search", global_search_spec());
+        d.global_search.starts = static_cast<int>(g.whole("starts"));
+        d.global_search.start_iterations = static_cast<int>(g.whole("start_iterations"));
+        d.global_search.keep = static_cast<int>(g.whole("keep"));
+        d.global_search.seed = static_cast<uint64_t>(g.whole("seed"));
+    }
     if (const nlohmann::json* block = reader.find("tolerances")) {
         SpecReader t(*block, "tolerances", tolerances_spec());
         d.tolerances.radius = t.real("radius");

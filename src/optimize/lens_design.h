@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/system/first_order.h"
 #include "optimize/design_variable.h"
 #include "optimize/glass_choice.h"
 #include "optimize/merit_operand.h"
@@ -27,6 +28,14 @@ struct ToleranceSettings {
     bool refocus = true;  // the back focus as compensator
 };
 
+// The design file's `global_search` block (`lenslab optimize`, optimize/global_search.h).
+struct GlobalSearchSettings {
+    int starts = 0;  // 0: no global search
+    int start_iterations = 15;
+    int keep = 3;  // the best starts polished with the design's whole iteration count
+    uint64_t seed = 1;
+};
+
 struct LensDesign {
     std::string system_file;       // the scene file, relative to the working folder; "" inline
     std::string base_dir;          // the folder relative paths of the scene resolve against
@@ -36,6 +45,7 @@ struct LensDesign {
     std::vector<double> fields;    // degrees, the object at infinity
     std::vector<double> wavelengths, weights;  // nm; the primary is the middle one
     int rings = 4;                             // of the hexapolar grid of each spot
+    RayAiming ray_aiming = RayAiming::Real;    // how the spots' rays find the stop
     // The image plane's distance from the last vertex; none: the paraxial focus of the
     // primary wavelength, solved at every step.
     std::optional<double> image_distance;
@@ -46,6 +56,7 @@ struct LensDesign {
     std::vector<GlassChoice> glass_choices;
     int glass_iterations = 20;
     ToleranceSettings tolerances;
+    GlobalSearchSettings global_search;
 
     double primary_wavelength() const { return wavelengths[(wavelengths.size() - 1) / 2]; }
 };

@@ -36,6 +36,9 @@ ElementSpec declare_design() {
             .as_written("array of numbers >= 0")
             .describe("one per wavelength, for the polychromatic spots (default: all equal)"),
         whole_param("rings", 4, 1, 32).describe("rings of each spot's hexapolar grid"),
+        choice_param("ray_aiming", "real", {"real", "paraxial"})
+            .describe("the spots' and wavefronts' rays aimed through the real stop (found by "
+                      "iteration), or through the paraxial entrance pupil"),
         whole_param("iterations", 100, 0, kMostIterations)
             .describe("the most iterations of the solver"),
         nested_param(ParamKind::Number, "image_distance")
@@ -53,6 +56,9 @@ ElementSpec declare_design() {
         nested_param(ParamKind::Object, "tolerances")
             .as_written("object")
             .describe("the errors `lenslab tolerance` tries (below)"),
+        nested_param(ParamKind::Object, "global_search")
+            .as_written("object")
+            .describe("start the solver from many points, not only the design's (below)"),
     };
     return s;
 }
@@ -80,7 +86,28 @@ ElementSpec declare_tolerances() {
     return s;
 }
 
+ElementSpec declare_global_search() {
+    const GlobalSearchSettings d;
+    ElementSpec s{"global_search", "the global search", {}, {}};
+    s.params = {
+        whole_param("starts", 32, 1, 100000)
+            .describe("points the solver starts from, the design's own the first"),
+        whole_param("start_iterations", d.start_iterations, 1, kMostIterations)
+            .describe("iterations from each start"),
+        whole_param("keep", d.keep, 1, 100000)
+            .describe("the best starts then run for the design's whole `iterations`"),
+        whole_param("seed", int64_t(d.seed), 0, int64_t{1} << 53)
+            .describe("the rotation of the starts' Halton sequence"),
+    };
+    return s;
+}
+
 }  // namespace
+
+const ElementSpec& global_search_spec() {
+    static const ElementSpec spec = declare_global_search();
+    return spec;
+}
 
 const ElementSpec& lens_design_spec() {
     static const ElementSpec spec = declare_design();
@@ -94,12 +121,12 @@ const ElementSpec& tolerances_spec() {
 
 const std::vector<DesignEntryType<VariableKind>>& variable_types() {
     static const std::vector<DesignEntryType<VariableKind>> types = {
-        {"curvature", VariableKind::Curvature, {"lens", "surface"}},
-        {"conic", VariableKind::Conic, {"lens", "surface"}},
-        {"aspheric", VariableKind::Aspheric, {"lens", "surface", "order"}},
-        {"thickness", VariableKind::Thickness, {"lens"}},
-        {"air_gap", VariableKind::AirGap, {"lens"}},
-        {"image_distance", VariableKind::ImageDistance, {}},
+        {"curvature", VariableKind::Curvature, {"lens", "surface", "min", "max"}},
+        {"conic", VariableKind::Conic, {"lens", "surface", "min", "max"}},
+        {"aspheric", VariableKind::Aspheric, {"lens", "surface", "order", "min", "max"}},
+        {"thickness", VariableKind::Thickness, {"lens", "min", "max"}},
+        {"air_gap", VariableKind::AirGap, {"lens", "min", "max"}},
+        {"image_distance", VariableKind::ImageDistance, {"min", "max"}},
     };
     return types;
 }

@@ -20,6 +20,8 @@ namespace lenslab {
 const ElementSpec& lens_design_spec();
 // The `tolerances` block's keys.
 const ElementSpec& tolerances_spec();
+// The `global_search` block's keys.
+const ElementSpec& global_search_spec();
 
 // A type of `variables` or `operands` entry: its `type` name and the keys it takes besides
 // `type`, in the docs' order.

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "optimize/global_search.h"
+#include "optimize/local_search.h"
 #include "util/scene_error.h"
 
 namespace lenslab {
@@ -17,18 +19,8 @@ struct ContinuousRun {
 
 ContinuousRun od_run_continuous(const DesignModel& model, int iterations,
                                 const std::function<void(const LmProgress&)>& progress) {
-    std::vector<double> steps;
-    for (const DesignVariable& v : model.design().variables) steps.push_back(variable_step(v));
-    LmOptions options;
-    options.max_iterations = iterations;
-    const ResidualFunction residuals =
-        [&model](const std::vector<double>& x) -> std::optional<std::vector<double>> {
-        std::optional<DesignEvaluation> e = model.evaluate(x);
-        if (!e) return std::nullopt;
-        return std::move(e->residuals);
-    };
     ContinuousRun run;
-    run.solver = levenberg_marquardt(residuals, model.start(), steps, options, progress);
+    run.solver = local_search(model, model.start(), iterations, progress);
     run.state = model.state_at(run.solver.x);
     return run;
 }
@@ -68,8 +60,16 @@ OptimizeResult optimize_design(const LensDesign& design, int iterations,
     const DesignModel model(design);
     const std::vector<double> x0 = model.start();
     OptimizeResult result;
-    ContinuousRun best =
-        od_run_continuous(model, iterations >= 0 ? iterations : design.iterations, progress);
+    const int whole = iterations >= 0 ? iterations : design.iterations;
+    ContinuousRun best;
+    if (design.global_search.starts > 0) {
+        GlobalSearchResult global = global_search(model, design.global_search, whole, progress);
+        best.solver = global.solver;
+        best.state = model.state_at(global.solver.x);
+        result.global = std::move(global);
+    } else {
+        best = od_run_continuous(model, whole, progress);
+    }
     result.solver = best.solver;
     for (const GlassChoice& choice : design.glass_choices) {
         const std::string current = lens_glass(best.state.scene, choice.object);

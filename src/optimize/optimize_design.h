@@ -4,10 +4,12 @@
 // scene to write out.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "optimize/design_evaluation.h"
+#include "optimize/global_search.h"
 #include "optimize/levenberg_marquardt.h"
 
 namespace lenslab {
@@ -37,7 +39,8 @@ struct OptimizeResult {
     // other glass tried; `kept` marks the one the result has.
     std::vector<GlassTrial> glass_trials;
     LmResult solver;
-    nlohmann::ordered_json scene;  // the optimised scene
+    std::optional<GlobalSearchResult> global;  // where the design asked for a global search
+    nlohmann::ordered_json scene;              // the optimised scene
 };
 
 MeritTable merit_table(const LensDesign& design, const DesignEvaluation& evaluation);

@@ -1,5 +1,6 @@
 #include "optimize/optimize_report.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace lenslab {
@@ -60,6 +61,20 @@ std::string optimize_table(const OptimizeResult& result) {
                             t.kept ? "  kept" : "");
         }
     }
+    if (result.global) {
+        const GlobalSearchResult& g = *result.global;
+        const auto evaluable =
+            std::count_if(g.starts.begin(), g.starts.end(),
+                          [](const GlobalSearchStart& s) { return s.evaluable; });
+        text += or_line("\nglobal search: %zu starts (%td evaluable), the best polished:\n",
+                        g.starts.size(), evaluable);
+        text += or_line("  %8s %16s %16s\n", "start", "merit (short)", "merit (whole)");
+        for (const GlobalSearchStart& s : g.starts) {
+            if (!s.polished) continue;
+            text += or_line("  %8d %16.6g %16.6g%s\n", s.index, s.merit, s.polished_merit,
+                            s.index == g.chosen ? "  kept" : "");
+        }
+    }
     text += or_line("\n%d iterations, %d evaluations: ", result.solver.iterations,
                     result.solver.evaluations) +
             result.solver.stopped + "\n";
@@ -80,6 +95,18 @@ nlohmann::ordered_json optimize_json(const OptimizeResult& result) {
             j["glass_trials"].push_back(
                 {{"lens", t.lens}, {"glass", t.glass}, {"merit", t.merit}, {"kept", t.kept}});
         }
+    }
+    if (result.global) {
+        nlohmann::ordered_json g;
+        g["starts"] = nlohmann::ordered_json::array();
+        for (const GlobalSearchStart& s : result.global->starts) {
+            nlohmann::ordered_json start = {{"start", s.index}, {"evaluable", s.evaluable}};
+            if (s.evaluable) start["merit"] = s.merit;
+            if (s.polished) start["polished_merit"] = s.polished_merit;
+            g["starts"].push_back(start);
+        }
+        g["chosen"] = result.global->chosen;
+        j["global_search"] = g;
     }
     j["iterations"] = result.solver.iterations;
     j["evaluations"] = result.solver.evaluations;

@@ -716,6 +716,25 @@ lenslab_cli_test(NAME optimize.glass_choice
     ARGS optimize ${optimize_data}/triplet_glass.design.json -o ${optimize_glass_out} --iterations 1
     CHECKS -DEXPECT_EXIT=zero "-DSTDERR_CONTAINS=glass L2 SF5: merit" "-DSTDOUT_CONTAINS=glass choice"
            -DOUTPUT=${optimize_glass_out} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS={")
+# The global search on the Cooke exercise: three starts, two iterations polished.
+set(optimize_global_out ${LENSLAB_CLI_OUT}/cooke_global.json)
+lenslab_cli_test(NAME optimize.global_search
+    ARGS optimize examples/optimize/cooke.design.json -o ${optimize_global_out} --iterations 2
+         --global-starts 3 --quiet
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=global search: 3 starts"
+           -DOUTPUT=${optimize_global_out} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS={")
+lenslab_cli_test(NAME optimize.global_search.json
+    ARGS optimize examples/optimize/cooke.design.json -o ${optimize_global_out} --iterations 1
+         --global-starts 2 --json --quiet
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=before,after,global_search,stopped")
+lenslab_cli_test(NAME optimize.bad.global_starts
+    ARGS optimize examples/optimize/cooke.design.json -o ${optimize_bad_out} --global-starts -1
+    CHECKS -DEXPECT_EXIT=2 "-DSTDERR_CONTAINS=--global-starts")
+lenslab_cli_test(NAME optimize.bad.bounds
+    ARGS optimize ${optimize_data}/bad_bounds.design.json -o ${optimize_bad_out}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: ${optimize_data}/bad_bounds.design.json: variables[0].max: must be above min (3), got 2"
+           -DOUTPUT=${optimize_bad_out} -DOUTPUT_CREATED=OFF)
 # `tolerance`: the triplet example's sensitivity table and a small Monte Carlo; a design
 # without tolerances and a bad --trials refused.
 lenslab_cli_test(NAME tolerance.table

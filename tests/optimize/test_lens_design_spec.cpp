@@ -89,11 +89,13 @@ TEST(LensDesignSpec, TheDocsTableListsEveryTopLevelKeyWithItsDefaultAndRange) {
         EXPECT_TRUE(declared.contains(key)) << key << " is documented, not declared";
 }
 
-TEST(LensDesignSpec, TheTolerancesTableListsItsKeysWithTheirDefaultsAndRanges) {
-    const auto rows = docs_table("| key | type | default | meaning |", 2);
-    ASSERT_EQ(rows.size(), tolerances_spec().params.size());
-    for (const ParamSpec& p : tolerances_spec().params) {
-        ASSERT_TRUE(rows.contains(p.key)) << p.key << " is not in the tolerances table";
+// A block's table (the `occurrence`-th "| key | type | default | meaning |" table): every
+// key declared, with its default and its whole-number range.
+void expect_block_documented(const ElementSpec& block, int occurrence) {
+    const auto rows = docs_table("| key | type | default | meaning |", occurrence);
+    ASSERT_EQ(rows.size(), block.params.size()) << block.name;
+    for (const ParamSpec& p : block.params) {
+        ASSERT_TRUE(rows.contains(p.key)) << p.key << " is not in the " << block.name << " table";
         EXPECT_EQ(rows.at(p.key).at(1), " " + default_text(p) + " ") << p.key;
         if (p.kind == ParamKind::WholeNumber) {
             const std::string range = std::to_string(int64_t(p.min->value)) + " – " +
@@ -101,6 +103,14 @@ TEST(LensDesignSpec, TheTolerancesTableListsItsKeysWithTheirDefaultsAndRanges) {
             EXPECT_NE(rows.at(p.key).at(0).find(range), std::string::npos) << p.key;
         }
     }
+}
+
+TEST(LensDesignSpec, TheTolerancesTableListsItsKeysWithTheirDefaultsAndRanges) {
+    expect_block_documented(tolerances_spec(), 3);
+}
+
+TEST(LensDesignSpec, TheGlobalSearchTableListsItsKeysWithTheirDefaultsAndRanges) {
+    expect_block_documented(global_search_spec(), 2);
 }
 
 template <class Kind>
@@ -129,10 +139,10 @@ TEST(LensDesignSpec, AKeyATypeDoesNotTakeIsRefusedWithWhatItTakes) {
         return std::string();
     };
     EXPECT_EQ(refusal({{"type", "thickness"}, {"lens", "L1"}, {"surface", "front"}}),
-              "variables[0].surface: a thickness variable takes no surface (it takes lens)");
+              "variables[0].surface: a thickness variable takes no surface (it takes lens, min, "
+              "max)");
     EXPECT_EQ(refusal({{"type", "image_distance"}, {"lens", "L1"}}),
-              "variables[0].lens: an image_distance variable takes no lens (it takes nothing "
-              "but its type)");
+              "variables[0].lens: an image_distance variable takes no lens (it takes min, max)");
     EXPECT_EQ(refusal({{"type", "aspheric"}, {"lens", "L1"}, {"surface", "front"}, {"order", 6}}),
               "");
     EXPECT_NE(refusal({{"lens", "L1"}}).find("type: missing (required)"), std::string::npos);

@@ -1,0 +1,131 @@
+#include "optimize/global_search.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+
+#include "math/rng.h"
+#include "optimize/local_search.h"
+#include "util/scene_error.h"
+
+namespace lenslab {
+
+namespace {
+
+// The radical inverse of `index` in `base` (a Halton coordinate).
+double gs_radical_inverse(uint64_t base, uint64_t index) {
+    const double inv_base = 1.0 / static_cast<double>(base);
+    double inv = inv_base, result = 0;
+    while (index > 0) {
+        result += static_cast<double>(index % base) * inv;
+        index /= base;
+        inv *= inv_base;
+    }
+    return result;
+}
+
+// Enough primes for a dimension per variable of any design lenslab reads in practice; past
+// them the coordinates repeat primes (still spread, less evenly).
+constexpr std::array<uint64_t, 24> kPrimes = {2,  3,  5,  7,  11, 13, 17, 19, 23, 29, 31, 37,
+                                              41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89};
+
+// Start `index` (>= 1) of the sequence: every drawn variable at its rotated Halton coordinate.
+std::vector<double> gs_point(const std::vector<SearchRange>& ranges,
+                             const std::vector<double>& rotation, const std::vector<double>& x0,
+                             uint64_t index) {
+    std::vector<double> x = x0;
+    int dimension = 0;
+    for (size_t i = 0; i < ranges.size(); ++i) {
+        if (!(ranges[i].hi > ranges[i].lo)) continue;
+        double u =
+            gs_radical_inverse(kPrimes[dimension % kPrimes.size()], index) + rotation[dimension];
+        if (u >= 1.0) u -= 1.0;
+        x[i] = ranges[i].lo + u * (ranges[i].hi - ranges[i].lo);
+        ++dimension;
+    }
+    return x;
+}
+
+// Runs `iterations` from `x`; none where the point cannot be evaluated.
+std::optional<LmResult> gs_run(const DesignModel& model, const std::vector<double>& x,
+                               int iterations) {
+    if (!model.evaluate(x)) return std::nullopt;
+    return local_search(model, x, iterations);
+}
+
+}  // namespace
+
+std::vector<SearchRange> search_ranges(const DesignModel& model) {
+    const std::vector<double> x0 = model.start();
+    std::vector<SearchRange> ranges;
+    for (size_t i = 0; i < x0.size(); ++i) {
+        const DesignVariable& v = model.design().variables[i];
+        if (v.bounded()) {
+            ranges.push_back({*v.min, *v.max});
+        } else if (v.kind == VariableKind::Curvature && v.semi_diameter > 0) {
+            const double c = 0.5 / v.semi_diameter;
+            ranges.push_back({-c, c});
+        } else {
+            ranges.push_back({x0[i], x0[i]});
+        }
+    }
+    return ranges;
+}
+
+GlobalSearchResult global_search(const DesignModel& model, const GlobalSearchSettings& settings,
+                                 int iterations,
+                                 const std::function<void(const LmProgress&)>& progress) {
+    const std::vector<double> x0 = model.start();
+    const std::vector<SearchRange> ranges = search_ranges(model);
+    Rng rng(settings.seed, 0x9106a15eULL);
+    std::vector<double> rotation(ranges.size());
+    for (double& r : rotation) r = rng.uniform();
+
+    GlobalSearchResult result;
+    const int count = std::max(settings.starts, 1);
+    result.starts.resize(count);
+    std::vector<std::optional<LmResult>> short_runs(count);
+    tbb::parallel_for(0, count, [&](int k) {
+        GlobalSearchStart& s = result.starts[k];
+        s.index = k;
+        s.x = k == 0 ? x0 : gs_point(ranges, rotation, x0, static_cast<uint64_t>(k));
+        short_runs[k] = gs_run(model, s.x, settings.start_iterations);
+        s.evaluable = short_runs[k].has_value();
+        if (s.evaluable) s.merit = short_runs[k]->merit;
+    });
+    for (const std::optional<LmResult>& run : short_runs) {
+        if (run) result.evaluations += run->evaluations;
+    }
+
+    // The best few, ties to the earlier start, polished from where their short runs ended.
+    std::vector<int> order;
+    for (int k = 0; k < count; ++k) {
+        if (result.starts[k].evaluable) order.push_back(k);
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return result.starts[a].merit < result.starts[b].merit; });
+    if (order.empty()) throw SceneError("global_search", "no start could be evaluated");
+    order.resize(std::min<size_t>(order.size(), std::max(settings.keep, 1)));
+    std::vector<LmResult> polished(order.size());
+    tbb::parallel_for(size_t{0}, order.size(), [&](size_t j) {
+        polished[j] = local_search(model, short_runs[order[j]]->x, iterations);
+    });
+    size_t best = 0;
+    for (size_t j = 0; j < order.size(); ++j) {
+        GlobalSearchStart& s = result.starts[order[j]];
+        s.polished = true;
+        s.polished_merit = polished[j].merit;
+        result.evaluations += polished[j].evaluations;
+        if (polished[j].merit < polished[best].merit) best = j;
+    }
+    result.chosen = order[best];
+    result.solver = polished[best];
+    result.solver.evaluations = result.evaluations;
+    if (progress) {
+        progress({result.solver.iterations, result.solver.merit, 0, result.evaluations});
+    }
+    return result;
+}
+
+}  // namespace lenslab
