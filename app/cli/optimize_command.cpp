@@ -2,6 +2,7 @@
 // (docs/optimizer.md). Progress on stderr, the merit function and every operand before and
 // after on stdout, the optimised scene written to OUT.
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -11,6 +12,7 @@
 #include "optimize/optimize_report.h"
 #include "render_overrides.h"
 #include "util/atomic_file.h"
+#include "util/format_number.h"
 #include "util/scene_error.h"
 
 namespace lenslab::cli {
@@ -30,11 +32,17 @@ int run_optimize(const OptimizeArgs& a) {
     check_output_file(a.output);  // before the work, not after
     LensDesign design = load_lens_design(a.design);
     if (a.global_starts >= 0) design.global_search.starts = a.global_starts;
-    const auto progress = [&a](const LmProgress& p) {
+    const int starts = design.global_search.starts;
+    const int runs = starts + std::min(starts, design.global_search.keep);
+    const auto progress = [&a, starts, runs](const LmProgress& p) {
         if (a.quiet) return;
-        char line[160];
-        std::snprintf(line, sizeof line, "iteration %d: merit %.6g, damping %.3g, %d evaluations\n",
-                      p.iteration, p.merit, p.damping, p.evaluations);
+        const std::string line =
+            starts > 0 ? printf_text(
+                             "global search: %d of %d runs ended, best merit %.6g, %d "
+                             "evaluations\n",
+                             p.iteration, runs, p.merit, p.evaluations)
+                       : printf_text("iteration %d: merit %.6g, damping %.3g, %d evaluations\n",
+                                     p.iteration, p.merit, p.damping, p.evaluations);
         std::cerr << line << std::flush;
     };
     OptimizeResult result;

@@ -29,6 +29,7 @@ nlohmann::json optimise_design_json(const nlohmann::json& scene, const OpticalSy
                    {"variables", variables},
                    {"operands", operands}};
     if (!choices.wavelengths.empty()) design["wavelengths"] = choices.wavelengths;
+    if (choices.global_starts > 0) design["global_search"] = {{"starts", choices.global_starts}};
     return design;
 }
 

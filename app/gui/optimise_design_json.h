@@ -19,10 +19,12 @@ struct OptimiseChoices {
     bool vary_curvatures = true;
     bool vary_air_gaps = false;
     int iterations = 50;
+    int global_starts = 0;  // the design's global_search starts; 0: none
 };
 
 // Variables of `system`'s elements (their "objects[i]" paths): both curvatures of each, the
-// air gaps between them; operands: the EFL (weight 100) and each field's RMS spot.
+// air gaps between them; operands: the EFL (weight 100) and each field's RMS spot; a
+// global_search block with `global_starts` starts when there are any.
 nlohmann::json optimise_design_json(const nlohmann::json& scene, const OpticalSystem& system,
                                     const OptimiseChoices& choices);
 

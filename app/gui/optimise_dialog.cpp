@@ -46,6 +46,7 @@ OptimiseDialog::OptimiseDialog(SceneDocument* document, int lens, QWidget* paren
       m_curvatures(new QCheckBox(tr("Curvatures (both faces of each lens)"), this)),
       m_gaps(new QCheckBox(tr("Air gaps between the lenses"), this)),
       m_iterations(new QSpinBox(this)),
+      m_global_starts(new QSpinBox(this)),
       m_progress(new QProgressBar(this)),
       m_status(new QLabel(this)),
       m_run(new QPushButton(tr("Optimise"), this)),
@@ -58,6 +59,12 @@ OptimiseDialog::OptimiseDialog(SceneDocument* document, int lens, QWidget* paren
     m_epd->setDecimals(3);
     m_stop->setRange(1, 999);
     m_iterations->setRange(0, 100000);
+    m_global_starts->setObjectName("global_starts");
+    m_global_starts->setRange(0, 1000);
+    m_global_starts->setSpecialValueText(tr("off (from the lenses as they are)"));
+    m_global_starts->setToolTip(
+        tr("Start the optimiser from this many designs spread over the curvatures' range and "
+           "keep the best (docs/optimizer.md, Global search)"));
     m_wavelengths->setPlaceholderText(tr("F, d, C lines"));
     m_status->setWordWrap(true);
     auto* form = new QFormLayout;
@@ -69,6 +76,7 @@ OptimiseDialog::OptimiseDialog(SceneDocument* document, int lens, QWidget* paren
     form->addRow(tr("Vary"), m_curvatures);
     form->addRow(QString(), m_gaps);
     form->addRow(tr("Iterations"), m_iterations);
+    form->addRow(tr("Global search starts"), m_global_starts);
     auto* buttons = new QDialogButtonBox(this);
     buttons->addButton(m_run, QDialogButtonBox::AcceptRole);
     buttons->addButton(m_cancel, QDialogButtonBox::RejectRole);
@@ -106,6 +114,7 @@ OptimiseChoices OptimiseDialog::choices() const {
     c.vary_curvatures = m_curvatures->isChecked();
     c.vary_air_gaps = m_gaps->isChecked();
     c.iterations = m_iterations->value();
+    c.global_starts = m_global_starts->value();
     return c;
 }
 
@@ -118,6 +127,7 @@ void OptimiseDialog::set_choices(const OptimiseChoices& c) {
     m_curvatures->setChecked(c.vary_curvatures);
     m_gaps->setChecked(c.vary_air_gaps);
     m_iterations->setValue(c.iterations);
+    m_global_starts->setValue(c.global_starts);
 }
 
 QString OptimiseDialog::status() const { return m_status->text(); }
@@ -141,18 +151,27 @@ bool OptimiseDialog::start() {
         return false;
     }
     m_cancelled = false;
-    m_progress->setRange(0, std::max(1, c.iterations));
+    // A global search reports runs ended (its starts, then the few polished), not iterations.
+    const bool global = design.global_search.starts > 0;
+    const int runs = design.global_search.starts +
+                     std::min(design.global_search.starts, design.global_search.keep);
+    m_progress->setRange(0, std::max(1, global ? runs : c.iterations));
     m_progress->setValue(0);
     m_status->setText(tr("Optimising…"));
     m_run->setEnabled(false);
-    m_thread = QThread::create([this, design] {
-        const auto progress = [this](const LmProgress& p) {
+    m_thread = QThread::create([this, design, global, runs] {
+        const auto progress = [this, global, runs](const LmProgress& p) {
             if (m_cancelled) throw OptimiseCancelled{};
             QMetaObject::invokeMethod(
                 this,
-                [this, p] {
+                [this, p, global, runs] {
                     m_progress->setValue(p.iteration);
-                    m_status->setText(tr("Iteration %1: merit %2").arg(p.iteration).arg(p.merit));
+                    m_status->setText(
+                        global ? tr("Global search: %1 of %2 runs, best merit %3")
+                                     .arg(p.iteration)
+                                     .arg(runs)
+                                     .arg(p.merit)
+                               : tr("Iteration %1: merit %2").arg(p.iteration).arg(p.merit));
                 },
                 Qt::QueuedConnection);
         };

@@ -57,6 +57,7 @@ private:
     QCheckBox* m_curvatures;
     QCheckBox* m_gaps;
     QSpinBox* m_iterations;
+    QSpinBox* m_global_starts;
     QProgressBar* m_progress;
     QLabel* m_status;
     QPushButton* m_run;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <mutex>
 
 #include "math/rng.h"
 #include "optimize/local_search.h"
@@ -86,6 +87,17 @@ GlobalSearchResult global_search(const DesignModel& model, const GlobalSearchSet
     const int count = std::max(settings.starts, 1);
     result.starts.resize(count);
     std::vector<std::optional<LmResult>> short_runs(count);
+    // Progress as runs finish (in whatever order), one call at a time; it may throw to stop.
+    std::mutex progress_mutex;
+    int finished = 0, evaluations = 0;
+    double best_merit = INFINITY;
+    const auto report = [&](const LmResult& run) {
+        if (!progress) return;
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        best_merit = std::min(best_merit, run.merit);
+        evaluations += run.evaluations;
+        progress({++finished, best_merit, 0, evaluations});
+    };
     tbb::parallel_for(0, count, [&](int k) {
         GlobalSearchStart& s = result.starts[k];
         s.index = k;
@@ -93,6 +105,7 @@ GlobalSearchResult global_search(const DesignModel& model, const GlobalSearchSet
         short_runs[k] = gs_run(model, s.x, settings.start_iterations);
         s.evaluable = short_runs[k].has_value();
         if (s.evaluable) s.merit = short_runs[k]->merit;
+        report(short_runs[k].value_or(LmResult{.merit = INFINITY}));
     });
     for (const std::optional<LmResult>& run : short_runs) {
         if (run) result.evaluations += run->evaluations;
@@ -110,6 +123,7 @@ GlobalSearchResult global_search(const DesignModel& model, const GlobalSearchSet
     std::vector<LmResult> polished(order.size());
     tbb::parallel_for(size_t{0}, order.size(), [&](size_t j) {
         polished[j] = local_search(model, short_runs[order[j]]->x, iterations);
+        report(polished[j]);
     });
     size_t best = 0;
     for (size_t j = 0; j < order.size(); ++j) {
@@ -122,9 +136,6 @@ GlobalSearchResult global_search(const DesignModel& model, const GlobalSearchSet
     result.chosen = order[best];
     result.solver = polished[best];
     result.solver.evaluations = result.evaluations;
-    if (progress) {
-        progress({result.solver.iterations, result.solver.merit, 0, result.evaluations});
-    }
     return result;
 }
 

@@ -43,7 +43,11 @@ struct SearchRange {
 };
 std::vector<SearchRange> search_ranges(const DesignModel& model);
 
-// Throws SceneError when the design's own start cannot be evaluated.
+// `progress` hears of each run as it ends (the starts' short runs, then the polished ones):
+// `iteration` counts the runs ended (starts + kept in all), `merit` is the lowest so far. It
+// is called from the worker threads, one call at a time; an exception from it stops the
+// search and reaches the caller. Throws SceneError when the design's own start cannot be
+// evaluated.
 GlobalSearchResult global_search(const DesignModel& model, const GlobalSearchSettings& settings,
                                  int iterations,
                                  const std::function<void(const LmProgress&)>& progress = {});

@@ -2,6 +2,7 @@
 // result is one undoable edit, and one undo restores the document exactly.
 
 #include <QProgressBar>
+#include <QSpinBox>
 #include <QtTest>
 
 #include "main_window.h"
@@ -63,6 +64,33 @@ private slots:
                  QString::fromStdString(original.dump()));
         w.document()->undo_stack()->redo();
         QVERIFY(w.document()->json() == optimised);
+    }
+
+    // The dialog offers the global search (docs/optimizer.md, Global search): off by default,
+    // and with a few starts the run reports runs ended, not iterations, and applies its result.
+    void the_global_search_is_offered_and_runs() {
+        MainWindow w;
+        OptimiseDialog* dialog = singlet_dialog(w);
+        QVERIFY(dialog);
+        auto* starts = dialog->findChild<QSpinBox*>("global_starts");
+        QVERIFY(starts);
+        QCOMPARE(starts->value(), 0);
+        const nlohmann::json original = w.document()->json();
+        lenslab::gui::OptimiseChoices choices = dialog->choices();
+        choices.efl_target = 60;
+        choices.fields = {0.0};
+        choices.wavelengths = {587.5618};
+        choices.iterations = 2;
+        choices.global_starts = 3;
+        dialog->set_choices(choices);
+        QCOMPARE(starts->value(), 3);
+        QSignalSpy finished(dialog, &OptimiseDialog::finished_run);
+        QVERIFY2(dialog->start(), qPrintable(dialog->status()));
+        QCOMPARE(dialog->progress()->maximum(), 6);  // 3 starts, then up to 3 polished
+        QVERIFY(finished.wait(60000));
+        QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(dialog->status()));
+        QVERIFY(w.document()->json() != original);
+        QCOMPARE(w.document()->undo_stack()->count(), 1);
     }
 
     void cancelling_leaves_the_lens_unchanged() {
