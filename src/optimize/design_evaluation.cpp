@@ -139,16 +139,21 @@ DesignEvaluation DesignModel::evaluate_state(const DesignState& state,
     result.efl = paraxial.efl;
     result.image_distance = d.image_distance ? state.image_distance : first.image_position;
     const double image_z = system.last_vertex() + result.image_distance;
+    std::vector<double> deviations;
     for (size_t i = 0; i < d.operands.size(); ++i) {
         const MeritOperand& op = d.operands[i];
         double value = 0;
+        bool per_ray_done = false;
         switch (op.kind) {
             case OperandKind::Efl:
                 value = paraxial.efl;
                 break;
             case OperandKind::RmsSpot: {
-                const PolychromaticSpot spot = polychromatic_rms_spot(
-                    system, first, op.field, d.wavelengths, d.weights, d.rings, image_z);
+                const bool per_ray = op.target == 0 && (record_lost || m_start_lost[i] == 0);
+                deviations.clear();
+                const PolychromaticSpot spot =
+                    polychromatic_rms_spot(system, first, op.field, d.wavelengths, d.weights,
+                                           d.rings, image_z, per_ray ? &deviations : nullptr);
                 // More rays lost than at the start: the step has pushed the beam off the
                 // lenses, and a spot of the rays left would look better than it is.
                 if (record_lost) (*record_lost)[i] = spot.lost;
@@ -159,6 +164,14 @@ DesignEvaluation DesignModel::evaluate_state(const DesignState& state,
                                    " rays"};
                 }
                 value = spot.rms_radius;
+                // At the start, per ray only if no ray is lost (the residuals' count is then
+                // every ray's, and stays so).
+                if (per_ray && spot.lost == 0) {
+                    for (double r : deviations) {
+                        result.solver_residuals.push_back(std::sqrt(op.weight) * r);
+                    }
+                    per_ray_done = true;
+                }
                 break;
             }
             case OperandKind::RmsWavefront:
@@ -195,6 +208,7 @@ DesignEvaluation DesignModel::evaluate_state(const DesignState& state,
         const double residual = operand_residual(op, value);
         result.values.push_back(value);
         result.residuals.push_back(std::sqrt(op.weight) * residual);
+        if (!per_ray_done) result.solver_residuals.push_back(result.residuals.back());
         result.merit += op.weight * residual * residual;
     }
     return result;

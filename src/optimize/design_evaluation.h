@@ -17,9 +17,14 @@ namespace lenslab {
 struct DesignEvaluation {
     std::vector<double> values;     // one per operand
     std::vector<double> residuals;  // sqrt(weight) * residual, one per operand
-    double merit = 0;               // sum of weight * residual²
-    double efl = 0;                 // paraxial, primary wavelength
-    double image_distance = 0;      // from the last vertex
+    // What damped least squares minimises, the same sum of squares (the merit): each operand's
+    // residual, except an RMS spot with target 0 and no ray lost at the start, which gives
+    // one residual per ray and axis (polychromatic_spot.h). Its length never changes: a
+    // point losing a ray such a spot needs cannot be evaluated.
+    std::vector<double> solver_residuals;
+    double merit = 0;           // sum of weight * residual²
+    double efl = 0;             // paraxial, primary wavelength
+    double image_distance = 0;  // from the last vertex
 };
 
 class DesignModel {

@@ -94,6 +94,7 @@ GlobalSearchResult global_search(const DesignModel& model, const GlobalSearchSet
     const auto report = [&](const LmResult& run) {
         if (!progress) return;
         const std::lock_guard<std::mutex> lock(progress_mutex);
+        // (A start that cannot be evaluated ends without a run and is not counted.)
         best_merit = std::min(best_merit, run.merit);
         evaluations += run.evaluations;
         progress({++finished, best_merit, 0, evaluations});
@@ -105,7 +106,7 @@ GlobalSearchResult global_search(const DesignModel& model, const GlobalSearchSet
         short_runs[k] = gs_run(model, s.x, settings.start_iterations);
         s.evaluable = short_runs[k].has_value();
         if (s.evaluable) s.merit = short_runs[k]->merit;
-        report(short_runs[k].value_or(LmResult{.merit = INFINITY}));
+        if (short_runs[k]) report(*short_runs[k]);
     });
     for (const std::optional<LmResult>& run : short_runs) {
         if (run) result.evaluations += run->evaluations;

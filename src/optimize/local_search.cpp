@@ -36,7 +36,7 @@ LmResult local_search(const DesignModel& model, const std::vector<double>& x0, i
         [&model, &external](const std::vector<double>& u) -> std::optional<std::vector<double>> {
         std::optional<DesignEvaluation> e = model.evaluate(external(u));
         if (!e) return std::nullopt;
-        return std::move(e->residuals);
+        return std::move(e->solver_residuals);
     };
     LmOptions options;
     options.max_iterations = iterations;

@@ -1,13 +1,19 @@
 // The global search (optimize/global_search.h) on the open lens-design tools' Cooke triplet
 // exercise (examples/optimize/cooke.design.json): from three plates, damped least squares
-// alone ends in the valley nearest the start; started from many points it finds a lower one.
-// The starts' region, and the same result at one and two threads.
+// alone ends in the valley nearest the start; started from many points it finds a lower one,
+// and with the example's 128 starts the published result. The starts' region, and the same
+// result at one and two threads.
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include "analysis/aberrations/polychromatic_spot.h"
+#include "analysis/system/first_order.h"
+#include "analysis/system/paraxial.h"
 #include "optimize/global_search.h"
 #include "optimize/local_search.h"
+#include "optimize/optimize_design.h"
+#include "scene/scene_json.h"
 
 namespace lenslab {
 namespace {
@@ -42,6 +48,45 @@ TEST(GlobalSearch, FindsALowerValleyThanTheLocalRunFromTheDesignsStart) {
     EXPECT_EQ(global.starts[0].x, model.start());  // the design's own start is tried first
     EXPECT_LT(global.solver.merit, 0.5 * local.merit);
     EXPECT_EQ(global.solver.merit, global.starts[global.chosen].polished_merit);
+}
+
+// Issue 40's Must-show: the exercise exactly as the example states it (61 rays a beam, 128
+// starts) ends at EFL 50.00 ± 0.01 with polychromatic RMS spots at or below the open tool's
+// published 0.012 / 0.022 / 0.022 mm and every edge and centre at least 1 mm thick. Checked
+// apart from the optimiser's own figures: the written scene read back, the spots with real
+// ray aiming on a denser grid (8 rings: 217 rays a wavelength). About 6 s in a release build:
+// the sanitized stage skips it (LENSLAB_RELEASE_ONLY_TESTS).
+TEST(GlobalSearch, SolvesTheOpenToolsCookeExercise) {
+    const LensDesign design =
+        load_lens_design(LENSLAB_SOURCE_DIR "/examples/optimize/cooke.design.json");
+    const OptimizeResult result = optimize_design(design);
+    ASSERT_TRUE(result.global);
+    const Scene scene =
+        parse_scene(result.scene.dump(), "optimised", design.base_dir, {.require_camera = false});
+    const OpticalSystem system = build_optical_system(scene);
+    const ParaxialResult paraxial = paraxial_trace(system, kLineD);
+    EXPECT_NEAR(paraxial.efl, 50.0, 0.01);
+    FirstOrderOptions options;
+    options.stop = 3;  // surface 4, counted from 0
+    options.epd = 10;
+    options.fields = {0, 14, 20};
+    const FirstOrder first = first_order(system, paraxial, options);
+    const double image_z = system.last_vertex() + result.after.image_distance;
+    const double published[] = {0.012, 0.022, 0.022};
+    for (size_t f = 0; f < 3; ++f) {
+        const PolychromaticSpot spot = polychromatic_rms_spot(
+            system, first, options.fields[f], {kLineF, kLineD, kLineC}, {}, 8, image_z);
+        EXPECT_LE(spot.rms_radius, published[f]) << options.fields[f] << " degrees";
+        EXPECT_EQ(spot.lost, 0);
+    }
+    for (const SystemElement& e : system.elements) {
+        const double centre =
+            system.surfaces[e.last_surface].z_at(0) - system.surfaces[e.first_surface].z_at(0);
+        const double edge = system.surfaces[e.last_surface].z_at(e.semi_diameter) -
+                            system.surfaces[e.first_surface].z_at(e.semi_diameter);
+        EXPECT_GE(centre, 1.0);
+        EXPECT_GE(edge, 1.0);
+    }
 }
 
 TEST(GlobalSearch, SameResultAtOneAndTwoThreads) {

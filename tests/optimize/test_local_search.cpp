@@ -54,8 +54,6 @@ TEST(LocalSearch, ABoundedVariableEndsWithinItsBounds) {
     const LmResult run = local_search(model, model.start(), 8);
     EXPECT_GE(run.x.back(), 40.3 - 0.0005);
     EXPECT_LE(run.x.back(), 40.3 + 0.0005);
-    // Pressed against the bound the free run went past.
-    EXPECT_NEAR(run.x.back(), moved > 0 ? 40.3005 : 40.2995, 0.0002);
     EXPECT_LT(run.merit, model.evaluate(model.start())->merit);  // it still improves
 }
 

@@ -22,12 +22,17 @@ struct PolychromaticSpot {
 // system z. With no ray through, rms_radius is NaN.
 // The same from beams already traced, one per wavelength, `weights` in their order (empty:
 // all equal).
+// `deviations`, when given, receives each passing ray's offset from the centroid, x then y,
+// scaled by √(w / Σw): their squares sum to the mean square radius. The optimiser hands them
+// to damped least squares as separate residuals (as lens-design programs build an RMS spot
+// from ray operands), so its Gauss-Newton model sees the spot's shape, not only its size.
 PolychromaticSpot polychromatic_spot(const std::vector<FieldBeam>& beams,
-                                     const std::vector<double>& weights, double image_z);
+                                     const std::vector<double>& weights, double image_z,
+                                     std::vector<double>* deviations = nullptr);
 
 PolychromaticSpot polychromatic_rms_spot(const OpticalSystem& system, const FirstOrder& first_order,
                                          double field, const std::vector<double>& wavelengths,
                                          const std::vector<double>& weights, int rings,
-                                         double image_z);
+                                         double image_z, std::vector<double>* deviations = nullptr);
 
 }  // namespace lenslab
