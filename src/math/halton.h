@@ -11,19 +11,24 @@ namespace lenslab {
 
 inline constexpr int kHaltonDimensions = 6;
 
-// The radical inverse of `index` in base `Base`. The base is a constant so that the digit
-// divisions compile to multiplications (a 64-bit division by a run-time value costs tens of
-// cycles, and an aimed photon needs about fifty of them).
-template <uint64_t Base>
-double radical_inverse_in_base(uint64_t index) {
-    constexpr double inv_base = 1.0 / static_cast<double>(Base);
+// The radical inverse of `index` in `base`: its digits mirrored about the point.
+inline double radical_inverse_of(uint64_t base, uint64_t index) {
+    const double inv_base = 1.0 / static_cast<double>(base);
     double inv = inv_base, result = 0;
     while (index > 0) {
-        result += static_cast<double>(index % Base) * inv;
-        index /= Base;
+        result += static_cast<double>(index % base) * inv;
+        index /= base;
         inv *= inv_base;
     }
     return result;
+}
+
+// The same with the base a constant, so that once inlined the digit divisions compile to
+// multiplications (a 64-bit division by a run-time value costs tens of cycles, and an aimed
+// photon needs about fifty of them).
+template <uint64_t Base>
+double radical_inverse_in_base(uint64_t index) {
+    return radical_inverse_of(Base, index);
 }
 
 // The radical inverse of `index` in the `dimension`-th prime (2, 3, 5, 7, 11, 13).

@@ -6,6 +6,7 @@
 #include <array>
 #include <mutex>
 
+#include "math/halton.h"
 #include "math/rng.h"
 #include "optimize/local_search.h"
 #include "util/scene_error.h"
@@ -13,18 +14,6 @@
 namespace lenslab {
 
 namespace {
-
-// The radical inverse of `index` in `base` (a Halton coordinate).
-double gs_radical_inverse(uint64_t base, uint64_t index) {
-    const double inv_base = 1.0 / static_cast<double>(base);
-    double inv = inv_base, result = 0;
-    while (index > 0) {
-        result += static_cast<double>(index % base) * inv;
-        index /= base;
-        inv *= inv_base;
-    }
-    return result;
-}
 
 // Enough primes for a dimension per variable of any design lenslab reads in practice; past
 // them the coordinates repeat primes (still spread, less evenly).
@@ -40,7 +29,7 @@ std::vector<double> gs_point(const std::vector<SearchRange>& ranges,
     for (size_t i = 0; i < ranges.size(); ++i) {
         if (!(ranges[i].hi > ranges[i].lo)) continue;
         double u =
-            gs_radical_inverse(kPrimes[dimension % kPrimes.size()], index) + rotation[dimension];
+            radical_inverse_of(kPrimes[dimension % kPrimes.size()], index) + rotation[dimension];
         if (u >= 1.0) u -= 1.0;
         x[i] = ranges[i].lo + u * (ranges[i].hi - ranges[i].lo);
         ++dimension;
