@@ -3,7 +3,6 @@
 // after on stdout, the optimised scene written to OUT.
 
 #include <algorithm>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 
@@ -49,10 +48,9 @@ int run_optimize(const OptimizeArgs& a) {
     try {
         const auto on_glass = [&a](const GlassTrial& t) {
             if (a.quiet) return;
-            char line[200];
-            std::snprintf(line, sizeof line, "glass %s %s: merit %.6g%s\n", t.lens.c_str(),
-                          t.glass.c_str(), t.merit, t.kept ? " (best so far)" : "");
-            std::cerr << line << std::flush;
+            std::cerr << printf_text("glass %s %s: merit %.6g%s\n", t.lens.c_str(), t.glass.c_str(),
+                                     t.merit, t.kept ? " (best so far)" : "")
+                      << std::flush;
         };
         result = optimize_design(design, a.iterations, progress, on_glass);
     } catch (const SceneError& e) {

@@ -1,30 +1,25 @@
 #include "optimize/optimize_report.h"
 
 #include <algorithm>
-#include <cstdio>
+
+#include "util/format_number.h"
 
 namespace lenslab {
 
 namespace {
 
-std::string or_line(const char* format, auto... values) {
-    char line[256];
-    std::snprintf(line, sizeof line, format, values...);
-    return line;
-}
-
 std::string or_merit_block(const char* title, const MeritTable& table) {
-    std::string text =
-        std::string(title) + or_line(": merit %.6g (EFL %.6g, image %.6g behind the last vertex)\n",
-                                     table.merit, table.efl, table.image_distance);
-    text += or_line("  %-32s %14s %14s %10s %14s\n", "operand", "value", "target", "weight",
-                    "contribution");
+    std::string text = std::string(title) +
+                       printf_text(": merit %.6g (EFL %.6g, image %.6g behind the last vertex)\n",
+                                   table.merit, table.efl, table.image_distance);
+    text += printf_text("  %-32s %14s %14s %10s %14s\n", "operand", "value", "target", "weight",
+                        "contribution");
     for (const OperandRow& row : table.operands) {
         const std::string target =
             (row.constraint ? (row.label.rfind("min", 0) == 0 ? ">= " : "<= ") : "") +
-            or_line("%.6g", row.target);
-        text += or_line("  %-32s %14.6g %14s %10.4g %14.6g\n", row.label.c_str(), row.value,
-                        target.c_str(), row.weight, row.contribution);
+            printf_text("%.6g", row.target);
+        text += printf_text("  %-32s %14.6g %14s %10.4g %14.6g\n", row.label.c_str(), row.value,
+                            target.c_str(), row.weight, row.contribution);
     }
     return text;
 }
@@ -50,15 +45,15 @@ nlohmann::ordered_json or_merit_json(const MeritTable& table) {
 std::string optimize_table(const OptimizeResult& result) {
     std::string text = or_merit_block("before", result.before) + "\n" +
                        or_merit_block("after", result.after) + "\n";
-    text += or_line("  %-32s %16s %16s\n", "variable", "before", "after");
+    text += printf_text("  %-32s %16s %16s\n", "variable", "before", "after");
     for (const VariableRow& v : result.variables) {
-        text += or_line("  %-32s %16.9g %16.9g\n", v.label.c_str(), v.before, v.after);
+        text += printf_text("  %-32s %16.9g %16.9g\n", v.label.c_str(), v.before, v.after);
     }
     if (!result.glass_trials.empty()) {
-        text += or_line("\n  %-32s %16s %16s\n", "glass choice", "glass", "merit");
+        text += printf_text("\n  %-32s %16s %16s\n", "glass choice", "glass", "merit");
         for (const GlassTrial& t : result.glass_trials) {
-            text += or_line("  %-32s %16s %16.6g%s\n", t.lens.c_str(), t.glass.c_str(), t.merit,
-                            t.kept ? "  kept" : "");
+            text += printf_text("  %-32s %16s %16.6g%s\n", t.lens.c_str(), t.glass.c_str(), t.merit,
+                                t.kept ? "  kept" : "");
         }
     }
     if (result.global) {
@@ -66,17 +61,17 @@ std::string optimize_table(const OptimizeResult& result) {
         const auto evaluable =
             std::count_if(g.starts.begin(), g.starts.end(),
                           [](const GlobalSearchStart& s) { return s.evaluable; });
-        text += or_line("\nglobal search: %zu starts (%td evaluable), the best polished:\n",
-                        g.starts.size(), evaluable);
-        text += or_line("  %8s %16s %16s\n", "start", "merit (short)", "merit (whole)");
+        text += printf_text("\nglobal search: %zu starts (%td evaluable), the best polished:\n",
+                            g.starts.size(), evaluable);
+        text += printf_text("  %8s %16s %16s\n", "start", "merit (short)", "merit (whole)");
         for (const GlobalSearchStart& s : g.starts) {
             if (!s.polished) continue;
-            text += or_line("  %8d %16.6g %16.6g%s\n", s.index, s.merit, s.polished_merit,
-                            s.index == g.chosen ? "  kept" : "");
+            text += printf_text("  %8d %16.6g %16.6g%s\n", s.index, s.merit, s.polished_merit,
+                                s.index == g.chosen ? "  kept" : "");
         }
     }
-    text += or_line("\n%d iterations, %d evaluations: ", result.solver.iterations,
-                    result.solver.evaluations) +
+    text += printf_text("\n%d iterations, %d evaluations: ", result.solver.iterations,
+                        result.solver.evaluations) +
             result.solver.stopped + "\n";
     return text;
 }
