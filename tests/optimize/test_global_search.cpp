@@ -95,7 +95,14 @@ TEST(GlobalSearch, SameResultAtOneAndTwoThreads) {
         LensDesign design = cooke();
         design.global_search.starts = 4;
         const DesignModel model(design);
-        return global_search(model, design.global_search, 5);
+        // Progress comes from the worker threads, one call at a time: the runs count up.
+        int calls = 0;
+        const auto progress = [&calls](const LmProgress& p) { EXPECT_EQ(p.iteration, ++calls); };
+        GlobalSearchResult result = global_search(model, design.global_search, 5, progress);
+        int runs = 0;
+        for (const GlobalSearchStart& s : result.starts) runs += s.evaluable + s.polished;
+        EXPECT_EQ(calls, runs);
+        return result;
     };
     const GlobalSearchResult one = run(1), two = run(2);
     EXPECT_EQ(one.chosen, two.chosen);
