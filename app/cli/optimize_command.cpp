@@ -2,7 +2,6 @@
 // (docs/optimizer.md). Progress on stderr, the merit function and every operand before and
 // after on stdout, the optimised scene written to OUT.
 
-#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -32,7 +31,7 @@ int run_optimize(const OptimizeArgs& a) {
     LensDesign design = load_lens_design(a.design);
     if (a.global_starts >= 0) design.global_search.starts = a.global_starts;
     const int starts = design.global_search.starts;
-    const int runs = starts + std::min(starts, design.global_search.keep);
+    const int runs = global_search_runs(design.global_search);
     const auto progress = [&a, starts, runs](const LmProgress& p) {
         if (a.quiet) return;
         const std::string line =

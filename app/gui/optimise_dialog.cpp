@@ -153,8 +153,7 @@ bool OptimiseDialog::start() {
     m_cancelled = false;
     // A global search reports runs ended (its starts, then the few polished), not iterations.
     const bool global = design.global_search.starts > 0;
-    const int runs = design.global_search.starts +
-                     std::min(design.global_search.starts, design.global_search.keep);
+    const int runs = global_search_runs(design.global_search);
     m_progress->setRange(0, std::max(1, global ? runs : c.iterations));
     m_progress->setValue(0);
     m_status->setText(tr("Optimising…"));

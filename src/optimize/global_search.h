@@ -11,6 +11,7 @@
 // Every start is its own task and its result is kept in its own slot; the ranking breaks ties
 // by start index: the result is the same at any number of threads.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -42,6 +43,12 @@ struct SearchRange {
     double lo = 0, hi = 0;
 };
 std::vector<SearchRange> search_ranges(const DesignModel& model);
+
+// The most runs `progress` hears of: every start's short run, then the polished ones (fewer
+// where fewer starts could be evaluated).
+inline int global_search_runs(const GlobalSearchSettings& s) {
+    return s.starts + std::min(s.starts, s.keep);
+}
 
 // `progress` hears of each run as it ends (the starts' short runs, then the polished ones):
 // `iteration` counts the runs ended (starts + kept in all), `merit` is the lowest so far. It
