@@ -1,5 +1,6 @@
 #include "accel/photon_kdtree.h"
 
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
@@ -30,6 +31,14 @@ size_t split_nodes_for(size_t count) {
 PhotonKdTree::PhotonKdTree(Photon* photons, size_t count)
     : m_photons(photons), m_count(count), m_splits(split_nodes_for(count)) {
     build(0, 0, count);
+    m_x.resize(count);
+    m_y.resize(count);
+    m_z.resize(count);
+    tbb::parallel_for(size_t{0}, count, [&](size_t i) {
+        m_x[i] = photons[i].position[0];
+        m_y[i] = photons[i].position[1];
+        m_z[i] = photons[i].position[2];
+    });
 }
 
 void PhotonKdTree::build(size_t node, size_t lo, size_t hi) {
@@ -68,23 +77,30 @@ void PhotonKdTree::build(size_t node, size_t lo, size_t hi) {
 double PhotonKdTree::nearest(const Vec3& x, double radius, size_t max_count, const Vec3* facing,
                              std::vector<PhotonNeighbour>& out) const {
     out.clear();
-    double r2 = radius * radius;
-    if (m_count == 0 || max_count == 0) return r2;
+    if (m_count == 0 || max_count == 0) return radius * radius;
+    // Distances in float, as the positions are: a cell's bound is summed as a photon's
+    // distance is, so it never exceeds the distance of a photon in the cell.
+    float r2 = static_cast<float>(radius * radius);
     const float p[3] = {static_cast<float>(x.x), static_cast<float>(x.y), static_cast<float>(x.z)};
     auto farther = [](const PhotonNeighbour& a, const PhotonNeighbour& b) {
         return a.dist2 < b.dist2;
     };
 
-    // Walks down to the near child directly and keeps only the far ones on a stack; each
-    // carries the squared distance from x to its half-space, so a far half is skipped once
-    // the search radius has shrunk below it.
+    // Walks down to the near child directly and keeps only the far ones on a stack. Each
+    // subtree carries its offsets from x along the three axes (zero where x lies within its
+    // slab), so its squared distance bounds every photon's in it, not just the last plane's
+    // (Arya and Mount 1993): far cells across two planes are skipped once the radius shrinks.
+    // The bound sums the squares in the photons' own order, so it never exceeds a photon's
+    // distance as computed below and the result is the same photons as a plain descent's.
     struct Subtree {
         size_t node, lo, hi;
-        double plane_dist2;
+        float offset[3];
+        float dist2;
     };
     Subtree stack[128];
     int top = 0;
-    Subtree t{0, 0, m_count, 0.0};
+    Subtree t{0, 0, m_count, {0.0f, 0.0f, 0.0f}, 0.0f};
+    float dist2[kLeafSize];
     for (;;) {
         if (t.hi - t.lo > kLeafSize) {
             const Split& split = m_splits[t.node];
@@ -93,37 +109,54 @@ double PhotonKdTree::nearest(const Vec3& x, double radius, size_t max_count, con
             const size_t grandchildren = 4 * t.node + 3;
             if (grandchildren < m_splits.size()) __builtin_prefetch(&m_splits[grandchildren]);
             const size_t mid = t.lo + (t.hi - t.lo) / 2;
-            const double d = static_cast<double>(p[split.axis]) - split.value;
-            const Subtree lower{2 * t.node + 1, t.lo, mid, d * d};
-            const Subtree upper{2 * t.node + 2, mid, t.hi, d * d};
-            if (d * d < r2) stack[top++] = d < 0 ? upper : lower;
-            t = d < 0 ? lower : upper;
+            const float d = p[split.axis] - split.value;
+            Subtree far = d < 0 ? Subtree{2 * t.node + 2, mid, t.hi, {}, 0.0f}
+                                : Subtree{2 * t.node + 1, t.lo, mid, {}, 0.0f};
+            for (int a = 0; a < 3; ++a) far.offset[a] = t.offset[a];
+            far.offset[split.axis] = d;
+            far.dist2 = far.offset[0] * far.offset[0] + far.offset[1] * far.offset[1] +
+                        far.offset[2] * far.offset[2];
+            if (far.dist2 < r2) stack[top++] = far;
+            if (d < 0) {
+                t.node = 2 * t.node + 1;
+                t.hi = mid;
+            } else {
+                t.node = 2 * t.node + 2;
+                t.lo = mid;
+            }
             continue;
         }
-        for (size_t i = t.lo; i < t.hi; ++i) {
-            const Photon& ph = m_photons[i];
-            const double dx = p[0] - ph.position[0], dy = p[1] - ph.position[1],
-                         dz = p[2] - ph.position[2];
-            const double dist2 = dx * dx + dy * dy + dz * dz;
-            if (dist2 >= r2) continue;
+        // The leaf's distances first, from its positions' own arrays (a loop the compiler
+        // vectorises), then the few within the radius.
+        const size_t n = t.hi - t.lo;
+        const float* xs = m_x.data() + t.lo;
+        const float* ys = m_y.data() + t.lo;
+        const float* zs = m_z.data() + t.lo;
+        for (size_t j = 0; j < n; ++j) {
+            const float dx = p[0] - xs[j], dy = p[1] - ys[j], dz = p[2] - zs[j];
+            dist2[j] = dx * dx + dy * dy + dz * dz;
+        }
+        for (size_t j = 0; j < n; ++j) {
+            if (dist2[j] >= r2) continue;
+            const Photon& ph = m_photons[t.lo + j];
             if (facing && !ph.arrived_from_side(*facing)) continue;
             if (out.size() < max_count) {
                 // Plain appends until the cap is reached; only then does the order matter.
-                out.push_back({&ph, static_cast<float>(dist2)});
+                out.push_back({&ph, dist2[j]});
                 if (out.size() < max_count) continue;
                 std::make_heap(out.begin(), out.end(), farther);
             } else {
                 std::pop_heap(out.begin(), out.end(), farther);
-                out.back() = {&ph, static_cast<float>(dist2)};
+                out.back() = {&ph, dist2[j]};
                 std::push_heap(out.begin(), out.end(), farther);
             }
             r2 = out.front().dist2;
         }
         // The next far half still within the (perhaps shrunk) radius.
         do {
-            if (top == 0) return r2;
+            if (top == 0) return out.size() < max_count ? radius * radius : r2;
             t = stack[--top];
-        } while (t.plane_dist2 >= r2);
+        } while (t.dist2 >= r2);
     }
 }
 

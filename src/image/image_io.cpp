@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <memory>
 
 #include "util/atomic_file.h"
 
@@ -41,18 +42,15 @@ void write_png(const Image8& img, const std::string& file, const std::string& pa
     // libpng's default compression took 0.1 s for a 900x900 render, longer than rendering
     // it without photons; the fast setting writes a file about a fifth larger in a fraction.
     image.flags = PNG_IMAGE_FLAG_FAST;
-    png_alloc_size_t size = 0;
-    std::vector<unsigned char> png;
-    // The first call measures, the second encodes.
-    bool encoded = png_image_write_to_memory(&image, nullptr, &size, 0, img.rgb.data(), 0, nullptr);
-    if (encoded) {
-        png.resize(size);
-        encoded =
-            png_image_write_to_memory(&image, png.data(), &size, 0, img.rgb.data(), 0, nullptr);
-    }
+    // Encoded once into a buffer of libpng's bound on the file's size (asking libpng for the
+    // exact size first would compress the image twice).
+    png_alloc_size_t size = PNG_IMAGE_PNG_SIZE_MAX(image);
+    const auto png = std::make_unique_for_overwrite<unsigned char[]>(size);
+    const bool encoded =
+        png_image_write_to_memory(&image, png.get(), &size, 0, img.rgb.data(), 0, nullptr);
     if (!encoded) throw ImageError("cannot write PNG '" + path + "': " + image.message);
     try {
-        write_whole_file(file, {reinterpret_cast<const char*>(png.data()), size}, path);
+        write_whole_file(file, {reinterpret_cast<const char*>(png.get()), size}, path);
     } catch (const FileWriteError& e) {
         throw ImageError(e.what());
     }

@@ -28,18 +28,19 @@ std::vector<Photon> random_photons(size_t n, uint64_t seed, bool clustered) {
     return out;
 }
 
-// Brute force: all photons within the radius (facing filter applied), nearest first.
+// Brute force: all photons within the radius (facing filter applied), nearest first. The
+// squared distances in float, as the tree computes them from its float positions.
 std::vector<float> brute(const std::vector<Photon>& photons, const Vec3& x, double radius, size_t k,
                          const Vec3* facing) {
     std::vector<float> d2;
     const float p[3] = {float(x.x), float(x.y), float(x.z)};
     for (const Photon& ph : photons) {
-        const double dx = p[0] - ph.position[0], dy = p[1] - ph.position[1],
-                     dz = p[2] - ph.position[2];
-        const double d = dx * dx + dy * dy + dz * dz;
-        if (d >= radius * radius) continue;
+        const float dx = p[0] - ph.position[0], dy = p[1] - ph.position[1],
+                    dz = p[2] - ph.position[2];
+        const float d = dx * dx + dy * dy + dz * dz;
+        if (d >= static_cast<float>(radius * radius)) continue;
         if (facing && dot(ph.incoming(), *facing) <= 0.0) continue;
-        d2.push_back(static_cast<float>(d));
+        d2.push_back(d);
     }
     std::sort(d2.begin(), d2.end());
     if (d2.size() > k) d2.resize(k);
