@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "util/huge_pages.h"
+
 namespace lenslab {
 
 namespace {
@@ -31,13 +33,12 @@ size_t split_nodes_for(size_t count) {
 PhotonKdTree::PhotonKdTree(Photon* photons, size_t count)
     : m_photons(photons), m_count(count), m_splits(split_nodes_for(count)) {
     build(0, 0, count);
-    m_x.resize(count);
-    m_y.resize(count);
-    m_z.resize(count);
+    // Not zero-filled first: the parallel fill is the arrays' first touch, so their page
+    // faults are spread over the threads.
+    m_xyz = std::make_unique_for_overwrite<float[]>(3 * count);
+    advise_huge_pages(m_xyz.get(), 3 * count * sizeof(float));
     tbb::parallel_for(size_t{0}, count, [&](size_t i) {
-        m_x[i] = photons[i].position[0];
-        m_y[i] = photons[i].position[1];
-        m_z[i] = photons[i].position[2];
+        for (size_t a = 0; a < 3; ++a) m_xyz[a * count + i] = photons[i].position[a];
     });
 }
 
@@ -129,9 +130,9 @@ double PhotonKdTree::nearest(const Vec3& x, double radius, size_t max_count, con
         // The leaf's distances first, from its positions' own arrays (a loop the compiler
         // vectorises), then the few within the radius.
         const size_t n = t.hi - t.lo;
-        const float* xs = m_x.data() + t.lo;
-        const float* ys = m_y.data() + t.lo;
-        const float* zs = m_z.data() + t.lo;
+        const float* xs = m_xyz.get() + t.lo;
+        const float* ys = xs + m_count;
+        const float* zs = ys + m_count;
         for (size_t j = 0; j < n; ++j) {
             const float dx = p[0] - xs[j], dy = p[1] - ys[j], dz = p[2] - zs[j];
             dist2[j] = dx * dx + dy * dy + dz * dz;

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "accel/photon.h"
@@ -42,7 +43,7 @@ public:
 
     // The split planes' memory (the photons belong to their owner).
     size_t memory_bytes() const {
-        return m_splits.capacity() * sizeof(Split) + 3 * m_x.capacity() * sizeof(float);
+        return m_splits.capacity() * sizeof(Split) + 3 * m_count * sizeof(float);
     }
 
 private:
@@ -55,8 +56,8 @@ private:
 
     Photon* m_photons = nullptr;
     size_t m_count = 0;
-    std::vector<Split> m_splits;       // node i's children are 2i + 1 and 2i + 2
-    std::vector<float> m_x, m_y, m_z;  // the photons' positions, in tree order
+    std::vector<Split> m_splits;     // node i's children are 2i + 1 and 2i + 2
+    std::unique_ptr<float[]> m_xyz;  // the photons' x, then their y, then z, in tree order
 };
 
 }  // namespace lenslab
