@@ -113,8 +113,8 @@ double PhotonKdTree::nearest(const Vec3& x, double radius, size_t max_count, con
             const float d = p[split.axis] - split.value;
             Subtree far = d < 0 ? Subtree{2 * t.node + 2, mid, t.hi, {}, 0.0f}
                                 : Subtree{2 * t.node + 1, t.lo, mid, {}, 0.0f};
-            for (int a = 0; a < 3; ++a) far.offset[a] = t.offset[a];
-            far.offset[split.axis] = d;
+            // Selects rather than an indexed store: the offsets stay in registers.
+            for (uint32_t a = 0; a < 3; ++a) far.offset[a] = a == split.axis ? d : t.offset[a];
             far.dist2 = far.offset[0] * far.offset[0] + far.offset[1] * far.offset[1] +
                         far.offset[2] * far.offset[2];
             if (far.dist2 < r2) stack[top++] = far;
