@@ -9,11 +9,11 @@
 
 namespace lenslab {
 
-PhotonMap::PhotonMap(std::unique_ptr<Photon[]> photons, size_t count, size_t direct)
-    : m_storage(std::move(photons)), m_count(count) {
-    Photon* base = m_storage.get();
-    tbb::parallel_invoke([&] { m_direct = PhotonKdTree(base, direct); },
-                         [&] { m_caustic = PhotonKdTree(base + direct, count - direct); });
+PhotonMap::PhotonMap(std::unique_ptr<Photon[]> direct, size_t direct_count,
+                     std::unique_ptr<Photon[]> caustic, size_t caustic_count)
+    : m_direct_storage(std::move(direct)), m_caustic_storage(std::move(caustic)) {
+    tbb::parallel_invoke([&] { m_direct = PhotonKdTree(m_direct_storage.get(), direct_count); },
+                         [&] { m_caustic = PhotonKdTree(m_caustic_storage.get(), caustic_count); });
 }
 
 Rgb PhotonMap::irradiance(const PhotonKdTree& map, const Vec3& x, const Vec3& n,

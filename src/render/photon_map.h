@@ -1,6 +1,6 @@
 #pragma once
-// The photon maps: one block of stored photons partitioned into the direct map (L D) and
-// the caustic map (L S+ D), each with its kd-tree, and the radiance estimate that reads them.
+// The photon maps: the direct map (L D) and the caustic map (L S+ D), each a block of stored
+// photons with its kd-tree, and the radiance estimate that reads them.
 
 #include <memory>
 #include <string>
@@ -21,16 +21,18 @@ struct GatherSettings {
 class PhotonMap {
 public:
     PhotonMap() = default;
-    // Takes the `count` photons, the `direct` ones first and then the caustic ones, and builds
+    // Takes the `direct_count` direct photons and the `caustic_count` caustic ones and builds
     // both kd-trees.
-    PhotonMap(std::unique_ptr<Photon[]> photons, size_t count, size_t direct);
+    PhotonMap(std::unique_ptr<Photon[]> direct, size_t direct_count,
+              std::unique_ptr<Photon[]> caustic, size_t caustic_count);
     PhotonMap(PhotonMap&&) = default;
     PhotonMap& operator=(PhotonMap&&) = default;
 
     const PhotonKdTree& direct() const { return m_direct; }
     const PhotonKdTree& caustic() const { return m_caustic; }
     size_t memory_bytes() const {
-        return m_count * sizeof(Photon) + m_direct.memory_bytes() + m_caustic.memory_bytes();
+        return (m_direct.size() + m_caustic.size()) * sizeof(Photon) + m_direct.memory_bytes() +
+               m_caustic.memory_bytes();
     }
 
     // Irradiance (W/m^2 per channel) at `x` on a surface whose normal `n` faces the side
@@ -42,8 +44,7 @@ public:
                           const GatherSettings& g, std::vector<PhotonNeighbour>& scratch);
 
 private:
-    std::unique_ptr<Photon[]> m_storage;
-    size_t m_count = 0;
+    std::unique_ptr<Photon[]> m_direct_storage, m_caustic_storage;
     PhotonKdTree m_direct, m_caustic;
 };
 

@@ -14,6 +14,9 @@ namespace lenslab {
 
 namespace {
 
+// The lists of a chunk's deposits (ChunkCollector).
+constexpr size_t kDirectList = 0, kCausticList = 1;
+
 // The colour and the radiant power of a light's spectrum, computed once per light.
 struct LightSpectrum {
     Rgb colour;
@@ -130,23 +133,24 @@ struct MapDeposit {
         }
     }
 };
-// In a job of several ranks: the chunks the others traced, into `found` (slot c holds chunk
-// c's direct photons, chunks + c its caustic ones), so every rank builds the whole maps with
-// the photons in the order one process stores them.
+// In a job of several ranks: the chunks the others traced, into `found`, so every rank builds
+// the whole maps with the photons in the order one process stores them.
 void share_map_chunks(Communicator& comm, ChunkCollector<Photon>& found, size_t chunks) {
     if (comm.alone()) return;
     std::vector<std::vector<Photon>> direct(chunks), caustic(chunks);
     for (size_t c = 0; c < chunks; ++c) {
         if (!dealt_to(static_cast<int64_t>(c), comm)) continue;
-        direct[c] = found.items(c);
-        caustic[c] = found.items(chunks + c);
+        direct[c] = found.items(c, kDirectList);
+        caustic[c] = found.items(c, kCausticList);
     }
     share_dealt_parts(comm, direct);
     share_dealt_parts(comm, caustic);
     for (size_t c = 0; c < chunks; ++c) {
         if (dealt_to(static_cast<int64_t>(c), comm)) continue;
-        found.put(c, direct[c]);
-        found.put(chunks + c, caustic[c]);
+        ChunkCollector<Photon>::Lists lists;
+        lists[kDirectList] = std::move(direct[c]);
+        lists[kCausticList] = std::move(caustic[c]);
+        found.put(c, lists);
     }
 }
 
@@ -182,30 +186,27 @@ PhotonMap trace_photons(const Scene& scene, const PhotonTracingSettings& setting
 
     const std::vector<LightSpectrum> spectra = light_spectra(scene);
     const size_t chunks = static_cast<size_t>(photon_chunks(plan.total()));
-    // Per chunk, the direct photons (slot c) and the caustic ones (slot chunks + c) apart:
-    // the maps are then two runs.
-    ChunkCollector<Photon> found(2 * chunks, need / sizeof(Photon));
+    // The direct photons and the caustic ones in two lists: the maps are then two runs.
+    ChunkCollector<Photon> found(chunks, need / sizeof(Photon));
     for_each_photon_chunk(plan.total(), control, [&](int64_t chunk, int64_t first, int64_t last) {
-        std::vector<Photon>& direct = found.scratch(0);
-        std::vector<Photon>& caustic = found.scratch(1);
+        ChunkCollector<Photon>::Lists& lists = found.scratch();
         PhotonWalker<MapDeposit> walker(scene, plan, settings.max_depth);
         trace_photon_range(first, last, control, [&](int64_t i) {
             walker.trace(i, settings.seed, [&](const PhotonPlan::Photon& p) {
-                return MapDeposit(p, spectra[static_cast<size_t>(p.light)], nullptr, &direct,
-                                  &caustic);
+                return MapDeposit(p, spectra[static_cast<size_t>(p.light)], nullptr,
+                                  &lists[kDirectList], &lists[kCausticList]);
             });
         });
-        found.put(static_cast<size_t>(chunk), direct);
-        found.put(chunks + static_cast<size_t>(chunk), caustic);
+        found.put(static_cast<size_t>(chunk), lists);
     });
     share_map_chunks(control.cluster(), found, chunks);
     // Cancelled: the render throws the photons away, so do not build a tree over them.
-    if (control.cancelled()) return {};
-    // In photon order, direct then caustic.
-    std::vector<size_t> offset;
-    std::unique_ptr<Photon[]> photons = found.join(offset);
+    if (control.cancelled() || !found.complete()) return {};
+    size_t direct = 0, caustic = 0;
+    std::unique_ptr<Photon[]> direct_photons = found.take(kDirectList, direct);
+    std::unique_ptr<Photon[]> caustic_photons = found.take(kCausticList, caustic);
     const auto t1 = std::chrono::steady_clock::now();
-    PhotonMap map(std::move(photons), offset.back(), offset[chunks]);
+    PhotonMap map(std::move(direct_photons), direct, std::move(caustic_photons), caustic);
     const auto t2 = std::chrono::steady_clock::now();
     if (stats) {
         stats->emitted = plan.total();
