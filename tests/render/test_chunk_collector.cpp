@@ -41,7 +41,7 @@ void put_in_parallel(ChunkCollector<int>& found, size_t chunks) {
     });
 }
 
-class ChunkCollectorCapacity : public testing::TestWithParam<size_t> {};
+class ChunkCollectorCapacity : public ::testing::TestWithParam<size_t> {};
 
 TEST_P(ChunkCollectorCapacity, JoinsInChunkOrderFromAnyThread) {
     constexpr size_t kChunks = 400;
@@ -63,7 +63,7 @@ TEST_P(ChunkCollectorCapacity, JoinsInChunkOrderFromAnyThread) {
 }
 
 // Ample room, room for about half (the rest spills), and none at all.
-INSTANTIATE_TEST_SUITE_P(Room, ChunkCollectorCapacity, testing::Values(4000, 600, 0));
+INSTANTIATE_TEST_SUITE_P(Room, ChunkCollectorCapacity, ::testing::Values(4000, 600, 0));
 
 TEST(ChunkCollector, IncompleteUntilEveryChunkIsIn) {
     ChunkCollector<int> found(3, 100);
