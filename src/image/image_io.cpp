@@ -7,10 +7,14 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
 #include <png.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -141,18 +145,61 @@ double srgb_to_linear(double v) {
     return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
 }
 
+namespace {
+
+// The 8-bit sRGB code of a linear value, std::lround(255 * linear_to_srgb(v)), without a pow
+// per channel (2.4 million of them took 0.07 s for a 900 x 900 picture, on one thread): the
+// smallest float of each code, found once by bisection over the floats' bit patterns (ordered
+// as integers for v >= 0) against that very formula, and a table of the code at the start of
+// each of kBuckets equal steps of [0, 1], from which a value walks up at most a code or two.
+class Srgb8Encoder {
+public:
+    Srgb8Encoder() {
+        const auto code_of = [](float v) { return std::lround(255.0 * linear_to_srgb(v)); };
+        for (int k = 1; k <= 255; ++k) {
+            uint32_t lo = 0, hi = std::bit_cast<uint32_t>(1.0f);  // code(lo) < k <= code(hi)
+            while (hi - lo > 1) {
+                const uint32_t mid = lo + (hi - lo) / 2;
+                (code_of(std::bit_cast<float>(mid)) >= k ? hi : lo) = mid;
+            }
+            m_first[k] = std::bit_cast<float>(hi);
+        }
+        for (int b = 0; b < kBuckets; ++b) m_bucket[b] = walk(0, float(b) / kBuckets);
+    }
+
+    unsigned char operator()(float v) const {
+        if (!(v > 0.0f)) return 0;
+        if (v >= 1.0f) return 255;
+        return walk(m_bucket[static_cast<int>(v * kBuckets)], v);
+    }
+
+private:
+    static constexpr int kBuckets = 4096;
+
+    unsigned char walk(int code, float v) const {
+        while (code < 255 && v >= m_first[code + 1]) ++code;
+        return static_cast<unsigned char>(code);
+    }
+
+    float m_first[256] = {};  // m_first[k]: the smallest value of code k (k >= 1)
+    unsigned char m_bucket[kBuckets] = {};
+};
+
+}  // namespace
+
 Image8 to_srgb8(const Film& film, const ToneMap& tone) {
+    static const Srgb8Encoder encode;
     Image8 img{film.width(), film.height(), {}};
     img.rgb.resize(size_t(img.width) * img.height * 3);
-    auto encode = [](float v) {
-        return static_cast<unsigned char>(std::lround(255.0 * linear_to_srgb(v)));
-    };
-    for (size_t i = 0; i < film.pixels().size(); ++i) {
-        const PixelRgb p = tone.apply(film.pixels()[i]);
-        img.rgb[3 * i + 0] = encode(p.r);
-        img.rgb[3 * i + 1] = encode(p.g);
-        img.rgb[3 * i + 2] = encode(p.b);
-    }
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, film.pixels().size(), 4096),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                          for (size_t i = r.begin(); i != r.end(); ++i) {
+                              const PixelRgb p = tone.apply(film.pixels()[i]);
+                              img.rgb[3 * i + 0] = encode(p.r);
+                              img.rgb[3 * i + 1] = encode(p.g);
+                              img.rgb[3 * i + 2] = encode(p.b);
+                          }
+                      });
     return img;
 }
 

@@ -2,11 +2,15 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <bit>
 #include <cerrno>
 #include <cmath>
 #include <csignal>
+#include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <vector>
 
 #include "image/image_io.h"
 #include "util/output_path.h"
@@ -22,6 +26,35 @@ TEST(Film, NeverHoldsInfOrNan) {
     EXPECT_EQ(f.at(0, 0).b, 0.0f);
     f.set(1, 0, {1e39, 0.5, 2.0});
     EXPECT_TRUE(std::isfinite(f.at(1, 0).r));
+}
+
+// to_srgb8 encodes through a table; each code must be the formula's exactly: checked at
+// 2^20 floats spread over [0, 1] (every 1,016th bit pattern) and at the floats either side
+// of every code's first value.
+TEST(ImageIo, EightBitCodesAreTheFormulasExactly) {
+    std::vector<float> values;
+    const uint32_t one = std::bit_cast<uint32_t>(1.0f);
+    for (uint32_t bits = 0; bits <= one; bits += one / (1u << 20))
+        values.push_back(std::bit_cast<float>(bits));
+    for (int k = 1; k <= 255; ++k) {
+        // A value near code k's start, then the floats about it.
+        const double v = srgb_to_linear((k - 0.5) / 255.0);
+        float f = static_cast<float>(v);
+        for (int step = 0; step < 8; ++step) f = std::nextafter(f, 0.0f);
+        for (int step = 0; step < 16; ++step, f = std::nextafter(f, 2.0f)) values.push_back(f);
+    }
+    values.push_back(-0.5f);
+    values.push_back(std::numeric_limits<float>::quiet_NaN());
+    values.push_back(1.5f);
+    Film film(int(values.size()), 1);
+    for (size_t i = 0; i < values.size(); ++i)
+        film.at(int(i), 0) = {values[i], values[i], values[i]};
+    const Image8 image = to_srgb8(film);
+    for (size_t i = 0; i < values.size(); ++i) {
+        const float v = std::isnan(values[i]) ? 0.0f : values[i];
+        const long expected = std::lround(255.0 * linear_to_srgb(std::clamp(v, 0.0f, 1.0f)));
+        ASSERT_EQ(int(image.rgb[3 * i]), expected) << "linear " << values[i];
+    }
 }
 
 TEST(ImageIo, SrgbTransferFunction) {
