@@ -35,7 +35,9 @@ inline void encode_octahedral(const Vec3& v, uint16_t out[2]) {
 // The decoded direction before normalisation: the same direction, length between 1/sqrt(3)
 // and 1, enough where only a sign is wanted (which side a photon came from).
 inline Vec3 decode_octahedral_unnormalised(const uint16_t in[2]) {
-    double x = in[0] / 65535.0 * 2.0 - 1.0, y = in[1] / 65535.0 * 2.0 - 1.0;
+    // A multiplication, not a division: the query's side test decodes every photon it keeps.
+    constexpr double kScale = 2.0 / 65535.0;
+    double x = in[0] * kScale - 1.0, y = in[1] * kScale - 1.0;
     const double z = 1.0 - std::abs(x) - std::abs(y);
     if (z < 0) {
         const double ox = (1.0 - std::abs(y)) * (x >= 0 ? 1.0 : -1.0);
