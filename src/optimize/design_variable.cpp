@@ -5,6 +5,7 @@
 
 #include "math/vec3.h"
 #include "optimize/lens_design_spec.h"
+#include "optimize/model_glass.h"
 #include "scene/json_reader.h"
 #include "util/format_number.h"
 
@@ -83,6 +84,10 @@ const char* dv_kind_name(VariableKind kind) {
             return "air_gap";
         case VariableKind::ImageDistance:
             return "image_distance";
+        case VariableKind::GlassIndex:
+            return "n_d";
+        case VariableKind::GlassAbbe:
+            return "V_d";
     }
     return "";
 }
@@ -106,6 +111,10 @@ double variable_value(const DesignState& state, const DesignVariable& v) {
             return lens["thickness"].get<double>();
         case VariableKind::AirGap:
             return dv_air_gap(state.scene, v.object);
+        case VariableKind::GlassIndex:
+            return lens["material"]["ior"]["n_d"].get<double>();
+        case VariableKind::GlassAbbe:
+            return lens["material"]["ior"]["V_d"].get<double>();
         default:
             break;
     }
@@ -139,6 +148,10 @@ void set_variable(DesignState& state, const DesignVariable& v, double value) {
         dv_move_lenses_behind(state.scene, v.object, value - dv_air_gap(state.scene, v.object));
         return;
     }
+    if (v.of_glass()) {
+        lens["material"]["ior"][v.kind == VariableKind::GlassIndex ? "n_d" : "V_d"] = value;
+        return;
+    }
     ojson& face = lens[v.surface];
     const std::string shape = face["shape"].get<std::string>();
     if (v.kind == VariableKind::Curvature) {
@@ -170,6 +183,8 @@ double variable_step(const DesignVariable& v) {
             return kSag / std::pow(r, v.order);
         case VariableKind::Conic:
             return 1e-4;
+        case VariableKind::GlassAbbe:
+            return 1e-3;  // V_d is tens: n_F - n_C = (n_d - 1) / V_d changes by about 1e-7
         default:
             return kSag;
     }
@@ -237,6 +252,23 @@ DesignVariable read_design_variable(const nlohmann::json& spec, const std::strin
                          "no lens behind '" + v.lens +
                              "', so no air gap after it (the image_distance variable moves the "
                              "image plane)");
+    }
+    if (v.of_glass()) {
+        if (!is_model_glass(lens)) {
+            throw SceneError(reader.child_path("lens"),
+                             "the lens '" + v.lens +
+                                 "' needs its material written inline with an \"ior\" of "
+                                 "{\"model\": \"abbe\", \"n_d\": ..., \"V_d\": ...} for its "
+                                 "n_d and V_d to vary");
+        }
+        // Unbounded, a model glass would drift off the glass map: by default it keeps within
+        // the catalogues' range of n_d or V_d.
+        if (!v.bounded()) {
+            const GlassMapRange range = catalogue_glass_range();
+            v.min = v.kind == VariableKind::GlassIndex ? range.n_d_min : range.v_d_min;
+            v.max = v.kind == VariableKind::GlassIndex ? range.n_d_max : range.v_d_max;
+        }
+        return v;
     }
     if (!needs_surface) return v;
     if (!reader.has("surface")) throw_missing_key(spec, path, "surface");

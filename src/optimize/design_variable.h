@@ -4,7 +4,8 @@
 // the same scene file with new numbers. A face's curvature c = 1/R (not R, so a flat face
 // can bend either way through c = 0), its conic constant and aspheric coefficients, a lens's
 // centre thickness, the air gap after a lens (moving every lens behind it), and the distance
-// from the last vertex to the image plane.
+// from the last vertex to the image plane, and a model glass's n_d and V_d (a lens whose
+// material is written inline with an `ior` of `"model": "abbe"`).
 
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -13,7 +14,16 @@
 
 namespace lenslab {
 
-enum class VariableKind { Curvature, Conic, Aspheric, Thickness, AirGap, ImageDistance };
+enum class VariableKind {
+    Curvature,
+    Conic,
+    Aspheric,
+    Thickness,
+    AirGap,
+    ImageDistance,
+    GlassIndex,  // n_d of a model glass
+    GlassAbbe,   // V_d of a model glass
+};
 
 struct DesignVariable {
     VariableKind kind = VariableKind::Curvature;
@@ -28,6 +38,10 @@ struct DesignVariable {
     std::optional<double> min, max;
 
     bool bounded() const { return min.has_value(); }
+    // n_d or V_d: a model glass's, which glass substitution replaces by a catalogue glass.
+    bool of_glass() const {
+        return kind == VariableKind::GlassIndex || kind == VariableKind::GlassAbbe;
+    }
 };
 
 // The design as the optimiser changes it: the scene and the image plane behind it.

@@ -1,5 +1,6 @@
 #include "optimize/lens_design.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -7,6 +8,7 @@
 
 #include "analysis/system/optical_system.h"
 #include "optics/glass.h"
+#include "optics/glass_library.h"
 #include "optimize/lens_design_spec.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
@@ -183,6 +185,29 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
         d.global_search.start_iterations = static_cast<int>(g.whole("start_iterations"));
         d.global_search.keep = static_cast<int>(g.whole("keep"));
         d.global_search.seed = static_cast<uint64_t>(g.whole("seed"));
+    }
+    if (const nlohmann::json* block = reader.find("glass_substitution")) {
+        SpecReader g(*block, "glass_substitution", glass_substitution_spec());
+        d.glass_substitution.enabled = true;
+        d.glass_substitution.candidates = static_cast<int>(g.whole("candidates"));
+        if (block->contains("makers")) {
+            const nlohmann::json& makers = (*block)["makers"];
+            const std::string at = "glass_substitution.makers";
+            if (!makers.is_array() || makers.empty())
+                throw SceneError(at, "must be a non-empty array of maker names");
+            const std::vector<std::string>& known = glass_makers();
+            for (size_t i = 0; i < makers.size(); ++i) {
+                const std::string where = at + "[" + std::to_string(i) + "]";
+                if (!makers[i].is_string()) throw SceneError(where, "must be a maker's name");
+                const std::string name = makers[i].get<std::string>();
+                if (std::find(known.begin(), known.end(), name) == known.end()) {
+                    std::string list;
+                    for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+                    throw SceneError(where, "unknown maker '" + name + "' (makers: " + list + ")");
+                }
+                d.glass_substitution.makers.push_back(name);
+            }
+        }
     }
     if (const nlohmann::json* block = reader.find("tolerances")) {
         SpecReader t(*block, "tolerances", tolerances_spec());

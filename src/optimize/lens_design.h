@@ -36,6 +36,14 @@ struct GlobalSearchSettings {
     uint64_t seed = 1;
 };
 
+// The design file's `glass_substitution` block (optimize/model_glass.h): every lens of a model
+// glass given, after the optimisation, the best of the catalogue glasses nearest to it.
+struct GlassSubstitutionSettings {
+    bool enabled = false;             // whether the design has the block
+    std::vector<std::string> makers;  // empty: every maker's catalogue
+    int candidates = 5;
+};
+
 struct LensDesign {
     std::string system_file;       // the scene file, relative to the working folder; "" inline
     std::string base_dir;          // the folder relative paths of the scene resolve against
@@ -57,6 +65,7 @@ struct LensDesign {
     int glass_iterations = 20;
     ToleranceSettings tolerances;
     GlobalSearchSettings global_search;
+    GlassSubstitutionSettings glass_substitution;
 
     double primary_wavelength() const { return wavelengths[(wavelengths.size() - 1) / 2]; }
 };

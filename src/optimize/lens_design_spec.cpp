@@ -59,6 +59,10 @@ ElementSpec declare_design() {
         nested_param(ParamKind::Object, "global_search")
             .as_written("object")
             .describe("start the solver from many points, not only the design's (below)"),
+        nested_param(ParamKind::Object, "glass_substitution")
+            .as_written("object")
+            .describe("model glasses replaced by the nearest catalogue glasses after the "
+                      "optimisation (below)"),
     };
     return s;
 }
@@ -102,7 +106,27 @@ ElementSpec declare_global_search() {
     return s;
 }
 
+ElementSpec declare_glass_substitution() {
+    const GlassSubstitutionSettings d;
+    ElementSpec s{"glass_substitution", "the glass substitution", {}, {}};
+    s.params = {
+        nested_param(ParamKind::Array, "makers")
+            .as_written("array of maker names")
+            .meaning_auto("every maker")
+            .describe("the catalogues to choose from: SCHOTT, OHARA, CDGM, HOYA, HIKARI, SUMITA"),
+        whole_param("candidates", d.candidates, 1, 1000)
+            .describe("the glasses nearest each model glass on the glass map that are tried, "
+                      "each re-optimised for `glass_iterations`"),
+    };
+    return s;
+}
+
 }  // namespace
+
+const ElementSpec& glass_substitution_spec() {
+    static const ElementSpec spec = declare_glass_substitution();
+    return spec;
+}
 
 const ElementSpec& global_search_spec() {
     static const ElementSpec spec = declare_global_search();
@@ -127,6 +151,8 @@ const std::vector<DesignEntryType<VariableKind>>& variable_types() {
         {"thickness", VariableKind::Thickness, {"lens", "min", "max"}},
         {"air_gap", VariableKind::AirGap, {"lens", "min", "max"}},
         {"image_distance", VariableKind::ImageDistance, {"min", "max"}},
+        {"n_d", VariableKind::GlassIndex, {"lens", "min", "max"}},
+        {"V_d", VariableKind::GlassAbbe, {"lens", "min", "max"}},
     };
     return types;
 }

@@ -22,6 +22,8 @@ const ElementSpec& lens_design_spec();
 const ElementSpec& tolerances_spec();
 // The `global_search` block's keys.
 const ElementSpec& global_search_spec();
+// The `glass_substitution` block's keys.
+const ElementSpec& glass_substitution_spec();
 
 // A type of `variables` or `operands` entry: its `type` name and the keys it takes besides
 // `type`, in the docs' order.

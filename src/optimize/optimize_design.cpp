@@ -2,8 +2,11 @@
 
 #include <cmath>
 
+#include "optics/glass.h"
 #include "optimize/global_search.h"
 #include "optimize/local_search.h"
+#include "optimize/model_glass.h"
+#include "util/format_number.h"
 #include "util/scene_error.h"
 
 namespace lenslab {
@@ -31,6 +34,61 @@ LensDesign od_design_at(const LensDesign& design, const DesignState& state) {
     moved.scene = state.scene;
     if (moved.image_distance) moved.image_distance = state.image_distance;
     return moved;
+}
+
+// The lens's model glass as a trial's label: "model 1.62/60.3" (n_d/V_d).
+std::string od_model_label(const nlohmann::ordered_json& lens) {
+    const nlohmann::ordered_json& ior = lens["material"]["ior"];
+    return "model " + format_number(ior["n_d"].get<double>()) + "/" +
+           format_number(ior["V_d"].get<double>());
+}
+
+// Glass substitution: each lens of a model glass, in the scene's order, given in turn each of
+// the catalogue glasses nearest its model on the glass map, the design (without that lens's
+// n_d and V_d) re-optimised briefly from there, and the glass that ends lowest kept. A
+// catalogue glass must be kept, even where it ends above the model: the lens is to be made.
+void od_substitute_glasses(LensDesign& design, ContinuousRun& best, OptimizeResult& result,
+                           const std::function<void(const GlassTrial&)>& on_glass) {
+    result.model_glass_merit = best.solver.merit;
+    for (const DesignLens& lens : design_lenses(best.state.scene)) {
+        const nlohmann::ordered_json& object = best.state.scene["objects"][lens.object];
+        if (!is_model_glass(object)) continue;
+        const nlohmann::ordered_json& ior = object["material"]["ior"];
+        result.glass_trials.push_back(
+            {lens.name, od_model_label(object), best.solver.merit, false});
+        LensDesign without = design;
+        std::erase_if(without.variables, [&](const DesignVariable& v) {
+            return v.of_glass() && v.object == lens.object;
+        });
+        std::optional<ContinuousRun> chosen;
+        for (const Glass* glass : nearest_catalogue_glasses(
+                 ior["n_d"].get<double>(), ior["V_d"].get<double>(),
+                 design.glass_substitution.makers, size_t(design.glass_substitution.candidates))) {
+            DesignState trial_state = best.state;
+            set_lens_catalogue_glass(trial_state.scene, lens.object, *glass);
+            GlassTrial trial{lens.name, catalogue_glass_name(*glass), INFINITY, false};
+            try {
+                const DesignModel trial_model(od_design_at(without, trial_state));
+                ContinuousRun run = od_run_continuous(trial_model, design.glass_iterations, {});
+                trial.merit = run.solver.merit;
+                if (!chosen || run.solver.merit < chosen->solver.merit) chosen = std::move(run);
+            } catch (const SceneError&) {
+                // This glass cannot make the design work (rays lost at its start): not kept.
+            }
+            result.glass_trials.push_back(trial);
+            if (on_glass) on_glass(trial);
+        }
+        if (!chosen) {
+            throw SceneError("glass_substitution", "no catalogue glass near the model glass of '" +
+                                                       lens.name + "' gives a working design");
+        }
+        const std::string kept = lens_glass(chosen->state.scene, lens.object);
+        for (GlassTrial& t : result.glass_trials) {
+            if (t.lens == lens.name && t.glass == kept) t.kept = true;
+        }
+        best = std::move(*chosen);
+        design.variables = std::move(without.variables);
+    }
 }
 
 }  // namespace
@@ -97,12 +155,25 @@ OptimizeResult optimize_design(const LensDesign& design, int iterations,
             if (on_glass) on_glass(trial);
         }
     }
-    const DesignModel final_model(od_design_at(design, best.state));
+    // The variables as the design starts (a substituted glass's n_d and V_d after are its
+    // catalogue values), and the design as it ends, without them.
+    LensDesign final_design = design;
+    if (design.glass_substitution.enabled)
+        od_substitute_glasses(final_design, best, result, on_glass);
+    const DesignModel final_model(od_design_at(final_design, best.state));
     result.before = merit_table(design, *model.evaluate(x0));
     result.after = merit_table(design, *final_model.evaluate(final_model.start()));
-    const std::vector<double> x_after = final_model.start();
     for (size_t i = 0; i < x0.size(); ++i) {
-        result.variables.push_back({variable_label(design.variables[i]), x0[i], x_after[i]});
+        const DesignVariable& v = design.variables[i];
+        double after = 0;
+        if (v.of_glass() && !is_model_glass(best.state.scene["objects"][v.object])) {
+            const Glass* glass = find_glass(lens_glass(best.state.scene, v.object));
+            after =
+                v.kind == VariableKind::GlassIndex ? glass->datasheet_n_d : glass->datasheet_v_d;
+        } else {
+            after = variable_value(best.state, v);
+        }
+        result.variables.push_back({variable_label(v), x0[i], after});
     }
     result.scene = best.state.scene;
     return result;

@@ -36,11 +36,15 @@ struct OptimizeResult {
     MeritTable before, after;
     std::vector<VariableRow> variables;
     // The glass pass: per lens with a choice, its glass after the continuous run, then every
-    // other glass tried; `kept` marks the one the result has.
+    // other glass tried; then per lens of a model glass, its model ("model 1.62/60.3", n_d/V_d)
+    // and each catalogue glass tried; `kept` marks the one the result has.
     std::vector<GlassTrial> glass_trials;
     LmResult solver;
     std::optional<GlobalSearchResult> global;  // where the design asked for a global search
-    nlohmann::ordered_json scene;              // the optimised scene
+    // Where the design substitutes its model glasses: the merit with the model glasses, before
+    // the substitution (its trials are among glass_trials).
+    std::optional<double> model_glass_merit;
+    nlohmann::ordered_json scene;  // the optimised scene
 };
 
 MeritTable merit_table(const LensDesign& design, const DesignEvaluation& evaluation);

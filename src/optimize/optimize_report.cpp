@@ -56,6 +56,13 @@ std::string optimize_table(const OptimizeResult& result) {
                                 t.kept ? "  kept" : "");
         }
     }
+    if (result.model_glass_merit) {
+        text += printf_text(
+            "\nglass substitution: merit %.6g with the model glasses, %.6g with catalogue glasses "
+            "(%.3f times)\n",
+            *result.model_glass_merit, result.after.merit,
+            result.after.merit / *result.model_glass_merit);
+    }
     if (result.global) {
         const GlobalSearchResult& g = *result.global;
         const auto evaluable =
@@ -90,6 +97,11 @@ nlohmann::ordered_json optimize_json(const OptimizeResult& result) {
             j["glass_trials"].push_back(
                 {{"lens", t.lens}, {"glass", t.glass}, {"merit", t.merit}, {"kept", t.kept}});
         }
+    }
+    if (result.model_glass_merit) {
+        j["glass_substitution"] = {{"model_merit", *result.model_glass_merit},
+                                   {"merit", result.after.merit},
+                                   {"ratio", result.after.merit / *result.model_glass_merit}};
     }
     if (result.global) {
         nlohmann::ordered_json g;

@@ -735,6 +735,19 @@ lenslab_cli_test(NAME optimize.bad.bounds
     CHECKS -DEXPECT_EXIT=1
            "-DSTDERR_LINE=lenslab: error: ${optimize_data}/bad_bounds.design.json: variables[0].max: must be above min (3), got 2"
            -DOUTPUT=${optimize_bad_out} -DOUTPUT_CREATED=OFF)
+# Model glasses substituted by catalogue glasses: the Cooke example, briefly (a few
+# iterations, its five candidates a lens at 40 iterations each).
+set(optimize_model_out ${LENSLAB_CLI_OUT}/cooke_glass.json)
+lenslab_cli_test(NAME optimize.glass_substitution
+    ARGS optimize examples/optimize/cooke_model.design.json -o ${optimize_model_out} --iterations 3
+         --json --quiet
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DJSON_KEYS=before,after,glass_trials,glass_substitution"
+           -DOUTPUT=${optimize_model_out} -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS={")
+lenslab_cli_test(NAME optimize.bad.model_glass
+    ARGS optimize ${optimize_data}/model_glass_bad.design.json -o ${optimize_bad_out}
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_CONTAINS=variables[0].lens: the lens 'L2' needs its material written inline with an \"ior\""
+           -DOUTPUT=${optimize_bad_out} -DOUTPUT_CREATED=OFF)
 # `tolerance`: the triplet example's sensitivity table and a small Monte Carlo; a design
 # without tolerances and a bad --trials refused.
 lenslab_cli_test(NAME tolerance.table

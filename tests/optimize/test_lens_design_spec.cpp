@@ -28,7 +28,7 @@ std::map<std::string, std::vector<std::string>> docs_table(const std::string& he
     std::map<std::string, std::vector<std::string>> rows;
     std::string line;
     bool inside = false;
-    static const std::regex row(R"(^\| `([a-z_]+)` \|(.*)\|$)");
+    static const std::regex row(R"(^\| `([A-Za-z_]+)` \|(.*)\|$)");
     while (std::getline(in, line)) {
         if (line == header) {
             inside = --occurrence == 0;
@@ -106,7 +106,11 @@ void expect_block_documented(const ElementSpec& block, int occurrence) {
 }
 
 TEST(LensDesignSpec, TheTolerancesTableListsItsKeysWithTheirDefaultsAndRanges) {
-    expect_block_documented(tolerances_spec(), 3);
+    expect_block_documented(tolerances_spec(), 4);
+}
+
+TEST(LensDesignSpec, TheGlassSubstitutionTableListsItsKeysWithTheirDefaultsAndRanges) {
+    expect_block_documented(glass_substitution_spec(), 3);
 }
 
 TEST(LensDesignSpec, TheGlobalSearchTableListsItsKeysWithTheirDefaultsAndRanges) {
