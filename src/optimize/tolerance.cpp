@@ -6,6 +6,8 @@
 #include <cmath>
 #include <utility>
 
+#include "cluster/cluster_session.h"
+#include "cluster/dealt_parts.h"
 #include "math/rng.h"
 #include "optimize/design_evaluation.h"
 #include "util/format_number.h"
@@ -227,20 +229,34 @@ ToleranceReport tolerance_design(const LensDesign& design,
     report.predicted_sd = std::sqrt(spread);
     report.predicted_mean = std::sqrt(std::max(0.0, mean_square));
 
-    // The Monte Carlo: every error at once, uniform within its tolerance.
+    // The Monte Carlo: every error at once, uniform within its tolerance. In a job of several
+    // ranks, chunk c of trials is dealt to rank c mod N and the criteria shared afterwards: a
+    // trial's errors come from its own stream, so every rank ends with one process's report.
     const int trials = design.tolerances.trials;
-    std::vector<std::optional<double>> results(static_cast<size_t>(trials));
-    for (int first = 0; first < trials; first += kTrialChunk) {
-        const int last = std::min(trials, first + kTrialChunk);
+    const int chunks = (trials + kTrialChunk - 1) / kTrialChunk;
+    Communicator& comm = world_communicator();
+    std::vector<std::vector<double>> criteria(static_cast<size_t>(chunks));  // NaN: failed
+    for (int chunk = 0; chunk < chunks; ++chunk) {
+        const int first = chunk * kTrialChunk, last = std::min(trials, first + kTrialChunk);
+        if (!dealt_to(chunk, comm)) continue;
+        std::vector<double>& part = criteria[size_t(chunk)];
+        part.resize(size_t(last - first));
         tbb::parallel_for(first, last, [&](int trial) {
             Rng rng(design.tolerances.seed, uint64_t(trial));
             std::vector<double> x = x0;
             for (size_t i = 0; i < items.size(); ++i) {
                 x[i] = items[i].value_at((2 * rng.uniform() - 1) * items[i].tolerance);
             }
-            results[size_t(trial)] = criterion(x);
+            part[size_t(trial - first)] = criterion(x).value_or(std::nan(""));
         });
         if (progress) progress(last, trials);
+    }
+    share_dealt_parts(comm, criteria);
+    if (progress && !comm.alone()) progress(trials, trials);  // the other ranks' chunks too
+    std::vector<std::optional<double>> results;
+    results.reserve(size_t(trials));
+    for (const std::vector<double>& part : criteria) {
+        for (double c : part) results.push_back(std::isnan(c) ? std::nullopt : std::optional(c));
     }
     report.monte_carlo = summarise(results);
     return report;

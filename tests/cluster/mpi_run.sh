@@ -3,6 +3,8 @@
 #   sppm, path, whitted, photon_map, detect: the output of `mpirun -np 2` and `-np 3` is
 #     byte-identical (cmp) to one process's with the same seed.
 #   sppm_time: a --time budget; every rank stops after the same pass (rank 0 decides).
+#   tolerance: the triplet's tolerance report (JSON, a Monte Carlo of 3 chunks of trials
+#     dealt across the ranks) on 2 and 3 ranks is byte-identical to one process's.
 #   sweep: 6 frames on 3 ranks: each rank renders its 2 (rank 0 reports 2), the 6 frames and
 #     the table equal one process's; run again, rank 0 finds its 2 done.
 #   killed_rank, failing_rank: rank 1 dies (_exit) or throws mid-render; the job exits
@@ -60,6 +62,13 @@ case $case in
             for f in "$out"/alone/*.csv "$out"/alone/*.exr; do
                 cmp "$f" "$out/np$n/$(basename "$f")" || fail "-np $n: $(basename "$f") differs"
             done
+        done ;;
+    tolerance)
+        tolerance=(tolerance examples/optimize/triplet.tolerance.json --trials 150 --json -q)
+        "$lenslab" "${tolerance[@]}" >"$out/alone.json"
+        for n in 2 3; do
+            "${launch[@]}" -np $n "$lenslab" "${tolerance[@]}" >"$out/np$n.json"
+            cmp "$out/alone.json" "$out/np$n.json" || fail "-np $n differs from one process"
         done ;;
     sweep)
         sweep=(sweep scenes/lens_caustic.json --set /objects/1/center/1=1.5:3:6 --integrator whitted
