@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cluster/cluster_session.h"
 #include "commands.h"
 #include "optimize/lens_design_spec.h"
 #include "optimize/optimize_report.h"
@@ -55,7 +56,9 @@ int run_optimize(const OptimizeArgs& a) {
     } catch (const SceneError& e) {
         throw SceneError(a.design + ": " + e.path(), e.reason());
     }
-    write_text_atomically(a.output, result.scene.dump(2) + "\n");
+    // Under mpirun every rank has the result; rank 0 writes it.
+    if (world_communicator().rank() == 0)
+        write_text_atomically(a.output, result.scene.dump(2) + "\n");
     if (a.json) {
         nlohmann::ordered_json j = optimize_json(result);
         j["design"] = a.design;

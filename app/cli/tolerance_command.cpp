@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "analysis/figures/analyze_figures.h"
+#include "cluster/cluster_session.h"
 #include "commands.h"
 #include "optimize/lens_design_spec.h"
 #include "optimize/tolerance.h"
@@ -111,7 +112,8 @@ int run_tolerance(const ToleranceArgs& a) {
     } catch (const SceneError& e) {
         throw SceneError(a.design + ": " + e.path(), e.reason());
     }
-    if (!a.figure.empty()) {
+    // Under mpirun every rank has the report; rank 0 writes the figure.
+    if (!a.figure.empty() && world_communicator().rank() == 0) {
         const std::string unit = design.scene.value("length_unit_mm", 1.0) == 1.0 ? "mm" : "";
         write_bench_figure(a.figure, {tolerance_figure(report, unit), kFigureWidth, kFigureHeight});
     }

@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <mutex>
+#include <span>
 
+#include "cluster/byte_packing.h"
+#include "cluster/cluster_session.h"
+#include "cluster/dealt_parts.h"
 #include "math/halton.h"
 #include "math/rng.h"
 #include "optimize/local_search.h"
@@ -35,6 +39,35 @@ std::vector<double> gs_point(const std::vector<SearchRange>& ranges,
         ++dimension;
     }
     return x;
+}
+
+// A run as the ranks of a job exchange it: nothing for a start that cannot be evaluated,
+// else the merit, counts, why it stopped and where it ended, bit for bit.
+Bytes gs_pack(const std::optional<LmResult>& run) {
+    Bytes out;
+    if (!run) return out;
+    append_value(out, run->merit);
+    append_value(out, int64_t(run->iterations));
+    append_value(out, int64_t(run->evaluations));
+    append_value(out, uint64_t(run->stopped.size()));
+    append_bytes(out, std::span<const char>(run->stopped));
+    append_value(out, uint64_t(run->x.size()));
+    append_bytes(out, std::span<const double>(run->x));
+    return out;
+}
+
+std::optional<LmResult> gs_unpack(const Bytes& bytes) {
+    if (bytes.empty()) return std::nullopt;
+    ByteReader in(bytes);
+    LmResult run;
+    run.merit = in.value<double>();
+    run.iterations = int(in.value<int64_t>());
+    run.evaluations = int(in.value<int64_t>());
+    run.stopped.resize(in.value<uint64_t>());
+    in.read_into(std::span<char>(run.stopped));
+    run.x.resize(in.value<uint64_t>());
+    in.read_into(std::span<double>(run.x));
+    return run;
 }
 
 // Runs `iterations` from `x`; none where the point cannot be evaluated.
@@ -88,15 +121,27 @@ GlobalSearchResult global_search(const DesignModel& model, const GlobalSearchSet
         evaluations += run.evaluations;
         progress({++finished, best_merit, 0, evaluations});
     };
+    // In a job of several ranks, start k is run by rank k mod N and the runs shared: every
+    // rank then ranks and polishes as one process would (the polish runs dealt alike).
+    Communicator& comm = world_communicator();
+    std::vector<Bytes> shared(static_cast<size_t>(count));
     tbb::parallel_for(0, count, [&](int k) {
+        if (!dealt_to(k, comm)) return;
+        const std::vector<double> x =
+            k == 0 ? x0 : gs_point(ranges, rotation, x0, static_cast<uint64_t>(k));
+        const std::optional<LmResult> run = gs_run(model, x, settings.start_iterations);
+        if (run) report(*run);
+        shared[size_t(k)] = gs_pack(run);
+    });
+    share_dealt_parts(comm, shared);
+    for (int k = 0; k < count; ++k) {
         GlobalSearchStart& s = result.starts[k];
         s.index = k;
         s.x = k == 0 ? x0 : gs_point(ranges, rotation, x0, static_cast<uint64_t>(k));
-        short_runs[k] = gs_run(model, s.x, settings.start_iterations);
+        short_runs[k] = gs_unpack(shared[size_t(k)]);
         s.evaluable = short_runs[k].has_value();
         if (s.evaluable) s.merit = short_runs[k]->merit;
-        if (short_runs[k]) report(*short_runs[k]);
-    });
+    }
     for (const std::optional<LmResult>& run : short_runs) {
         if (run) result.evaluations += run->evaluations;
     }
@@ -110,11 +155,16 @@ GlobalSearchResult global_search(const DesignModel& model, const GlobalSearchSet
                      [&](int a, int b) { return result.starts[a].merit < result.starts[b].merit; });
     if (order.empty()) throw SceneError("global_search", "no start could be evaluated");
     order.resize(std::min<size_t>(order.size(), std::max(settings.keep, 1)));
-    std::vector<LmResult> polished(order.size());
+    std::vector<Bytes> polished_shared(order.size());
     tbb::parallel_for(size_t{0}, order.size(), [&](size_t j) {
-        polished[j] = local_search(model, short_runs[order[j]]->x, iterations);
-        report(polished[j]);
+        if (!dealt_to(int64_t(j), comm)) return;
+        const LmResult run = local_search(model, short_runs[order[j]]->x, iterations);
+        report(run);
+        polished_shared[j] = gs_pack(run);
     });
+    share_dealt_parts(comm, polished_shared);
+    std::vector<LmResult> polished(order.size());
+    for (size_t j = 0; j < order.size(); ++j) polished[j] = *gs_unpack(polished_shared[j]);
     size_t best = 0;
     for (size_t j = 0; j < order.size(); ++j) {
         GlobalSearchStart& s = result.starts[order[j]];

@@ -9,7 +9,9 @@
 // starting values in the starts (the solver still moves them).
 //
 // Every start is its own task and its result is kept in its own slot; the ranking breaks ties
-// by start index: the result is the same at any number of threads.
+// by start index: the result is the same at any number of threads. In a job of MPI ranks
+// (`mpirun -np N lenslab optimize`) start k and polish run j go to rank k (j) mod N and the
+// runs are shared, bit for bit: every rank ends with one process's result.
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,7 @@ if(NOT LENSLAB_MPIRUN)
     message(STATUS "lenslab: no mpirun, so no cluster.mpi tests")
     return()
 endif()
-foreach(case sppm sppm_time path whitted photon_map detect sweep tolerance killed_rank failing_rank)
+foreach(case sppm sppm_time path whitted photon_map detect sweep tolerance optimize killed_rank failing_rank)
     add_test(NAME cluster.mpi.${case}
         COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/mpi_run.sh ${LENSLAB_MPIRUN}
                 $<TARGET_FILE:lenslab> ${CMAKE_CURRENT_BINARY_DIR}/cluster_out/${case} ${case}

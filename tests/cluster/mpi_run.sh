@@ -5,6 +5,8 @@
 #   sppm_time: a --time budget; every rank stops after the same pass (rank 0 decides).
 #   tolerance: the triplet's tolerance report (JSON, a Monte Carlo of 3 chunks of trials
 #     dealt across the ranks) on 2 and 3 ranks is byte-identical to one process's.
+#   optimize: the Cooke exercise's global search (8 starts, a short polish) on 2 and 3 ranks
+#     writes the scene one process writes and prints its report (but the output's name).
 #   sweep: 6 frames on 3 ranks: each rank renders its 2 (rank 0 reports 2), the 6 frames and
 #     the table equal one process's; run again, rank 0 finds its 2 done.
 #   killed_rank, failing_rank: rank 1 dies (_exit) or throws mid-render; the job exits
@@ -69,6 +71,16 @@ case $case in
         for n in 2 3; do
             "${launch[@]}" -np $n "$lenslab" "${tolerance[@]}" >"$out/np$n.json"
             cmp "$out/alone.json" "$out/np$n.json" || fail "-np $n differs from one process"
+        done ;;
+    optimize)
+        optimize=(optimize examples/optimize/cooke.design.json --global-starts 8 --iterations 20
+                  --json -q)
+        "$lenslab" "${optimize[@]}" -o "$out/alone.json" | grep -v '"output"' >"$out/alone.txt"
+        for n in 2 3; do
+            "${launch[@]}" -np $n "$lenslab" "${optimize[@]}" -o "$out/np$n.json" |
+                grep -v '"output"' >"$out/np$n.txt"
+            cmp "$out/alone.json" "$out/np$n.json" || fail "-np $n: the scene differs"
+            cmp "$out/alone.txt" "$out/np$n.txt" || fail "-np $n: the report differs"
         done ;;
     sweep)
         sweep=(sweep scenes/lens_caustic.json --set /objects/1/center/1=1.5:3:6 --integrator whitted
