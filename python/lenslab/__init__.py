@@ -10,6 +10,7 @@ See docs/python.md.
 from ._lenslab import Error, Glass, SceneError, glass
 from ._detect import Detection, Detector, detect
 from ._optics import Analysis, analyze, analyze_many, analyze_options, spectral_data, trace
+from ._optimize import optimize, tolerance
 from ._render import colour_speckle, render, write_image
 from ._scene import Scene, types
 
@@ -20,4 +21,4 @@ del _exported
 
 __all__ = ["Analysis", "Detection", "Detector", "Error", "Glass", "Scene", "SceneError",
            "analyze", "analyze_many", "analyze_options", "colour_speckle", "detect", "glass",
-           "render", "spectral_data", "trace", "types", "write_image"]
+           "optimize", "render", "spectral_data", "tolerance", "trace", "types", "write_image"]

@@ -235,3 +235,22 @@ def detect(
     threads: Optional[int] = ...,
     progress: Optional[Callable[[float], Any]] = ...,
 ) -> Detection: ...
+
+_DesignSource = Union[Mapping[str, Any], str, os.PathLike[str]]
+
+def optimize(
+    design: _DesignSource,
+    *,
+    iterations: Optional[int] = ...,
+    global_starts: Optional[int] = ...,
+    base_dir: Optional[_PathLike] = ...,
+    progress: Optional[Callable[[float], Any]] = ...,
+) -> dict[str, Any]: ...
+def tolerance(
+    design: _DesignSource,
+    *,
+    trials: Optional[int] = ...,
+    seed: Optional[int] = ...,
+    base_dir: Optional[_PathLike] = ...,
+    progress: Optional[Callable[[float], Any]] = ...,
+) -> dict[str, Any]: ...

@@ -13,5 +13,6 @@ void bind_trace(pybind11::module_& m);
 void bind_glass(pybind11::module_& m);
 void bind_analyze(pybind11::module_& m);
 void bind_detect(pybind11::module_& m);
+void bind_optimize(pybind11::module_& m);
 
 }  // namespace lenslab::python

@@ -13,4 +13,5 @@ PYBIND11_MODULE(_lenslab, m) {
     lenslab::python::bind_glass(m);
     lenslab::python::bind_analyze(m);
     lenslab::python::bind_detect(m);
+    lenslab::python::bind_optimize(m);
 }
