@@ -7,6 +7,7 @@
 #include "analysis/report/lens_report.h"
 #include "optics/glass.h"
 #include "util/error.h"
+#include "util/format_number.h"
 #include "util/number_list.h"
 
 namespace lenslab::gui {
@@ -99,6 +100,12 @@ std::optional<std::vector<double>> number_list(const std::string& text) {
     } catch (const std::invalid_argument&) {
         return std::nullopt;
     }
+}
+
+std::string number_list_text(const std::vector<double>& values) {
+    std::string text;
+    for (double v : values) text += (text.empty() ? "" : ", ") + printf_text("%.10g", v);
+    return text;
 }
 
 }  // namespace lenslab::gui

@@ -52,5 +52,7 @@ BenchFigures compute_bench_figures(const OpticalSystem& system, const BenchSetti
 
 // "0, 10.5, 14" → {0, 10.5, 14} (util/number_list.h); none when a part is not a number.
 std::optional<std::vector<double>> number_list(const std::string& text);
+// {0, 10.5, 14} → "0, 10.5, 14": what number_list reads back (10 significant digits).
+std::string number_list_text(const std::vector<double>& values);
 
 }  // namespace lenslab::gui

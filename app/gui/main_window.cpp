@@ -49,6 +49,7 @@
 #include "scene_tree.h"
 #include "section_tab.h"
 #include "section_widget.h"
+#include "tolerance_dialog.h"
 #include "viewport.h"
 
 namespace lenslab::gui {
@@ -300,6 +301,8 @@ void MainWindow::build_menus() {
     edit->addSeparator();
     edit->addAction(tr("&Optimise lenses..."), this, &MainWindow::optimise_selected_lens)
         ->setObjectName("optimise_lenses");
+    edit->addAction(tr("&Tolerance lenses..."), this, &MainWindow::tolerance_selected_lens)
+        ->setObjectName("tolerance_lenses");
 
     QMenu* render = menuBar()->addMenu(tr("&Render"));
     // Start goes on from where Stop left the same scene; a changed scene starts afresh.
@@ -406,6 +409,21 @@ OptimiseDialog* MainWindow::optimise_selected_lens() {
     // Modal: an edit made during the run would be lost when its result is applied.
     dialog->setModal(true);
     dialog->set_choices(m_ray_diagram->optimise_defaults());
+    dialog->show();
+    return dialog;
+}
+
+ToleranceDialog* MainWindow::tolerance_selected_lens() {
+    if (m_ray_diagram->lens() < 0) {
+        QMessageBox::information(this, tr("Tolerance lenses"),
+                                 tr("Select a lens: the lenses on its axis are toleranced."));
+        return nullptr;
+    }
+    auto* dialog = new ToleranceDialog(m_document, m_ray_diagram->lens(), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    ToleranceChoices choices;
+    choices.optics = m_ray_diagram->optimise_defaults();
+    dialog->set_choices(choices);
     dialog->show();
     return dialog;
 }

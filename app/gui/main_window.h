@@ -19,6 +19,7 @@ namespace lenslab::gui {
 class DetectorDock;
 class PropertyPanel;
 class OptimiseDialog;
+class ToleranceDialog;
 class RayDiagramDock;
 class RenderController;
 class SceneDocument;
@@ -87,6 +88,8 @@ public:
     // Edit ▸ Optimise lenses…: the dialog for the lenses on the selected lens's axis, shown
     // (it deletes itself when closed); null, with a message, when no lens is selected.
     OptimiseDialog* optimise_selected_lens();
+    // Edit ▸ Tolerance lenses…: the dialog for the selected lens's axis; none without a lens.
+    ToleranceDialog* tolerance_selected_lens();
 
 protected:
     void closeEvent(QCloseEvent* event) override;

@@ -26,12 +26,6 @@ namespace {
 // Thrown from the optimiser's progress callback to end the run early.
 struct OptimiseCancelled {};
 
-QString number_list_text(const std::vector<double>& values) {
-    QStringList parts;
-    for (double v : values) parts << QString::number(v, 'g', 10);
-    return parts.join(", ");
-}
-
 }  // namespace
 
 OptimiseDialog::OptimiseDialog(SceneDocument* document, int lens, QWidget* parent)
@@ -120,8 +114,8 @@ OptimiseChoices OptimiseDialog::choices() const {
 
 void OptimiseDialog::set_choices(const OptimiseChoices& c) {
     m_efl->setValue(c.efl_target);
-    m_fields->setText(number_list_text(c.fields));
-    m_wavelengths->setText(number_list_text(c.wavelengths));
+    m_fields->setText(QString::fromStdString(number_list_text(c.fields)));
+    m_wavelengths->setText(QString::fromStdString(number_list_text(c.wavelengths)));
     m_epd->setValue(c.epd);
     m_stop->setValue(c.stop);
     m_curvatures->setChecked(c.vary_curvatures);
