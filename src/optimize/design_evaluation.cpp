@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "analysis/aberrations/field_curves.h"
 #include "analysis/aberrations/polychromatic_spot.h"
 #include "analysis/diffraction/field_mtf.h"
 #include "analysis/diffraction/weighted_wavelengths.h"
@@ -58,6 +59,22 @@ double de_rms_wavefront(const OpticalSystem& system, const FirstOrder& first, co
         *lost += w.lost;
     }
     return std::sqrt(sum / chosen.total);
+}
+
+// The field's distortion in percent at the primary wavelength: the real chief ray's height
+// in the image plane against the paraxial chief ray's (the bench's field curves).
+double de_distortion(const OpticalSystem& system, const FirstOrder& first, const LensDesign& d,
+                     const MeritOperand& op, double image_z) {
+    FieldCurveOptions options;
+    options.max_field = op.field;
+    options.points = 2;  // the axis and the field
+    options.wavelengths = {d.primary_wavelength()};
+    options.image_z = image_z;
+    const double distortion =
+        field_curves(system, first, options).curves.front().points.back().distortion;
+    if (!std::isfinite(distortion))
+        throw RaysLost{op.path + ": " + operand_label(op) + ": the chief ray is lost"};
+    return 100 * distortion;
 }
 
 double de_mtf(const OpticalSystem& system, const FirstOrder& first, const LensDesign& d,
@@ -147,6 +164,12 @@ DesignEvaluation DesignModel::evaluate_state(const DesignState& state,
         switch (op.kind) {
             case OperandKind::Efl:
                 value = paraxial.efl;
+                break;
+            case OperandKind::Bfl:
+                value = paraxial.bfl;
+                break;
+            case OperandKind::Distortion:
+                value = de_distortion(system, first, d, op, image_z);
                 break;
             case OperandKind::RmsSpot: {
                 const bool per_ray = op.target == 0 && (record_lost || m_start_lost[i] == 0);

@@ -160,6 +160,8 @@ const std::vector<DesignEntryType<VariableKind>>& variable_types() {
 const std::vector<DesignEntryType<OperandKind>>& operand_types() {
     static const std::vector<DesignEntryType<OperandKind>> types = {
         {"efl", OperandKind::Efl, {"target", "weight"}},
+        {"bfl", OperandKind::Bfl, {"target", "weight"}},
+        {"distortion", OperandKind::Distortion, {"field", "target", "weight"}},
         {"rms_spot", OperandKind::RmsSpot, {"field", "target", "weight"}},
         {"rms_wavefront", OperandKind::RmsWavefront, {"field", "target", "weight"}},
         {"mtf", OperandKind::Mtf, {"frequency", "direction", "field", "target", "weight"}},

@@ -17,13 +17,13 @@ bool mo_is_minimum(OperandKind kind) {
 // The operands measured at a field (one per design field when none is given).
 bool mo_takes_field(OperandKind kind) {
     return kind == OperandKind::RmsSpot || kind == OperandKind::RmsWavefront ||
-           kind == OperandKind::Mtf;
+           kind == OperandKind::Mtf || kind == OperandKind::Distortion;
 }
 
 }  // namespace
 
 bool is_constraint(const MeritOperand& op) {
-    return op.kind != OperandKind::Efl && !mo_takes_field(op.kind);
+    return op.kind != OperandKind::Efl && op.kind != OperandKind::Bfl && !mo_takes_field(op.kind);
 }
 
 std::string operand_label(const MeritOperand& op) {
@@ -71,7 +71,8 @@ std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const 
     } else {
         // The spot's and the wavefront's natural target is none at all, the MTF's a perfect 1;
         // the focal length has no default.
-        op.target = op.kind == OperandKind::Efl   ? reader.number("target")
+        op.target = op.kind == OperandKind::Efl || op.kind == OperandKind::Bfl
+                        ? reader.number("target")
                     : op.kind == OperandKind::Mtf ? reader.number("target", 1.0)
                                                   : reader.number("target", 0.0);
     }
@@ -89,6 +90,8 @@ std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const 
         op.object = find_design_lens(scene, op.lens, reader.child_path("lens"));
     }
     if (!mo_takes_field(op.kind)) return {op};
+    // Distortion is a fraction of the image height: none on the axis.
+    const bool off_axis_only = op.kind == OperandKind::Distortion;
     if (reader.has("field")) {
         op.field = reader.number("field");
         if (!(std::abs(op.field) < 90.0)) {
@@ -96,12 +99,23 @@ std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const 
                 reader.child_path("field"),
                 format_number(op.field) + " degrees is not a field angle (between -90 and 90)");
         }
+        if (off_axis_only && op.field == 0) {
+            throw SceneError(reader.child_path("field"),
+                             "distortion is not defined on the axis (field 0): give a field "
+                             "off it");
+        }
         return {op};
     }
     std::vector<MeritOperand> each;
     for (double field : fields) {
+        if (off_axis_only && field == 0) continue;
         op.field = field;
         each.push_back(op);
+    }
+    if (each.empty()) {
+        throw SceneError(path,
+                         "distortion needs a field off the axis, and the design's fields "
+                         "are all 0");
     }
     return each;
 }

@@ -1,9 +1,9 @@
 #pragma once
 // The operands of the merit function (docs/optimizer.md): figures of a design with a
 // target and a weight, merit = sum of weight * residual². Targets: the paraxial focal
-// length, the polychromatic RMS spot of a field, the RMS wavefront of a field and its MTF at a
-// frequency. Constraints are one-sided: their residual is zero while the limit holds (centre
-// and edge thickness of a lens, the total length).
+// length and back focal length, a field's distortion, the polychromatic RMS spot of a field, the
+// RMS wavefront of a field and its MTF at a frequency. Constraints are one-sided: their residual is
+// zero while the limit holds (centre and edge thickness of a lens, the total length).
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -13,6 +13,8 @@ namespace lenslab {
 
 enum class OperandKind {
     Efl,
+    Bfl,
+    Distortion,
     RmsSpot,
     RmsWavefront,
     Mtf,
@@ -26,7 +28,7 @@ struct MeritOperand {
     OperandKind kind = OperandKind::Efl;
     double target = 0;  // the target, or a constraint's limit
     double weight = 1;
-    double field = 0;       // rms_spot, rms_wavefront, mtf: the field angle in degrees
+    double field = 0;       // rms_spot, rms_wavefront, mtf, distortion: the field in degrees
     double frequency = 0;   // mtf: cycles per unit length
     std::string direction;  // mtf: "tangential", "sagittal" or "mean" (of the two)
     int object = -1;        // thickness constraints: the lens's index in the scene JSON

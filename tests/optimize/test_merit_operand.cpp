@@ -7,6 +7,8 @@
 // - the total length: first vertex to the image plane;
 // - constraints are one-sided, zero while the limit holds; the EFL's residual is the power
 //   difference target² (1/target - 1/EFL), EFL - target to first order;
+// - its back focal length f (1 - (n - 1) t / (n R1)) (Hecht, eq. 6.3): 49.1525;
+// - distortion is the bench's (field_curves.h, checked there against Seidel's S_V), in %;
 // - rms_wavefront and mtf are the bench's figures (field_wavefront.h, field_mtf.h) at the
 //   optimiser's fixed sampling, and an image_distance freed against rms_wavefront settles at
 //   the least-RMS focus of pupil_from_rays.h, midway between the paraxial and marginal foci
@@ -16,6 +18,7 @@
 
 #include <cmath>
 
+#include "analysis/aberrations/field_curves.h"
 #include "analysis/diffraction/field_mtf.h"
 #include "analysis/diffraction/pupil_from_rays.h"
 #include "analysis/diffraction/zernike.h"
@@ -24,6 +27,7 @@
 #include "optimize/optimize_design.h"
 #include "optimize_test_design.h"
 #include "scene/scene_json.h"
+#include "util/scene_error.h"
 
 namespace lenslab {
 namespace {
@@ -78,6 +82,50 @@ TEST(MeritOperand, RmsSpotWithoutAFieldStandsForEveryField) {
     ASSERT_EQ(d.operands.size(), 3u);
     EXPECT_EQ(d.operands[2].field, 4.0);
     EXPECT_EQ(operand_label(d.operands[1]), "rms_spot 2°");
+}
+
+TEST(MeritOperand, BackFocalLengthAndDistortion) {
+    const nlohmann::json operands = {{{"type", "bfl"}, {"target", 49}},
+                                     {{"type", "distortion"}, {"field", 5}},
+                                     {{"type", "distortion"}}};
+    const LensDesign d = lens_design_from_json(
+        design_of(kBiconvex, {{"fields", {0, 5}}, {"operands", operands}, {"image_distance", 48}}),
+        "");
+    ASSERT_EQ(d.operands.size(), 3u);  // the last distortion: only the field off the axis
+    EXPECT_EQ(operand_label(d.operands[2]), "distortion 5°");
+    const std::optional<DesignEvaluation> e = DesignModel(d).evaluate({});
+    ASSERT_TRUE(e);
+    const double n = 1.5, r1 = 50, r2 = -50, t = 5;
+    const double efl = 1 / ((n - 1) * (1 / r1 - 1 / r2 + (n - 1) * t / (n * r1 * r2)));
+    EXPECT_NEAR(e->values[0], efl * (1 - (n - 1) * t / (n * r1)), 1e-9);
+    EXPECT_NEAR(e->residuals[0], e->values[0] - 49, 1e-12);
+
+    const Scene scene =
+        scene_from_json(nlohmann::json(d.scene), d.base_dir, {.require_camera = false});
+    const OpticalSystem system = build_optical_system(scene);
+    FirstOrderOptions f;
+    f.wavelength_nm = 587.5618;
+    f.stop = 0;
+    f.epd = 4;
+    f.fields = {0, 5};
+    const FirstOrder first = first_order(system, paraxial_trace(system, f.wavelength_nm), f);
+    FieldCurveOptions c;
+    c.max_field = 5;
+    c.points = 2;
+    c.wavelengths = {587.5618};
+    c.image_z = system.last_vertex() + 48;
+    const double bench = field_curves(system, first, c).curves[0].points.back().distortion;
+    EXPECT_NEAR(e->values[1], 100 * bench, 1e-12);
+    EXPECT_EQ(e->values[2], e->values[1]);
+    EXPECT_NE(e->values[1], 0.0);
+
+    const nlohmann::json on_axis = {{{"type", "distortion"}, {"field", 0}}};
+    try {
+        lens_design_from_json(design_of(kBiconvex, {{"operands", on_axis}}), "");
+        FAIL() << "distortion on the axis accepted";
+    } catch (const SceneError& err) {
+        EXPECT_EQ(err.path(), "operands[0].field");
+    }
 }
 
 TEST(MeritOperand, WavefrontAndMtfAreTheBenchsFigures) {
