@@ -10,6 +10,7 @@
 #include "analysis/diffraction/zernike.h"
 #include "analysis/system/first_order.h"
 #include "analysis/system/paraxial.h"
+#include "optimize/model_glass.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
 
@@ -227,6 +228,15 @@ DesignEvaluation DesignModel::evaluate_state(const DesignState& state,
             case OperandKind::MaxTotalLength:
                 value = image_z;
                 break;
+            case OperandKind::GlassDistance: {
+                const nlohmann::ordered_json& ior =
+                    state.scene["objects"][op.object]["material"]["ior"];
+                const double n_d = ior["n_d"].get<double>(), v_d = ior["V_d"].get<double>();
+                const std::vector<const Glass*> nearest =
+                    nearest_catalogue_glasses(n_d, v_d, d.glass_substitution.makers, 1);
+                value = nearest.empty() ? 0.0 : glass_map_distance(n_d, v_d, *nearest.front());
+                break;
+            }
         }
         const double residual = operand_residual(op, value);
         result.values.push_back(value);

@@ -169,6 +169,7 @@ const std::vector<DesignEntryType<OperandKind>>& operand_types() {
         {"max_center_thickness", OperandKind::MaxCenterThickness, {"lens", "limit", "weight"}},
         {"min_edge_thickness", OperandKind::MinEdgeThickness, {"lens", "limit", "weight"}},
         {"max_total_length", OperandKind::MaxTotalLength, {"limit", "weight"}},
+        {"glass_distance", OperandKind::GlassDistance, {"lens", "limit", "weight"}},
     };
     return types;
 }

@@ -4,6 +4,7 @@
 
 #include "optimize/design_variable.h"
 #include "optimize/lens_design_spec.h"
+#include "optimize/model_glass.h"
 #include "scene/json_reader.h"
 
 namespace lenslab {
@@ -88,6 +89,12 @@ std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const 
     if (needs_lens) {
         op.lens = reader.string("lens");
         op.object = find_design_lens(scene, op.lens, reader.child_path("lens"));
+        if (op.kind == OperandKind::GlassDistance && !is_model_glass(scene["objects"][op.object])) {
+            throw SceneError(reader.child_path("lens"),
+                             "the lens '" + op.lens +
+                                 "' is not of a model glass (an inline \"ior\" of \"model\": "
+                                 "\"abbe\"): it has no distance to the catalogue glasses");
+        }
     }
     if (!mo_takes_field(op.kind)) return {op};
     // Distortion is a fraction of the image height: none on the axis.

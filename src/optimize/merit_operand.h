@@ -21,7 +21,8 @@ enum class OperandKind {
     MinCenterThickness,
     MaxCenterThickness,
     MinEdgeThickness,
-    MaxTotalLength
+    MaxTotalLength,
+    GlassDistance,  // a model glass's distance on the glass map to the nearest catalogue glass
 };
 
 struct MeritOperand {

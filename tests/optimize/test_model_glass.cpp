@@ -3,11 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "analysis/system/optical_system.h"
 #include "analysis/system/paraxial.h"
 #include "optics/glass.h"
+#include "optics/glass_library.h"
 #include "optimize/lens_design.h"
 #include "optimize/model_glass.h"
 #include "optimize/optimize_design.h"
@@ -102,6 +105,43 @@ TEST(ModelGlass, UnknownMakersAreRefused) {
     } catch (const SceneError& e) {
         EXPECT_EQ(e.path(), "glass_substitution.makers[0]");
         EXPECT_NE(e.reason().find("SCHOTT"), std::string::npos) << e.reason();
+    }
+}
+
+// glass_distance: the model's distance on the glass map to the nearest catalogue glass of the
+// substitution's makers, held under a limit. At N-BK7's own point (SCHOTT: 1.51680/64.17) it is
+// 0; at 1.60/40 it is the least distance over the catalogues, found here by brute force.
+TEST(ModelGlass, TheGlassDistanceOperandIsTheDistanceToTheNearestGlass) {
+    const nlohmann::json operands = {{{"type", "glass_distance"}, {"lens", "L1"}, {"limit", 0.5}}};
+    nlohmann::json d = model_lens_design(
+        {{"operands", operands}, {"glass_substitution", {{"makers", {"SCHOTT"}}}}});
+    d["system"]["objects"][0]["material"]["ior"] = {
+        {"model", "abbe"}, {"n_d", 1.5168}, {"V_d", 64.17}};
+    d["variables"] = nlohmann::json::array();
+    std::optional<DesignEvaluation> e = DesignModel(lens_design_from_json(d, "")).evaluate({});
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->values[0], 0.0);
+    EXPECT_EQ(e->residuals[0], 0.0);
+
+    d["system"]["objects"][0]["material"]["ior"] = {{"model", "abbe"}, {"n_d", 1.60}, {"V_d", 40}};
+    d.erase("glass_substitution");  // every maker
+    e = DesignModel(lens_design_from_json(d, "")).evaluate({});
+    ASSERT_TRUE(e);
+    double least = INFINITY;
+    for (const Glass& g : maker_glasses()) {
+        if (std::isfinite(g.datasheet_n_d) && std::isfinite(g.datasheet_v_d))
+            least =
+                std::min(least, std::hypot(100 * (g.datasheet_n_d - 1.60), g.datasheet_v_d - 40));
+    }
+    EXPECT_DOUBLE_EQ(e->values[0], least);
+    EXPECT_DOUBLE_EQ(e->residuals[0], std::max(0.0, least - 0.5));
+
+    d["system"]["objects"][0]["material"] = {{"transparency", 1}, {"glass", "N-BK7"}};
+    try {
+        lens_design_from_json(d, "");
+        FAIL() << "a catalogue glass's distance taken";
+    } catch (const SceneError& err) {
+        EXPECT_EQ(err.path(), "operands[0].lens");
     }
 }
 
