@@ -169,6 +169,16 @@ DesignEvaluation DesignModel::evaluate_state(const DesignState& state,
             case OperandKind::Bfl:
                 value = paraxial.bfl;
                 break;
+            case OperandKind::EntrancePupilPosition:
+            case OperandKind::ExitPupilPosition:
+                value = op.kind == OperandKind::EntrancePupilPosition
+                            ? first.entrance_pupil.position
+                            : first.exit_pupil.position;
+                // A pupil at infinity (telecentric) has no distance to aim at.
+                if (!std::isfinite(value))
+                    throw RaysLost{op.path + ": " + operand_label(op) +
+                                   ": the pupil is at infinity"};
+                break;
             case OperandKind::Distortion:
                 value = de_distortion(system, first, d, op, image_z);
                 break;

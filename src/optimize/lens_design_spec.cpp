@@ -161,6 +161,8 @@ const std::vector<DesignEntryType<OperandKind>>& operand_types() {
     static const std::vector<DesignEntryType<OperandKind>> types = {
         {"efl", OperandKind::Efl, {"target", "weight"}},
         {"bfl", OperandKind::Bfl, {"target", "weight"}},
+        {"entrance_pupil_position", OperandKind::EntrancePupilPosition, {"target", "weight"}},
+        {"exit_pupil_position", OperandKind::ExitPupilPosition, {"target", "weight"}},
         {"distortion", OperandKind::Distortion, {"field", "target", "weight"}},
         {"rms_spot", OperandKind::RmsSpot, {"field", "target", "weight"}},
         {"rms_wavefront", OperandKind::RmsWavefront, {"field", "target", "weight"}},

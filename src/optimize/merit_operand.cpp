@@ -24,7 +24,9 @@ bool mo_takes_field(OperandKind kind) {
 }  // namespace
 
 bool is_constraint(const MeritOperand& op) {
-    return op.kind != OperandKind::Efl && op.kind != OperandKind::Bfl && !mo_takes_field(op.kind);
+    return op.kind != OperandKind::Efl && op.kind != OperandKind::Bfl &&
+           op.kind != OperandKind::EntrancePupilPosition &&
+           op.kind != OperandKind::ExitPupilPosition && !mo_takes_field(op.kind);
 }
 
 std::string operand_label(const MeritOperand& op) {
@@ -72,8 +74,11 @@ std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const 
     } else {
         // The spot's and the wavefront's natural target is none at all, the MTF's a perfect 1;
         // the focal length has no default.
-        op.target = op.kind == OperandKind::Efl || op.kind == OperandKind::Bfl
-                        ? reader.number("target")
+        // The focal lengths and the pupils' positions have no natural target.
+        const bool paraxial = op.kind == OperandKind::Efl || op.kind == OperandKind::Bfl ||
+                              op.kind == OperandKind::EntrancePupilPosition ||
+                              op.kind == OperandKind::ExitPupilPosition;
+        op.target = paraxial                      ? reader.number("target")
                     : op.kind == OperandKind::Mtf ? reader.number("target", 1.0)
                                                   : reader.number("target", 0.0);
     }

@@ -1,9 +1,10 @@
 #pragma once
 // The operands of the merit function (docs/optimizer.md): figures of a design with a
 // target and a weight, merit = sum of weight * residual². Targets: the paraxial focal
-// length and back focal length, a field's distortion, the polychromatic RMS spot of a field, the
-// RMS wavefront of a field and its MTF at a frequency. Constraints are one-sided: their residual is
-// zero while the limit holds (centre and edge thickness of a lens, the total length).
+// length, back focal length and pupil positions, a field's distortion, the polychromatic RMS spot
+// of a field, the RMS wavefront of a field and its MTF at a frequency. Constraints are one-sided:
+// their residual is zero while the limit holds (centre and edge thickness of a lens, the total
+// length).
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -14,6 +15,8 @@ namespace lenslab {
 enum class OperandKind {
     Efl,
     Bfl,
+    EntrancePupilPosition,
+    ExitPupilPosition,
     Distortion,
     RmsSpot,
     RmsWavefront,

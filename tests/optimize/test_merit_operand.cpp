@@ -8,6 +8,10 @@
 // - constraints are one-sided, zero while the limit holds; the EFL's residual is the power
 //   difference target² (1/target - 1/EFL), EFL - target to first order;
 // - its back focal length f (1 - (n - 1) t / (n R1)) (Hecht, eq. 6.3): 49.1525;
+// - with the stop on its front face, the entrance pupil is that face (position 0) and the exit
+//   pupil its image through the back face: n'/s' - n/s = (n' - n)/R2 with s = -t, n = 1.5,
+//   n' = 1 (the single-surface refraction equation, Hecht eq. 5.8), s' = -3.44828 from the
+//   last vertex;
 // - distortion is the bench's (field_curves.h, checked there against Seidel's S_V), in %;
 // - rms_wavefront and mtf are the bench's figures (field_wavefront.h, field_mtf.h) at the
 //   optimiser's fixed sampling, and an image_distance freed against rms_wavefront settles at
@@ -126,6 +130,21 @@ TEST(MeritOperand, BackFocalLengthAndDistortion) {
     } catch (const SceneError& err) {
         EXPECT_EQ(err.path(), "operands[0].field");
     }
+}
+
+TEST(MeritOperand, PupilPositions) {
+    const nlohmann::json operands = {{{"type", "entrance_pupil_position"}, {"target", 1}},
+                                     {{"type", "exit_pupil_position"}, {"target", -3}}};
+    const LensDesign d = lens_design_from_json(design_of(kBiconvex, {{"operands", operands}}), "");
+    const std::optional<DesignEvaluation> e = DesignModel(d).evaluate({});
+    ASSERT_TRUE(e);
+    const double n = 1.5, r2 = -50, t = 5;
+    const double exit = 1 / ((1 - n) / r2 + n / -t);  // n' = 1
+    EXPECT_NEAR(e->values[0], 0.0, 1e-12);
+    EXPECT_NEAR(e->values[1], exit, 1e-9);
+    EXPECT_NEAR(exit, -3.448275862, 1e-9);
+    EXPECT_NEAR(e->residuals[0], -1.0, 1e-12);
+    EXPECT_NEAR(e->residuals[1], exit + 3, 1e-9);
 }
 
 TEST(MeritOperand, WavefrontAndMtfAreTheBenchsFigures) {
