@@ -124,20 +124,21 @@ GlobalSearchResult global_search(const DesignModel& model, const GlobalSearchSet
     // In a job of several ranks, start k is run by rank k mod N and the runs shared: every
     // rank then ranks and polishes as one process would (the polish runs dealt alike).
     Communicator& comm = world_communicator();
+    for (int k = 0; k < count; ++k) {
+        result.starts[k].index = k;
+        result.starts[k].x = k == 0 ? x0 : gs_point(ranges, rotation, x0, static_cast<uint64_t>(k));
+    }
     std::vector<Bytes> shared(static_cast<size_t>(count));
     tbb::parallel_for(0, count, [&](int k) {
         if (!dealt_to(k, comm)) return;
-        const std::vector<double> x =
-            k == 0 ? x0 : gs_point(ranges, rotation, x0, static_cast<uint64_t>(k));
-        const std::optional<LmResult> run = gs_run(model, x, settings.start_iterations);
+        const std::optional<LmResult> run =
+            gs_run(model, result.starts[k].x, settings.start_iterations);
         if (run) report(*run);
         shared[size_t(k)] = gs_pack(run);
     });
     share_dealt_parts(comm, shared);
     for (int k = 0; k < count; ++k) {
         GlobalSearchStart& s = result.starts[k];
-        s.index = k;
-        s.x = k == 0 ? x0 : gs_point(ranges, rotation, x0, static_cast<uint64_t>(k));
         short_runs[k] = gs_unpack(shared[size_t(k)]);
         s.evaluable = short_runs[k].has_value();
         if (s.evaluable) s.merit = short_runs[k]->merit;

@@ -36,7 +36,7 @@ public:
     // `chunks` chunks, numbered from 0, each list about `capacity` items in all. Only the
     // pages written are faulted in, so a generous capacity costs nothing; past it, the rest
     // of a list is kept apart and joined by take() (slower, never wrong).
-    ChunkCollector(size_t chunks, size_t capacity) : m_chunks(chunks), m_at(chunks) {
+    ChunkCollector(size_t chunks, size_t capacity) : m_at(chunks) {
         for (Array& a : m_arrays) {
             a.data = std::make_unique_for_overwrite<T[]>(capacity);
             a.capacity = capacity;
@@ -90,7 +90,7 @@ public:
     }
 
     // Whether every chunk has been put.
-    bool complete() const { return m_next == m_chunks; }
+    bool complete() const { return m_next == m_at.size(); }
 
     // Array `list`: every chunk's list `list` in chunk order; `count` is set to their number.
     // Takes the array out (once per list, after every chunk is in).
@@ -131,7 +131,6 @@ private:
         ++m_next;
     }
 
-    size_t m_chunks;
     std::mutex m_mutex;
     size_t m_next = 0;  // the first chunk not yet placed
     std::array<Array, kLists> m_arrays;
