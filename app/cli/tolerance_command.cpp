@@ -2,6 +2,7 @@
 // manufacturing errors (optimize/tolerance.h, docs/optimizer.md#tolerancing). Progress on
 // stderr, the report on stdout as a table or JSON.
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -20,6 +21,14 @@
 namespace lenslab::cli {
 
 namespace {
+
+// `text` padded to `width` characters (not bytes: the labels hold ± and °).
+std::string in_column(const std::string& text, size_t width) {
+    const size_t characters = size_t(std::count_if(text.begin(), text.end(), [](char c) {
+        return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    }));
+    return text + std::string(width > characters ? width - characters : 0, ' ');
+}
 
 // The figure's size in pixels: two square panels side by side, as the bench's curves.
 constexpr double kFigureWidth = 900, kFigureHeight = 420;
@@ -45,8 +54,8 @@ void print_table(const std::string& design, const ToleranceReport& r) {
                              r.nominal, r.image_distance)
               << printf_text("%-36s %12s %12s\n", "tolerance", "at -", "at +");
     for (const SensitivityRow& row : r.rows) {
-        std::cout << printf_text("%-36s %12s %12s\n", row.label.c_str(), cell(row.minus).c_str(),
-                                 cell(row.plus).c_str());
+        std::cout << in_column(row.label, 36)
+                  << printf_text(" %12s %12s\n", cell(row.minus).c_str(), cell(row.plus).c_str());
     }
     const MonteCarloSummary& m = r.monte_carlo;
     std::cout << printf_text("\nroot-sum-square of the worst changes: %.5f (nominal + RSS %.5f)\n",

@@ -114,6 +114,10 @@ void PropertyPanel::build_material(const std::string& prefix) {
     const std::string material_key = prefix.empty() ? "" : prefix.substr(0, prefix.size() - 1);
     add_glass_choice(prefix + "glass", material_key,
                      glass && glass->is_string() ? glass->get<std::string>() : "");
+    // A melt's departure from the catalogue (a melt sheet's, or a tolerance's).
+    if (glass) {
+        for (const char* key : {"delta_n_d", "delta_V_d"}) add_param(declared.param(key), prefix);
+    }
     const json* ior = value_at(prefix + "ior");
     // A gradient index replaces the constant one (a glass still gives it its dispersion).
     const bool constant = !glass && !value_at(prefix + "grin");

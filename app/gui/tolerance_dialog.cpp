@@ -52,6 +52,8 @@ nlohmann::json tolerance_design_json(const nlohmann::json& scene, const Toleranc
                               {{"radius", c.radius},
                                {"thickness", c.thickness},
                                {"air_gap", c.air_gap},
+                               {"decenter", c.decenter},
+                               {"tilt", c.tilt},
                                {"trials", c.trials}}}};
     if (!c.optics.wavelengths.empty()) design["wavelengths"] = c.optics.wavelengths;
     return design;
@@ -67,6 +69,8 @@ ToleranceDialog::ToleranceDialog(SceneDocument* document, int lens, QWidget* par
       m_radius(millimetres(this)),
       m_thickness(millimetres(this)),
       m_air_gap(millimetres(this)),
+      m_decenter(millimetres(this)),
+      m_tilt(millimetres(this)),
       m_trials(new QSpinBox(this)),
       m_progress(new QProgressBar(this)),
       m_status(new QLabel(this)),
@@ -94,6 +98,8 @@ ToleranceDialog::ToleranceDialog(SceneDocument* document, int lens, QWidget* par
     form->addRow(tr("Radius error (mm)"), m_radius);
     form->addRow(tr("Thickness error (mm)"), m_thickness);
     form->addRow(tr("Air gap error (mm)"), m_air_gap);
+    form->addRow(tr("Lens decentre (mm)"), m_decenter);
+    form->addRow(tr("Lens tilt (degrees)"), m_tilt);
     form->addRow(tr("Monte Carlo lenses"), m_trials);
     auto* buttons = new QDialogButtonBox(this);
     buttons->addButton(m_run, QDialogButtonBox::AcceptRole);
@@ -132,6 +138,8 @@ ToleranceChoices ToleranceDialog::choices() const {
     c.radius = m_radius->value();
     c.thickness = m_thickness->value();
     c.air_gap = m_air_gap->value();
+    c.decenter = m_decenter->value();
+    c.tilt = m_tilt->value();
     c.trials = m_trials->value();
     return c;
 }
@@ -144,6 +152,8 @@ void ToleranceDialog::set_choices(const ToleranceChoices& c) {
     m_radius->setValue(c.radius);
     m_thickness->setValue(c.thickness);
     m_air_gap->setValue(c.air_gap);
+    m_decenter->setValue(c.decenter);
+    m_tilt->setValue(c.tilt);
     m_trials->setValue(c.trials);
 }
 
@@ -167,7 +177,8 @@ bool ToleranceDialog::start() {
                                        folder.toStdString());
         if (tolerance_items(design).empty()) {
             throw SceneError("tolerances",
-                             "no tolerance to try: give a radius, thickness or air gap error");
+                             "no tolerance to try: give a radius, thickness, air gap, decentre "
+                             "or tilt error");
         }
     } catch (const lenslab::Error& e) {
         m_status->setText(tr("Cannot tolerance: %1").arg(QString::fromStdString(e.what())));

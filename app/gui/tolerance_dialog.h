@@ -1,8 +1,8 @@
 #pragma once
 // Edit ▸ Tolerance lenses…: how much the lenses on the selected lens's axis degrade as a
 // workshop makes them (docs/optimizer.md#tolerancing): ± errors of every radius, thickness and
-// air gap, the sensitivity table and a Monte Carlo run in a background thread, with a progress
-// bar and Cancel. The document is not changed.
+// air gap, each lens's decentre and tilt, the sensitivity table and a Monte Carlo run in a
+// background thread, with a progress bar and Cancel. The document is not changed.
 
 #include <QDialog>
 #include <atomic>
@@ -29,6 +29,7 @@ class SceneDocument;
 struct ToleranceChoices {
     OptimiseChoices optics;
     double radius = 0.05, thickness = 0.05, air_gap = 0.05;  // ± mm
+    double decenter = 0, tilt = 0;                           // ± mm, ± degrees
     int trials = 200;
 };
 
@@ -70,6 +71,8 @@ private:
     QDoubleSpinBox* m_radius;
     QDoubleSpinBox* m_thickness;
     QDoubleSpinBox* m_air_gap;
+    QDoubleSpinBox* m_decenter;
+    QDoubleSpinBox* m_tilt;
     QSpinBox* m_trials;
     QProgressBar* m_progress;
     QLabel* m_status;

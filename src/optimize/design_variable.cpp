@@ -88,8 +88,37 @@ const char* dv_kind_name(VariableKind kind) {
             return "n_d";
         case VariableKind::GlassAbbe:
             return "V_d";
+        case VariableKind::DecenterX:
+            return "decenter_x";
+        case VariableKind::DecenterY:
+            return "decenter_y";
+        case VariableKind::TiltX:
+            return "tilt_x";
+        case VariableKind::TiltY:
+            return "tilt_y";
+        case VariableKind::MeltIndex:
+            return "delta_n_d";
+        case VariableKind::MeltAbbe:
+            return "delta_V_d";
     }
     return "";
+}
+
+// The lens's material written inline (a named material copied in, so that changing a melt
+// changes this lens's alone).
+ojson& dv_inline_material(ojson& scene, ojson& lens) {
+    ojson& m = lens["material"];
+    if (m.is_string()) m = scene["materials"][m.get<std::string>()];
+    return m;
+}
+
+const ojson* dv_material(const ojson& scene, const ojson& lens) {
+    const auto m = lens.find("material");
+    if (m == lens.end()) return nullptr;
+    if (!m->is_string()) return &*m;
+    const auto named = scene.find("materials");
+    if (named == scene.end() || !named->contains(m->get<std::string>())) return nullptr;
+    return &(*named)[m->get<std::string>()];
 }
 
 }  // namespace
@@ -115,7 +144,11 @@ double variable_value(const DesignState& state, const DesignVariable& v) {
             return lens["material"]["ior"]["n_d"].get<double>();
         case VariableKind::GlassAbbe:
             return lens["material"]["ior"]["V_d"].get<double>();
+        case VariableKind::MeltIndex:
+        case VariableKind::MeltAbbe:
+            return dv_material(state.scene, lens)->value(dv_kind_name(v.kind), 0.0);
         default:
+            if (v.of_pose()) return lens.value(dv_kind_name(v.kind), 0.0);
             break;
     }
     const ojson& face = lens[v.surface];
@@ -152,6 +185,14 @@ void set_variable(DesignState& state, const DesignVariable& v, double value) {
         lens["material"]["ior"][v.kind == VariableKind::GlassIndex ? "n_d" : "V_d"] = value;
         return;
     }
+    if (v.of_melt()) {
+        dv_inline_material(state.scene, lens)[dv_kind_name(v.kind)] = value;
+        return;
+    }
+    if (v.of_pose()) {
+        lens[dv_kind_name(v.kind)] = value;
+        return;
+    }
     ojson& face = lens[v.surface];
     const std::string shape = face["shape"].get<std::string>();
     if (v.kind == VariableKind::Curvature) {
@@ -184,7 +225,11 @@ double variable_step(const DesignVariable& v) {
         case VariableKind::Conic:
             return 1e-4;
         case VariableKind::GlassAbbe:
+        case VariableKind::MeltAbbe:
             return 1e-3;  // V_d is tens: n_F - n_C = (n_d - 1) / V_d changes by about 1e-7
+        case VariableKind::TiltX:
+        case VariableKind::TiltY:
+            return kSag / r * (180 / M_PI);  // degrees moving the rim by about kSag
         default:
             return kSag;
     }
@@ -269,6 +314,13 @@ DesignVariable read_design_variable(const nlohmann::json& spec, const std::strin
             v.max = v.kind == VariableKind::GlassIndex ? range.n_d_max : range.v_d_max;
         }
         return v;
+    }
+    if (v.of_melt()) {
+        const ojson* m = dv_material(scene, lens);
+        if (!m || !m->contains("glass")) {
+            throw SceneError(reader.child_path("lens"),
+                             "the lens '" + v.lens + "' needs a catalogue `glass` for a melt");
+        }
     }
     if (!needs_surface) return v;
     if (!reader.has("surface")) throw_missing_key(spec, path, "surface");

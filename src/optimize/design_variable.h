@@ -4,8 +4,9 @@
 // the same scene file with new numbers. A face's curvature c = 1/R (not R, so a flat face
 // can bend either way through c = 0), its conic constant and aspheric coefficients, a lens's
 // centre thickness, the air gap after a lens (moving every lens behind it), and the distance
-// from the last vertex to the image plane, and a model glass's n_d and V_d (a lens whose
-// material is written inline with an `ior` of `"model": "abbe"`).
+// from the last vertex to the image plane, a model glass's n_d and V_d (a lens whose
+// material is written inline with an `ior` of `"model": "abbe"`), a lens's decentre and tilt
+// from its designed axis, and a catalogue glass's melt departure (tolerancing's errors).
 
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -23,6 +24,14 @@ enum class VariableKind {
     ImageDistance,
     GlassIndex,  // n_d of a model glass
     GlassAbbe,   // V_d of a model glass
+    // A lens moved from its designed axis (its decenter_x, ... keys; mm and degrees).
+    DecenterX,
+    DecenterY,
+    TiltX,
+    TiltY,
+    // A catalogue glass's melt: its material's delta_n_d and delta_V_d.
+    MeltIndex,
+    MeltAbbe,
 };
 
 struct DesignVariable {
@@ -41,6 +50,13 @@ struct DesignVariable {
     // n_d or V_d: a model glass's, which glass substitution replaces by a catalogue glass.
     bool of_glass() const {
         return kind == VariableKind::GlassIndex || kind == VariableKind::GlassAbbe;
+    }
+    bool of_melt() const {
+        return kind == VariableKind::MeltIndex || kind == VariableKind::MeltAbbe;
+    }
+    bool of_pose() const {
+        return kind == VariableKind::DecenterX || kind == VariableKind::DecenterY ||
+               kind == VariableKind::TiltX || kind == VariableKind::TiltY;
     }
 };
 

@@ -214,6 +214,10 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
         d.tolerances.radius = t.real("radius");
         d.tolerances.thickness = t.real("thickness");
         d.tolerances.air_gap = t.real("air_gap");
+        d.tolerances.decenter = t.real("decenter");
+        d.tolerances.tilt = t.real("tilt");
+        d.tolerances.index = t.real("index");
+        d.tolerances.abbe = t.real("abbe");
         d.tolerances.trials = static_cast<int>(t.whole("trials"));
         d.tolerances.seed = static_cast<uint64_t>(t.whole("seed"));
         d.tolerances.refocus = t.flag("refocus");

@@ -23,6 +23,10 @@ struct ToleranceSettings {
     double radius = 0;     // of every curved face's radius
     double thickness = 0;  // of every lens's centre thickness
     double air_gap = 0;    // of every air gap between lenses
+    double decenter = 0;   // of every lens across its axis, in x and in y
+    double tilt = 0;       // degrees, of every lens about its front vertex, in x and in y
+    double index = 0;      // of every catalogue glass's n_d
+    double abbe = 0;       // percent of every catalogue glass's V_d
     int trials = 1000;
     uint64_t seed = 1;
     bool refocus = true;  // the back focus as compensator

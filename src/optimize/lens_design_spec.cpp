@@ -80,6 +80,20 @@ ElementSpec declare_tolerances() {
         number_param("air_gap", d.air_gap)
             .at_least(0)
             .describe("± error of every air gap between lenses"),
+        number_param("decenter", d.decenter)
+            .at_least(0)
+            .describe("± decentre of every lens from its axis, in x and in y (each alone)"),
+        number_param("tilt", d.tilt)
+            .at_least(0)
+            .in_unit("degrees")
+            .describe("± tilt of every lens about its front vertex, about x and about y"),
+        number_param("index", d.index)
+            .at_least(0)
+            .describe("± error of every catalogue glass's n_d (a melt's departure)"),
+        number_param("abbe", d.abbe)
+            .at_least(0)
+            .in_unit("%")
+            .describe("± error of every catalogue glass's V_d, in percent of it"),
         whole_param("trials", d.trials, 1, 1000000).describe("made lenses of the Monte Carlo"),
         whole_param("seed", int64_t(d.seed), 0, int64_t{1} << 53)
             .describe("the Monte Carlo's random numbers"),
@@ -153,6 +167,12 @@ const std::vector<DesignEntryType<VariableKind>>& variable_types() {
         {"image_distance", VariableKind::ImageDistance, {"min", "max"}},
         {"n_d", VariableKind::GlassIndex, {"lens", "min", "max"}},
         {"V_d", VariableKind::GlassAbbe, {"lens", "min", "max"}},
+        {"decenter_x", VariableKind::DecenterX, {"lens", "min", "max"}},
+        {"decenter_y", VariableKind::DecenterY, {"lens", "min", "max"}},
+        {"tilt_x", VariableKind::TiltX, {"lens", "min", "max"}},
+        {"tilt_y", VariableKind::TiltY, {"lens", "min", "max"}},
+        {"delta_n_d", VariableKind::MeltIndex, {"lens", "min", "max"}},
+        {"delta_V_d", VariableKind::MeltAbbe, {"lens", "min", "max"}},
     };
     return types;
 }

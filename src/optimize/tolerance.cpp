@@ -9,6 +9,7 @@
 #include "cluster/cluster_session.h"
 #include "cluster/dealt_parts.h"
 #include "math/rng.h"
+#include "optics/glass_library.h"
 #include "optimize/design_evaluation.h"
 #include "util/format_number.h"
 #include "util/scene_error.h"
@@ -32,6 +33,23 @@ std::optional<DesignVariable> try_variable(const LensDesign& design, const nlohm
     } catch (const SceneError&) {
         return std::nullopt;
     }
+}
+
+// The V_d of lens `object`'s catalogue glass, none when its material names no glass.
+std::optional<double> catalogue_abbe_number(const nlohmann::ordered_json& scene, int object) {
+    const nlohmann::ordered_json& lens = scene["objects"][object];
+    const nlohmann::ordered_json* m = lens.contains("material") ? &lens["material"] : nullptr;
+    if (m && m->is_string() && scene.contains("materials")) {
+        m = scene["materials"].contains(m->get<std::string>())
+                ? &scene["materials"][m->get<std::string>()]
+                : nullptr;
+    }
+    if (!m || !m->is_object() || !m->contains("glass") || !(*m)["glass"].is_string()) {
+        return std::nullopt;
+    }
+    const GlassLookup found = lookup_glass((*m)["glass"].get<std::string>());
+    if (!found.glass) return std::nullopt;
+    return found.glass->model->abbe_number();
 }
 
 // The design with the criterion's operands (the RMS spot of every field) and no variables.
@@ -147,14 +165,17 @@ std::vector<ToleranceItem> tolerance_items(const LensDesign& design) {
     const ToleranceSettings& t = design.tolerances;
     DesignState state{design.scene, design.image_distance.value_or(0)};
     std::vector<ToleranceItem> items;
-    const auto add = [&](const nlohmann::json& spec, const std::string& label, double tolerance) {
+    // `shown`: the tolerance as the label gives it (default: in the variable's unit).
+    const auto add = [&](const nlohmann::json& spec, const std::string& label, double tolerance,
+                         const std::string& shown = "") {
         if (tolerance <= 0) return;
         const std::optional<DesignVariable> v = try_variable(design, spec);
         if (!v) return;
         const double nominal = variable_value(state, *v);
         // A flat face (curvature 0) has no radius to be made wrong.
         if (v->kind == VariableKind::Curvature && nominal == 0) return;
-        items.push_back({*v, label + " ± " + format_number(tolerance), nominal, tolerance});
+        items.push_back({*v, label + " ± " + (shown.empty() ? format_number(tolerance) : shown),
+                         nominal, tolerance});
     };
     for (const DesignLens& lens : design_lenses(design.scene)) {
         const std::string& name = lens.name;
@@ -164,6 +185,20 @@ std::vector<ToleranceItem> tolerance_items(const LensDesign& design) {
         }
         add({{"type", "thickness"}, {"lens", name}}, "thickness " + name, t.thickness);
         add({{"type", "air_gap"}, {"lens", name}}, "air gap after " + name, t.air_gap);
+        for (const char* axis : {"x", "y"}) {
+            add({{"type", std::string("decenter_") + axis}, {"lens", name}},
+                std::string("decentre ") + axis + " " + name, t.decenter);
+        }
+        for (const char* axis : {"x", "y"}) {
+            add({{"type", std::string("tilt_") + axis}, {"lens", name}},
+                std::string("tilt ") + axis + " " + name, t.tilt, format_number(t.tilt) + "°");
+        }
+        add({{"type", "delta_n_d"}, {"lens", name}}, "n_d " + name, t.index);
+        // The Abbe number's tolerance is a share of the glass's own.
+        if (const std::optional<double> v_d = catalogue_abbe_number(design.scene, lens.object)) {
+            add({{"type", "delta_V_d"}, {"lens", name}}, "V_d " + name, t.abbe / 100 * *v_d,
+                format_number(t.abbe) + "%");
+        }
     }
     return items;
 }

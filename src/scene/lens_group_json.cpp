@@ -8,6 +8,7 @@
 #include "geometry/lens/lens_clearance.h"
 #include "geometry/lens/lens_solid.h"
 #include "geometry/lens/mirror_surface.h"
+#include "math/rigid_motion.h"
 #include "scene/json_reader.h"
 #include "scene/limits.h"
 #include "scene/mirror_json.h"
@@ -29,14 +30,10 @@ struct GroupElement {
     const json* back = nullptr;    // nullptr: cemented to the next element's front
     const json* mirror = nullptr;  // a mirror element's surface (no front, back, thickness)
     double hole_diameter = 0;
-    double tilt_x = 0, tilt_y = 0;  // degrees
-    // A lens element's decentre (across the axis) and tilts (degrees, then about its own z).
-    double decenter_x = 0, decenter_y = 0, tilt_z = 0;
+    // A mirror's tilt_x or tilt_y; a lens element's decentre (across the axis) and tilts
+    // (degrees, then about its own z).
+    Decentring move;
     int material = 0;
-
-    bool moved() const {
-        return decenter_x != 0 || decenter_y != 0 || tilt_x != 0 || tilt_y != 0 || tilt_z != 0;
-    }
 };
 
 ElementSpec declare_group() {
@@ -93,34 +90,8 @@ ElementSpec declare_element() {
                            .above(0)
                            .meaning_auto("the group's")
                            .describe("its diameter"));
-    const char* moved = " (with the elements cemented to it; the axis goes on unmoved)";
-    s.params.push_back(
-        number_param("decenter_x", 0)
-            .describe(std::string("moves the element along the axis frame's x") + moved)
-            .in_editor("Decentre x"));
-    s.params.push_back(
-        number_param("decenter_y", 0)
-            .describe(std::string("moves the element along the axis frame's y") + moved)
-            .in_editor("Decentre y"));
-    s.params.push_back(number_param("tilt_x", 0)
-                           .above(-90)
-                           .below(90)
-                           .in_unit("degrees")
-                           .describe("then turns it about x through its front vertex, +z towards "
-                                     "-y (Zemax's coordinate break, order 0)")
-                           .in_editor("Tilt about x (degrees)"));
-    s.params.push_back(number_param("tilt_y", 0)
-                           .above(-90)
-                           .below(90)
-                           .in_unit("degrees")
-                           .describe("then about the turned y, +z towards +x")
-                           .in_editor("Tilt about y (degrees)"));
-    s.params.push_back(number_param("tilt_z", 0)
-                           .above(-360)
-                           .below(360)
-                           .in_unit("degrees")
-                           .describe("then about its own axis, +x towards +y")
-                           .in_editor("Tilt about z (degrees)"));
+    add_decentring_params(s, "element",
+                          " (with the elements cemented to it; the axis goes on unmoved)");
     s.params.push_back(nested_param(ParamKind::Object, "material")
                            .needed()
                            .as_written("string or object")
@@ -178,40 +149,6 @@ bool is_mirror_element(const json& e) {
            (e.contains("mirror") || (!e.contains("front") && !e.contains("thickness")));
 }
 
-// Turns v about the unit axis k by `angle` radians, right-handed (Rodrigues' formula).
-Vec3 turned(const Vec3& v, const Vec3& k, double angle) {
-    return v * std::cos(angle) + cross(k, v) * std::sin(angle) +
-           k * (dot(k, v) * (1.0 - std::cos(angle)));
-}
-
-// A lens element's decentre and tilts as a rigid motion of the scene: across the axis frame
-// `f` by (decenter_x, decenter_y), then turned about x, the turned y and the turned z through
-// the moved front vertex (Zemax's coordinate break with order 0: each turn about the axes
-// the previous one left).
-struct ElementMotion {
-    Vec3 pivot, shift;
-    Frame axes;  // where the frame's u, v, w go
-
-    Vec3 point(const Vec3& p) const { return pivot + shift + direction(p - pivot); }
-    Vec3 direction(const Vec3& d) const {
-        return axes.u * dot(d, frame_u) + axes.v * dot(d, frame_v) + axes.w * dot(d, frame_w);
-    }
-    Vec3 frame_u, frame_v, frame_w;
-};
-
-ElementMotion element_motion(const GroupElement& e, const Vec3& vertex, const Frame& f) {
-    const double degree = M_PI / 180.0;
-    Frame axes = f;
-    const auto turn = [&axes](const Vec3& hinge, double angle) {
-        const Vec3 k = hinge;  // copied: turning the axes moves the hinge with them
-        axes = {turned(axes.u, k, angle), turned(axes.v, k, angle), turned(axes.w, k, angle)};
-    };
-    turn(axes.u, e.tilt_x * degree);
-    turn(axes.v, e.tilt_y * degree);
-    turn(axes.w, e.tilt_z * degree);
-    return {vertex, f.u * e.decenter_x + f.v * e.decenter_y, axes, f.u, f.v, f.w};
-}
-
 // Where the elements stand: the vertex light meets next, the axis frame (faces are signed
 // along w) and the way light travels along w.
 struct Placement {
@@ -227,8 +164,8 @@ struct Placement {
 std::shared_ptr<const Shape> group_mirror(const GroupElement& e, const Placement& at,
                                           const Vec3& x_axis) {
     const Frame& f = at.frame;
-    const Vec3 hinge = e.tilt_x != 0 ? f.u : f.v;
-    const double tilt = (e.tilt_x != 0 ? e.tilt_x : e.tilt_y) * M_PI / 180.0;
+    const Vec3 hinge = e.move.tilt_x != 0 ? f.u : f.v;
+    const double tilt = (e.move.tilt_x != 0 ? e.move.tilt_x : e.move.tilt_y) * M_PI / 180.0;
     MirrorPrescription p;
     p.vertex = at.at;
     p.axis = turned(f.w, hinge, tilt);
@@ -244,9 +181,10 @@ std::shared_ptr<const Shape> group_mirror(const GroupElement& e, const Placement
 // frame by twice its tilt (the reflected axis is then -w, as Zemax's coordinate break, mirror,
 // coordinate break and CODE V's BEN leave it).
 void reflect_placement(const GroupElement& e, Placement& at) {
-    if (e.tilt_x != 0 || e.tilt_y != 0) {
-        const Vec3 hinge = e.tilt_x != 0 ? at.frame.u : at.frame.v;
-        const double twice = 2.0 * (e.tilt_x != 0 ? e.tilt_x : e.tilt_y) * M_PI / 180.0;
+    if (e.move.tilt_x != 0 || e.move.tilt_y != 0) {
+        const Vec3 hinge = e.move.tilt_x != 0 ? at.frame.u : at.frame.v;
+        const double twice =
+            2.0 * (e.move.tilt_x != 0 ? e.move.tilt_x : e.move.tilt_y) * M_PI / 180.0;
         at.frame = {turned(at.frame.u, hinge, twice), turned(at.frame.v, hinge, twice),
                     turned(at.frame.w, hinge, twice)};
         at.turned = true;
@@ -328,9 +266,9 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
         if (is_mirror) {
             e.mirror = &er.require("mirror");
             e.hole_diameter = er.real("hole_diameter");
-            e.tilt_x = er.real("tilt_x");
-            e.tilt_y = er.real("tilt_y");
-            if (e.tilt_x != 0 && e.tilt_y != 0) {
+            e.move.tilt_x = er.real("tilt_x");
+            e.move.tilt_y = er.real("tilt_y");
+            if (e.move.tilt_x != 0 && e.move.tilt_y != 0) {
                 throw SceneError(er.child_path("tilt_y"),
                                  "a mirror folds the axis about one of its axes: give tilt_x or "
                                  "tilt_y, not both");
@@ -350,12 +288,12 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
             continue;
         }
         e.thickness = er.real("thickness");
-        e.decenter_x = er.real("decenter_x");
-        e.decenter_y = er.real("decenter_y");
-        e.tilt_x = er.real("tilt_x");
-        e.tilt_y = er.real("tilt_y");
-        e.tilt_z = er.real("tilt_z");
-        if (e.moved() && i > 0 && !specs[i - 1].mirror && !specs[i - 1].back) {
+        e.move.decenter_x = er.real("decenter_x");
+        e.move.decenter_y = er.real("decenter_y");
+        e.move.tilt_x = er.real("tilt_x");
+        e.move.tilt_y = er.real("tilt_y");
+        e.move.tilt_z = er.real("tilt_z");
+        if (e.move.moves() && i > 0 && !specs[i - 1].mirror && !specs[i - 1].back) {
             throw SceneError(e.path,
                              "is cemented to " + specs[i - 1].path +
                                  ": decentre or tilt the cemented elements on the first of them");
@@ -382,7 +320,7 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
     std::vector<SceneObject> objects;
     std::optional<LensPrescription> previous;  // the element before, while not cemented to it
     // The decentre and tilts of a cemented run, while `moving`.
-    ElementMotion motion{};
+    RigidMotion motion{};
     bool moving = false;
     Placement at;
     at.at = vertex;
@@ -434,8 +372,8 @@ std::vector<SceneObject> read_lens_group(const json& j, const std::string& path,
         if (previous) check_air_space(specs[i - 1], *previous, e, p, travel);
         previous.reset();
         if (e.back) previous = p;
-        if (e.moved()) {
-            motion = element_motion(e, at.at, at.frame);
+        if (e.move.moves()) {
+            motion = rigid_motion(e.move, at.at, at.frame);
             moving = true;
         }
         if (moving) {

@@ -26,6 +26,14 @@ ElementSpec declare_material() {
             .describe("refractive index of the inside (relative to the ambient medium), or a model")
             .in_editor("Refractive index"),
         nested_param(ParamKind::String, "glass").describe("a catalogue glass, e.g. N-BK7"),
+        number_param("delta_n_d", 0.0)
+            .describe("with `glass`: the melt's n_d minus the catalogue's (a melt sheet's value, "
+                      "or a tolerance's)")
+            .in_editor("Melt Δn_d"),
+        number_param("delta_V_d", 0.0)
+            .describe("with `glass`: the melt's V_d minus the catalogue's (the dispersion keeps "
+                      "its shape)")
+            .in_editor("Melt ΔV_d"),
         nested_param(ParamKind::Object, "emission").describe("light emitted by the surface"),
         nested_param(ParamKind::Object, "grin")
             .describe("a gradient index inside the solid (replaces ior; see docs/grin.md)"),

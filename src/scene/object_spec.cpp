@@ -115,6 +115,9 @@ ElementSpec declare_lens() {
                            .meaning_auto("a fixed perpendicular to `axis`")
                            .describe("prescription form: where the lens's local x axis points")
                            .in_editor("Local x axis"));
+    add_decentring_params(s, "lens",
+                          " (prescription form; the optical bench keeps the axis `center` and "
+                          "`axis` give, as designed)");
     s.example = nlohmann::json::parse(
         R"json({"type": "lens", "name": "lens", "center": [0, 0, 0], "axis": [0, 0, 1], "thickness": 0.3, "diameter": 1, "front": {"shape": "sphere", "radius": 1.5}, "back": {"shape": "sphere", "radius": -1.5}, "material": {"color": 1, "transparency": 1, "ior": 1.5}})json");
     return s;
@@ -153,6 +156,34 @@ ElementSpec shape_spec(std::string name, std::string phrase, bool takes_detector
         if (takes_detector || p.key != "detector") s.params.push_back(p);
     }
     return s;
+}
+
+void add_decentring_params(ElementSpec& s, const std::string& what, const std::string& moved) {
+    s.params.push_back(number_param("decenter_x", 0)
+                           .describe("moves the " + what + " along the axis frame's x" + moved)
+                           .in_editor("Decentre x"));
+    s.params.push_back(number_param("decenter_y", 0)
+                           .describe("moves the " + what + " along the axis frame's y" + moved)
+                           .in_editor("Decentre y"));
+    s.params.push_back(number_param("tilt_x", 0)
+                           .above(-90)
+                           .below(90)
+                           .in_unit("degrees")
+                           .describe("then turns it about x through its front vertex, +z towards "
+                                     "-y (Zemax's coordinate break, order 0)")
+                           .in_editor("Tilt about x (degrees)"));
+    s.params.push_back(number_param("tilt_y", 0)
+                           .above(-90)
+                           .below(90)
+                           .in_unit("degrees")
+                           .describe("then about the turned y, +z towards +x")
+                           .in_editor("Tilt about y (degrees)"));
+    s.params.push_back(number_param("tilt_z", 0)
+                           .above(-360)
+                           .below(360)
+                           .in_unit("degrees")
+                           .describe("then about its own axis, +x towards +y")
+                           .in_editor("Tilt about z (degrees)"));
 }
 
 bool is_common_object_key(const std::string& key) {

@@ -22,6 +22,10 @@ const ElementSpec& lens_spec();
 // flat shapes, which can measure light).
 ElementSpec shape_spec(std::string name, std::string phrase, bool takes_detector);
 
+// decenter_x, decenter_y, tilt_x, tilt_y and tilt_z (rigid_motion.h), for a lens group's
+// element and a lens: `moved` says what moves with it and what stays.
+void add_decentring_params(ElementSpec& s, const std::string& what, const std::string& moved);
+
 // Whether `key` is one of the common keys (documented once, not under each shape).
 bool is_common_object_key(const std::string& key);
 

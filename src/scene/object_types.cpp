@@ -4,6 +4,7 @@
 #include "geometry/lens/lens_solid.h"
 #include "geometry/sphere.h"
 #include "geometry/triangle.h"
+#include "math/rigid_motion.h"
 #include "scene/box_corners_json.h"
 #include "scene/box_json.h"
 #include "scene/lens_group_json.h"
@@ -39,8 +40,11 @@ std::shared_ptr<const Shape> read_lens(SpecReader& r) {
                          "form) or thickness, diameter, front and back (a prescription)");
     }
     if (report_form) {
-        for (const char* key : {"thickness", "diameter", "front", "back", "x_axis"}) {
-            if (r.has(key)) {
+        for (const char* key : {"thickness", "diameter", "front", "back", "x_axis", "decenter_x",
+                                "decenter_y", "tilt_x", "tilt_y", "tilt_z"}) {
+            const bool moving =
+                std::string(key).find('_') != std::string::npos && std::string(key) != "x_axis";
+            if (r.has(key) && (!moving || r.real(key) != 0)) {
                 throw SceneError(r.child_path(key),
                                  "belongs to the prescription form; the report form "
                                  "(curvature_radius, aperture_radius) cannot take it");
@@ -66,6 +70,18 @@ std::shared_ptr<const Shape> read_lens(SpecReader& r) {
     }
     if (auto problem = LensSolid::check_prescription(p)) {
         throw SceneError(r.child_path(problem->field), problem->reason);
+    }
+    const Decentring move{r.real("decenter_x"), r.real("decenter_y"), r.real("tilt_x"),
+                          r.real("tilt_y"), r.real("tilt_z")};
+    if (move.moves()) {
+        // Pivoting on the front vertex, as a lens group's element does.
+        const Frame frame = lens_frame(p);
+        p.designed_axis = p.axis;
+        p.designed_vertex = p.centre - p.axis * (0.5 * p.thickness);
+        const RigidMotion motion = rigid_motion(move, p.designed_vertex, frame);
+        p.centre = motion.point(p.centre);
+        p.axis = motion.direction(p.axis);
+        p.x_axis = motion.direction(frame.u);
     }
     return std::make_shared<LensSolid>(std::move(p));
 }

@@ -14,6 +14,7 @@
 
 #include "math/formula.h"
 #include "optics/grin_profile.h"
+#include "optics/melt_index.h"
 #include "scene/atmosphere_region.h"
 #include "scene/camera_spec.h"
 #include "scene/glass_catalogues_json.h"
@@ -157,9 +158,18 @@ Material read_material(const json& j, const std::string& path, const std::string
     if (r.has("ior") && r.has("glass")) {
         throw SceneError(r.child_path("glass"), "give either ior or glass, not both");
     }
+    for (const char* key : {"delta_n_d", "delta_V_d"}) {
+        if (r.real(key) != 0 && !r.has("glass"))
+            throw SceneError(r.child_path(key), "a melt's departure needs a catalogue `glass`");
+    }
     if (const json* g = r.find("glass")) {
         const Glass& glass = read_glass(*g, r.child_path("glass"));
-        m.index = glass.model;
+        const double dn = r.real("delta_n_d"), dv = r.real("delta_V_d");
+        if (!(glass.model->n_d() + dn > 1.0))
+            throw SceneError(r.child_path("delta_n_d"), "leaves the melt's n_d at or below 1");
+        if (!(glass.model->abbe_number() + dv > 0.0))
+            throw SceneError(r.child_path("delta_V_d"), "leaves the melt's V_d at or below 0");
+        m.index = melt_index(glass.model, dn, dv);
         // A maker's glass is named with its maker (the bench's reports, the ray diagram), a
         // name lookups take back and that stays unambiguous (SCHOTT:SF10, HIKARI:SF10).
         m.glass = glass.maker.empty() ? glass.name : glass.maker + ":" + glass.name;

@@ -59,6 +59,34 @@ private slots:
         QVERIFY(w.document()->json() == original);
     }
 
+    // A decentre and a tilt alone: the singlet's four rows (x and y of each), the decentre's
+    // two ends alike across the field's plane (x), the scene as it was.
+    void decentre_and_tilt_rows() {
+        MainWindow w;
+        ToleranceDialog* dialog = singlet_dialog(w);
+        QVERIFY(dialog);
+        const nlohmann::json original = w.document()->json();
+        lenslab::gui::ToleranceChoices choices = dialog->choices();
+        choices.optics.fields = {0.0, 2.0};
+        choices.optics.wavelengths = {587.5618};
+        choices.radius = choices.thickness = choices.air_gap = 0;
+        choices.decenter = 0.05;
+        choices.tilt = 0.1;
+        choices.trials = 4;
+        dialog->set_choices(choices);
+        QSignalSpy finished(dialog, &ToleranceDialog::finished_run);
+        QVERIFY2(dialog->start(), qPrintable(dialog->status()));
+        QVERIFY(finished.wait(60000));
+        QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(dialog->status()));
+        QTableWidget* table = dialog->findChild<QTableWidget*>("sensitivity");
+        QCOMPARE(table->rowCount(), 4);
+        QVERIFY2(table->item(0, 0)->text().startsWith("decentre x "),
+                 qPrintable(table->item(0, 0)->text()));
+        QVERIFY(table->item(3, 0)->text().startsWith("tilt y "));
+        QCOMPARE(table->item(0, 1)->text(), table->item(0, 2)->text());
+        QVERIFY(w.document()->json() == original);
+    }
+
     void no_error_to_try_is_said() {
         MainWindow w;
         ToleranceDialog* dialog = singlet_dialog(w);

@@ -60,7 +60,8 @@ TEST(LensDesign, MistakesNameTheirJsonPath) {
               "variables[0].surface: missing (required)");
     EXPECT_EQ(design_error({{"variables", {{{"type", "bend"}, {"lens", "A"}}}}}),
               "variables[0].type: unknown type 'bend' (known: curvature, conic, aspheric, "
-              "thickness, air_gap, image_distance, n_d, V_d)");
+              "thickness, air_gap, image_distance, n_d, V_d, decenter_x, decenter_y, tilt_x, "
+              "tilt_y, delta_n_d, delta_V_d)");
     EXPECT_EQ(design_error({{"variables", {{{"type", "air_gap"}, {"lens", "B"}}}}}),
               "variables[0].lens: no lens behind 'B', so no air gap after it (the "
               "image_distance variable moves the image plane)");

@@ -199,6 +199,27 @@ void attach_grin(const Scene& scene, int object, const Vec3& axis, const Vec3& a
     e.glass = name.str();
 }
 
+// Where a lens was designed to stand when it has been moved from there: its lens group's
+// axis, or its own before its decentre and tilt keys; none for a lens never moved.
+struct DesignedAxis {
+    Vec3 axis, vertex;
+};
+
+std::optional<DesignedAxis> designed_axis(const Scene& scene, int i) {
+    const SceneObject& o = scene.objects[i];
+    if (length(o.group_axis) > 0) return DesignedAxis{o.group_axis, o.group_vertex};
+    const LensPrescription& p = *o.shape->lens_prescription();
+    if (length(p.designed_axis) > 0) return DesignedAxis{p.designed_axis, p.designed_vertex};
+    return std::nullopt;
+}
+
+// Whether a designed axis is the system's (through `centre` along `axis`).
+bool on_axis(const DesignedAxis& d, const Vec3& axis, const Vec3& centre, double largest) {
+    const Vec3 offset = d.vertex - centre;
+    return length(cross(axis, d.axis)) <= kAxisAngleTolerance &&
+           length(offset - axis * dot(offset, axis)) <= kAxisOffsetTolerance * largest;
+}
+
 }  // namespace
 
 OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) {
@@ -229,17 +250,16 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
     }
     const int seed = lens ? *lens : lenses.front();
     const LensPrescription& seed_lens = *scene.objects[seed].shape->lens_prescription();
-    // A lens group's elements may be decentred or tilted from the group's axis: then the
-    // system's axis is the group's, as designed.
-    const SceneObject& seed_object = scene.objects[seed];
-    const bool seed_in_group = seed_object.source >= 0 && length(seed_object.group_axis) > 0;
-    const Vec3 axis = seed_in_group ? seed_object.group_axis : seed_lens.axis;
+    // Lenses may be decentred or tilted from the axis they were designed on (a lens group's,
+    // or a lens's own before its decentre and tilt keys): then the system's axis is that one.
+    const std::optional<DesignedAxis> seed_design = designed_axis(scene, seed);
+    const Vec3 axis = seed_design ? seed_design->axis : seed_lens.axis;
     Vec3 centre = seed_lens.centre;
-    if (seed_in_group) {
-        const Vec3 offset = centre - seed_object.group_vertex;
+    if (seed_design) {
+        const Vec3 offset = centre - seed_design->vertex;
         if (length(cross(axis, seed_lens.axis)) > kAxisAngleTolerance ||
             length(offset - axis * dot(offset, axis)) > kAxisOffsetTolerance * seed_lens.diameter) {
-            centre = seed_object.group_vertex;
+            centre = seed_design->vertex;
         }
     }
     double largest = 0.0;
@@ -254,10 +274,11 @@ OpticalSystem build_optical_system(const Scene& scene, std::optional<int> lens) 
         const Vec3 offset = p.centre - centre;
         const double off_axis = length(offset - axis * dot(offset, axis));
         const bool off = sine > kAxisAngleTolerance || off_axis > kAxisOffsetTolerance * largest;
-        const bool in_group = seed_in_group && scene.objects[i].source == seed_object.source;
-        // A moved group element, or a lens with a freeform face: its surfaces placed by the
-        // lens's own frame (the face's x and y are the lens's).
-        if ((off && in_group) || (!off && has_freeform_face(p))) {
+        // A lens moved from an axis designed on this one, or a lens with a freeform face: its
+        // surfaces placed by the lens's own frame (the face's x and y are the lens's).
+        const std::optional<DesignedAxis> design = designed_axis(scene, i);
+        const bool posable = design && on_axis(*design, axis, centre, largest);
+        if ((off && posable) || (!off && has_freeform_face(p))) {
             check_lens_transparent(scene, i);
             if (scene.material_of(i).grin) {
                 throw SceneError(object_path(scene, i) + ".material",

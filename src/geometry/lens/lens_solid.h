@@ -24,6 +24,9 @@ struct LensPrescription {
     std::shared_ptr<const LensSurface> back;
     // The local +x direction (projected perpendicular to the axis); zero: any fixed one.
     Vec3 x_axis{};
+    // A lens moved by a decentre or tilt from where it was designed to stand: the designed
+    // axis and front vertex, which the optical system keeps (zero axis: not moved).
+    Vec3 designed_axis{}, designed_vertex{};
 };
 
 // The lens's local frame: w along the axis, u along x_axis made perpendicular to it (or
