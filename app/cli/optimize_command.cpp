@@ -2,6 +2,7 @@
 // (docs/optimizer.md). Progress on stderr, the merit function and every operand before and
 // after on stdout, the optimised scene written to OUT.
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -56,17 +57,37 @@ int run_optimize(const OptimizeArgs& a) {
     } catch (const SceneError& e) {
         throw SceneError(a.design + ": " + e.path(), e.reason());
     }
+    // A multi-configuration design's other configurations beside it: zoom.json, zoom.tele.json.
+    std::vector<std::string> outputs;
+    for (const auto& [name, scene] : result.configuration_scenes) {
+        const std::filesystem::path out(a.output);
+        outputs.push_back(
+            (out.parent_path() / (out.stem().string() + "." + name + out.extension().string()))
+                .string());
+    }
     // Under mpirun every rank has the result; rank 0 writes it.
-    if (world_communicator().rank() == 0)
+    if (world_communicator().rank() == 0) {
         write_text_atomically(a.output, result.scene.dump(2) + "\n");
+        for (size_t k = 0; k < outputs.size(); ++k) {
+            write_text_atomically(outputs[k], result.configuration_scenes[k].second.dump(2) + "\n");
+        }
+    }
     if (a.json) {
         nlohmann::ordered_json j = optimize_json(result);
         j["design"] = a.design;
         j["output"] = a.output;
+        if (!outputs.empty()) j["configuration_outputs"] = outputs;
         std::cout << j.dump(2) << "\n";
     } else {
         std::cout << "lenslab optimize " << a.design << "\n\n"
-                  << optimize_table(result) << "optimised system written to " << a.output << "\n";
+                  << optimize_table(result) << "optimised system written to " << a.output;
+        if (!result.configuration_scenes.empty())
+            std::cout << " (" << design.configurations[0].name << ")";
+        std::cout << "\n";
+        for (size_t k = 0; k < outputs.size(); ++k) {
+            std::cout << "configuration " << result.configuration_scenes[k].first << " written to "
+                      << outputs[k] << "\n";
+        }
     }
     return 0;
 }

@@ -10,6 +10,7 @@
 #include "analysis/diffraction/zernike.h"
 #include "analysis/system/first_order.h"
 #include "analysis/system/paraxial.h"
+#include "optimize/design_configurations.h"
 #include "optimize/model_glass.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
@@ -97,7 +98,29 @@ double de_mtf(const OpticalSystem& system, const FirstOrder& first, const LensDe
 
 }  // namespace
 
+std::vector<double> DesignModel::Configuration::local(const std::vector<double>& x) const {
+    std::vector<double> out;
+    out.reserve(globals.size());
+    for (int i : globals) out.push_back(x[size_t(i)]);
+    return out;
+}
+
 DesignModel::DesignModel(const LensDesign& design) : m_design(design) {
+    if (!design.configurations.empty()) {
+        for (size_t k = 0; k < design.configurations.size(); ++k) {
+            Configuration c;
+            const LensDesign one = configuration_design(design, int(k), &c.globals);
+            try {
+                c.model = std::make_shared<const DesignModel>(one);
+            } catch (const SceneError& e) {
+                throw SceneError(e.path(), "configuration '" + design.configurations[k].name +
+                                               "': " + e.reason());
+            }
+            m_configurations.push_back(std::move(c));
+        }
+        m_start = m_configurations.front().model->state_at(m_configurations.front().model->start());
+        return;
+    }
     m_start.scene = design.scene;
     m_start.image_distance = design.image_distance.value_or(0.0);
     m_start_lost.assign(design.operands.size(), 0);
@@ -109,12 +132,30 @@ DesignModel::DesignModel(const LensDesign& design) : m_design(design) {
 }
 
 std::vector<double> DesignModel::start() const {
+    if (!m_configurations.empty()) {
+        // Each variable where the first configuration that has it starts it.
+        std::vector<double> x(m_design.variables.size());
+        std::vector<bool> known(x.size(), false);
+        for (const Configuration& c : m_configurations) {
+            const std::vector<double> local = c.model->start();
+            for (size_t j = 0; j < c.globals.size(); ++j) {
+                if (known[size_t(c.globals[j])]) continue;
+                x[size_t(c.globals[j])] = local[j];
+                known[size_t(c.globals[j])] = true;
+            }
+        }
+        return x;
+    }
     std::vector<double> x;
     for (const DesignVariable& v : m_design.variables) x.push_back(variable_value(m_start, v));
     return x;
 }
 
 DesignState DesignModel::state_at(const std::vector<double>& x) const {
+    if (!m_configurations.empty()) {
+        const Configuration& first = m_configurations.front();
+        return first.model->state_at(first.local(x));
+    }
     DesignState state = m_start;
     const std::vector<double> x0 = start();
     for (size_t i = 0; i < x.size(); ++i) {
@@ -125,8 +166,35 @@ DesignState DesignModel::state_at(const std::vector<double>& x) const {
     return state;
 }
 
+std::vector<DesignState> DesignModel::configuration_states(const std::vector<double>& x) const {
+    if (m_configurations.empty()) return {state_at(x)};
+    std::vector<DesignState> states;
+    for (const Configuration& c : m_configurations) states.push_back(c.model->state_at(c.local(x)));
+    return states;
+}
+
 std::optional<DesignEvaluation> DesignModel::evaluate(const std::vector<double>& x,
                                                       std::string* why) const {
+    if (!m_configurations.empty()) {
+        // The configurations' operands one after the other, as the design lists them.
+        DesignEvaluation all;
+        for (const Configuration& c : m_configurations) {
+            const std::optional<DesignEvaluation> e = c.model->evaluate(c.local(x), why);
+            if (!e) return std::nullopt;
+            const auto append = [](std::vector<double>& to, const std::vector<double>& from) {
+                to.insert(to.end(), from.begin(), from.end());
+            };
+            append(all.values, e->values);
+            append(all.residuals, e->residuals);
+            append(all.solver_residuals, e->solver_residuals);
+            all.merit += e->merit;
+            all.configuration_efl.push_back(e->efl);
+            all.configuration_image_distance.push_back(e->image_distance);
+        }
+        all.efl = all.configuration_efl.front();
+        all.image_distance = all.configuration_image_distance.front();
+        return all;
+    }
     try {
         return evaluate_state(state_at(x), nullptr);
     } catch (const Error& e) {

@@ -125,10 +125,10 @@ const ojson* dv_material(const ojson& scene, const ojson& lens) {
 
 std::string variable_label(const DesignVariable& v) {
     std::string label = dv_kind_name(v.kind);
-    if (v.kind == VariableKind::ImageDistance) return label;
-    label += " " + v.lens;
+    if (v.kind != VariableKind::ImageDistance) label += " " + v.lens;
     if (!v.surface.empty()) label += "." + v.surface;
     if (v.kind == VariableKind::Aspheric) label += " A" + std::to_string(v.order);
+    if (v.configuration >= 0) label += " [" + v.configuration_name + "]";
     return label;
 }
 

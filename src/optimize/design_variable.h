@@ -45,6 +45,10 @@ struct DesignVariable {
     // Bounds the optimiser keeps the variable within (optimize/variable_bounds.h), both or
     // neither; they are also the region the global search draws its starts from.
     std::optional<double> min, max;
+    // A multi-configuration design's variable of one configuration (an air gap, the image
+    // distance); -1: one value shared by every configuration.
+    int configuration = -1;
+    std::string configuration_name;
 
     bool bounded() const { return min.has_value(); }
     // n_d or V_d: a model glass's, which glass substitution replaces by a catalogue glass.

@@ -9,6 +9,7 @@
 #include "analysis/system/optical_system.h"
 #include "optics/glass.h"
 #include "optics/glass_library.h"
+#include "optimize/design_configurations.h"
 #include "optimize/lens_design_spec.h"
 #include "scene/json_reader.h"
 #include "scene/scene_json.h"
@@ -127,6 +128,8 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
             d.image_distance = reader.number("image_distance");
         }
     }
+    const nlohmann::json* configurations = reader.find("configurations");
+    if (configurations) read_configurations(*configurations, d);
     // Both lists are lenslab optimize's (optimize_design refuses a design without operands);
     // lenslab tolerance reads a design without them.
     const nlohmann::json variables =
@@ -134,8 +137,23 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
     if (!variables.is_array()) throw SceneError("variables", "must be an array of variables");
     for (size_t i = 0; i < variables.size(); ++i) {
         const std::string path = "variables[" + std::to_string(i) + "]";
-        d.variables.push_back(read_design_variable(variables[i], path, d.scene));
-        const DesignVariable& v = d.variables.back();
+        nlohmann::json spec = variables[i];
+        const int configuration = read_variable_configuration(spec, path, d);
+        d.variables.push_back(read_design_variable(spec, path, d.scene));
+        DesignVariable& v = d.variables.back();
+        if (configuration >= 0) {
+            v.configuration = configuration;
+            v.configuration_name = d.configurations[size_t(configuration)].name;
+        }
+        for (const DesignConfiguration& c : d.configurations) {
+            for (const auto& [gap, value] : c.air_gaps) {
+                if (v.configuration < 0 && v.kind == VariableKind::AirGap &&
+                    gap.object == v.object) {
+                    throw SceneError(path, "configuration '" + c.name + "' sets this air gap: " +
+                                               "give the variable a configuration");
+                }
+            }
+        }
         for (size_t j = 0; j + 1 < d.variables.size(); ++j) {
             if (variable_label(d.variables[j]) == variable_label(v)) {
                 throw SceneError(path, "the same variable as variables[" + std::to_string(j) +
@@ -148,9 +166,10 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
                              "(a number, not the paraxial focus)");
         }
     }
-    const DesignState start_state{d.scene, d.image_distance.value_or(0.0)};
     for (const DesignVariable& v : d.variables) {
-        const double value = variable_value(start_state, v);
+        // A configuration's variable starts where the configuration puts it.
+        const LensDesign at = v.configuration >= 0 ? configuration_design(d, v.configuration) : d;
+        const double value = variable_value({at.scene, at.image_distance.value_or(0.0)}, v);
         if (v.bounded() && (value < *v.min || value > *v.max)) {
             throw SceneError(v.path, "starts at " + format_number(value) +
                                          ", outside its bounds [" + format_number(*v.min) + ", " +
@@ -162,7 +181,10 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
     if (operands_given && (!operands.is_array() || operands.empty())) {
         throw SceneError("operands", "must be a non-empty array of operands");
     }
-    for (size_t i = 0; operands_given && i < operands.size(); ++i) {
+    if (configurations) {
+        read_configuration_operands(operands_given, *configurations, d);
+    }
+    for (size_t i = 0; operands_given && !configurations && i < operands.size(); ++i) {
         for (MeritOperand& op : read_merit_operands(
                  operands[i], "operands[" + std::to_string(i) + "]", d.scene, d.fields)) {
             d.operands.push_back(std::move(op));

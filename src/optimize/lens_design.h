@@ -48,6 +48,17 @@ struct GlassSubstitutionSettings {
     int candidates = 5;
 };
 
+// One configuration of a multi-configuration design (a zoom's focal length, say): the air
+// gaps it sets, its fields and its image plane. Its operands and variables are among the
+// design's, marked with its index.
+struct DesignConfiguration {
+    std::string name;
+    std::vector<double> fields;
+    std::optional<double> image_distance;
+    // Air gaps it sets (air_gap variables with the value they take in it).
+    std::vector<std::pair<DesignVariable, double>> air_gaps;
+};
+
 struct LensDesign {
     std::string system_file;       // the scene file, relative to the working folder; "" inline
     std::string base_dir;          // the folder relative paths of the scene resolve against
@@ -70,6 +81,11 @@ struct LensDesign {
     ToleranceSettings tolerances;
     GlobalSearchSettings global_search;
     GlassSubstitutionSettings glass_substitution;
+    // None: one configuration, the design's own. Otherwise the operands are every
+    // configuration's (the shared ones read once per configuration), the variables shared or
+    // of one configuration, and the scene, fields and image_distance are configuration 0's
+    // starting point that each configuration changes.
+    std::vector<DesignConfiguration> configurations;
 
     double primary_wavelength() const { return wavelengths[(wavelengths.size() - 1) / 2]; }
 };

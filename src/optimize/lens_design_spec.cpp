@@ -63,6 +63,31 @@ ElementSpec declare_design() {
             .as_written("object")
             .describe("model glasses replaced by the nearest catalogue glasses after the "
                       "optimisation (below)"),
+        nested_param(ParamKind::Array, "configurations")
+            .as_written("array of objects")
+            .describe("a multi-configuration design, e.g. a zoom's focal lengths (below)"),
+    };
+    return s;
+}
+
+ElementSpec declare_configuration() {
+    ElementSpec s{"configuration", "a configuration", {}, {}};
+    s.params = {
+        nested_param(ParamKind::String, "name")
+            .meaning_auto("its number, from 1")
+            .describe("names it in the reports and in variables' `configuration`"),
+        nested_param(ParamKind::Array, "fields")
+            .meaning_auto("the design's")
+            .describe("its field angles, degrees"),
+        nested_param(ParamKind::Number, "image_distance")
+            .meaning_auto("the design's")
+            .describe("its image plane's distance from the last vertex"),
+        nested_param(ParamKind::Object, "air_gaps")
+            .meaning_auto("the scene's")
+            .describe("lens name → the air gap after that lens in this configuration"),
+        nested_param(ParamKind::Array, "operands")
+            .meaning_auto("none")
+            .describe("operands of this configuration alone, beside the design's"),
     };
     return s;
 }
@@ -149,6 +174,11 @@ const ElementSpec& global_search_spec() {
 
 const ElementSpec& lens_design_spec() {
     static const ElementSpec spec = declare_design();
+    return spec;
+}
+
+const ElementSpec& configuration_spec() {
+    static const ElementSpec spec = declare_configuration();
     return spec;
 }
 

@@ -20,6 +20,8 @@ namespace lenslab {
 const ElementSpec& lens_design_spec();
 // The `tolerances` block's keys.
 const ElementSpec& tolerances_spec();
+// An entry of `configurations` (design_configurations.h).
+const ElementSpec& configuration_spec();
 // The `global_search` block's keys.
 const ElementSpec& global_search_spec();
 // The `glass_substitution` block's keys.

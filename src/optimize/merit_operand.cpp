@@ -41,6 +41,7 @@ std::string operand_label(const MeritOperand& op) {
                                                  : "S");
     if (mo_takes_field(op.kind)) label += " " + format_number(op.field) + "°";
     if (!op.lens.empty()) label += " " + op.lens;
+    if (op.configuration >= 0) label += " [" + op.configuration_name + "]";
     return label;
 }
 

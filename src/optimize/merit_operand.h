@@ -38,6 +38,9 @@ struct MeritOperand {
     int object = -1;        // thickness constraints: the lens's index in the scene JSON
     std::string lens;
     std::string path;  // "operands[1]"
+    // A multi-configuration design's (lens_design.h): the configuration it is evaluated in.
+    int configuration = -1;
+    std::string configuration_name;
 };
 
 bool is_constraint(const MeritOperand& op);

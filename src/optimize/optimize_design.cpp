@@ -104,6 +104,11 @@ MeritTable merit_table(const LensDesign& design, const DesignEvaluation& evaluat
                                   op.target, op.weight,
                                   evaluation.residuals[i] * evaluation.residuals[i]});
     }
+    for (size_t k = 0; k < design.configurations.size(); ++k) {
+        table.configurations.push_back({design.configurations[k].name,
+                                        evaluation.configuration_efl[k],
+                                        evaluation.configuration_image_distance[k]});
+    }
     return table;
 }
 
@@ -114,6 +119,11 @@ OptimizeResult optimize_design(const LensDesign& design, int iterations,
         throw SceneError("operands",
                          "missing (required: the merit function lenslab optimize "
                          "minimises)");
+    }
+    if (!design.configurations.empty() &&
+        (!design.glass_choices.empty() || design.glass_substitution.enabled)) {
+        throw SceneError(design.glass_choices.empty() ? "glass_substitution" : "glass_choices",
+                         "not yet with configurations (the glass passes optimise one)");
     }
     const DesignModel model(design);
     const std::vector<double> x0 = model.start();
@@ -160,13 +170,21 @@ OptimizeResult optimize_design(const LensDesign& design, int iterations,
     LensDesign final_design = design;
     if (design.glass_substitution.enabled)
         od_substitute_glasses(final_design, best, result, on_glass);
-    const DesignModel final_model(od_design_at(final_design, best.state));
     result.before = merit_table(design, *model.evaluate(x0));
-    result.after = merit_table(design, *final_model.evaluate(final_model.start()));
+    // A multi-configuration design ends where the solver does (no glass pass changes it).
+    const bool configured = !design.configurations.empty();
+    if (configured) {
+        result.after = merit_table(design, *model.evaluate(best.solver.x));
+    } else {
+        const DesignModel final_model(od_design_at(final_design, best.state));
+        result.after = merit_table(design, *final_model.evaluate(final_model.start()));
+    }
     for (size_t i = 0; i < x0.size(); ++i) {
         const DesignVariable& v = design.variables[i];
         double after = 0;
-        if (v.of_glass() && !is_model_glass(best.state.scene["objects"][v.object])) {
+        if (configured) {
+            after = best.solver.x[i];
+        } else if (v.of_glass() && !is_model_glass(best.state.scene["objects"][v.object])) {
             const Glass* glass = find_glass(lens_glass(best.state.scene, v.object));
             after =
                 v.kind == VariableKind::GlassIndex ? glass->datasheet_n_d : glass->datasheet_v_d;
@@ -176,6 +194,13 @@ OptimizeResult optimize_design(const LensDesign& design, int iterations,
         result.variables.push_back({variable_label(v), x0[i], after});
     }
     result.scene = best.state.scene;
+    if (configured) {
+        const std::vector<DesignState> states = model.configuration_states(best.solver.x);
+        for (size_t k = 1; k < states.size(); ++k) {
+            result.configuration_scenes.emplace_back(design.configurations[k].name,
+                                                     states[k].scene);
+        }
+    }
     return result;
 }
 

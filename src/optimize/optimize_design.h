@@ -21,10 +21,17 @@ struct OperandRow {
     double contribution = 0;  // weight * residual²
 };
 
+// A configuration's focal length and image plane (a multi-configuration design's).
+struct ConfigurationRow {
+    std::string name;
+    double efl = 0, image_distance = 0;
+};
+
 struct MeritTable {
     double merit = 0;
-    double efl = 0, image_distance = 0;
+    double efl = 0, image_distance = 0;  // a multi-configuration design's first configuration's
     std::vector<OperandRow> operands;
+    std::vector<ConfigurationRow> configurations;  // empty for one configuration
 };
 
 struct VariableRow {
@@ -44,7 +51,9 @@ struct OptimizeResult {
     // Where the design substitutes its model glasses: the merit with the model glasses, before
     // the substitution (its trials are among glass_trials).
     std::optional<double> model_glass_merit;
-    nlohmann::ordered_json scene;  // the optimised scene
+    nlohmann::ordered_json scene;  // the optimised scene (a multi-configuration design's first)
+    // A multi-configuration design's other configurations' scenes, by name.
+    std::vector<std::pair<std::string, nlohmann::ordered_json>> configuration_scenes;
 };
 
 MeritTable merit_table(const LensDesign& design, const DesignEvaluation& evaluation);

@@ -9,9 +9,16 @@ namespace lenslab {
 namespace {
 
 std::string or_merit_block(const char* title, const MeritTable& table) {
-    std::string text = std::string(title) +
-                       printf_text(": merit %.6g (EFL %.6g, image %.6g behind the last vertex)\n",
-                                   table.merit, table.efl, table.image_distance);
+    std::string text =
+        std::string(title) +
+        (table.configurations.empty()
+             ? printf_text(": merit %.6g (EFL %.6g, image %.6g behind the last vertex)\n",
+                           table.merit, table.efl, table.image_distance)
+             : printf_text(": merit %.6g\n", table.merit));
+    for (const ConfigurationRow& c : table.configurations) {
+        text += printf_text("  configuration %s: EFL %.6g, image %.6g behind the last vertex\n",
+                            c.name.c_str(), c.efl, c.image_distance);
+    }
     text += printf_text("  %-32s %14s %14s %10s %14s\n", "operand", "value", "target", "weight",
                         "contribution");
     for (const OperandRow& row : table.operands) {
@@ -29,6 +36,13 @@ nlohmann::ordered_json or_merit_json(const MeritTable& table) {
     j["merit"] = table.merit;
     j["efl"] = table.efl;
     j["image_distance"] = table.image_distance;
+    if (!table.configurations.empty()) {
+        j["configurations"] = nlohmann::ordered_json::array();
+        for (const ConfigurationRow& c : table.configurations) {
+            j["configurations"].push_back(
+                {{"name", c.name}, {"efl", c.efl}, {"image_distance", c.image_distance}});
+        }
+    }
     j["operands"] = nlohmann::ordered_json::array();
     for (const OperandRow& row : table.operands) {
         j["operands"].push_back({{"operand", row.label},

@@ -205,6 +205,9 @@ std::vector<ToleranceItem> tolerance_items(const LensDesign& design) {
 
 ToleranceReport tolerance_design(const LensDesign& design,
                                  const std::function<void(int, int)>& progress) {
+    if (!design.configurations.empty()) {
+        throw SceneError("configurations", "tolerancing of multi-configuration designs: not yet");
+    }
     ToleranceReport report;
     report.compensated = design.tolerances.refocus;
     // The nominal image plane: the design's, or its paraxial focus.

@@ -748,6 +748,12 @@ lenslab_cli_test(NAME optimize.bad.model_glass
     CHECKS -DEXPECT_EXIT=1
            "-DSTDERR_CONTAINS=variables[0].lens: the lens 'L2' needs its material written inline with an \"ior\""
            -DOUTPUT=${optimize_bad_out} -DOUTPUT_CREATED=OFF)
+# A multi-configuration design: the zoom example briefly, each configuration's scene written.
+set(optimize_zoom_out ${LENSLAB_CLI_OUT}/zoom.json)
+lenslab_cli_test(NAME optimize.configurations
+    ARGS optimize examples/optimize/zoom.design.json -o ${optimize_zoom_out} --iterations 2 --quiet
+    CHECKS -DEXPECT_EXIT=zero "-DSTDOUT_CONTAINS=configuration tele written to"
+           -DOUTPUT=${LENSLAB_CLI_OUT}/zoom.tele.json -DOUTPUT_CREATED=ON "-DOUTPUT_STARTS={")
 # `tolerance`: the triplet example's sensitivity table and a small Monte Carlo; a design
 # without tolerances and a bad --trials refused.
 lenslab_cli_test(NAME tolerance.table

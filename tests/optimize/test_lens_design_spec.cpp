@@ -109,6 +109,10 @@ TEST(LensDesignSpec, TheTolerancesTableListsItsKeysWithTheirDefaultsAndRanges) {
     expect_block_documented(tolerances_spec(), 4);
 }
 
+TEST(LensDesignSpec, TheConfigurationTableListsItsKeysWithTheirDefaults) {
+    expect_block_documented(configuration_spec(), 5);
+}
+
 TEST(LensDesignSpec, TheGlassSubstitutionTableListsItsKeysWithTheirDefaultsAndRanges) {
     expect_block_documented(glass_substitution_spec(), 3);
 }
