@@ -210,12 +210,19 @@ DesignEvaluation DesignModel::evaluate_state(const DesignState& state,
     const LensDesign& d = m_design;
     const Scene scene =
         scene_from_json(nlohmann::json(state.scene), d.base_dir, {.require_camera = false});
-    const OpticalSystem system = build_optical_system(scene);
+    OpticalSystem system = build_optical_system(scene);
+    int stop = d.stop;
+    if (d.stop_in_air) {
+        const SystemElement& e =
+            de_element(system, scene, d.stop_in_air->object, "stop_in_air.lens");
+        stop = insert_air_stop(system, system.surfaces[e.last_surface].z + d.stop_in_air->distance,
+                               system.max_semi_diameter());
+    }
     const double primary = d.primary_wavelength();
     const ParaxialResult paraxial = paraxial_trace(system, primary);
     FirstOrderOptions options;
     options.wavelength_nm = primary;
-    options.stop = d.stop;
+    options.stop = stop;
     options.epd = d.epd;
     options.f_number = d.f_number;
     options.fields = d.fields;

@@ -88,6 +88,16 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
                                      " (the system's surfaces), got " + std::to_string(stop));
     }
     d.stop = static_cast<int>(stop) - 1;
+    if (const nlohmann::json* air = reader.find("stop_in_air")) {
+        if (reader.has("stop"))
+            throw SceneError("stop_in_air", "give stop or stop_in_air, not both");
+        JsonObjectReader r(*air, "stop_in_air", {"lens", "distance"}, "a stop in air");
+        LensDesign::AirStop s;
+        s.lens = r.string("lens");
+        s.object = find_design_lens(d.scene, s.lens, r.child_path("lens"));
+        s.distance = r.positive("distance");
+        d.stop_in_air = s;
+    }
     if (reader.has("epd") && reader.has("f_number")) {
         throw SceneError("f_number", "give epd or f_number, not both");
     }

@@ -64,8 +64,16 @@ struct LensDesign {
     std::string base_dir;          // the folder relative paths of the scene resolve against
     nlohmann::ordered_json scene;  // the starting system, keys in the file's order
     int stop = 0;                  // the aperture stop, a surface index (0-based)
-    double epd = 0, f_number = 0;  // one of the two
-    std::vector<double> fields;    // degrees, the object at infinity
+    // Instead: a stop in the air `distance` behind the back vertex of the lens `object` (an
+    // index into the scene JSON's objects), put there at every evaluation.
+    struct AirStop {
+        int object = -1;
+        std::string lens;
+        double distance = 0;
+    };
+    std::optional<AirStop> stop_in_air;
+    double epd = 0, f_number = 0;              // one of the two
+    std::vector<double> fields;                // degrees, the object at infinity
     std::vector<double> wavelengths, weights;  // nm; the primary is the middle one
     int rings = 4;                             // of the hexapolar grid of each spot
     RayAiming ray_aiming = RayAiming::Real;    // how the spots' rays find the stop

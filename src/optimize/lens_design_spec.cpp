@@ -21,6 +21,10 @@ ElementSpec declare_design() {
                       "or a scene written inline"),
         whole_param("stop", 1, 1, 1 << 20)
             .describe("the aperture stop: a surface counted from 1 along the light"),
+        nested_param(ParamKind::Object, "stop_in_air")
+            .as_written("object")
+            .describe("instead of `stop`: a stop in the air {`lens`, `distance`} behind that "
+                      "lens's back vertex, moving with it"),
         number_param("epd", 0).above(0).describe("entrance pupil diameter"),
         number_param("f_number", 0)
             .above(0)

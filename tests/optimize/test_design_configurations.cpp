@@ -15,16 +15,16 @@
 namespace lenslab {
 namespace {
 
-const std::string kFolder = LENSLAB_SOURCE_DIR "/examples/optimize";
+const std::string kZoomFolder = LENSLAB_SOURCE_DIR "/examples/optimize";
 
-nlohmann::json zoom_json() { return read_scene_json_file(kFolder + "/zoom.design.json"); }
+nlohmann::json zoom_json() { return read_scene_json_file(kZoomFolder + "/zoom.design.json"); }
 
 // Configuration `k` of the zoom as a design of its own: the rear group moved by hand so the
 // air gap after L2 is the configuration's.
 nlohmann::json zoom_configuration_by_hand(size_t k) {
     nlohmann::json root = zoom_json();
     const nlohmann::json c = root["configurations"][k];
-    nlohmann::json scene = read_scene_json_file(kFolder + "/zoom_start.json");
+    nlohmann::json scene = read_scene_json_file(kZoomFolder + "/zoom_start.json");
     nlohmann::json& objects = scene["objects"];
     const double l2_back =
         objects[1]["center"][2].get<double>() + 0.5 * objects[1]["thickness"].get<double>();
@@ -43,7 +43,7 @@ nlohmann::json zoom_configuration_by_hand(size_t k) {
 }
 
 TEST(DesignConfigurations, EachConfigurationEvaluatesAsItsOwnDesign) {
-    const LensDesign zoom = load_lens_design(kFolder + "/zoom.design.json");
+    const LensDesign zoom = load_lens_design(kZoomFolder + "/zoom.design.json");
     ASSERT_EQ(zoom.configurations.size(), 3u);
     const DesignModel model(zoom);
     const std::optional<DesignEvaluation> all = model.evaluate(model.start());
@@ -51,7 +51,7 @@ TEST(DesignConfigurations, EachConfigurationEvaluatesAsItsOwnDesign) {
     size_t next = 0;
     double merit = 0;
     for (size_t k = 0; k < 3; ++k) {
-        const LensDesign alone = lens_design_from_json(zoom_configuration_by_hand(k), kFolder);
+        const LensDesign alone = lens_design_from_json(zoom_configuration_by_hand(k), kZoomFolder);
         const DesignModel one(alone);
         const std::optional<DesignEvaluation> e = one.evaluate(one.start());
         ASSERT_TRUE(e);
@@ -75,7 +75,7 @@ std::string zoom_error(const std::function<void(nlohmann::json&)>& edit) {
     nlohmann::json root = zoom_json();
     edit(root);
     try {
-        lens_design_from_json(root, kFolder);
+        lens_design_from_json(root, kZoomFolder);
     } catch (const SceneError& e) {
         return e.what();
     }
@@ -113,7 +113,7 @@ TEST(DesignConfigurations, MistakesNameTheirJsonPath) {
 // The example: the three focal lengths met and every field's polychromatic RMS spot under
 // 15 µm (measured 4.6 to 13.7 µm), the configurations' scenes written with their own gaps.
 TEST(DesignConfigurations, TheZoomMeetsItsFocalLengths) {
-    const LensDesign zoom = load_lens_design(kFolder + "/zoom.design.json");
+    const LensDesign zoom = load_lens_design(kZoomFolder + "/zoom.design.json");
     const OptimizeResult r = optimize_design(zoom);
     ASSERT_EQ(r.after.configurations.size(), 3u);
     const double targets[] = {30, 40, 55};

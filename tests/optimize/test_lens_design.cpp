@@ -58,6 +58,18 @@ TEST(LensDesign, MistakesNameTheirJsonPath) {
               "variables[0].lens: no prescription lens named 'Z' in the system (lenses: A, B)");
     EXPECT_EQ(design_error({{"variables", {{{"type", "curvature"}, {"lens", "A"}}}}}),
               "variables[0].surface: missing (required)");
+    EXPECT_EQ(design_error({{"stop", 1}, {"stop_in_air", {{"lens", "A"}, {"distance", 2}}}}),
+              "stop_in_air: give stop or stop_in_air, not both");
+    nlohmann::json air =
+        design_of(kDesignLenses, {{"stop_in_air", {{"lens", "Q"}, {"distance", 2}}}});
+    air.erase("stop");
+    try {
+        lens_design_from_json(air, "");
+        ADD_FAILURE() << "an unknown lens was taken";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "stop_in_air.lens: no prescription lens named 'Q' in the system (lenses: A, B)");
+    }
     EXPECT_EQ(design_error({{"variables", {{{"type", "bend"}, {"lens", "A"}}}}}),
               "variables[0].type: unknown type 'bend' (known: curvature, conic, aspheric, "
               "thickness, air_gap, image_distance, n_d, V_d, decenter_x, decenter_y, tilt_x, "
