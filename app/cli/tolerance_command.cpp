@@ -46,8 +46,14 @@ std::string cell(const std::optional<double>& v) {
 }
 
 void print_table(const std::string& design, const ToleranceReport& r) {
+    const bool mtf = r.higher_is_better;
     std::cout << "lenslab tolerance " << design << "\n\n"
-              << "criterion: polychromatic RMS spot, root mean square over the fields"
+              << "criterion: "
+              << (mtf ? "polychromatic MTF, the mean over the fields; focus by the RMS spot"
+                  : r.criterion == "rms_wavefront" ? "polychromatic RMS wavefront (waves), root "
+                                                     "mean square over the fields"
+                                                   : "polychromatic RMS spot, root mean square "
+                                                     "over the fields")
               << (r.compensated ? "; each made lens refocused (back focus compensator)" : "")
               << "\n"
               << printf_text("nominal %.5f (image plane %.4f behind the last vertex)\n\n",
@@ -58,16 +64,17 @@ void print_table(const std::string& design, const ToleranceReport& r) {
                   << printf_text(" %12s %12s\n", cell(row.minus).c_str(), cell(row.plus).c_str());
     }
     const MonteCarloSummary& m = r.monte_carlo;
-    std::cout << printf_text("\nroot-sum-square of the worst changes: %.5f (nominal + RSS %.5f)\n",
-                             r.rss_change, r.nominal + r.rss_change)
+    std::cout << printf_text("\nroot-sum-square of the worst changes: %.5f (nominal %s RSS %.5f)\n",
+                             r.rss_change, mtf ? "-" : "+",
+                             mtf ? r.nominal - r.rss_change : r.nominal + r.rss_change)
               << printf_text("the table predicts of the Monte Carlo: mean %.5f, sd %.5f\n",
                              r.predicted_mean, r.predicted_sd)
               << printf_text("Monte Carlo, %d made lenses (%d could not be evaluated):\n", m.trials,
                              m.failed)
               << printf_text("  mean %.5f, sd %.5f, min %.5f, max %.5f\n", m.mean, m.sd, m.min,
                              m.max)
-              << printf_text("  50%% of lenses at or below %.5f, 90%% %.5f, 98%% %.5f\n", m.p50,
-                             m.p90, m.p98);
+              << printf_text("  50%% of lenses at or %s %.5f, 90%% %.5f, 98%% %.5f\n",
+                             mtf ? "above" : "below", m.p50, m.p90, m.p98);
 }
 
 int run_tolerance(const ToleranceArgs& a) {
@@ -89,7 +96,10 @@ int run_tolerance(const ToleranceArgs& a) {
     }
     // Under mpirun every rank has the report; rank 0 writes the figure.
     if (!a.figure.empty() && world_communicator().rank() == 0) {
-        const std::string unit = design.scene.value("length_unit_mm", 1.0) == 1.0 ? "mm" : "";
+        const std::string unit = report.criterion == "rms_wavefront"                ? "waves"
+                                 : report.criterion == "mtf"                        ? ""
+                                 : design.scene.value("length_unit_mm", 1.0) == 1.0 ? "mm"
+                                                                                    : "";
         write_bench_figure(a.figure, {tolerance_figure(report, unit), kFigureWidth, kFigureHeight});
     }
     if (a.json) {

@@ -253,6 +253,11 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
         d.tolerances.trials = static_cast<int>(t.whole("trials"));
         d.tolerances.seed = static_cast<uint64_t>(t.whole("seed"));
         d.tolerances.refocus = t.flag("refocus");
+        d.tolerances.criterion = t.text("criterion");
+        d.tolerances.frequency = t.real("frequency");
+        if (d.tolerances.criterion == "mtf" && !(d.tolerances.frequency > 0))
+            throw SceneError("tolerances.frequency",
+                             "the mtf criterion needs a frequency > 0 (cycles per unit length)");
     }
     return d;
 }

@@ -30,6 +30,10 @@ struct ToleranceSettings {
     int trials = 1000;
     uint64_t seed = 1;
     bool refocus = true;  // the back focus as compensator
+    // What a made lens is judged by, per field: "rms_spot" (mm), "rms_wavefront" (waves) or
+    // "mtf" at `frequency` (cycles/mm, the mean of tangential and sagittal).
+    std::string criterion = "rms_spot";
+    double frequency = 0;
 };
 
 // The design file's `global_search` block (`lenslab optimize`, optimize/global_search.h).

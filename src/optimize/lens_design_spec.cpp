@@ -127,8 +127,15 @@ ElementSpec declare_tolerances() {
         whole_param("seed", int64_t(d.seed), 0, int64_t{1} << 53)
             .describe("the Monte Carlo's random numbers"),
         flag_param("refocus", d.refocus)
-            .describe("the back focus as compensator: each made lens refocused for the least "
+            .describe("the back focus as compensator: each made lens refocused for the best "
                       "criterion"),
+        choice_param("criterion", d.criterion, {"rms_spot", "rms_wavefront", "mtf"})
+            .describe("what a made lens is judged by: its polychromatic RMS spot or RMS "
+                      "wavefront, root mean square over the fields, or its MTF at `frequency`, "
+                      "the mean over the fields"),
+        number_param("frequency", d.frequency)
+            .at_least(0)
+            .describe("mtf: the spatial frequency, cycles per unit length (required by it)"),
     };
     return s;
 }

@@ -52,12 +52,25 @@ std::optional<double> catalogue_abbe_number(const nlohmann::ordered_json& scene,
     return found.glass->model->abbe_number();
 }
 
-// The design with the criterion's operands (the RMS spot of every field) and no variables.
+// The design with the criterion's operands (one a field) and no variables.
 LensDesign criterion_design(const LensDesign& design) {
     LensDesign d = design;
     d.variables.clear();
     d.operands.clear();
+    const ToleranceSettings& t = design.tolerances;
     for (size_t i = 0; i < design.fields.size(); ++i) {
+        MeritOperand op;
+        op.kind = t.criterion == "mtf"             ? OperandKind::Mtf
+                  : t.criterion == "rms_wavefront" ? OperandKind::RmsWavefront
+                                                   : OperandKind::RmsSpot;
+        op.frequency = t.frequency;
+        op.direction = "mean";
+        op.field = design.fields[i];
+        op.path = "fields[" + std::to_string(i) + "]";
+        d.operands.push_back(op);
+    }
+    // An MTF's lens is refocused by its spots.
+    for (size_t i = 0; t.criterion == "mtf" && i < design.fields.size(); ++i) {
         MeritOperand op;
         op.kind = OperandKind::RmsSpot;
         op.field = design.fields[i];
@@ -67,62 +80,89 @@ LensDesign criterion_design(const LensDesign& design) {
     return d;
 }
 
-// The root mean square over the fields of an evaluation's RMS spots.
-double criterion_of(const DesignEvaluation& e) {
+// The root mean square of values [first, last) of an evaluation.
+double rms_of(const DesignEvaluation& e, size_t first, size_t last) {
     double sum = 0;
-    for (double v : e.values) sum += v * v;
-    return std::sqrt(sum / double(e.values.size()));
+    for (size_t i = first; i < last; ++i) sum += e.values[i] * e.values[i];
+    return std::sqrt(sum / double(last - first));
 }
+
+// The criterion as a badness the table's predictions work in, 0 at best: the RMS over the
+// fields of the spots or wavefronts, or 1 - the mean MTF over the fields (the first half of
+// an MTF criterion's operands; the second half are the fields' RMS spots).
+double badness_of(const DesignEvaluation& e, bool mtf) {
+    if (!mtf) return rms_of(e, 0, e.values.size());
+    const size_t fields = e.values.size() / 2;
+    double sum = 0;
+    for (size_t i = 0; i < fields; ++i) sum += e.values[i];
+    return 1 - sum / double(fields);
+}
+
+// What the back focus is set by: the criterion, or for an MTF the RMS spot.
+double focus_badness_of(const DesignEvaluation& e, bool mtf) {
+    return mtf ? rms_of(e, e.values.size() / 2, e.values.size()) : badness_of(e, false);
+}
+
+// A made lens measured: the badness the back focus is set by (the criterion's; for an MTF,
+// the RMS spot's, which is smooth across focus where an MTF at one frequency may have more
+// than one peak) and the criterion's badness there.
+struct Measure {
+    double focus = 0, criterion = 0;
+};
 
 class Criterion {
 public:
-    Criterion(const DesignModel& model, bool refocus, double focus_step)
-        : m_model(model), m_refocus(refocus), m_step(focus_step) {}
+    Criterion(const DesignModel& model, bool refocus, double focus_step, bool mtf)
+        : m_model(model), m_refocus(refocus), m_step(focus_step), m_mtf(mtf) {}
 
     // At `x` (the last coordinate the image distance); refocused when asked: the parabola
-    // through the squared criterion at three image planes, narrowed kRefocusRounds times.
+    // through the squared focus badness at three image planes, narrowed kRefocusRounds times.
     std::optional<double> operator()(std::vector<double> x) const { return focused(x).first; }
 
-    // The criterion and the image distance it was found at.
+    // The criterion's badness and the image distance it was found at.
     std::pair<std::optional<double>, double> focused(std::vector<double> x) const {
-        std::optional<double> best = at(x);
-        if (!m_refocus || !best) return {best, x.back()};
+        std::optional<Measure> best = at(x);
+        if (!best) return {std::nullopt, x.back()};
+        if (!m_refocus) return {best->criterion, x.back()};
         double z = x.back(), h = m_step;
         for (int round = 0; round < kRefocusRounds; ++round, h /= 4) {
             x.back() = z - h;
-            const std::optional<double> before = at(x);
+            const std::optional<Measure> before = at(x);
             x.back() = z + h;
-            const std::optional<double> after = at(x);
+            const std::optional<Measure> after = at(x);
             if (!before || !after) break;
-            const double f0 = *best * *best, fm = *before * *before, fp = *after * *after;
-            double next = fm < fp ? z - h : z + h, next_value = std::min(*before, *after);
+            const double f0 = best->focus * best->focus, fm = before->focus * before->focus,
+                         fp = after->focus * after->focus;
+            double next = fm < fp ? z - h : z + h;
+            Measure next_value = fm < fp ? *before : *after;
             const double curvature = fp - 2 * f0 + fm;
             if (curvature > 0) {
                 const double shift = std::clamp(-h * (fp - fm) / (2 * curvature), -4 * h, 4 * h);
                 x.back() = z + shift;
-                if (const std::optional<double> v = at(x); v && *v < next_value) {
+                if (const std::optional<Measure> v = at(x); v && v->focus < next_value.focus) {
                     next = z + shift;
                     next_value = *v;
                 }
             }
-            if (next_value < *best) {
+            if (next_value.focus < best->focus) {
                 best = next_value;
                 z = next;
             }
         }
-        return {best, z};
+        return {best->criterion, z};
     }
 
 private:
-    std::optional<double> at(const std::vector<double>& x) const {
+    std::optional<Measure> at(const std::vector<double>& x) const {
         const std::optional<DesignEvaluation> e = m_model.evaluate(x);
         if (!e) return std::nullopt;
-        return criterion_of(*e);
+        return Measure{focus_badness_of(*e, m_mtf), badness_of(*e, m_mtf)};
     }
 
     const DesignModel& m_model;
     bool m_refocus;
     double m_step;
+    bool m_mtf;
 };
 
 // The nearest-rank percentile `p` (0-100) of sorted values.
@@ -152,6 +192,27 @@ MonteCarloSummary summarise(const std::vector<std::optional<double>>& trials) {
     s.p90 = percentile(sorted, 90);
     s.p98 = percentile(sorted, 98);
     return s;
+}
+
+// The report's badness figures as MTFs (1 - badness): the spread and the changes keep their
+// size, the least badness is the highest MTF, and a percentile's lenses are at or above it.
+void as_mtf(ToleranceReport& r) {
+    const auto mtf = [](double b) { return 1 - b; };
+    const auto mtf_or_none = [&](std::optional<double>& v) {
+        if (v) v = mtf(*v);
+    };
+    r.nominal = mtf(r.nominal);
+    for (SensitivityRow& row : r.rows) {
+        mtf_or_none(row.minus);
+        mtf_or_none(row.plus);
+    }
+    r.predicted_mean = mtf(r.predicted_mean);
+    MonteCarloSummary& m = r.monte_carlo;
+    if (m.criteria.empty()) return;
+    m.mean = mtf(m.mean);
+    std::swap(m.min, m.max);
+    for (double* v : {&m.min, &m.max, &m.p50, &m.p90, &m.p98}) *v = mtf(*v);
+    for (double& c : m.criteria) c = mtf(c);
 }
 
 }  // namespace
@@ -210,6 +271,8 @@ ToleranceReport tolerance_design(const LensDesign& design,
     }
     ToleranceReport report;
     report.compensated = design.tolerances.refocus;
+    report.criterion = design.tolerances.criterion;
+    report.higher_is_better = report.criterion == "mtf";
     // The nominal image plane: the design's, or its paraxial focus.
     LensDesign measured = criterion_design(design);
     {
@@ -230,14 +293,16 @@ ToleranceReport tolerance_design(const LensDesign& design,
     const std::vector<double> x0 = model.start();
     const Criterion criterion(
         model, design.tolerances.refocus,
-        std::max(kLeastFocusStep, kFocusStepShare * std::abs(report.image_distance)));
+        std::max(kLeastFocusStep, kFocusStepShare * std::abs(report.image_distance)),
+        report.higher_is_better);
     {
         // The nominal lens refocused as the made ones are, so they are compared alike.
         std::vector<double> x = x0;
         x.back() = criterion.focused(x0).second;
         const std::optional<DesignEvaluation> e = model.evaluate(x);
-        report.nominal = criterion_of(*e);
-        report.nominal_fields = e->values;
+        report.nominal = badness_of(*e, report.higher_is_better);
+        report.nominal_fields.assign(e->values.begin(),
+                                     e->values.begin() + std::ptrdiff_t(design.fields.size()));
         report.image_distance = x.back();
     }
 
@@ -297,6 +362,7 @@ ToleranceReport tolerance_design(const LensDesign& design,
         for (double c : part) results.push_back(std::isnan(c) ? std::nullopt : std::optional(c));
     }
     report.monte_carlo = summarise(results);
+    if (report.higher_is_better) as_mtf(report);
     return report;
 }
 

@@ -1,10 +1,11 @@
 #pragma once
 // Tolerancing of a lens design (`lenslab tolerance DESIGN`, docs/optimizer.md#tolerancing):
 // how much the image degrades when the lens is made with errors. Each tolerance (a face's
-// radius, a lens's centre thickness, an air gap, ± so many mm) is tried alone at both ends
-// (the sensitivity table), then all together at random (a Monte Carlo of N trials), each time
-// with the back focus refocused as the compensator. The criterion is the polychromatic RMS
-// spot radius, the root mean square over the design's fields. Trials draw from their own
+// radius, a lens's centre thickness, an air gap, a lens's decentre or tilt, a glass's melt)
+// is tried alone at both ends (the sensitivity table), then all together at random (a Monte
+// Carlo of N trials), each time with the back focus refocused as the compensator. The
+// criterion is the polychromatic RMS spot radius or RMS wavefront (the root mean square over
+// the design's fields) or the MTF at a frequency (the mean over them). Trials draw from their own
 // random stream (seed, trial), so the report is the same whatever the thread count, and in a
 // job of MPI ranks (`mpirun -np N lenslab tolerance`) the trials are dealt across the ranks
 // and the report is still one process's, byte for byte.
@@ -45,16 +46,19 @@ struct MonteCarloSummary {
 };
 
 struct ToleranceReport {
+    std::string criterion = "rms_spot";  // rms_spot, rms_wavefront or mtf
+    bool higher_is_better = false;       // mtf: the changes below are falls, the percentiles
+                                         // and the yield count lenses at or above
     double nominal = 0;                  // the criterion of the design as made exactly
-    std::vector<double> nominal_fields;  // its RMS spot per field
+    std::vector<double> nominal_fields;  // its criterion per field
     // The nominal image plane from the last vertex (refocused when the made lenses are).
     double image_distance = 0;
     std::vector<SensitivityRow> rows;
-    // The root-sum-square of each row's larger change: the expected worst-case growth.
+    // The root-sum-square of each row's larger change for the worse: the expected worst case.
     double rss_change = 0;
     // What the table predicts of the Monte Carlo, errors uniform within ± T (E[e²] = T² / 3):
     // to first order its spread, √(Σ ((plus - minus) / 2)² / 3); to second order its mean,
-    // √(nominal² + Σ ((minus² + plus²) / 2 - nominal²) / 3).
+    // √(nominal² + Σ ((minus² + plus²) / 2 - nominal²) / 3) (for an MTF, of 1 - MTF).
     double predicted_sd = 0, predicted_mean = 0;
     MonteCarloSummary monte_carlo;
     bool compensated = true;

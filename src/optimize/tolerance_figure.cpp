@@ -61,15 +61,20 @@ RayDiagram tolerance_figure(const ToleranceReport& report, const std::string& un
     histogram.y_max_label = printf_text("%d", most);
     histogram.curves = {steps, nominal_line(report.nominal, 0, histogram.y_max)};
 
-    // The cumulative yield: the share of lenses at or below each criterion.
-    PlotCurve share{{x_min}, {0}, kPlotInk, 0};
+    // The cumulative yield: the share of lenses at or below each criterion (at or above an
+    // MTF: the curve climbs from the right).
+    const bool up = report.higher_is_better;
+    if (up) std::reverse(sorted.begin(), sorted.end());
+    // An MTF has no unit.
+    const auto label = [&](double v) { return up ? printf_text("%.4g", v) : plot_length(v, unit); };
+    PlotCurve share{{up ? x_max : x_min}, {0}, kPlotInk, 0};
     for (size_t i = 0; i < sorted.size(); ++i) {
         share.x.push_back(sorted[i]);
         share.y.push_back(double(i) / double(m.trials));
         share.x.push_back(sorted[i]);
         share.y.push_back(double(i + 1) / double(m.trials));
     }
-    share.x.push_back(x_max);
+    share.x.push_back(up ? x_min : x_max);
     share.y.push_back(double(sorted.size()) / double(std::max(1, m.trials)));
     PlotPanel yield;
     yield.centre = {2 + kPlotPanelGap, 0};
@@ -77,19 +82,23 @@ RayDiagram tolerance_figure(const ToleranceReport& report, const std::string& un
     yield.x_max = x_max;
     yield.y_min = 0;
     yield.y_max = 1;
-    yield.title = "share of lenses at or below";
+    yield.title = up ? "share of lenses at or above" : "share of lenses at or below";
     yield.y_max_label = "100%";
     yield.curves = {share, nominal_line(report.nominal, 0, 1)};
     for (PlotPanel* p : {&histogram, &yield}) {
-        p->x_min_label = plot_length(x_min, unit);
-        p->x_max_label = plot_length(x_max, unit);
+        p->x_min_label = label(x_min);
+        p->x_max_label = label(x_max);
         draw_plot_panel(d, *p);
     }
     d.title = "Monte Carlo of " + printf_text("%d", m.trials) + " made lenses" +
               (m.failed > 0 ? printf_text(" (%d could not be evaluated)", m.failed) : "");
-    d.subtitle = "polychromatic RMS spot over the fields" +
+    d.subtitle = std::string(up ? "polychromatic MTF over the fields"
+                             : report.criterion == "rms_wavefront" ? "polychromatic RMS wavefront "
+                                                                     "over the fields"
+                                                                   : "polychromatic RMS spot over "
+                                                                     "the fields") +
                  std::string(report.compensated ? ", each refocused" : "") +
-                 "; dashed: the nominal design, " + plot_length(report.nominal, unit);
+                 "; dashed: the nominal design, " + label(report.nominal);
     return d;
 }
 

@@ -19,7 +19,7 @@ nlohmann::ordered_json tolerance_json(const ToleranceReport& r) {
                         {"criterion_plus", optional_number(row.plus)}});
     }
     const MonteCarloSummary& m = r.monte_carlo;
-    return {{"criterion", "rms_spot"},
+    return {{"criterion", r.criterion},
             {"refocus", r.compensated},
             {"nominal", r.nominal},
             {"nominal_fields", r.nominal_fields},

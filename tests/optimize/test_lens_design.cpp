@@ -58,6 +58,9 @@ TEST(LensDesign, MistakesNameTheirJsonPath) {
               "variables[0].lens: no prescription lens named 'Z' in the system (lenses: A, B)");
     EXPECT_EQ(design_error({{"variables", {{{"type", "curvature"}, {"lens", "A"}}}}}),
               "variables[0].surface: missing (required)");
+    EXPECT_EQ(design_error({{"tolerances", {{"criterion", "mtf"}}}}),
+              "tolerances.frequency: the mtf criterion needs a frequency > 0 (cycles per unit "
+              "length)");
     EXPECT_EQ(design_error({{"stop", 1}, {"stop_in_air", {{"lens", "A"}, {"distance", 2}}}}),
               "stop_in_air: give stop or stop_in_air, not both");
     nlohmann::json air =

@@ -88,6 +88,40 @@ TEST(Tolerance, ADecentresMonteCarloMeanChangeIsTheTablesRootSumSquare) {
     }
 }
 
+// The MTF criterion: the mean over the fields of the MTF at 20 cycles/mm, each made lens
+// focused by its RMS spot; its statistics read the other way round (the percentiles are MTFs
+// the lenses reach at least). The RMS wavefront criterion: the fields' root mean square.
+TEST(Tolerance, TheMtfAndWavefrontCriteria) {
+    LensDesign d = triplet(4);
+    d.tolerances.radius = d.tolerances.air_gap = 0;  // the three thicknesses alone
+    d.tolerances.criterion = "mtf";
+    d.tolerances.frequency = 20;
+    const ToleranceReport mtf = tolerance_design(d);
+    EXPECT_TRUE(mtf.higher_is_better);
+    ASSERT_EQ(mtf.nominal_fields.size(), 3u);
+    EXPECT_NEAR(mtf.nominal,
+                (mtf.nominal_fields[0] + mtf.nominal_fields[1] + mtf.nominal_fields[2]) / 3, 1e-12);
+    EXPECT_GT(mtf.nominal, 0);
+    EXPECT_LT(mtf.nominal, 1);
+    const MonteCarloSummary& m = mtf.monte_carlo;
+    EXPECT_LE(m.min, m.max);
+    EXPECT_GE(m.p50, m.p90);  // 90% of the lenses reach at least p90
+    EXPECT_LE(m.p90, m.max);
+    EXPECT_GE(m.p98, m.min);
+    // The spot's focus is the RMS spot criterion's own.
+    LensDesign spot = d;
+    spot.tolerances.criterion = "rms_spot";
+    spot.tolerances.trials = 1;
+    EXPECT_NEAR(tolerance_design(spot).image_distance, mtf.image_distance, 1e-12);
+    d.tolerances.criterion = "rms_wavefront";
+    d.tolerances.trials = 1;
+    const ToleranceReport w = tolerance_design(d);
+    EXPECT_FALSE(w.higher_is_better);
+    double sum = 0;
+    for (double v : w.nominal_fields) sum += v * v;
+    EXPECT_NEAR(w.nominal, std::sqrt(sum / 3), 1e-12);
+}
+
 TEST(Tolerance, TheMonteCarloSpreadIsWhatTheSensitivityTablePredicts) {
     const int trials = 300;
     const ToleranceReport r = tolerance_design(triplet(trials));
