@@ -34,7 +34,8 @@ def optimize(design: DesignSource, *, iterations: Optional[int] = None,
     """Optimises a lens design as `lenslab optimize` does and returns its report: the dict
     `lenslab optimize --json` prints (before, after, variables, glass_trials,
     glass_substitution, global_search, iterations, evaluations, stopped) with "scene", the
-    optimised system as a lenslab.Scene (what `-o OUT` writes).
+    optimised system as a lenslab.Scene (what `-o OUT` writes); a design with
+    configurations adds "configuration_scenes", each other configuration's Scene by name.
 
     design: a design file's path, or the design as a dict (its "system" a scene file's path,
     a scene dict or a lenslab.Scene). iterations and global_starts override the design's, as
@@ -46,6 +47,9 @@ def optimize(design: DesignSource, *, iterations: Optional[int] = None,
         -1 if global_starts is None else int(global_starts), progress)
     report = json.loads(report_text)
     report["scene"] = Scene(json.loads(scene_text))
+    if "configuration_scenes" in report:
+        report["configuration_scenes"] = {
+            name: Scene(scene) for name, scene in report["configuration_scenes"].items()}
     return report
 
 

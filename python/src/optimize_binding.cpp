@@ -55,7 +55,12 @@ std::pair<std::string, std::string> optimize(const std::string& design_json,
         });
     });
     const OptimizeResult result = job.run(progress);
-    return {result.scene.dump(), optimize_json(result).dump()};
+    nlohmann::ordered_json report = optimize_json(result);
+    // A multi-configuration design's other configurations, made Scenes on the Python side.
+    for (const auto& [name, scene] : result.configuration_scenes) {
+        report["configuration_scenes"][name] = scene;
+    }
+    return {result.scene.dump(), report.dump()};
 }
 
 // The report's JSON text (`lenslab tolerance --json`'s).

@@ -39,6 +39,18 @@ def test_a_design_written_as_a_dict():
                                                              "curvature L1.back"]
 
 
+def test_configurations_come_back_as_scenes(tmp_path):
+    out = tmp_path / "zoom.json"
+    cli_json("optimize", "examples/optimize/zoom.design.json", "-o", out, "--iterations", 2,
+             "--json", "-q")
+    got = lenslab.optimize("examples/optimize/zoom.design.json", iterations=2)
+    assert [c["name"] for c in got["after"]["configurations"]] == ["wide", "mid", "tele"]
+    assert sorted(got["configuration_scenes"]) == ["mid", "tele"]
+    assert got["scene"].to_dict() == json.loads(out.read_text())
+    tele = got["configuration_scenes"]["tele"]
+    assert tele.to_dict() == json.loads((tmp_path / "zoom.tele.json").read_text())
+
+
 def test_a_bad_design_names_where():
     with open(COOKE, encoding="utf-8") as f:
         design = json.load(f)
