@@ -19,13 +19,14 @@ struct ImportArgs {
     std::string file;
     std::string output;
     std::string name;
+    int configuration = 0;
 };
 
 int run_import(const ImportArgs& a) {
     if (!a.output.empty()) check_output_file(a.output);  // before the work
     const std::string name =
         a.name.empty() ? std::filesystem::path(a.file).stem().string() : a.name;
-    const ImportedLens lens = import_lens_file(a.file, name);
+    const ImportedLens lens = import_lens_file(a.file, name, 1.0, a.configuration);
     std::cerr << lens_file_warnings_text(lens, a.file);
     const std::string text = imported_scene_json(lens, a.file).dump(2) + "\n";
     if (a.output.empty()) {
@@ -52,6 +53,10 @@ Action add_import_command(CLI::App& app) {
     cmd->add_option("-o,--output", args->output,
                     "Write the scene (JSON) to this file (default: standard output)");
     cmd->add_option("--name", args->name, "The lens_group's name (default: the file's stem)");
+    cmd->add_option("--configuration", args->configuration,
+                    "A zoom's configuration, from 1 (Zemax MNUM and THIC records; default: the "
+                    "one the file's surfaces hold)")
+        ->check(CLI::Range(1, 1000));
     return [args] { return run_import(*args); };
 }
 

@@ -30,6 +30,36 @@ std::pair<std::string, std::string> zmx_in_archive(const std::string& path) {
                             (names.empty() ? std::string("nothing") : names) + ")");
 }
 
+// Configuration `configuration` of a zoom (0: the file's own surfaces, the active one's): its
+// thicknesses written into the surfaces.
+void lf_apply_configuration(LensFilePrescription& p, int configuration) {
+    const std::string count = std::to_string(p.configurations);
+    if (configuration == 0) {
+        if (p.configurations > 1) {
+            p.warnings.push_back(
+                {0, count + " configurations (MNUM): the lens as configuration " +
+                        std::to_string(p.active_configuration) +
+                        ", the one its surfaces hold (a configuration number takes another)"});
+        }
+        return;
+    }
+    if (configuration < 1 || configuration > p.configurations) {
+        throw LensFileError(p.file, 0,
+                            "configuration " + std::to_string(configuration) + ": the file has " +
+                                count + " (MNUM), numbered from 1");
+    }
+    for (const LensFilePrescription::ConfigurationThickness& t : p.configuration_thicknesses) {
+        if (t.configuration != configuration) continue;
+        if (t.surface < 0 || t.surface >= static_cast<int>(p.surfaces.size())) {
+            throw LensFileError(p.file, t.line,
+                                "THIC: no surface " + std::to_string(t.surface) +
+                                    " (the file has " + std::to_string(p.surfaces.size()) +
+                                    ", from 0)");
+        }
+        p.surfaces[size_t(t.surface)].thickness = t.value;
+    }
+}
+
 }  // namespace
 
 bool is_lens_file_path(const std::string& path) {
@@ -37,7 +67,8 @@ bool is_lens_file_path(const std::string& path) {
     return extension == ".ZMX" || extension == ".SEQ" || extension == ".ZAR";
 }
 
-ImportedLens read_lens_file(const std::string& path, const std::string& name, double scale) {
+ImportedLens read_lens_file(const std::string& path, const std::string& name, double scale,
+                            int configuration) {
     const std::string extension = lens_file_upper(std::filesystem::path(path).extension().string());
     if (!is_lens_file_path(path)) {
         throw LensFileError(path, 0,
@@ -52,6 +83,7 @@ ImportedLens read_lens_file(const std::string& path, const std::string& name, do
     }
     const std::vector<std::string> lines = decode_lens_file_lines(bytes, file);
     LensFilePrescription p = extension == ".SEQ" ? read_seq(lines, file) : read_zmx(lines, file);
+    lf_apply_configuration(p, configuration);
     p.unit_mm *= scale;  // every length of the lens_group is the file's times unit_mm
     ImportedLens lens = lens_group_from_prescription(p, name);
     lens.file = file;

@@ -82,6 +82,15 @@ struct LensFilePrescription {
     double aperture = 0.0;
     // Object, optical surfaces, image, in order.
     std::vector<LensFileSurface> surfaces;
+    // A zoom's configurations (Zemax's multi-configuration editor, MNUM and THIC records): how
+    // many, the one the surfaces above hold (the file's active one), and each configuration's
+    // surface thicknesses.
+    int configurations = 1, active_configuration = 1;
+    struct ConfigurationThickness {
+        int surface = 0, configuration = 0, line = 0;
+        double value = 0;
+    };
+    std::vector<ConfigurationThickness> configuration_thicknesses;
     std::vector<LensFileWarning> warnings;
 };
 

@@ -17,8 +17,8 @@ const std::set<std::string>& zmx_display_keywords() {
     static const std::set<std::string> keywords = {
         "VERS", "PFIL", "LANG", "ENVD", "GFAC", "PUSH", "SDMA", "OMMA", "ROPD", "PICB", "FWGN",
         "FWGT", "WWGT", "VDXN", "VDYN", "VCXN", "VCYN", "VANN", "POLS", "GLRS", "GSTD", "NSCD",
-        "COFN", "HIDE", "SLAB", "POPS", "FIMP", "BLNK", "TOL",  "MNUM", "MOFF", "NOTE", "COMM",
-        "COAT", "TOLE", "PZUP", "PPAR", "PSCA", "MAZH", "CONF", "TCMM", "DMFS", "SCOL", "SWID"};
+        "COFN", "HIDE", "SLAB", "POPS", "FIMP", "BLNK", "TOL",  "MOFF", "NOTE", "COMM", "COAT",
+        "TOLE", "PZUP", "PPAR", "PSCA", "MAZH", "CONF", "TCMM", "DMFS", "SCOL", "SWID"};
     return keywords;
 }
 
@@ -175,6 +175,21 @@ private:
         if (k == "FLOA") {
             m_lens.aperture_type = "float_by_stop_size";
             m_lens.aperture = 0.0;
+            return;
+        }
+        if (k == "MNUM") {
+            m_lens.configurations = static_cast<int>(number(1, "number of configurations"));
+            if (m_lens.configurations < 1)
+                refuse("MNUM: " + std::to_string(m_lens.configurations) + " configurations");
+            if (m_words.size() > 2)
+                m_lens.active_configuration = static_cast<int>(number(2, "active configuration"));
+            return;
+        }
+        if (k == "THIC") {
+            // A multi-configuration thickness: THIC surface configuration value ...
+            m_lens.configuration_thicknesses.push_back(
+                {static_cast<int>(number(1, "surface")),
+                 static_cast<int>(number(2, "configuration")), m_line, number(3, "thickness")});
             return;
         }
         if (k == "WAVM") return wavelength();

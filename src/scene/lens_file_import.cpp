@@ -33,8 +33,9 @@ void check_imported_lens(const ImportedLens& lens, const std::string& path) {
 
 }  // namespace
 
-ImportedLens import_lens_file(const std::string& path, const std::string& name, double scale) {
-    ImportedLens lens = read_lens_file(path, name, scale);
+ImportedLens import_lens_file(const std::string& path, const std::string& name, double scale,
+                              int configuration) {
+    ImportedLens lens = read_lens_file(path, name, scale, configuration);
     check_imported_lens(lens, lens.file);
     return lens;
 }

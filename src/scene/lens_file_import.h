@@ -10,6 +10,7 @@
 namespace lenslab {
 
 // Its lengths are millimetres times `scale` (read_lens_file). Throws LensFileError.
-ImportedLens import_lens_file(const std::string& path, const std::string& name, double scale = 1.0);
+ImportedLens import_lens_file(const std::string& path, const std::string& name, double scale = 1.0,
+                              int configuration = 0);
 
 }  // namespace lenslab

@@ -23,6 +23,9 @@ ElementSpec declare_lens_file() {
     s.params.push_back(nested_param(ParamKind::Direction, "x_axis")
                            .meaning_auto("a fixed perpendicular to `axis`")
                            .describe("as for a lens"));
+    s.params.push_back(whole_param("configuration", 0, 0, 1000)
+                           .describe("a zoom's configuration, from 1 (Zemax MNUM and THIC); 0: "
+                                     "the one the file's surfaces hold"));
     return s;
 }
 
@@ -43,7 +46,8 @@ nlohmann::json lens_group_from_lens_file(const nlohmann::json& j, const std::str
         base_dir.empty() ? std::filesystem::path(file) : std::filesystem::path(base_dir) / file;
     ImportedLens lens;
     try {
-        lens = import_lens_file(where.string(), name);
+        lens =
+            import_lens_file(where.string(), name, 1.0, static_cast<int>(r.whole("configuration")));
     } catch (const LensFileError& e) {
         throw SceneError(r.child_path("file"), e.what());
     }

@@ -667,6 +667,14 @@ lenslab_cli_test(NAME import.zmx
 lenslab_cli_test(NAME import.seq_to_stdout
     ARGS import ${lensfile_data}/cooke_triplet.seq
     CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DSTDOUT_CONTAINS=\"glass\": \"SCHOTT:SF2\"")
+lenslab_cli_test(NAME import.configuration
+    ARGS import ${lensfile_data}/cooke_configurations.zmx --configuration 2
+    CHECKS -DEXPECT_EXIT=zero -DSTDOUT_JSON=ON "-DSTDOUT_CONTAINS=\"gap\": 10.5")
+lenslab_cli_test(NAME import.bad.configuration
+    ARGS import ${lensfile_data}/cooke_configurations.zmx --configuration 7 -o ${LENSLAB_CLI_OUT}/bad_configuration.json
+    CHECKS -DEXPECT_EXIT=1
+           "-DSTDERR_LINE=lenslab: error: ${lensfile_data}/cooke_configurations.zmx: configuration 7: the file has 3 (MNUM), numbered from 1"
+           -DOUTPUT=${LENSLAB_CLI_OUT}/bad_configuration.json -DOUTPUT_CREATED=OFF)
 lenslab_cli_test(NAME import.bad.unknown_surface_type
     ARGS import ${lensfile_data}/bad_unknown_surface.zmx -o ${LENSLAB_CLI_OUT}/bad_surface.json
     CHECKS -DEXPECT_EXIT=1
