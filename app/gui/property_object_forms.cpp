@@ -126,6 +126,9 @@ void PropertyPanel::build_lens() {
     // perpendicular to the axis, shown as +x.
     add_vec3(QString::fromStdString(declared.param("x_axis").label), "x_axis",
              json::array({1, 0, 0}));
+    // Moved from the axis it is designed on (tolerancing's decentres and tilts).
+    for (const char* key : {"decenter_x", "decenter_y", "tilt_x", "tilt_y", "tilt_z"})
+        add_param(declared.param(key));
 }
 
 void PropertyPanel::build_surface(const QString& label, const std::string& key) {

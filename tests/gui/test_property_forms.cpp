@@ -165,7 +165,23 @@ private slots:
         w.tree()->select_pointer("/objects/0");
         check_form(w, lenslab::sphere_spec(), {});
         w.tree()->select_pointer("/materials/grey");
-        check_form(w, lenslab::material_spec(), {});
+        // A melt's departures belong to a catalogue glass (below).
+        check_form(w, lenslab::material_spec(), {"delta_n_d", "delta_V_d"});
+        QVERIFY(!w.panel()->findChild<NumberField*>("field:delta_n_d"));
+        json glass = w.document()->json();
+        glass["materials"]["glass"] = {{"transparency", 1}, {"glass", "N-BK7"}};
+        QTemporaryDir other;
+        const QString path = other.filePath("glass.json");
+        QFile file(path);
+        file.open(QIODevice::WriteOnly);
+        file.write(QByteArray::fromStdString(glass.dump(2)));
+        file.close();
+        MainWindow g;
+        QVERIFY(g.open_file(path));
+        g.tree()->select_pointer("/materials/glass");
+        for (const char* key : {"delta_n_d", "delta_V_d"}) {
+            QVERIFY2(g.panel()->findChild<NumberField*>(QString("field:") + key), key);
+        }
     }
 
     // A beam's and a laser's forms hold the slit's and the fan's fields (light_spec.cpp).
@@ -323,7 +339,9 @@ private slots:
                        {"curvature_radius", 1},
                        {"aperture_radius", 0.5},
                        {"material", "grey"}}});
-        check_form(w, lenslab::lens_spec(), {"thickness", "diameter", "x_axis"});
+        check_form(w, lenslab::lens_spec(),
+                   {"thickness", "diameter", "x_axis", "decenter_x", "decenter_y", "tilt_x",
+                    "tilt_y", "tilt_z"});
     }
 
     void lens_group_form_follows_the_declaration() {
