@@ -30,9 +30,6 @@ std::string in_column(const std::string& text, size_t width) {
     return text + std::string(width > characters ? width - characters : 0, ' ');
 }
 
-// The figure's size in pixels: two square panels side by side, as the bench's curves.
-constexpr double kFigureWidth = 900, kFigureHeight = 420;
-
 struct ToleranceArgs {
     std::string design;
     std::optional<int64_t> trials, seed;
@@ -100,7 +97,8 @@ int run_tolerance(const ToleranceArgs& a) {
                                  : report.criterion == "mtf"                        ? ""
                                  : design.scene.value("length_unit_mm", 1.0) == 1.0 ? "mm"
                                                                                     : "";
-        write_bench_figure(a.figure, {tolerance_figure(report, unit), kFigureWidth, kFigureHeight});
+        write_bench_figure(a.figure, {tolerance_figure(report, unit), kToleranceFigureWidth,
+                                      kToleranceFigureHeight});
     }
     if (a.json) {
         nlohmann::ordered_json j = tolerance_json(report);

@@ -15,8 +15,10 @@
 #include <QVBoxLayout>
 
 #include "analysis/system/optical_system.h"
+#include "bench_figure_view.h"
 #include "bench_figures.h"
 #include "optimize/lens_design.h"
+#include "optimize/tolerance_figure.h"
 #include "scene_document.h"
 #include "util/error.h"
 #include "util/scene_error.h"
@@ -75,6 +77,7 @@ ToleranceDialog::ToleranceDialog(SceneDocument* document, int lens, QWidget* par
       m_progress(new QProgressBar(this)),
       m_status(new QLabel(this)),
       m_table(new QTableWidget(0, 3, this)),
+      m_figure(new BenchFigureView(this)),
       m_run(new QPushButton(tr("Run"), this)),
       m_close(new QPushButton(tr("Close"), this)) {
     setObjectName("tolerance_dialog");
@@ -108,9 +111,12 @@ ToleranceDialog::ToleranceDialog(SceneDocument* document, int lens, QWidget* par
     layout->addLayout(form);
     layout->addWidget(m_progress);
     layout->addWidget(m_table, 1);
+    m_figure->setObjectName("tolerance_figure");
+    m_figure->set_least_zoom(0);  // fitted to the dialog; double-click opens it full size
+    layout->addWidget(m_figure, 2);
     layout->addWidget(m_status);
     layout->addWidget(buttons);
-    resize(560, 520);
+    resize(640, 760);
     connect(m_run, &QPushButton::clicked, this, &ToleranceDialog::start);
     connect(m_close, &QPushButton::clicked, this, [this] {
         if (running()) {
@@ -233,6 +239,7 @@ void ToleranceDialog::on_done(std::optional<ToleranceReport> report, QString err
         m_table->setItem(i, 2, new QTableWidgetItem(cell_text(row.plus)));
     }
     const MonteCarloSummary& m = r.monte_carlo;
+    m_figure->set_figure(tolerance_figure(r, "mm"), kToleranceFigureWidth);
     m_progress->setValue(m_progress->maximum());
     m_status->setText(
         tr("Nominal RMS spot %1 (refocused); root-sum-square of the worst changes %2.\n"

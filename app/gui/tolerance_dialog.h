@@ -22,6 +22,7 @@ class QThread;
 
 namespace lenslab::gui {
 
+class BenchFigureView;
 class SceneDocument;
 
 // What the dialog asks: the optical choices the Optimise dialog asks (fields, wavelengths,
@@ -53,6 +54,7 @@ public:
     bool running() const { return m_thread != nullptr; }
     QString status() const;
     QTableWidget* table() const { return m_table; }
+    BenchFigureView* figure() const { return m_figure; }
     QProgressBar* progress() const { return m_progress; }
 
 signals:
@@ -77,6 +79,7 @@ private:
     QProgressBar* m_progress;
     QLabel* m_status;
     QTableWidget* m_table;
+    BenchFigureView* m_figure;  // the Monte Carlo's histogram and yield
     QPushButton* m_run;
     QPushButton* m_close;
     QThread* m_thread = nullptr;

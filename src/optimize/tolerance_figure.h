@@ -10,5 +10,8 @@ namespace lenslab {
 
 // `unit`: the system's length unit for the axis labels ("mm"; "" for none known).
 RayDiagram tolerance_figure(const ToleranceReport& report, const std::string& unit);
+// The figure's size in pixels as `lenslab tolerance --figure` writes it: two square panels
+// side by side, as the bench's curves.
+inline constexpr double kToleranceFigureWidth = 900, kToleranceFigureHeight = 420;
 
 }  // namespace lenslab

@@ -7,6 +7,7 @@
 #include <QTableWidget>
 #include <QtTest>
 
+#include "bench_figure_view.h"
 #include "main_window.h"
 #include "scene_document.h"
 #include "scene_tree.h"
@@ -56,6 +57,10 @@ private slots:
         QVERIFY2(dialog->status().contains("Monte Carlo of 12 lenses"),
                  qPrintable(dialog->status()));
         QCOMPARE(dialog->progress()->value(), 12);
+        // The Monte Carlo's figure, as `lenslab tolerance --figure` draws it.
+        QVERIFY(dialog->figure()->figure());
+        QCOMPARE(QString::fromStdString(dialog->figure()->figure()->title),
+                 QString("Monte Carlo of 12 made lenses"));
         QVERIFY(w.document()->json() == original);
     }
 
