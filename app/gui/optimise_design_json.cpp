@@ -1,5 +1,7 @@
 #include "optimise_design_json.h"
 
+#include "optimize/model_glass.h"
+
 namespace lenslab::gui {
 
 nlohmann::json optimise_design_json(const nlohmann::json& scene, const OpticalSystem& system,
@@ -17,6 +19,15 @@ nlohmann::json optimise_design_json(const nlohmann::json& scene, const OpticalSy
         if (choices.vary_air_gaps && i + 1 < system.elements.size()) {
             variables.push_back({{"type", "air_gap"}, {"lens", lens}});
         }
+        // The element's scene entry, "objects[i]": a lens of a model glass?
+        const std::size_t open = lens.find('['), close = lens.find(']');
+        if (!choices.vary_model_glasses || open == std::string::npos || close != lens.size() - 1)
+            continue;
+        const std::size_t index = std::stoul(lens.substr(open + 1, close - open - 1));
+        if (is_model_glass(nlohmann::ordered_json(scene["objects"][index]))) {
+            for (const char* type : {"n_d", "V_d"})
+                variables.push_back({{"type", type}, {"lens", lens}});
+        }
     }
     json operands = json::array();
     operands.push_back({{"type", "efl"}, {"target", choices.efl_target}, {"weight", 100}});
@@ -30,6 +41,8 @@ nlohmann::json optimise_design_json(const nlohmann::json& scene, const OpticalSy
                    {"operands", operands}};
     if (!choices.wavelengths.empty()) design["wavelengths"] = choices.wavelengths;
     if (choices.global_starts > 0) design["global_search"] = {{"starts", choices.global_starts}};
+    if (choices.vary_model_glasses && choices.substitute_glasses)
+        design["glass_substitution"] = json::object();
     return design;
 }
 

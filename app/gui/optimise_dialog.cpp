@@ -39,6 +39,9 @@ OptimiseDialog::OptimiseDialog(SceneDocument* document, int lens, QWidget* paren
       m_stop(new QSpinBox(this)),
       m_curvatures(new QCheckBox(tr("Curvatures (both faces of each lens)"), this)),
       m_gaps(new QCheckBox(tr("Air gaps between the lenses"), this)),
+      m_model_glasses(
+          new QCheckBox(tr("Model glasses (n_d, V_d of a lens written with one)"), this)),
+      m_substitute(new QCheckBox(tr("Then the nearest catalogue glasses"), this)),
       m_iterations(new QSpinBox(this)),
       m_global_starts(new QSpinBox(this)),
       m_progress(new QProgressBar(this)),
@@ -69,6 +72,14 @@ OptimiseDialog::OptimiseDialog(SceneDocument* document, int lens, QWidget* paren
     form->addRow(tr("Stop surface"), m_stop);
     form->addRow(tr("Vary"), m_curvatures);
     form->addRow(QString(), m_gaps);
+    form->addRow(QString(), m_model_glasses);
+    form->addRow(QString(), m_substitute);
+    m_model_glasses->setObjectName("vary_model_glasses");
+    m_substitute->setObjectName("substitute_glasses");
+    m_substitute->setToolTip(
+        tr("After the optimisation, each model glass is replaced by the "
+           "nearest catalogue glasses in turn, the lenses re-optimised, the "
+           "best kept (docs/optimizer.md, Model glasses and substitution)"));
     form->addRow(tr("Iterations"), m_iterations);
     form->addRow(tr("Global search starts"), m_global_starts);
     auto* buttons = new QDialogButtonBox(this);
@@ -107,6 +118,8 @@ OptimiseChoices OptimiseDialog::choices() const {
     c.stop = m_stop->value();
     c.vary_curvatures = m_curvatures->isChecked();
     c.vary_air_gaps = m_gaps->isChecked();
+    c.vary_model_glasses = m_model_glasses->isChecked();
+    c.substitute_glasses = m_substitute->isChecked();
     c.iterations = m_iterations->value();
     c.global_starts = m_global_starts->value();
     return c;
@@ -120,6 +133,8 @@ void OptimiseDialog::set_choices(const OptimiseChoices& c) {
     m_stop->setValue(c.stop);
     m_curvatures->setChecked(c.vary_curvatures);
     m_gaps->setChecked(c.vary_air_gaps);
+    m_model_glasses->setChecked(c.vary_model_glasses);
+    m_substitute->setChecked(c.substitute_glasses);
     m_iterations->setValue(c.iterations);
     m_global_starts->setValue(c.global_starts);
 }

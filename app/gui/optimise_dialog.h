@@ -56,6 +56,8 @@ private:
     QSpinBox* m_stop;
     QCheckBox* m_curvatures;
     QCheckBox* m_gaps;
+    QCheckBox* m_model_glasses;
+    QCheckBox* m_substitute;
     QSpinBox* m_iterations;
     QSpinBox* m_global_starts;
     QProgressBar* m_progress;

@@ -1,8 +1,10 @@
 // Edit ▸ Optimise lenses…: the optimiser runs in the background with a progress bar, its
 // result is one undoable edit, and one undo restores the document exactly.
 
+#include <QCheckBox>
 #include <QProgressBar>
 #include <QSpinBox>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include "main_window.h"
@@ -90,6 +92,44 @@ private slots:
         QVERIFY(finished.wait(60000));
         QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(dialog->status()));
         QVERIFY(w.document()->json() != original);
+        QCOMPARE(w.document()->undo_stack()->count(), 1);
+    }
+
+    // A lens of a model glass: its n_d and V_d vary, then the nearest catalogue glasses are
+    // tried and the best put in, all one edit.
+    void a_model_glass_ends_on_a_catalogue_glass() {
+        QTemporaryDir dir;
+        nlohmann::json scene;
+        {
+            QFile in(LENSLAB_SOURCE_DIR "/scenes/thick_lens_beam.json");
+            QVERIFY(in.open(QIODevice::ReadOnly));
+            scene = nlohmann::json::parse(in.readAll().toStdString());
+        }
+        scene["objects"][0]["material"] = {{"transparency", 1},
+                                           {"ior", {{"model", "abbe"}, {"n_d", 1.6}, {"V_d", 50}}}};
+        const QString path = dir.filePath("model_glass.json");
+        QFile out(path);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(QByteArray::fromStdString(scene.dump(2)));
+        out.close();
+        MainWindow w;
+        QVERIFY(w.open_file(path));
+        w.tree()->select_pointer("/objects/0");
+        OptimiseDialog* dialog = w.optimise_selected_lens();
+        QVERIFY(dialog);
+        QVERIFY(dialog->findChild<QCheckBox*>("vary_model_glasses")->isChecked());
+        lenslab::gui::OptimiseChoices choices = dialog->choices();
+        choices.efl_target = 60;
+        choices.fields = {0.0};
+        choices.iterations = 3;
+        choices.substitute_glasses = true;
+        dialog->set_choices(choices);
+        QSignalSpy finished(dialog, &OptimiseDialog::finished_run);
+        QVERIFY2(dialog->start(), qPrintable(dialog->status()));
+        QVERIFY(finished.wait(120000));
+        QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(dialog->status()));
+        const nlohmann::json& material = w.document()->json()["objects"][0]["material"];
+        QVERIFY2(material.contains("glass"), material.dump().c_str());
         QCOMPARE(w.document()->undo_stack()->count(), 1);
     }
 
