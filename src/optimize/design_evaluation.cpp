@@ -8,8 +8,10 @@
 #include "analysis/diffraction/field_mtf.h"
 #include "analysis/diffraction/weighted_wavelengths.h"
 #include "analysis/diffraction/zernike.h"
+#include "analysis/system/field_beam.h"
 #include "analysis/system/first_order.h"
 #include "analysis/system/paraxial.h"
+#include "analysis/system/ray_aiming.h"
 #include "optimize/design_configurations.h"
 #include "optimize/model_glass.h"
 #include "scene/json_reader.h"
@@ -301,6 +303,16 @@ DesignEvaluation DesignModel::evaluate_state(const DesignState& state,
                     throw RaysLost{op.path + ": " + operand_label(op) + ": " + e.what()};
                 }
                 break;
+            case OperandKind::RealRayX:
+            case OperandKind::RealRayY: {
+                const RayAimer aimer(system, first, op.field, primary);
+                const std::optional<ExitRay> out =
+                    passed_exit_ray(system, aimer.trace(op.px, op.py));
+                if (!out) throw RaysLost{op.path + ": " + operand_label(op) + ": the ray is lost"};
+                const Vec3 p = at_plane(out->point, out->direction, image_z);
+                value = op.kind == OperandKind::RealRayX ? p.x : p.y;
+                break;
+            }
             case OperandKind::MinCenterThickness:
             case OperandKind::MaxCenterThickness:
                 value = de_thickness_at(system, de_element(system, scene, op.object, op.path), 0);

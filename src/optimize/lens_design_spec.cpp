@@ -226,6 +226,8 @@ const std::vector<DesignEntryType<OperandKind>>& operand_types() {
         {"exit_pupil_position", OperandKind::ExitPupilPosition, {"target", "weight"}},
         {"distortion", OperandKind::Distortion, {"field", "target", "weight"}},
         {"rms_spot", OperandKind::RmsSpot, {"field", "target", "weight"}},
+        {"real_ray_x", OperandKind::RealRayX, {"field", "px", "py", "target", "weight"}},
+        {"real_ray_y", OperandKind::RealRayY, {"field", "px", "py", "target", "weight"}},
         {"rms_wavefront", OperandKind::RmsWavefront, {"field", "target", "weight"}},
         {"mtf", OperandKind::Mtf, {"frequency", "direction", "field", "target", "weight"}},
         {"min_center_thickness", OperandKind::MinCenterThickness, {"lens", "limit", "weight"}},

@@ -15,10 +15,14 @@ bool mo_is_minimum(OperandKind kind) {
     return kind == OperandKind::MinCenterThickness || kind == OperandKind::MinEdgeThickness;
 }
 
+bool mo_real_ray(OperandKind kind) {
+    return kind == OperandKind::RealRayX || kind == OperandKind::RealRayY;
+}
+
 // The operands measured at a field (one per design field when none is given).
 bool mo_takes_field(OperandKind kind) {
     return kind == OperandKind::RmsSpot || kind == OperandKind::RmsWavefront ||
-           kind == OperandKind::Mtf || kind == OperandKind::Distortion;
+           kind == OperandKind::Mtf || kind == OperandKind::Distortion || mo_real_ray(kind);
 }
 
 }  // namespace
@@ -40,6 +44,8 @@ std::string operand_label(const MeritOperand& op) {
                   : op.direction == "tangential" ? "T"
                                                  : "S");
     if (mo_takes_field(op.kind)) label += " " + format_number(op.field) + "°";
+    if (mo_real_ray(op.kind))
+        label += " (" + format_number(op.px) + ", " + format_number(op.py) + ")";
     if (!op.lens.empty()) label += " " + op.lens;
     if (op.configuration >= 0) label += " [" + op.configuration_name + "]";
     return label;
@@ -78,7 +84,7 @@ std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const 
         // The focal lengths and the pupils' positions have no natural target.
         const bool paraxial = op.kind == OperandKind::Efl || op.kind == OperandKind::Bfl ||
                               op.kind == OperandKind::EntrancePupilPosition ||
-                              op.kind == OperandKind::ExitPupilPosition;
+                              op.kind == OperandKind::ExitPupilPosition || mo_real_ray(op.kind);
         op.target = paraxial                      ? reader.number("target")
                     : op.kind == OperandKind::Mtf ? reader.number("target", 1.0)
                                                   : reader.number("target", 0.0);
@@ -91,6 +97,15 @@ std::vector<MeritOperand> read_merit_operands(const nlohmann::json& spec, const 
                 "must be > 0 (cycles per unit length), got " + format_number(op.frequency));
         }
         op.direction = reader.choice("direction", "mean", {"tangential", "sagittal", "mean"});
+    }
+    if (mo_real_ray(op.kind)) {
+        for (const char* key : {"px", "py"}) {
+            const double v = reader.number(key, 0.0);
+            if (!(std::abs(v) <= 1))
+                throw SceneError(reader.child_path(key),
+                                 "a normalised pupil coordinate, -1 to 1, got " + format_number(v));
+            (std::string(key) == "px" ? op.px : op.py) = v;
+        }
     }
     if (needs_lens) {
         op.lens = reader.string("lens");

@@ -2,7 +2,8 @@
 // The operands of the merit function (docs/optimizer.md): figures of a design with a
 // target and a weight, merit = sum of weight * residual². Targets: the paraxial focal
 // length, back focal length and pupil positions, a field's distortion, the polychromatic RMS spot
-// of a field, the RMS wavefront of a field and its MTF at a frequency. Constraints are one-sided:
+// of a field, the RMS wavefront of a field and its MTF at a frequency, where a real ray meets
+// the image plane. Constraints are one-sided:
 // their residual is zero while the limit holds (centre and edge thickness of a lens, the total
 // length).
 
@@ -26,6 +27,8 @@ enum class OperandKind {
     MinEdgeThickness,
     MaxTotalLength,
     GlassDistance,  // a model glass's distance on the glass map to the nearest catalogue glass
+    RealRayX,       // where a real ray meets the image plane (Zemax REAX, REAY)
+    RealRayY,
 };
 
 struct MeritOperand {
@@ -34,6 +37,7 @@ struct MeritOperand {
     double weight = 1;
     double field = 0;       // rms_spot, rms_wavefront, mtf, distortion: the field in degrees
     double frequency = 0;   // mtf: cycles per unit length
+    double px = 0, py = 0;  // real rays: the normalised pupil coordinates (-1 to 1)
     std::string direction;  // mtf: "tangential", "sagittal" or "mean" (of the two)
     int object = -1;        // thickness constraints: the lens's index in the scene JSON
     std::string lens;
