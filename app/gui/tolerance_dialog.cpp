@@ -239,7 +239,8 @@ void ToleranceDialog::on_done(std::optional<ToleranceReport> report, QString err
         m_table->setItem(i, 2, new QTableWidgetItem(cell_text(row.plus)));
     }
     const MonteCarloSummary& m = r.monte_carlo;
-    m_figure->set_figure(tolerance_figure(r, "mm"), kToleranceFigureWidth);
+    const bool mm = m_document->json().value("length_unit_mm", 1.0) == 1.0;
+    m_figure->set_figure(tolerance_figure(r, mm ? "mm" : ""), kToleranceFigureWidth);
     m_progress->setValue(m_progress->maximum());
     m_status->setText(
         tr("Nominal RMS spot %1 (refocused); root-sum-square of the worst changes %2.\n"

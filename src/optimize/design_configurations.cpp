@@ -101,6 +101,22 @@ int read_variable_configuration(nlohmann::json& spec, const std::string& path,
                              std::to_string(d.configurations.size()));
 }
 
+void check_configuration_variable(const LensDesign& d, const DesignVariable& v) {
+    if (v.configuration >= 0) return;
+    for (const DesignConfiguration& c : d.configurations) {
+        bool sets = v.kind == VariableKind::ImageDistance && c.image_distance.has_value();
+        for (const auto& [gap, value] : c.air_gaps) {
+            sets = sets || (v.kind == VariableKind::AirGap && gap.object == v.object);
+        }
+        if (sets) {
+            throw SceneError(v.path,
+                             "configuration '" + c.name + "' sets this " +
+                                 (v.kind == VariableKind::AirGap ? "air gap" : "image distance") +
+                                 ": give the variable a configuration");
+        }
+    }
+}
+
 void read_configuration_operands(const nlohmann::json* shared, const nlohmann::json& list,
                                  LensDesign& d) {
     d.operands.clear();

@@ -21,6 +21,10 @@ void read_configurations(const nlohmann::json& list, LensDesign& d);
 // `v`'s configuration once the variable is read; -1 where there is none.
 int read_variable_configuration(nlohmann::json& spec, const std::string& path, const LensDesign& d);
 
+// Refuses a shared variable of what a configuration sets (an air gap, the image distance):
+// it would override the configuration's value.
+void check_configuration_variable(const LensDesign& d, const DesignVariable& v);
+
 // The operands of a multi-configuration design: each of `shared` (the design's `operands`)
 // read for each configuration with its fields, then the configuration's own.
 void read_configuration_operands(const nlohmann::json* shared, const nlohmann::json& list,

@@ -217,8 +217,13 @@ DesignEvaluation DesignModel::evaluate_state(const DesignState& state,
     if (d.stop_in_air) {
         const SystemElement& e =
             de_element(system, scene, d.stop_in_air->object, "stop_in_air.lens");
-        stop = insert_air_stop(system, system.surfaces[e.last_surface].z + d.stop_in_air->distance,
-                               system.max_semi_diameter());
+        try {
+            stop =
+                insert_air_stop(system, system.surfaces[e.last_surface].z + d.stop_in_air->distance,
+                                system.max_semi_diameter());
+        } catch (const SceneError& err) {  // named by the design's key, not the bench's
+            throw SceneError("stop_in_air.distance", err.reason());
+        }
     }
     const double primary = d.primary_wavelength();
     const ParaxialResult paraxial = paraxial_trace(system, primary);

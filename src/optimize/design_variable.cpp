@@ -112,15 +112,6 @@ ojson& dv_inline_material(ojson& scene, ojson& lens) {
     return m;
 }
 
-const ojson* dv_material(const ojson& scene, const ojson& lens) {
-    const auto m = lens.find("material");
-    if (m == lens.end()) return nullptr;
-    if (!m->is_string()) return &*m;
-    const auto named = scene.find("materials");
-    if (named == scene.end() || !named->contains(m->get<std::string>())) return nullptr;
-    return &(*named)[m->get<std::string>()];
-}
-
 }  // namespace
 
 std::string variable_label(const DesignVariable& v) {
@@ -146,7 +137,7 @@ double variable_value(const DesignState& state, const DesignVariable& v) {
             return lens["material"]["ior"]["V_d"].get<double>();
         case VariableKind::MeltIndex:
         case VariableKind::MeltAbbe:
-            return dv_material(state.scene, lens)->value(dv_kind_name(v.kind), 0.0);
+            return lens_material(state.scene, v.object)->value(dv_kind_name(v.kind), 0.0);
         default:
             if (v.of_pose()) return lens.value(dv_kind_name(v.kind), 0.0);
             break;
@@ -235,6 +226,16 @@ double variable_step(const DesignVariable& v) {
     }
 }
 
+const ojson* lens_material(const ojson& scene, int object) {
+    const ojson& lens = scene["objects"][object];
+    const auto m = lens.find("material");
+    if (m == lens.end()) return nullptr;
+    if (!m->is_string()) return &*m;
+    const auto named = scene.find("materials");
+    if (named == scene.end() || !named->contains(m->get<std::string>())) return nullptr;
+    return &(*named)[m->get<std::string>()];
+}
+
 std::vector<DesignLens> design_lenses(const ojson& scene) {
     std::vector<DesignLens> lenses;
     const auto objects = scene.find("objects");
@@ -316,7 +317,7 @@ DesignVariable read_design_variable(const nlohmann::json& spec, const std::strin
         return v;
     }
     if (v.of_melt()) {
-        const ojson* m = dv_material(scene, lens);
+        const ojson* m = lens_material(scene, v.object);
         if (!m || !m->contains("glass")) {
             throw SceneError(reader.child_path("lens"),
                              "the lens '" + v.lens + "' needs a catalogue `glass` for a melt");

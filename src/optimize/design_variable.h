@@ -89,6 +89,9 @@ double variable_step(const DesignVariable& v);
 DesignVariable read_design_variable(const nlohmann::json& spec, const std::string& path,
                                     const nlohmann::ordered_json& scene);
 
+// The material of lens `object` of a scene JSON, a named one looked up; none if it has none.
+const nlohmann::ordered_json* lens_material(const nlohmann::ordered_json& scene, int object);
+
 // A prescription lens object (`lens` with `thickness`) of a scene JSON: its index in
 // `objects` and the name a design gives it (its `name`, else "objects[i]").
 struct DesignLens {

@@ -155,19 +155,19 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
             v.configuration = configuration;
             v.configuration_name = d.configurations[size_t(configuration)].name;
         }
-        for (const DesignConfiguration& c : d.configurations) {
-            for (const auto& [gap, value] : c.air_gaps) {
-                if (v.configuration < 0 && v.kind == VariableKind::AirGap &&
-                    gap.object == v.object) {
-                    throw SceneError(path, "configuration '" + c.name + "' sets this air gap: " +
-                                               "give the variable a configuration");
-                }
-            }
-        }
+        check_configuration_variable(d, v);
+        // The same number twice, or shared and of one configuration both.
+        const auto shared_label = [](DesignVariable w) {
+            w.configuration = -1;
+            return variable_label(w);
+        };
         for (size_t j = 0; j + 1 < d.variables.size(); ++j) {
-            if (variable_label(d.variables[j]) == variable_label(v)) {
+            const DesignVariable& w = d.variables[j];
+            const bool both =
+                w.configuration == v.configuration || w.configuration < 0 || v.configuration < 0;
+            if (both && shared_label(w) == shared_label(v)) {
                 throw SceneError(path, "the same variable as variables[" + std::to_string(j) +
-                                           "] (" + variable_label(v) + ")");
+                                           "] (" + variable_label(w) + ")");
             }
         }
         if (v.kind == VariableKind::ImageDistance && !d.image_distance) {
@@ -176,10 +176,16 @@ LensDesign lens_design_from_json(const nlohmann::json& root, const std::string& 
                              "(a number, not the paraxial focus)");
         }
     }
+    // A configuration's variable starts where the configuration puts it, a shared one where
+    // the first does.
+    std::vector<DesignState> starts;
+    for (size_t k = 0; k < d.configurations.size(); ++k) {
+        const LensDesign at = configuration_design(d, int(k));
+        starts.push_back({at.scene, at.image_distance.value_or(0.0)});
+    }
+    if (starts.empty()) starts.push_back({d.scene, d.image_distance.value_or(0.0)});
     for (const DesignVariable& v : d.variables) {
-        // A configuration's variable starts where the configuration puts it.
-        const LensDesign at = v.configuration >= 0 ? configuration_design(d, v.configuration) : d;
-        const double value = variable_value({at.scene, at.image_distance.value_or(0.0)}, v);
+        const double value = variable_value(starts[size_t(std::max(v.configuration, 0))], v);
         if (v.bounded() && (value < *v.min || value > *v.max)) {
             throw SceneError(v.path, "starts at " + format_number(value) +
                                          ", outside its bounds [" + format_number(*v.min) + ", " +

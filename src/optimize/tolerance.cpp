@@ -37,13 +37,7 @@ std::optional<DesignVariable> try_variable(const LensDesign& design, const nlohm
 
 // The V_d of lens `object`'s catalogue glass, none when its material names no glass.
 std::optional<double> catalogue_abbe_number(const nlohmann::ordered_json& scene, int object) {
-    const nlohmann::ordered_json& lens = scene["objects"][object];
-    const nlohmann::ordered_json* m = lens.contains("material") ? &lens["material"] : nullptr;
-    if (m && m->is_string() && scene.contains("materials")) {
-        m = scene["materials"].contains(m->get<std::string>())
-                ? &scene["materials"][m->get<std::string>()]
-                : nullptr;
-    }
+    const nlohmann::ordered_json* m = lens_material(scene, object);
     if (!m || !m->is_object() || !m->contains("glass") || !(*m)["glass"].is_string()) {
         return std::nullopt;
     }
@@ -70,7 +64,7 @@ LensDesign criterion_design(const LensDesign& design) {
         d.operands.push_back(op);
     }
     // An MTF's lens is refocused by its spots.
-    for (size_t i = 0; t.criterion == "mtf" && i < design.fields.size(); ++i) {
+    for (size_t i = 0; t.criterion == "mtf" && t.refocus && i < design.fields.size(); ++i) {
         MeritOperand op;
         op.kind = OperandKind::RmsSpot;
         op.field = design.fields[i];
@@ -88,19 +82,19 @@ double rms_of(const DesignEvaluation& e, size_t first, size_t last) {
 }
 
 // The criterion as a badness the table's predictions work in, 0 at best: the RMS over the
-// fields of the spots or wavefronts, or 1 - the mean MTF over the fields (the first half of
-// an MTF criterion's operands; the second half are the fields' RMS spots).
-double badness_of(const DesignEvaluation& e, bool mtf) {
-    if (!mtf) return rms_of(e, 0, e.values.size());
-    const size_t fields = e.values.size() / 2;
+// fields of the spots or wavefronts, or 1 - the mean MTF over the fields (criterion_design's
+// first `fields` operands; after them, a refocused MTF's RMS spots).
+double badness_of(const DesignEvaluation& e, bool mtf, size_t fields) {
+    if (!mtf) return rms_of(e, 0, fields);
     double sum = 0;
     for (size_t i = 0; i < fields; ++i) sum += e.values[i];
     return 1 - sum / double(fields);
 }
 
 // What the back focus is set by: the criterion, or for an MTF the RMS spot.
-double focus_badness_of(const DesignEvaluation& e, bool mtf) {
-    return mtf ? rms_of(e, e.values.size() / 2, e.values.size()) : badness_of(e, false);
+double focus_badness_of(const DesignEvaluation& e, bool mtf, size_t fields) {
+    return mtf && e.values.size() > fields ? rms_of(e, fields, e.values.size())
+                                           : badness_of(e, mtf, fields);
 }
 
 // A made lens measured: the badness the back focus is set by (the criterion's; for an MTF,
@@ -113,7 +107,11 @@ struct Measure {
 class Criterion {
 public:
     Criterion(const DesignModel& model, bool refocus, double focus_step, bool mtf)
-        : m_model(model), m_refocus(refocus), m_step(focus_step), m_mtf(mtf) {}
+        : m_model(model),
+          m_refocus(refocus),
+          m_step(focus_step),
+          m_mtf(mtf),
+          m_fields(model.design().fields.size()) {}
 
     // At `x` (the last coordinate the image distance); refocused when asked: the parabola
     // through the squared focus badness at three image planes, narrowed kRefocusRounds times.
@@ -156,13 +154,14 @@ private:
     std::optional<Measure> at(const std::vector<double>& x) const {
         const std::optional<DesignEvaluation> e = m_model.evaluate(x);
         if (!e) return std::nullopt;
-        return Measure{focus_badness_of(*e, m_mtf), badness_of(*e, m_mtf)};
+        return Measure{focus_badness_of(*e, m_mtf, m_fields), badness_of(*e, m_mtf, m_fields)};
     }
 
     const DesignModel& m_model;
     bool m_refocus;
     double m_step;
     bool m_mtf;
+    size_t m_fields;
 };
 
 // The nearest-rank percentile `p` (0-100) of sorted values.
@@ -246,11 +245,13 @@ std::vector<ToleranceItem> tolerance_items(const LensDesign& design) {
         }
         add({{"type", "thickness"}, {"lens", name}}, "thickness " + name, t.thickness);
         add({{"type", "air_gap"}, {"lens", name}}, "air gap after " + name, t.air_gap);
+        // The bench does not measure a gradient-index lens moved from its axis.
+        const nlohmann::ordered_json* material = lens_material(design.scene, lens.object);
+        const bool grin = material && material->is_object() && material->contains("grin");
         for (const char* axis : {"x", "y"}) {
+            if (grin) break;
             add({{"type", std::string("decenter_") + axis}, {"lens", name}},
                 std::string("decentre ") + axis + " " + name, t.decenter);
-        }
-        for (const char* axis : {"x", "y"}) {
             add({{"type", std::string("tilt_") + axis}, {"lens", name}},
                 std::string("tilt ") + axis + " " + name, t.tilt, format_number(t.tilt) + "°");
         }
@@ -300,7 +301,7 @@ ToleranceReport tolerance_design(const LensDesign& design,
         std::vector<double> x = x0;
         x.back() = criterion.focused(x0).second;
         const std::optional<DesignEvaluation> e = model.evaluate(x);
-        report.nominal = badness_of(*e, report.higher_is_better);
+        report.nominal = badness_of(*e, report.higher_is_better, design.fields.size());
         report.nominal_fields.assign(e->values.begin(),
                                      e->values.begin() + std::ptrdiff_t(design.fields.size()));
         report.image_distance = x.back();

@@ -40,11 +40,16 @@ std::shared_ptr<const Shape> read_lens(SpecReader& r) {
                          "form) or thickness, diameter, front and back (a prescription)");
     }
     if (report_form) {
+        // A decentre or tilt of 0 (the declaration's default, written out) moves nothing.
+        const auto moves = [&r](const char* key) {
+            for (const char* move : {"decenter_x", "decenter_y", "tilt_x", "tilt_y", "tilt_z"}) {
+                if (std::string(key) == move) return r.real(key) != 0;
+            }
+            return true;
+        };
         for (const char* key : {"thickness", "diameter", "front", "back", "x_axis", "decenter_x",
                                 "decenter_y", "tilt_x", "tilt_y", "tilt_z"}) {
-            const bool moving =
-                std::string(key).find('_') != std::string::npos && std::string(key) != "x_axis";
-            if (r.has(key) && (!moving || r.real(key) != 0)) {
+            if (r.has(key) && moves(key)) {
                 throw SceneError(r.child_path(key),
                                  "belongs to the prescription form; the report form "
                                  "(curvature_radius, aperture_radius) cannot take it");

@@ -105,6 +105,21 @@ TEST(DesignConfigurations, MistakesNameTheirJsonPath) {
     EXPECT_EQ(zoom_error([](nlohmann::json& r) { r["configurations"][0]["image_distance"] = 50; }),
               "configurations[0].image_distance: the design's image plane is the paraxial focus: "
               "give the design an image_distance first");
+    // A shared variable would override what a configuration sets, or a configuration's own.
+    EXPECT_EQ(zoom_error([](nlohmann::json& r) {
+                  r["image_distance"] = 60;
+                  r["configurations"][2]["image_distance"] = 70;
+                  r["variables"].push_back({{"type", "image_distance"}});
+              }),
+              "variables[13]: configuration 'tele' sets this image distance: give the variable "
+              "a configuration");
+    EXPECT_EQ(zoom_error([](nlohmann::json& r) {
+                  r["variables"].push_back({{"type", "curvature"},
+                                            {"lens", "L1"},
+                                            {"surface", "front"},
+                                            {"configuration", "tele"}});
+              }),
+              "variables[13]: the same variable as variables[0] (curvature L1.front)");
     // Numbered from 1, as the reports number surfaces.
     EXPECT_EQ(zoom_error([](nlohmann::json& r) { r["variables"][10]["configuration"] = 1; }),
               "(no error)");

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "optimize/design_evaluation.h"
 #include "optimize/lens_design.h"
 #include "optimize/optimize_design.h"
 #include "optimize_test_design.h"
@@ -63,6 +64,16 @@ TEST(LensDesign, MistakesNameTheirJsonPath) {
               "length)");
     EXPECT_EQ(design_error({{"stop", 1}, {"stop_in_air", {{"lens", "A"}, {"distance", 2}}}}),
               "stop_in_air: give stop or stop_in_air, not both");
+    // Farther than the next lens: the design's key says where.
+    nlohmann::json inside =
+        design_of(kDesignLenses, {{"stop_in_air", {{"lens", "A"}, {"distance", 7}}}});
+    inside.erase("stop");
+    try {
+        (void)DesignModel(lens_design_from_json(inside, ""));
+        ADD_FAILURE() << "a stop inside lens B was taken";
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.path(), "stop_in_air.distance") << e.what();
+    }
     nlohmann::json air =
         design_of(kDesignLenses, {{"stop_in_air", {{"lens", "Q"}, {"distance", 2}}}});
     air.erase("stop");
