@@ -398,13 +398,19 @@ void MainWindow::show_render_end(RenderEnd end, int passes) {
     set_render_status(tr("%1 · %2 · %3").arg(m_integrator, state, m_frame_figures));
 }
 
-OptimiseDialog* MainWindow::optimise_selected_lens() {
-    if (m_ray_diagram->lens() < 0) {
-        QMessageBox::information(this, tr("Optimise lenses"),
-                                 tr("Select a lens: the lenses on its axis are optimised."));
-        return nullptr;
+int MainWindow::selected_lens_for(const QString& title, const QString& what) {
+    const int lens = m_ray_diagram->lens();
+    if (lens < 0) {
+        QMessageBox::information(this, title,
+                                 tr("Select a lens: the lenses on its axis are %1.").arg(what));
     }
-    auto* dialog = new OptimiseDialog(m_document, m_ray_diagram->lens(), this);
+    return lens;
+}
+
+OptimiseDialog* MainWindow::optimise_selected_lens() {
+    const int lens = selected_lens_for(tr("Optimise lenses"), tr("optimised"));
+    if (lens < 0) return nullptr;
+    auto* dialog = new OptimiseDialog(m_document, lens, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     // Modal: an edit made during the run would be lost when its result is applied.
     dialog->setModal(true);
@@ -414,12 +420,9 @@ OptimiseDialog* MainWindow::optimise_selected_lens() {
 }
 
 ToleranceDialog* MainWindow::tolerance_selected_lens() {
-    if (m_ray_diagram->lens() < 0) {
-        QMessageBox::information(this, tr("Tolerance lenses"),
-                                 tr("Select a lens: the lenses on its axis are toleranced."));
-        return nullptr;
-    }
-    auto* dialog = new ToleranceDialog(m_document, m_ray_diagram->lens(), this);
+    const int lens = selected_lens_for(tr("Tolerance lenses"), tr("toleranced"));
+    if (lens < 0) return nullptr;
+    auto* dialog = new ToleranceDialog(m_document, lens, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     ToleranceChoices choices;
     choices.optics = m_ray_diagram->optimise_defaults();

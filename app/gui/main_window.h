@@ -95,6 +95,9 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    // The selected lens (a scene object index), or -1 after telling the user to select one:
+    // `title` is the action's, `what` says what happens to the lenses on its axis.
+    int selected_lens_for(const QString& title, const QString& what);
     void build_menus();
     void update_title();
     void update_recent_menu();

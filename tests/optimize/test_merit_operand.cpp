@@ -41,6 +41,27 @@ using test::sphere;
 
 const std::vector<test::LensSpec> kBiconvex = {{"B", 0.0, 5.0, 20.0, sphere(50), sphere(-50)}};
 
+// A design's system as the bench builds it, and its first-order data as design_of sets it up
+// (the d line, the stop on surface 1, EPD 4, the design's fields): what the operands are
+// checked against.
+struct Bench {
+    OpticalSystem system;
+    FirstOrder first;
+};
+
+Bench bench_of(const LensDesign& d) {
+    Bench b;
+    b.system = build_optical_system(
+        scene_from_json(nlohmann::json(d.scene), d.base_dir, {.require_camera = false}));
+    FirstOrderOptions f;
+    f.wavelength_nm = 587.5618;
+    f.stop = 0;
+    f.epd = 4;
+    f.fields = d.fields;
+    b.first = first_order(b.system, paraxial_trace(b.system, f.wavelength_nm), f);
+    return b;
+}
+
 TEST(MeritOperand, ThickLensFiguresMatchTheirFormulas) {
     const nlohmann::json operands = {
         {{"type", "efl"}, {"target", 50}},
@@ -104,15 +125,9 @@ TEST(MeritOperand, BackFocalLengthAndDistortion) {
     EXPECT_NEAR(e->values[0], efl * (1 - (n - 1) * t / (n * r1)), 1e-9);
     EXPECT_NEAR(e->residuals[0], e->values[0] - 49, 1e-12);
 
-    const Scene scene =
-        scene_from_json(nlohmann::json(d.scene), d.base_dir, {.require_camera = false});
-    const OpticalSystem system = build_optical_system(scene);
-    FirstOrderOptions f;
-    f.wavelength_nm = 587.5618;
-    f.stop = 0;
-    f.epd = 4;
-    f.fields = {0, 5};
-    const FirstOrder first = first_order(system, paraxial_trace(system, f.wavelength_nm), f);
+    const Bench b = bench_of(d);
+    const OpticalSystem& system = b.system;
+    const FirstOrder& first = b.first;
     FieldCurveOptions c;
     c.max_field = 5;
     c.points = 2;
@@ -162,15 +177,9 @@ TEST(MeritOperand, WavefrontAndMtfAreTheBenchsFigures) {
     const std::optional<DesignEvaluation> e = DesignModel(d).evaluate({});
     ASSERT_TRUE(e);
 
-    const Scene scene =
-        scene_from_json(nlohmann::json(d.scene), d.base_dir, {.require_camera = false});
-    const OpticalSystem system = build_optical_system(scene);
-    FirstOrderOptions f;
-    f.wavelength_nm = 587.5618;
-    f.stop = 0;
-    f.epd = 4;
-    f.fields = {0, 2};
-    const FirstOrder first = first_order(system, paraxial_trace(system, f.wavelength_nm), f);
+    const Bench b = bench_of(d);
+    const OpticalSystem& system = b.system;
+    const FirstOrder& first = b.first;
     FieldWavefrontOptions w;
     w.field = 2;
     w.wavelength_nm = 587.5618;
