@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "optics/rgb.h"
+#include "util/huge_pages.h"
 
 namespace lenslab {
 
@@ -18,8 +19,15 @@ inline double luminance(const PixelRgb& p) { return 0.2126 * p.r + 0.7152 * p.g 
 class Film {
 public:
     Film() = default;
-    Film(int width, int height)
-        : m_width(width), m_height(height), m_pixels(size_t(width) * height) {}
+    // The pixels are advised onto huge pages before they are zeroed: a 900 x 900 film is
+    // 2,400 small pages, and their first-touch faults (microseconds each in a virtual machine)
+    // took 30 ms on one thread before a render could start.
+    Film(int width, int height) : m_width(width), m_height(height) {
+        const size_t count = size_t(width) * size_t(height);
+        m_pixels.reserve(count);
+        advise_huge_pages(m_pixels.data(), count * sizeof(PixelRgb));
+        m_pixels.resize(count);
+    }
 
     int width() const { return m_width; }
     int height() const { return m_height; }

@@ -28,7 +28,6 @@
 // the whole spectrum takes one wavelength first, as in absorbing glass, and the coefficients
 // of its band apply.
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -46,6 +45,7 @@
 #include "scene/scattering.h"
 #include "scene/scene.h"
 #include "scene/segment_medium.h"
+#include "util/parallel_in_order.h"
 
 namespace lenslab {
 
@@ -82,18 +82,16 @@ void trace_photon_range(int64_t first, int64_t last, const RenderControl& contro
 // parallel; chunks not begun when `control` is cancelled are skipped (the body stops within
 // its chunk with trace_photon_range). In a job of several ranks, only the chunks dealt to
 // this one (cluster/dealt_parts.h): the caller shares the deposits afterwards.
+// Chunks are begun in order (util/parallel_in_order.h): the deposits of a chunk wait until
+// every earlier one is in, so chunks far ahead would have to be held and copied late.
 template <class Body>
 void for_each_photon_chunk(int64_t photons, RenderControl& control, const Body& body) {
     const Communicator& comm = control.cluster();
-    tbb::parallel_for(tbb::blocked_range<int64_t>(0, photon_chunks(photons), 1),
-                      [&](const tbb::blocked_range<int64_t>& r) {
-                          for (int64_t chunk = r.begin(); chunk != r.end(); ++chunk) {
-                              if (!dealt_to(chunk, comm)) continue;
-                              if (control.cancelled()) return;
-                              const int64_t first = chunk * kPhotonChunk;
-                              body(chunk, first, std::min(photons, first + kPhotonChunk));
-                          }
-                      });
+    parallel_for_in_order(photon_chunks(photons), [&](int64_t chunk) {
+        if (!dealt_to(chunk, comm) || control.cancelled()) return;
+        const int64_t first = chunk * kPhotonChunk;
+        body(chunk, first, std::min(photons, first + kPhotonChunk));
+    });
 }
 
 // Joins the chunks' deposits in chunk order, in parallel, freeing them: the same result at any

@@ -1,6 +1,3 @@
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <atomic>
 #include <cmath>
 
@@ -9,6 +6,7 @@
 #include "math/rng.h"
 #include "render/dispersion_split.h"
 #include "render/integrator.h"
+#include "util/parallel_in_order.h"
 
 namespace lenslab {
 
@@ -83,49 +81,48 @@ bool PixelIntegrator::render_window(const Scene& scene, const Camera& camera, Fi
     int mine = 0;
     for (int tile = 0; tile < tiles; ++tile) mine += dealt_to(tile, comm) && in_window(tile);
 
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& range) {
-            for (int tile = range.begin(); tile != range.end(); ++tile) {
-                if (!dealt_to(tile, comm) || !in_window(tile)) continue;
+    // Tiles begun in order, one at a time: a thread never holds a run of slow ones.
+    parallel_for_in_order(tiles, [&](int64_t index) {
+        const int tile = static_cast<int>(index);
+        if (!dealt_to(tile, comm) || !in_window(tile)) return;
+        if (control.cancelled()) return;
+        const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+        for (int y = y0; y < std::min(y0 + kTileSize, h); ++y) {
+            for (int x = x0; x < std::min(x0 + kTileSize, w); ++x) {
+                if (!window.contains(x, y)) continue;
+                // Checked per pixel: one pixel of a deep scene at many spp can take long.
                 if (control.cancelled()) return;
-                const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-                for (int y = y0; y < std::min(y0 + kTileSize, h); ++y) {
-                    for (int x = x0; x < std::min(x0 + kTileSize, w); ++x) {
-                        if (!window.contains(x, y)) continue;
-                        // Checked per pixel: one pixel of a deep scene at many spp can take long.
-                        if (control.cancelled()) return;
-                        Rng rng(scene.render.seed, pixel_stream(x, y, w));
-                        Rgb sum;
-                        for (int s = 0; s < spp; ++s) {
-                            double jx = rng.uniform(), jy = rng.uniform();
-                            if (stratified) {
-                                jx = ((s % strata) + jx) / strata;
-                                jy = ((s / strata) + jy) / strata;
-                            }
-                            // Each camera sample carries its own four wavelengths; the hero
-                            // wavelengths of a pixel's samples are stratified too, visited in a
-                            // scrambled order so they do not follow the sample positions.
-                            const double u_lambda = ((s * 7919 + 13) % spp + rng.uniform()) / spp;
-                            const SampledWavelengths lambdas = SampledWavelengths::sample(u_lambda);
-                            const DispersionSplit* split =
-                                splits.empty() ? nullptr : &splits[s % splits.size()];
-                            const Rgb l =
-                                radiance(camera.generate_ray(x + jx, y + jy), lambdas, split, rng);
-                            // A non-finite sample would poison the pixel; it is a bug, but the
-                            // picture must stay usable (no NaN may reach a pixel), and
-                            // the count tells the user.
-                            if (l.is_finite()) {
-                                sum += l;
-                            } else {
-                                control.count_non_finite_sample();
-                            }
-                        }
-                        film.set(x, y, sum * (1.0 / spp));
+                Rng rng(scene.render.seed, pixel_stream(x, y, w));
+                Rgb sum;
+                for (int s = 0; s < spp; ++s) {
+                    double jx = rng.uniform(), jy = rng.uniform();
+                    if (stratified) {
+                        jx = ((s % strata) + jx) / strata;
+                        jy = ((s / strata) + jy) / strata;
+                    }
+                    // Each camera sample carries its own four wavelengths; the hero
+                    // wavelengths of a pixel's samples are stratified too, visited in a
+                    // scrambled order so they do not follow the sample positions.
+                    const double u_lambda = ((s * 7919 + 13) % spp + rng.uniform()) / spp;
+                    const SampledWavelengths lambdas = SampledWavelengths::sample(u_lambda);
+                    const DispersionSplit* split =
+                        splits.empty() ? nullptr : &splits[s % splits.size()];
+                    const Rgb l =
+                        radiance(camera.generate_ray(x + jx, y + jy), lambdas, split, rng);
+                    // A non-finite sample would poison the pixel; it is a bug, but the
+                    // picture must stay usable (no NaN may reach a pixel), and
+                    // the count tells the user.
+                    if (l.is_finite()) {
+                        sum += l;
+                    } else {
+                        control.count_non_finite_sample();
                     }
                 }
-                control.report(static_cast<double>(++done) / mine);
+                film.set(x, y, sum * (1.0 / spp));
             }
-        });
+        }
+        control.report(static_cast<double>(++done) / mine);
+    });
     if (comm.alone()) return done == mine;
     gather_tiles_to_root(comm, film, tiles);
     uint64_t unfinished[1] = {done == mine ? 0u : 1u};
