@@ -36,17 +36,37 @@ public:
 
     double hero_nm() const { return m_hero_nm; }
     bool dispersed() const { return m_dispersed; }
-    // A dispersive refraction: from here on only the hero wavelength follows the path.
-    void disperse() { m_dispersed = true; }
+    // A dispersive refraction: from here on only the hero wavelength follows the path (a
+    // merged path stays whole).
+    void disperse() { m_dispersed = !m_merged; }
     // The wavelengths to split into at a dispersive refraction, or nullptr (none given, or
-    // already dispersed).
-    const DispersionSplit* split() const { return m_dispersed ? nullptr : m_split; }
-    // The copy of this path that follows the split's wavelength `s`.
-    PathColour split_to(const SplitWavelength& s) const {
+    // already dispersed, or merged).
+    const DispersionSplit* split() const { return m_dispersed || m_merged ? nullptr : m_split; }
+    // The copy of this path that follows the split's wavelength number `k`.
+    PathColour split_to(size_t k) const {
+        const SplitWavelength& s = m_split->wavelengths()[k];
         PathColour c = *this;
         c.m_hero_nm = s.nm;
         c.m_hero_xyz = s.xyz_weight;
         c.m_dispersed = true;
+        c.m_split_index = static_cast<int>(k);
+        return c;
+    }
+    // The number of wavelengths a split copy's split has; 0 for a path that is none.
+    size_t split_count() const { return m_split_index < 0 ? 0 : m_split->wavelengths().size(); }
+    // Whether this split copy carries the split's merged branches: the middle wavelength.
+    bool carries_merged() const {
+        return m_split_index >= 0 && static_cast<size_t>(m_split_index) == split_count() / 2;
+    }
+    // The split's wavelengths joined again on this copy's path: the whole spectrum, as before
+    // the split, and it stays whole through later dispersive glass. For branches too weak
+    // for the split's dispersion to show (render.merge_weight): the light they bring keeps
+    // its amount and its colour, only not its spread over the spectrum.
+    PathColour merged() const {
+        PathColour c = *this;
+        c.m_dispersed = false;
+        c.m_merged = true;
+        c.m_split_index = -1;
         return c;
     }
 
@@ -72,6 +92,8 @@ private:
     Vec3 m_hero_xyz;  // the XYZ a unit of light at the hero wavelength adds to the pixel
     const DispersionSplit* m_split = nullptr;
     bool m_dispersed = false;
+    bool m_merged = false;
+    int m_split_index = -1;  // which of its split's wavelengths a split copy follows
     BandWeights m_beta{1.0, 1.0, 1.0};
 };
 

@@ -54,6 +54,10 @@ struct RenderSettings {
     Rgb background{0, 0, 0};   // radiance of rays that leave the scene
     int light_samples = 1;     // shadow rays per area light per camera sample
     double min_weight = 1e-4;  // specular branches carrying less are not followed
+    // The wavelengths of a split whose branch carries less than this share of the camera
+    // sample follow one path together (whitted, photon_map; render/path_colour.h). About
+    // 1/255: one 8-bit level of the pixel, where POV-Ray stops tracing rays (adc_bailout).
+    double merge_weight = 0.004;
     // Local error of a step through a GRIN medium, relative to the solid's size: far below a
     // pixel (the bench traces at 1e-9, scene/grin_ray.h).
     double grin_tolerance = 1e-7;

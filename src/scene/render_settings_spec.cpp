@@ -63,6 +63,12 @@ ElementSpec declare_render_settings() {
                       "glass (0: auto)")
             .in_editor("Dispersion samples (0 = auto)")
             .on_command_line(),
+        fraction_param("merge_weight", d.merge_weight)
+            .describe("whitted, photon_map: the wavelengths of a split whose branch carries less "
+                      "than this share of the camera sample follow one path together, carrying "
+                      "the whole spectrum (0: never)")
+            .in_editor("Merge weight", 6)
+            .on_command_line(),
         whole_param("photons", d.photons, 1, kMaxPhotonsPerLight)
             .describe("photon_map: photons emitted per light")
             .in_editor("Photons per light")

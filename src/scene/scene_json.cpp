@@ -83,6 +83,7 @@ void read_render(const json& j, RenderSettings& s) {
     s.grin_tolerance = r.real("grin_tolerance");
     s.integrator = r.text("integrator");
     s.dispersion_samples = static_cast<int>(r.whole("dispersion_samples"));
+    s.merge_weight = r.real("merge_weight");
     s.photons = r.whole("photons");
     s.radius = r.real("radius");
     s.filter = choice_named<PhotonFilter>(kPhotonFilterNames, r.text("filter"));

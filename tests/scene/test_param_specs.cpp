@@ -457,6 +457,7 @@ TEST(RenderOptions, AreTheDeclaredKeysWithTheirRangesInTheHelp) {
                                       "--seed",
                                       "--integrator",
                                       "--dispersion-samples",
+                                      "--merge-weight",
                                       "--photons",
                                       "--caustic-photons",
                                       "--aim-photons",

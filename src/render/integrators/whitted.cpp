@@ -58,17 +58,31 @@ Rgb WhittedIntegrator::trace(const Ray& ray, int depth, double weight, const Pat
         l += reflected.of(e) * s.diffuse;
     }
     if (depth >= scene.render.max_depth) return l;
-    const bool split = s.dispersive && path.split();
+    // A weak branch is not split: its wavelengths follow one of them together (merge_weight).
+    const bool split = s.dispersive && path.split() && weight >= scene.render.merge_weight;
     if (split) l += trace_split(it, ray.direction, depth, weight, path, rng);
     for (int i = 0; i < s.count; ++i) {
         const Branch& b = s.branches[i];
-        if (weight * b.weight < scene.render.min_weight) continue;
+        double carried = weight * b.weight;
         PathColour next = path;
+        // The wavelengths of a split whose branch here is weak in all (merge_weight) follow
+        // one of them together, carrying the whole spectrum.
+        if (const size_t count = path.split_count();
+            count > 0 && carried * count < scene.render.merge_weight) {
+            if (!path.carries_merged()) continue;
+            next = path.merged();
+            carried *= static_cast<double>(count);
+        }
+        if (carried < scene.render.min_weight) continue;
         if (s.dispersive && b.event == Event::Refract) {
             if (split) continue;
-            next.disperse();
+            if (path.split()) {
+                next = path.split_to(path.split()->wavelengths().size() / 2).merged();
+            } else {
+                next.disperse();
+            }
         }
-        l += trace({p, b.direction}, depth + 1, weight * b.weight, next, rng) * b.weight;
+        l += trace({p, b.direction}, depth + 1, carried, next, rng) * b.weight;
     }
     return l;
 }
@@ -80,13 +94,13 @@ Rgb WhittedIntegrator::trace_split(const Interaction& it, const Vec3& d, int dep
     // Each wavelength carries its share of the colour (the split's weights are in the colour,
     // the branch weight multiplies the light).
     const double share = weight / static_cast<double>(split.size());
-    for (const SplitWavelength& w : split) {
+    for (size_t k = 0; k < split.size(); ++k) {
         // Each wavelength refracts with its own index.
-        const Scattering s = scatter_at(it, d, w.nm);
+        const Scattering s = scatter_at(it, d, split[k].nm);
         for (int i = 0; i < s.count; ++i) {
             const Branch& b = s.branches[i];
             if (b.event != Event::Refract || share * b.weight < m_scene.render.min_weight) continue;
-            l += trace({it.point(), b.direction}, depth + 1, share * b.weight, path.split_to(w),
+            l += trace({it.point(), b.direction}, depth + 1, share * b.weight, path.split_to(k),
                        rng) *
                  b.weight;
         }
