@@ -19,6 +19,24 @@ TEST(Halton, RadicalInversesMirrorTheDigits) {
     EXPECT_EQ(radical_inverse(2, 0), 0.0);
 }
 
+// The constant-base radical inverses, taken a block of digits at a time, against the digit by
+// digit definition, over the indices a render uses and past the exact range (a fallback).
+TEST(Halton, BlocksOfDigitsGiveTheDigitByDigitValues) {
+    const uint64_t primes[] = {2, 3, 5, 7, 11, 13};
+    for (int d = 0; d < kHaltonDimensions; ++d) {
+        for (uint64_t i : {uint64_t{0}, uint64_t{1}, uint64_t{1023}, uint64_t{1024},
+                           uint64_t{123457}, uint64_t{1} << 40, (uint64_t{1} << 62) + 12345}) {
+            EXPECT_NEAR(radical_inverse(d, i), radical_inverse_of(primes[d], i), 1e-15)
+                << "base " << primes[d] << ", index " << i;
+            EXPECT_LT(radical_inverse(d, i), 1.0);
+        }
+        for (uint64_t i = 0; i < 200000; i += 7) {
+            ASSERT_NEAR(radical_inverse(d, i), radical_inverse_of(primes[d], i), 1e-15)
+                << "base " << primes[d] << ", index " << i;
+        }
+    }
+}
+
 TEST(Halton, TheFirstPointsOfBaseTwoHalveEveryInterval) {
     // Van der Corput: 1/2, 1/4, 3/4, 1/8, 5/8, 3/8, 7/8.
     const double expected[] = {0.5, 0.25, 0.75, 0.125, 0.625, 0.375, 0.875};
