@@ -21,6 +21,7 @@
 #include <limits>
 #include <memory>
 
+#include "image/png_encoder.h"
 #include "util/atomic_file.h"
 
 namespace lenslab {
@@ -34,27 +35,18 @@ std::string extension_of(const std::string& path) {
     return ext;
 }
 
-// `img` as a PNG file `file`; `path` is the name messages give. Encoded in memory and written
-// by write_whole_file, whose every write is checked: libpng's own file writer reports a full
-// disk only as "Write Error", without its cause.
+// `img` as a PNG file `file`; `path` is the name messages give. Encoded in memory
+// (image/png_encoder.h, in parallel) and written by write_whole_file, whose every write is
+// checked: a full disk is reported with its cause.
 void write_png(const Image8& img, const std::string& file, const std::string& path) {
-    png_image image{};
-    image.version = PNG_IMAGE_VERSION;
-    image.width = static_cast<png_uint_32>(img.width);
-    image.height = static_cast<png_uint_32>(img.height);
-    image.format = PNG_FORMAT_RGB;
-    // libpng's default compression took 0.1 s for a 900x900 render, longer than rendering
-    // it without photons; the fast setting writes a file about a fifth larger in a fraction.
-    image.flags = PNG_IMAGE_FLAG_FAST;
-    // Encoded once into a buffer of libpng's bound on the file's size (asking libpng for the
-    // exact size first would compress the image twice).
-    png_alloc_size_t size = PNG_IMAGE_PNG_SIZE_MAX(image);
-    const auto png = std::make_unique_for_overwrite<unsigned char[]>(size);
-    const bool encoded =
-        png_image_write_to_memory(&image, png.get(), &size, 0, img.rgb.data(), 0, nullptr);
-    if (!encoded) throw ImageError("cannot write PNG '" + path + "': " + image.message);
+    std::vector<unsigned char> png;
     try {
-        write_whole_file(file, {reinterpret_cast<const char*>(png.get()), size}, path);
+        png = encode_png(img.width, img.height, img.rgb.data());
+    } catch (const std::runtime_error& e) {
+        throw ImageError("cannot write PNG '" + path + "': " + e.what());
+    }
+    try {
+        write_whole_file(file, {reinterpret_cast<const char*>(png.data()), png.size()}, path);
     } catch (const FileWriteError& e) {
         throw ImageError(e.what());
     }
