@@ -56,7 +56,7 @@ public:
     size_t split_count() const { return m_split_index < 0 ? 0 : m_split->wavelengths().size(); }
     // Whether this split copy carries the split's merged branches: the middle wavelength.
     bool carries_merged() const {
-        return m_split_index >= 0 && static_cast<size_t>(m_split_index) == split_count() / 2;
+        return m_split_index >= 0 && static_cast<size_t>(m_split_index) == middle_of(*m_split);
     }
     // The split's wavelengths joined again on this copy's path: the whole spectrum, as before
     // the split, and it stays whole through later dispersive glass. For branches too weak
@@ -69,6 +69,9 @@ public:
         c.m_split_index = -1;
         return c;
     }
+    // A path too weak to split where it meets dispersive glass: the split's wavelengths
+    // together from the start, as merged() joins them.
+    PathColour merged_split() const { return split_to(middle_of(*m_split)).merged(); }
 
     PathColour& operator*=(double s) {
         for (double& b : m_beta) b *= s;
@@ -85,6 +88,8 @@ public:
     Rgb of(const LightSum& e) const;
 
 private:
+    // The wavelength whose path a merged split follows: the middle one.
+    static size_t middle_of(const DispersionSplit& split) { return split.wavelengths().size() / 2; }
     // One wavelength's estimate of the colour, `value` being the light there.
     Rgb hero_colour(double value) const;
 

@@ -77,7 +77,7 @@ Rgb WhittedIntegrator::trace(const Ray& ray, int depth, double weight, const Pat
         if (s.dispersive && b.event == Event::Refract) {
             if (split) continue;
             if (path.split()) {
-                next = path.split_to(path.split()->wavelengths().size() / 2).merged();
+                next = path.merged_split();
             } else {
                 next.disperse();
             }
